@@ -1,0 +1,34 @@
+"""Built-in rules, one module each; ``BUILTIN`` is the explicit, sorted table."""
+
+from __future__ import annotations
+
+from launchverify.rule import Rule
+from launchverify.rules.arguments.invalid_default import InvalidDefault
+from launchverify.rules.arguments.missing_required_argument import MissingRequiredArgument
+from launchverify.rules.arguments.undeclared_argument import UndeclaredArgument
+from launchverify.rules.arguments.unknown_include_argument import UnknownIncludeArgument
+from launchverify.rules.arguments.unused_argument import UnusedArgument
+from launchverify.rules.files.include_cycle import IncludeCycle
+from launchverify.rules.files.missing_file import MissingFile
+from launchverify.rules.files.unknown_package import UnknownPackage
+from launchverify.rules.health.evaluation_error import EvaluationError
+from launchverify.rules.health.parse_error import ParseError
+from launchverify.rules.health.unmodeled_construct import UnmodeledConstruct
+from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
+from launchverify.rules.naming.invalid_name import InvalidName
+
+BUILTIN: tuple[type[Rule], ...] = (
+    ParseError,               # LV001
+    EvaluationError,          # LV002
+    UnmodeledConstruct,       # LV003
+    DuplicateNodeName,        # LV101
+    InvalidName,              # LV102
+    UndeclaredArgument,       # LV201
+    UnusedArgument,           # LV202
+    InvalidDefault,           # LV203
+    UnknownIncludeArgument,   # LV204
+    MissingRequiredArgument,  # LV208
+    IncludeCycle,             # LV301
+    MissingFile,              # LV302
+    UnknownPackage,           # LV303
+)

@@ -1,0 +1,52 @@
+"""LV204 unknown-include-argument."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launchverify.graph import LaunchGraph, Origin
+from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.suggest import did_you_mean
+
+
+class UnknownIncludeArgument(Rule):
+    """An include passes an argument that the included launch never declares or reads.
+
+    ## What it does
+    For each `<include>` (`IncludeLaunchDescription`), compares the argument names it
+    passes with what the included file (and the files it includes) declares or reads.
+    Includes into files launchverify cannot fully see are skipped.
+
+    ## Why it matters
+    launch sets undeclared arguments silently, so a misspelled name
+    (`use_sim_tme:=true`) does nothing and the included file runs on its default.
+
+    ## Example
+    ```xml
+    <include file="$(find-pkg-share my_robot)/launch/bringup.launch.xml">
+      <arg name="use_sim_tme" value="true"/>
+    </include>
+    ```
+
+    ## Fix
+    Use the name the included file declares, or declare the argument there.
+    """
+
+    code = "LV204"
+    slug = "unknown-include-argument"
+    severity = Severity.WARNING
+    message = "argument {name!r} is not declared by {target}{hint}"
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        for include in graph.includes:
+            if include.status != "loaded" or not include.complete or include.target is None:
+                continue
+            known = include.declared | include.reads | {
+                a.name for a in include.static_arguments
+            }
+            for name, _value, span in include.arguments:
+                if name is None or name in known:
+                    continue
+                origin = Origin(span, include.origin.chain, include.origin.path)
+                yield self.finding(origin, name=name, target=include.target.name,
+                                   hint=did_you_mean(name, known))

@@ -1,0 +1,61 @@
+"""LV202 unused-argument."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launchverify.graph import LaunchGraph
+from launchverify.ir.walk import configuration_names
+from launchverify.rule import Finding, Rule, RuleContext, Severity
+
+# Configurations launch and launch_ros read by themselves, without a $(var).
+IMPLICIT_READS = frozenset({
+    "launch-prefix", "launch-prefix-filter", "emulate_tty", "sigterm_timeout",
+    "sigkill_timeout", "ros_namespace", "ros_remaps", "global_params",
+})
+
+
+class UnusedArgument(Rule):
+    """A declared launch argument is never read.
+
+    ## What it does
+    Reports an `<arg>` (`DeclareLaunchArgument`) whose name is read nowhere: not by
+    `$(var)` in the file, nor in any file it includes or that includes it, nor implicitly
+    by launch (`launch-prefix`, `emulate_tty`, ...). A file that is included from several
+    places is reported only when no includer reads the argument either.
+
+    ## Why it matters
+    Users pass `name:=value` and nothing changes: the argument is a leftover, or the place
+    meant to use it reads a different name.
+
+    ## Example
+    ```xml
+    <arg name="use_sim_time" default="false"/>
+    <node pkg="demo_nodes_cpp" exec="talker"/>
+    ```
+
+    ## Fix
+    Use the argument where it was meant to apply (`<param name="use_sim_time"
+    value="$(var use_sim_time)"/>`), or delete the declaration.
+    """
+
+    code = "LV202"
+    slug = "unused-argument"
+    severity = Severity.WARNING
+    message = "argument {name!r} is declared but never used"
+    every_context = True
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        if graph.opaque_files or any(not inc.complete for inc in graph.includes):
+            return
+        used = set(IMPLICIT_READS) | graph.read_names()
+        for loaded in graph.files.values():
+            if loaded.launch is not None:
+                used |= configuration_names(loaded.launch)
+        reported: set[object] = set()
+        for argument in graph.arguments:
+            span = argument.action.span
+            if argument.name in used or span in reported:
+                continue
+            reported.add(span)
+            yield self.finding(argument.origin, name=argument.name)

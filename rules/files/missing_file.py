@@ -1,0 +1,57 @@
+"""LV302 missing-file."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launchverify.graph import LaunchGraph
+from launchverify.rule import Finding, Rule, RuleContext, Severity
+
+
+class MissingFile(Rule):
+    """An included launch file or a parameter file does not exist.
+
+    ## What it does
+    Resolves include paths and parameter file paths (`<param from=...>`,
+    `set_parameters_from_file`, `$(file-content)`) against the workspace, finding files
+    written through a package's install folder in its sources. Paths outside the workspace
+    belong to the machine and are not checked.
+
+    ## Why it matters
+    A missing include stops ros2 launch (`FileNotFoundError`). A missing parameter file is
+    skipped with only a warning, and the node silently runs on its defaults.
+
+    ## Example
+    ```xml
+    <include file="$(find-pkg-share my_robot)/launch/sensor.launch.xml"/>
+    <!-- the file is called sensors.launch.xml -->
+    ```
+
+    ## Fix
+    Correct the path, or install the file (check `install(DIRECTORY ...)` or
+    `data_files`). Build relative paths from `$(dirname)` or `$(find-pkg-share pkg)`.
+    """
+
+    code = "LV302"
+    slug = "missing-file"
+    severity = Severity.ERROR
+    message = "{what} {location!r} does not exist{note}"
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        for include in graph.includes:
+            if include.status == "missing":
+                location = graph.display(include.location) or "?"
+                yield self.finding(include.origin, what="included launch file",
+                                   location=location, note=_note(include.note))
+        seen: set[object] = set()
+        for ref in graph.file_refs:
+            key = (ref.location, ref.origin.span)
+            if ref.exists or key in seen:
+                continue
+            seen.add(key)
+            yield self.finding(ref.origin, what=ref.what, location=ref.location,
+                               note=_note(ref.note))
+
+
+def _note(note: str) -> str:
+    return f" ({note})" if note else ""

@@ -1,0 +1,56 @@
+"""LV303 unknown-package."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launchverify.graph import LaunchGraph
+from launchverify.models.known_packages import is_released, released_packages
+from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.suggest import did_you_mean
+
+
+class UnknownPackage(Rule):
+    """A package named in the launch exists nowhere.
+
+    ## What it does
+    Looks up every package a launch file names (`pkg=`, `$(find-pkg-share)`,
+    `$(find-pkg-prefix)`, `$(exec-in-pkg)`) in the workspace and, when ROS 2 is installed,
+    in `AMENT_PREFIX_PATH`. Without an installation, a package missing from the workspace
+    is reported only when it is not a released ROS 2 package either (humble to rolling),
+    which is almost always a typo.
+
+    ## Why it matters
+    ros2 launch stops with `PackageNotFoundError` when it reaches the reference.
+
+    ## Example
+    ```xml
+    <node pkg="demo_node_cpp" exec="talker"/>
+    ```
+
+    ## Fix
+    Correct the package name, or add the package to the workspace or the system.
+    """
+
+    code = "LV303"
+    slug = "unknown-package"
+    severity = Severity.ERROR
+    message = "package {name!r} is {where}{hint}"
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        installed = ctx.packages is not None and ctx.packages.has_install
+        local = ctx.packages.names() if ctx.packages is not None else []
+        seen: set[object] = set()
+        for ref in graph.packages:
+            key = (ref.name, ref.origin.span)
+            if ref.found or key in seen:
+                continue
+            seen.add(key)
+            if installed:
+                where = "neither in the workspace nor installed"
+            elif is_released(ref.name):
+                continue
+            else:
+                where = "not in the workspace and not a released ROS 2 package"
+            hint = did_you_mean(ref.name, local) or did_you_mean(ref.name, released_packages())
+            yield self.finding(ref.origin, name=ref.name, where=where, hint=hint)

@@ -1,0 +1,42 @@
+"""LV003 unmodeled-construct."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launchverify.graph import LaunchGraph
+from launchverify.problems import ProblemKind
+from launchverify.rule import Finding, Rule, RuleContext, Severity
+
+
+class UnmodeledConstruct(Rule):
+    """launchverify met something it does not model; the analysis there is incomplete.
+
+    ## What it does
+    Names each construct launchverify cannot evaluate statically: a launch file format it
+    does not read yet, an `$(eval ...)` outside the modelled subset of Python, a loop whose
+    length depends on arguments, an opaque function.
+
+    ## Why it matters
+    Other rules stay quiet about what they cannot see, so a clean report covers less than
+    it seems. This finding says where the blind spots are.
+
+    ## Example
+    ```xml
+    <let name="n" value="$(eval '[x for x in range(3)]')"/>
+    ```
+
+    ## Fix
+    Nothing is wrong with the launch file. Prefer simple, declarative constructs where you
+    can; report constructs you rely on so they can be modelled.
+    """
+
+    code = "LV003"
+    slug = "unmodeled-construct"
+    severity = Severity.INFO
+    message = "{text}"
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        for record in graph.problems:
+            if record.problem.kind is ProblemKind.UNMODELED:
+                yield self.finding(record.origin, text=record.problem.message)

@@ -1,0 +1,3 @@
+"""launchverify: a formal verifier and static analyser for ROS 2 launch files."""
+
+__version__ = "0.1.0"

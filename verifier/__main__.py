@@ -1,0 +1,5 @@
+"""Allow ``python -m launchverify``."""
+
+from launchverify.cli import main
+
+raise SystemExit(main())

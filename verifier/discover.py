@@ -1,0 +1,53 @@
+"""Find the launch files below the paths a user gives."""
+
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+
+from launchverify.packages import SKIP_DIRS
+
+LAUNCH_SUFFIXES = ("launch.xml", "launch.yaml", "launch.yml")
+FRONTEND_SUFFIXES = (".xml", ".yaml", ".yml")
+_XML_ROOT = re.compile(rb"<launch[\s>/]")
+_YAML_ROOT = re.compile(rb"^launch\s*:", re.MULTILINE)
+
+
+def is_launch_file(path: Path) -> bool:
+    """Return whether a file looks like an XML or YAML launch file.
+
+    Names ending in ``launch.xml``/``launch.yaml`` count; other ``.xml``/``.yaml`` files
+    count when they sit in a ``launch`` folder and their root is ``launch``.
+    """
+    name = path.name.lower()
+    if name.endswith(LAUNCH_SUFFIXES):
+        return True
+    if not name.endswith(FRONTEND_SUFFIXES) or "launch" not in path.parent.name.lower():
+        return False
+    try:
+        with path.open("rb") as handle:
+            head = handle.read(8192)
+    except OSError:
+        return False
+    pattern = _XML_ROOT if name.endswith(".xml") else _YAML_ROOT
+    return pattern.search(head) is not None
+
+
+def discover(paths: list[Path]) -> list[Path]:
+    """Return the launch files named by ``paths``: files as given, folders searched."""
+    found: list[Path] = []
+    for path in paths:
+        if path.is_dir():
+            for current, dirs, files in os.walk(path):
+                dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS and not d.startswith("."))
+                for name in sorted(files):
+                    candidate = Path(current) / name
+                    if is_launch_file(candidate):
+                        found.append(candidate)
+        else:
+            found.append(path)
+    unique: dict[Path, Path] = {}
+    for path in found:
+        unique.setdefault(path.absolute(), path)
+    return list(unique.values())

@@ -1,0 +1,147 @@
+"""The check pipeline: discover -> load -> evaluate -> rules -> findings.
+
+Each launch file found is evaluated as a root, as ``ros2 launch`` would start it; a file
+that others include is evaluated through its includers too. Findings from every root are
+merged; rules marked ``every_context`` keep a finding only when every evaluation that
+reached its file agrees (an argument unused standalone may be read by an includer).
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from collections import defaultdict
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from launchverify.discover import discover
+from launchverify.evaluate import FileCache, evaluate
+from launchverify.graph import LaunchGraph
+from launchverify.packages import PackageIndex, find_workspace
+from launchverify.registry import select as select_rules
+from launchverify.rule import Finding, Rule, RuleContext
+
+
+class UsageError(Exception):
+    """Bad input from the user (exit status 2)."""
+
+
+@dataclass
+class CheckOptions:
+    """What ``launchverify check`` was asked to do."""
+
+    paths: list[Path]
+    arguments: dict[str, str] = field(default_factory=dict)
+    workspace: Path | None = None
+    select: list[str] | None = None
+    ignore: list[str] | None = None
+
+
+@dataclass
+class Report:
+    """The outcome of a check."""
+
+    findings: list[Finding]
+    files: int
+    seconds: float
+    display: dict[Path, str]
+    graphs: list[LaunchGraph] = field(default_factory=list)
+
+    def display_path(self, path: Path) -> str:
+        """Return a path as the user gave it, else relative to the working directory."""
+        return self.display.get(path) or display_path(path)
+
+
+def display_path(path: Path) -> str:
+    """Return ``path`` relative to the working directory when below it, else absolute."""
+    try:
+        return str(path.relative_to(Path.cwd().resolve()))
+    except ValueError:
+        return str(path)
+
+
+def parse_arguments(tokens: list[str]) -> tuple[list[str], dict[str, str]]:
+    """Split command-line tokens into paths and ``name:=value`` launch arguments."""
+    paths: list[str] = []
+    arguments: dict[str, str] = {}
+    for token in tokens:
+        if ":=" not in token:
+            paths.append(token)
+            continue
+        name, _, value = token.partition(":=")
+        if not name or not value:
+            raise UsageError(
+                f"malformed launch argument {token!r}, expected format '<name>:=<value>'"
+            )
+        arguments[name] = value
+    return paths, arguments
+
+
+def canonical(path: Path) -> Path:
+    """Return the identity used for a file: absolute, with symlinks resolved."""
+    return Path(os.path.realpath(path))
+
+
+def build_index(paths: list[Path], workspace: Path | None) -> tuple[Path, PackageIndex]:
+    """Return the workspace and the package index for a check."""
+    if workspace is not None:
+        if not workspace.is_dir():
+            raise UsageError(f"workspace {str(workspace)!r} is not a folder")
+        root = canonical(workspace)
+    else:
+        root = find_workspace(paths[0])
+    return root, PackageIndex.from_environment([root])
+
+
+def run_check(options: CheckOptions) -> Report:
+    """Check launch files and return the findings, de-duplicated and sorted."""
+    started = time.perf_counter()
+    for path in options.paths:
+        if not path.exists():
+            raise UsageError(f"no such file or folder: {str(path)!r}")
+    rules = select_rules(options.select, options.ignore)
+    files = discover(options.paths)
+    display = {canonical(f): str(f) for f in files}
+    if not files:
+        return Report([], 0, time.perf_counter() - started, display)
+    workspace, index = build_index(options.paths, options.workspace)
+    loader = FileCache()
+    graphs = [
+        evaluate(canonical(f), index=index, workspace=workspace, pinned=options.arguments,
+                 loader=loader)
+        for f in files
+    ]
+    included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
+    for graph in graphs:
+        graph.included_elsewhere = graph.root in included
+    findings = run_rules(graphs, rules, RuleContext(packages=index))
+    loaded = {path for g in graphs for path in g.files}
+    return Report(findings, len(loaded), time.perf_counter() - started, display, graphs)
+
+
+def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
+              ctx: RuleContext) -> list[Finding]:
+    """Run every rule on every graph and merge the findings."""
+    merged: dict[tuple[object, ...], Finding] = {}
+    votes: dict[tuple[object, ...], int] = defaultdict(int)
+    reach: dict[Path, int] = defaultdict(int)
+    for graph in graphs:
+        for path in graph.files:
+            reach[path] += 1
+    unanimous: set[str] = set()
+    for rule_class in rules:
+        rule = rule_class()
+        if getattr(rule_class, "every_context", False):
+            unanimous.add(rule_class.code)
+        for graph in graphs:
+            for finding in rule.check(graph, ctx):
+                key = finding.key()
+                votes[key] += 1
+                known = merged.get(key)
+                if known is None or len(finding.chain) < len(known.chain):
+                    merged[key] = finding
+    kept = [
+        f for key, f in merged.items()
+        if f.code not in unanimous or votes[key] >= reach[f.span.file]
+    ]
+    return sorted(kept, key=Finding.sort_key)

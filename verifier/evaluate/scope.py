@@ -1,0 +1,109 @@
+"""Launch configurations and environment, scoped exactly as ros2/launch scopes them.
+
+Configurations are one flat dict per scope; pushing a scope makes a *shallow* copy, so the
+lists launch_ros keeps there (``ros_remaps``, ``global_params``) are shared with the outer
+scope once they exist: a ``SetRemap`` inside a group then leaks out, as it does in launch.
+Values are residual expressions; under a symbolic path condition an assignment becomes a
+``Select`` between the new and the old value.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+from launchverify.ir.subst import Sub
+from launchverify.ir.symbolic import PathCondition, Select, Unset
+
+ROS_NAMESPACE = "ros_namespace"
+ROS_REMAPS = "ros_remaps"
+GLOBAL_PARAMS = "global_params"
+
+
+@dataclass(frozen=True, slots=True)
+class ScopedRemap:
+    """A ``SetRemap`` rule as stored in the scope, with the path it was set under."""
+
+    src: Sub
+    dst: Sub
+    origin: Any
+    path: PathCondition
+
+
+@dataclass(frozen=True, slots=True)
+class ScopedParam:
+    """A ``SetParameter`` value or ``SetParametersFromFile`` file in scope."""
+
+    origin: Any
+    path: PathCondition
+    name: Sub | None = None
+    value: object = None
+    file: Sub | None = None
+
+
+def guarded(path: PathCondition, new: Sub, old: Sub | None, name: str) -> Sub:
+    """Return the value after an assignment made under ``path``."""
+    if not path:
+        return new
+    previous = Unset(name) if old is None else old
+    if previous == new:
+        return new
+    return Select(path, new, previous)
+
+
+class Scopes:
+    """The stack of configuration and environment scopes of one evaluation."""
+
+    def __init__(self, configs: dict[str, Any]) -> None:
+        self.configs: dict[str, Any] = dict(configs)
+        self.env: dict[str, Sub | None] = {}
+        self._config_stack: list[dict[str, Any]] = []
+        self._env_stack: list[dict[str, Sub | None]] = []
+
+    # launch's PushLaunchConfigurations / PopLaunchConfigurations
+    def push_configs(self) -> None:
+        """Enter a scope: the new scope starts as a shallow copy."""
+        self._config_stack.append(self.configs)
+        self.configs = dict(self.configs)
+
+    def pop_configs(self) -> bool:
+        """Leave a scope; return ``False`` if there was none (launch raises)."""
+        if not self._config_stack:
+            return False
+        self.configs = self._config_stack.pop()
+        return True
+
+    def push_env(self) -> None:
+        """Enter an environment scope."""
+        self._env_stack.append(self.env)
+        self.env = dict(self.env)
+
+    def pop_env(self) -> bool:
+        """Leave an environment scope; ``False`` if there was none."""
+        if not self._env_stack:
+            return False
+        self.env = self._env_stack.pop()
+        return True
+
+    def reset_env(self) -> None:
+        """Forget every change the launch made to the environment."""
+        self.env = {}
+
+    def set(self, name: str, value: Sub, path: PathCondition) -> None:
+        """Set a configuration under a path condition."""
+        self.configs[name] = guarded(path, value, self.configs.get(name), name)
+
+    def get(self, name: str) -> Sub | None:
+        """Return a configuration's value, or ``None`` when it was never set."""
+        value = self.configs.get(name)
+        return value if isinstance(value, Sub) else None
+
+    def append_shared(self, key: str, item: object) -> None:
+        """Append to ``ros_remaps``/``global_params`` the way launch_ros does (in place)."""
+        items = self.configs.get(key, [])
+        items.append(item)
+        self.configs[key] = items
+
+    def shared(self, key: str) -> list[Any]:
+        """Return the ``ros_remaps``/``global_params`` list in scope."""
+        return list(self.configs.get(key, []))

@@ -1,0 +1,443 @@
+"""Partial evaluation of substitutions: as concrete as the launch files allow.
+
+``Reducer.reduce`` turns an expression into ``Text`` when everything it depends on is
+known, and otherwise into a residual expression whose leaves are inputs (``Arg``,
+``EnvInput``) or unknowns. Operators follow launch's rules exactly (boolean coercion,
+``equals``, ``prefix_namespace``, ``os.path.join``); leaves are looked up by subclasses:
+``walker.ScopeReducer`` during evaluation, ``BaseReducer`` for the default-argument view.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable
+
+from launchverify.ir import subst as s
+from launchverify.ir.symbolic import (
+    Arg,
+    EnvInput,
+    Guard,
+    NsPrefix,
+    Opaque,
+    Select,
+    StrEquals,
+    Truthy,
+    Unknown,
+    Unset,
+)
+from launchverify.models import booleans
+from launchverify.models.python_expression import (
+    ExpressionError,
+    Unsupported,
+    evaluate_expression,
+)
+from launchverify.models.ros_names import make_absolute, prefix_namespace
+
+
+def text_of(sub: s.Sub | None) -> str | None:
+    """Return the text of a concrete value, or ``None`` when it is symbolic."""
+    return sub.text if isinstance(sub, s.Text) else None
+
+
+def is_unset(sub: s.Sub) -> bool:
+    """Return whether a value may be unset on some path."""
+    return any(isinstance(x, Unset) for x in s.walk(sub))
+
+
+class Reducer:
+    """Reduce expressions; subclasses say what configurations and the environment hold."""
+
+    def __init__(self) -> None:
+        self._dispatch: dict[type, Callable[[s.Sub], s.Sub]] = {
+            s.Text: lambda x: x,
+            s.Concat: self._concat,
+            s.LaunchConfig: self._config,
+            s.EnvVar: self._env,
+            s.PythonExpr: self._eval,
+            s.Command: lambda x: Unknown(f"output of {x.describe()}"),
+            s.FindExecutable: lambda x: Unknown(f"{x.describe()} on the PATH"),
+            s.FindPackageShare: self._pkg_share,
+            s.FindPackagePrefix: self._pkg_prefix,
+            s.ExecutableInPackage: self._exec_in_pkg,
+            s.ThisLaunchFile: lambda x: self.this_file(False),
+            s.ThisLaunchFileDir: lambda x: self.this_file(True),
+            s.LaunchLogDir: lambda x: Unknown("the launch log folder"),
+            s.AnonName: self._anon,
+            s.NotSub: self._not,
+            s.AndSub: self._and,
+            s.OrSub: self._or,
+            s.AnySub: self._any,
+            s.AllSub: self._all,
+            s.EqualsSub: self._equals,
+            s.NotEqualsSub: self._not_equals,
+            s.IfElse: self._if_else,
+            s.FileContent: self._file_content,
+            s.RosParameter: self._ros_parameter,
+            s.ForEachVar: self._for_var,
+            s.ForLoopIndex: self._loop_index,
+            s.StringJoin: self._string_join,
+            s.PathJoin: self._path_join,
+            s.LocalSub: lambda x: Unknown(f"event value {x.describe()}"),
+            s.Opaque: lambda x: Unknown(x.describe()),
+            Arg: lambda x: self.arg(x) if isinstance(x, Arg) else x,
+            EnvInput: lambda x: self.env_input(x) if isinstance(x, EnvInput) else x,
+            Unknown: lambda x: x,
+            Unset: lambda x: x,
+            Select: self._select,
+            NsPrefix: self._ns_prefix,
+        }
+
+    # ------------------------------------------------------------------ public
+
+    def reduce(self, sub: s.Sub) -> s.Sub:
+        """Return ``sub`` evaluated as far as possible."""
+        return self._dispatch[type(sub)](sub)
+
+    def text(self, sub: s.Sub | None) -> str | None:
+        """Reduce and return the text, or ``None`` when symbolic (or absent)."""
+        return None if sub is None else text_of(self.reduce(sub))
+
+    def truth(self, sub: s.Sub) -> bool | None:
+        """Apply the condition rule to ``sub``; ``None`` when it is not known."""
+        value = text_of(self.reduce(sub))
+        if value is None:
+            return None
+        try:
+            return booleans.condition_truth(value)
+        except booleans.InvalidBoolean as error:
+            self.fail(str(error))
+            return None
+
+    def guard(self, guard: Guard) -> bool | None:
+        """Return whether a guard holds, or ``None`` when unknown."""
+        if isinstance(guard, Truthy):
+            value = self.truth(guard.expression)
+            return None if value is None else value != guard.negate
+        if isinstance(guard, StrEquals):
+            left = self.reduce(guard.left)
+            if guard.right is None:
+                result: bool | None = isinstance(left, Unset) or (
+                    None if is_unset(left) else False
+                )
+            else:
+                left_text, right_text = text_of(left), self.text(guard.right)
+                result = None if left_text is None or right_text is None else (
+                    left_text == right_text
+                )
+            return None if result is None else result != guard.negate
+        return None
+
+    # ------------------------------------------------------------------ hooks
+
+    def config(self, name: str, default: s.Sub | None) -> s.Sub:
+        """Return the value of a launch configuration."""
+        raise NotImplementedError
+
+    def environment(self, name: str, default: s.Sub | None) -> s.Sub:
+        """Return the value of an environment variable."""
+        return EnvInput(name, None if default is None else self.reduce(default))
+
+    def package_share(self, name: str) -> s.Sub:
+        """Return the share folder of a package."""
+        return Unknown(f"share folder of {name}")
+
+    def package_prefix(self, name: str) -> s.Sub:
+        """Return the install prefix of a package."""
+        return Unknown(f"install prefix of {name}")
+
+    def executable_path(self, executable: str, package: str) -> s.Sub:
+        """Return the path of an executable of a package."""
+        return Unknown(f"path of {executable} in {package}")
+
+    def this_file(self, directory: bool) -> s.Sub:
+        """Return the current launch file (or its folder)."""
+        return Unknown("current launch file")
+
+    def anon(self, name: str) -> s.Sub:
+        """Return the anonymous name for ``name`` in the current scope."""
+        return Unknown(f"anonymous name {name}")
+
+    def file_content(self, path: str) -> s.Sub:
+        """Return the content of a file."""
+        return Unknown(f"content of {path}")
+
+    def ros_parameter(self, name: str, default: s.Sub | None) -> s.Sub:
+        """Return the value of a SetParameter in scope."""
+        return Unknown(f"parameter {name}") if default is None else self.reduce(default)
+
+    def loop_variable(self, name: str, default: s.Sub | None, index: bool) -> s.Sub:
+        """Return the value of a for-loop variable or index."""
+        return Unknown(f"loop variable {name}")
+
+    def arg(self, sub: Arg) -> s.Sub:
+        """Return the value of a launch-argument input (kept symbolic by default)."""
+        return sub
+
+    def env_input(self, sub: EnvInput) -> s.Sub:
+        """Return the value of a machine environment variable (kept symbolic)."""
+        return sub
+
+    def fail(self, message: str) -> None:
+        """Record that launch would raise while evaluating the current action."""
+
+    def unmodeled(self, message: str) -> None:
+        """Record that a construct is not modelled."""
+
+    # ------------------------------------------------------------------ structure
+
+    def _concat(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.Concat)
+        return s.concat([self.reduce(p) for p in sub.parts])
+
+    def _name(self, sub: s.Sub) -> str | None:
+        return text_of(self.reduce(sub))
+
+    def _config(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.LaunchConfig)
+        name = self._name(sub.name)
+        if name is None:
+            return Unknown(f"configuration named by {sub.name.describe()}")
+        return self.config(name, sub.default)
+
+    def _env(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.EnvVar)
+        name = self._name(sub.name)
+        if name is None:
+            return Unknown(f"environment variable named by {sub.name.describe()}")
+        return self.environment(name, sub.default)
+
+    def _eval(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.PythonExpr)
+        expression = self.reduce(sub.expression)
+        modules = None if sub.modules is None else self.reduce(sub.modules)
+        text = text_of(expression)
+        module_text = text_of(modules) if modules is not None else "math"
+        if text is None or module_text is None:
+            return s.PythonExpr(expression, modules)
+        names = [m.strip() for m in module_text.split(",") if m.strip()]
+        try:
+            return s.Text(evaluate_expression(text, names))
+        except ExpressionError as error:
+            self.fail(f"$(eval) raises {error}")
+        except Unsupported as error:
+            self.unmodeled(f"{error}: {text!r}")
+        return Unknown(f"value of $(eval {text!r})")
+
+    def _pkg_share(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.FindPackageShare)
+        name = self._name(sub.package)
+        return Unknown(sub.describe()) if name is None else self.package_share(name)
+
+    def _pkg_prefix(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.FindPackagePrefix)
+        name = self._name(sub.package)
+        return Unknown(sub.describe()) if name is None else self.package_prefix(name)
+
+    def _exec_in_pkg(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.ExecutableInPackage)
+        executable, package = self._name(sub.executable), self._name(sub.package)
+        if executable is None or package is None:
+            return Unknown(sub.describe())
+        return self.executable_path(executable, package)
+
+    def _anon(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.AnonName)
+        name = self._name(sub.name)
+        return Unknown(sub.describe()) if name is None else self.anon(name)
+
+    def _typed(self, values: list[s.Sub]) -> list[bool] | None:
+        texts = [text_of(v) for v in values]
+        if any(t is None for t in texts):
+            return None
+        try:
+            return [booleans.typed_truth(t) for t in texts if t is not None]
+        except booleans.InvalidBoolean as error:
+            self.fail(str(error))
+            return None
+
+    def _not(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.NotSub)
+        value = self.reduce(sub.value)
+        flags = self._typed([value])
+        return s.NotSub(value) if flags is None else s.Text(booleans.bool_text(not flags[0]))
+
+    def _and(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.AndSub)
+        left, right = self.reduce(sub.left), self.reduce(sub.right)
+        flags = self._typed([left, right])
+        return s.AndSub(left, right) if flags is None else s.Text(booleans.bool_text(all(flags)))
+
+    def _or(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.OrSub)
+        left, right = self.reduce(sub.left), self.reduce(sub.right)
+        flags = self._typed([left, right])
+        return s.OrSub(left, right) if flags is None else s.Text(booleans.bool_text(any(flags)))
+
+    def _any(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.AnySub)
+        args = [self.reduce(a) for a in sub.args]
+        flags = self._typed(args)
+        return s.AnySub(tuple(args)) if flags is None else s.Text(booleans.bool_text(any(flags)))
+
+    def _all(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.AllSub)
+        args = [self.reduce(a) for a in sub.args]
+        flags = self._typed(args)
+        return s.AllSub(tuple(args)) if flags is None else s.Text(booleans.bool_text(all(flags)))
+
+    def _equals(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.EqualsSub)
+        left, right = self.reduce(sub.left), self.reduce(sub.right)
+        lt, rt = text_of(left), text_of(right)
+        if lt is None or rt is None:
+            return s.EqualsSub(left, right)
+        return s.Text(booleans.bool_text(booleans.launch_equals(lt, rt)))
+
+    def _not_equals(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.NotEqualsSub)
+        left, right = self.reduce(sub.left), self.reduce(sub.right)
+        lt, rt = text_of(left), text_of(right)
+        if lt is None or rt is None:
+            return s.NotEqualsSub(left, right)
+        return s.Text(booleans.bool_text(not booleans.launch_equals(lt, rt)))
+
+    def _if_else(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.IfElse)
+        condition = self.reduce(sub.condition)
+        flags = self._typed([condition])
+        if flags is None:
+            return s.IfElse(condition, self.reduce(sub.if_value), self.reduce(sub.else_value))
+        return self.reduce(sub.if_value if flags[0] else sub.else_value)
+
+    def _file_content(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.FileContent)
+        path = self._name(sub.path)
+        return Unknown(sub.describe()) if path is None else self.file_content(path)
+
+    def _ros_parameter(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.RosParameter)
+        name = self._name(sub.name)
+        return Unknown(sub.describe()) if name is None else self.ros_parameter(name, sub.default)
+
+    def _for_var(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.ForEachVar)
+        name = self._name(sub.name)
+        if name is None:
+            return Unknown(sub.describe())
+        return self.loop_variable(name, sub.default, index=False)
+
+    def _loop_index(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.ForLoopIndex)
+        name = self._name(sub.name)
+        return Unknown(sub.describe()) if name is None else self.loop_variable(name, None, True)
+
+    def _string_join(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.StringJoin)
+        delimiter = self.reduce(sub.delimiter)
+        parts = [self.reduce(p) for p in sub.parts]
+        texts = [text_of(p) for p in parts]
+        delimiter_text = text_of(delimiter)
+        if delimiter_text is None or any(t is None for t in texts):
+            return s.StringJoin(delimiter, tuple(parts))
+        return s.Text(delimiter_text.join(t for t in texts if t is not None))
+
+    def _path_join(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.PathJoin)
+        parts = [self.reduce(p) for p in sub.parts]
+        texts = [text_of(p) for p in parts]
+        if any(t is None for t in texts):
+            return s.PathJoin(tuple(parts))
+        joined = os.path.join(*(t for t in texts if t is not None)) if texts else ""  # noqa: PTH118
+        return s.Text(joined)
+
+    def _select(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, Select)
+        remaining = []
+        for guard in sub.guards:
+            verdict = self.guard(guard)
+            if verdict is False:
+                return self.reduce(sub.otherwise)
+            if verdict is None:
+                remaining.append(guard)
+        if not remaining:
+            return self.reduce(sub.then)
+        then, otherwise = self.reduce(sub.then), self.reduce(sub.otherwise)
+        if then == otherwise:
+            return then
+        return Select(tuple(remaining), then, otherwise)
+
+    def _ns_prefix(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, NsPrefix)
+        base = None if sub.base is None else self.reduce(sub.base)
+        result = ns_prefix(base, self.reduce(sub.ns), absolute=sub.absolute)
+        assert result is not None  # ns is never None here
+        return result
+
+
+def ns_prefix(base: s.Sub | None, ns: s.Sub | None, *, absolute: bool = True) -> s.Sub | None:
+    """Compose namespaces like ``make_absolute(prefix_namespace(base, ns))``, symbolically.
+
+    ``None`` stands for "no namespace" on either side, as in launch_ros.
+    """
+
+    def finish(text: str | None) -> s.Sub | None:
+        if text is None:
+            return None
+        return s.Text(text if not absolute else make_absolute(text) or "/")
+
+    base_text = None if base is None else text_of(base)
+    if ns is None:
+        if base is None or base_text is not None:
+            return finish(prefix_namespace(base_text, None))
+        return base
+    ns_text = text_of(ns)
+    if ns_text is not None and (ns_text.startswith("/") or base is None or base_text is not None):
+        return finish(prefix_namespace(base_text, ns_text))
+    leading = ns.parts[0] if isinstance(ns, s.Concat) else ns
+    if isinstance(leading, s.Text) and leading.text.startswith("/"):
+        return ns  # an absolute namespace ignores the base
+    return NsPrefix(base, ns, absolute)
+
+
+class BaseReducer(Reducer):
+    """Reduces residual values under the default arguments (the base evaluation).
+
+    ``pinned`` holds values for inputs: ``name`` for arguments, ``env:NAME`` for
+    environment variables. Inputs with neither a pinned value nor a default stay symbolic.
+    """
+
+    def __init__(self, pinned: dict[str, str] | None = None) -> None:
+        super().__init__()
+        self.pinned = pinned or {}
+
+    def config(self, name: str, default: s.Sub | None) -> s.Sub:
+        return Unknown(f"configuration {name}")
+
+    def arg(self, sub: Arg) -> s.Sub:
+        if sub.name in self.pinned:
+            return s.Text(self.pinned[sub.name])
+        return sub if sub.default is None else self.reduce(sub.default)
+
+    def env_input(self, sub: EnvInput) -> s.Sub:
+        key = "env:" + sub.name
+        if key in self.pinned:
+            return s.Text(self.pinned[key])
+        return sub if sub.default is None else self.reduce(sub.default)
+
+
+def describe_value(sub: s.Sub | None) -> str | None:
+    """Return text for output: the text of concrete values, the expression otherwise."""
+    if sub is None:
+        return None
+    return sub.text if isinstance(sub, s.Text) else sub.describe()
+
+
+__all__ = [
+    "BaseReducer",
+    "Opaque",
+    "Reducer",
+    "describe_value",
+    "is_unset",
+    "ns_prefix",
+    "text_of",
+]

@@ -1,0 +1,847 @@
+"""Walk the IR of a launch tree the way ``ros2 launch`` executes it, building the graph.
+
+Actions are visited in launch's order (depth first, an include's actions before the next
+sibling), with launch's scoping. Conditions that the launch files decide are applied;
+conditions that depend on arguments or the machine extend the path condition and both
+outcomes are explored. Deferred actions (timers, event handlers) are visited in place with
+a copy of the scope, as jazzy hands them their configurations.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import itertools
+import os
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass
+from pathlib import Path
+
+import yaml
+
+from launchverify.evaluate.scope import (
+    GLOBAL_PARAMS,
+    ROS_NAMESPACE,
+    ROS_REMAPS,
+    ScopedParam,
+    ScopedRemap,
+    Scopes,
+)
+from launchverify.evaluate.static_args import include_argument_names, static_arguments
+from launchverify.evaluate.values import Reducer, is_unset, ns_prefix, text_of
+from launchverify.frontends import LoadedFile
+from launchverify.graph import (
+    ArgumentRecord,
+    ConfigRead,
+    FileRef,
+    IncludeRecord,
+    LaunchGraph,
+    NameRecord,
+    NodeRecord,
+    Origin,
+    PackageRef,
+    ParamRecord,
+    ProblemRecord,
+    ProcessRecord,
+    RemapRecord,
+    SkippedAction,
+    StaticArgument,
+)
+from launchverify.ir import actions as a
+from launchverify.ir import conditions as c
+from launchverify.ir import subst as s
+from launchverify.ir.symbolic import (
+    Arg,
+    Guard,
+    PathCondition,
+    Select,
+    StrEquals,
+    Truthy,
+    Unknown,
+    Unset,
+)
+from launchverify.packages import PackageIndex
+from launchverify.problems import Problem, ProblemKind
+from launchverify.span import Span
+
+MAX_INCLUDE_DEPTH = 40
+MAX_LOOP = 256
+MAX_FILE_CONTENT = 1024 * 1024
+
+
+@dataclass(frozen=True, slots=True)
+class Ctx:
+    """Where the walk is: the file being executed, the include chain, the path condition."""
+
+    file: Path
+    chain: tuple[Span, ...]
+    path: PathCondition
+    deferred: bool = False
+    loop: tuple[tuple[str, s.Sub, bool], ...] = ()
+
+    def origin(self, span: Span) -> Origin:
+        """Return the origin of something written at ``span`` here."""
+        return Origin(span, self.chain, self.path)
+
+    def guarded(self, guard: Guard) -> Ctx:
+        """Return this context with one more guard."""
+        return dataclasses.replace(self, path=(*self.path, guard))
+
+
+class ScopeReducer(Reducer):
+    """Reduces expressions against the evaluator's current scope."""
+
+    def __init__(self, walker: Walker) -> None:
+        super().__init__()
+        self.walker = walker
+        self.ctx: Ctx | None = None
+        self.span: Span | None = None
+
+    def at(self, ctx: Ctx, span: Span) -> ScopeReducer:
+        """Point problems and records at ``span`` in ``ctx``."""
+        self.ctx, self.span = ctx, span
+        return self
+
+    def _origin(self) -> Origin:
+        assert self.ctx is not None and self.span is not None
+        return self.ctx.origin(self.span)
+
+    def config(self, name: str, default: s.Sub | None) -> s.Sub:
+        value = self.walker.scopes.get(name)
+        self.walker.record_read(name, self._origin(), value is not None, default is not None)
+        if value is None:
+            return Unset(name) if default is None else self.reduce(default)
+        if default is not None and is_unset(value):
+            return _fill_unset(value, self.reduce(default))
+        return value
+
+    def environment(self, name: str, default: s.Sub | None) -> s.Sub:
+        if name in self.walker.scopes.env:
+            value = self.walker.scopes.env[name]
+            if value is not None:
+                return value
+            if default is None:
+                self.fail(f"environment variable {name!r} was unset by the launch file")
+                return Unknown(f"unset environment variable {name}")
+            return self.reduce(default)
+        return super().environment(name, default)
+
+    def package_share(self, name: str) -> s.Sub:
+        package = self.walker.index.find(name)
+        self.walker.record_package(name, self._origin(), package is not None, "share")
+        return Unknown(f"share folder of {name}") if package is None else s.Text(
+            str(package.share)
+        )
+
+    def package_prefix(self, name: str) -> s.Sub:
+        package = self.walker.index.find(name)
+        self.walker.record_package(name, self._origin(), package is not None, "prefix")
+        if package is None or package.prefix is None:
+            return Unknown(f"install prefix of {name}")
+        return s.Text(str(package.prefix))
+
+    def executable_path(self, executable: str, package: str) -> s.Sub:
+        found = self.walker.index.find(package)
+        self.walker.record_package(package, self._origin(), found is not None, "executable")
+        return Unknown(f"path of {executable} in {package}")
+
+    def this_file(self, directory: bool) -> s.Sub:
+        current = self.walker.current_file
+        return s.Text(str(current.parent if directory else current))
+
+    def anon(self, name: str) -> s.Sub:
+        key = "anon" + name
+        value = self.walker.scopes.get(key)
+        if value is None:
+            clean = name.replace(".", "_").replace("-", "_").replace(":", "_")
+            value = s.Text(f"{clean}_anon{next(self.walker.anon_counter)}")
+            self.walker.scopes.set(key, value, ())
+        return value
+
+    def file_content(self, path: str) -> s.Sub:
+        return self.walker.read_file_content(path, self._origin())
+
+    def ros_parameter(self, name: str, default: s.Sub | None) -> s.Sub:
+        for item in self.walker.scopes.shared(GLOBAL_PARAMS):
+            if item.name is not None and text_of(item.name) == name:
+                value = item.value
+                return value if isinstance(value, s.Sub) else s.Text(str(value))
+        if default is not None:
+            return self.reduce(default)
+        self.fail(f"parameter {name!r} not found (no SetParameter with that name in scope)")
+        return Unknown(f"parameter {name}")
+
+    def loop_variable(self, name: str, default: s.Sub | None, index: bool) -> s.Sub:
+        assert self.ctx is not None
+        for var, value, is_index in reversed(self.ctx.loop):
+            if var == name and is_index == index:
+                return value
+        if default is not None:
+            return self.reduce(default)
+        self.fail(f"no value for loop variable {name!r}")
+        return Unknown(f"loop variable {name}")
+
+    def fail(self, message: str) -> None:
+        assert self.span is not None
+        self.walker.problem(ProblemKind.EVALUATION, message, self.span, self.ctx)
+
+    def unmodeled(self, message: str) -> None:
+        assert self.span is not None
+        self.walker.problem(ProblemKind.UNMODELED, message, self.span, self.ctx)
+
+
+def _fill_unset(value: s.Sub, fill: s.Sub) -> s.Sub:
+    if isinstance(value, Unset):
+        return fill
+    if isinstance(value, Select):
+        then = _fill_unset(value.then, fill)
+        return Select(value.guards, then, _fill_unset(value.otherwise, fill))
+    return value
+
+
+class Walker:
+    """Evaluates one root launch file into a ``LaunchGraph``."""
+
+    def __init__(self, graph: LaunchGraph, index: PackageIndex,
+                 loader: Callable[[Path], LoadedFile], workspace: Path) -> None:
+        self.graph = graph
+        self.index = index
+        self.loader = loader
+        self.workspace = workspace
+        self.scopes = Scopes({k: s.Text(v) for k, v in graph.pinned.items()})
+        self.reducer = ScopeReducer(self)
+        self.current_file = graph.root
+        self.anon_counter = itertools.count(1)
+        self.include_stack: list[IncludeRecord] = []
+        self.file_stack: list[Path] = []
+
+    # ------------------------------------------------------------------ recording
+
+    def problem(self, kind: ProblemKind, message: str, span: Span, ctx: Ctx | None) -> None:
+        """Record an evaluation problem."""
+        chain = ctx.chain if ctx else ()
+        self.graph.problems.append(ProblemRecord(Problem(kind, message, span), chain))
+        if kind is ProblemKind.UNMODELED:
+            self.mark_incomplete()
+
+    def mark_incomplete(self) -> None:
+        """Note that the includes being walked contain something not understood."""
+        for record in self.include_stack:
+            record.complete = False
+
+    def record_read(self, name: str, origin: Origin, found: bool, has_default: bool) -> None:
+        """Record a configuration read."""
+        self.graph.reads.append(ConfigRead(name, origin, found, has_default))
+        for record in self.include_stack:
+            record.reads.add(name)
+
+    def record_package(self, name: str, origin: Origin, found: bool, what: str) -> None:
+        """Record a package reference."""
+        self.graph.packages.append(PackageRef(name, origin, found, what))
+
+    def read_file_content(self, path: str, origin: Origin) -> s.Sub:
+        """Return ``$(file-content)`` of a workspace file, never reading outside it."""
+        located = self.index.locate(Path(path))
+        if located is None:
+            inside = Path(path).is_absolute() and Path(path).resolve().is_relative_to(
+                self.workspace)
+            if inside or self.index.owner(Path(path)) is not None:
+                self.graph.file_refs.append(FileRef(path, origin, False, "file-content"))
+            return Unknown(f"content of {path}")
+        if not located.resolve().is_relative_to(self.workspace):
+            return Unknown(f"content of {path}")
+        self.graph.file_refs.append(FileRef(path, origin, True, "file-content"))
+        try:
+            with located.open("rb") as handle:
+                data = handle.read(MAX_FILE_CONTENT + 1)
+        except OSError:
+            return Unknown(f"content of {path}")
+        if len(data) > MAX_FILE_CONTENT:
+            return Unknown(f"content of {path}")
+        return s.Text(data.decode("utf-8", "replace"))
+
+    # ------------------------------------------------------------------ entry
+
+    def run(self) -> None:
+        """Evaluate the root file as ``ros2 launch ROOT args...`` does."""
+        ctx = Ctx(file=self.graph.root, chain=(), path=())
+        loaded = self.load(self.graph.root, ctx)
+        if loaded.launch is None:
+            return
+        self.graph.root_arguments = self.static_args(loaded)
+        self.file_stack.append(self.graph.root)
+        self.visit_all(loaded.launch.actions, ctx)
+        self.file_stack.pop()
+
+    def load(self, path: Path, ctx: Ctx) -> LoadedFile:
+        """Load a file (cached by the loader) and record its problems once."""
+        loaded: LoadedFile = self.loader(path)
+        if path not in self.graph.files:
+            self.graph.files[path] = loaded
+            for problem in loaded.problems:
+                self.graph.problems.append(ProblemRecord(problem, ctx.chain))
+            if loaded.launch is None:
+                self.mark_incomplete()
+        return loaded
+
+    def static_args(self, loaded: LoadedFile) -> tuple[StaticArgument, ...]:
+        """Return the statically discovered arguments of a loaded file."""
+        if loaded.launch is None:
+            return ()
+        out = []
+        for declaration, includes, conditional in static_arguments(
+            loaded.launch, self.loader, self.index
+        ):
+            via = tuple(frozenset(include_argument_names(i, self.index)) for i in includes)
+            out.append(StaticArgument(
+                declaration.name, declaration.default is not None, conditional,
+                declaration.span, declaration.description, via,
+            ))
+        return tuple(out)
+
+    # ------------------------------------------------------------------ visiting
+
+    def visit_all(self, actions: tuple[a.Action, ...], ctx: Ctx) -> None:
+        """Visit actions in order."""
+        for action in actions:
+            self.visit(action, ctx)
+
+    def visit(self, action: a.Action, ctx: Ctx) -> None:
+        """Visit one action: evaluate its condition, then execute it."""
+        inner = self.apply_condition(action.condition, action.span, ctx)
+        if inner is None:
+            self.graph.skipped.append(SkippedAction(action, ctx.origin(action.span)))
+            return
+        handler = getattr(self, "do_" + type(action).__name__, None)
+        if handler is None:
+            self.problem(ProblemKind.UNMODELED,
+                         f"action {type(action).__name__} is not modelled", action.span, inner)
+            return
+        handler(action, inner)
+
+    def apply_condition(self, condition: c.Condition | None, span: Span, ctx: Ctx) -> Ctx | None:
+        """Return the context inside a condition, or ``None`` when it is surely false."""
+        if condition is None:
+            return ctx
+        reducer = self.reducer.at(ctx, span)
+        guard: Guard
+        if isinstance(condition, (c.IfCondition, c.UnlessCondition)):
+            negate = isinstance(condition, c.UnlessCondition)
+            value = reducer.reduce(condition.expression)
+            guard = Truthy(value, negate)
+        elif isinstance(condition, c.ConfigEquals):
+            name = reducer.text(condition.name)
+            current = (Unknown("configuration") if name is None
+                       else self.scopes.get(name) or Unset(name))
+            if name is not None:
+                self.record_read(name, ctx.origin(span), not isinstance(current, Unset), True)
+            expected = None if condition.expected is None else reducer.reduce(condition.expected)
+            guard = StrEquals(current, expected, condition.negate)
+        else:
+            self.problem(ProblemKind.UNMODELED, f"condition {condition.describe()} is not "
+                         "modelled", span, ctx)
+            return ctx.guarded(_opaque(condition.describe()))
+        verdict = reducer.guard(guard)
+        if verdict is True:
+            return ctx
+        if verdict is False:
+            return None
+        if isinstance(guard, Truthy) and text_of(guard.expression) is not None:
+            return None  # an invalid constant condition: launch raises (recorded)
+        return ctx.guarded(guard)
+
+    @contextmanager
+    def scope(self, configs: bool = True, env: bool = True) -> Iterator[None]:
+        """Run a block in a pushed scope."""
+        if configs:
+            self.scopes.push_configs()
+        if env:
+            self.scopes.push_env()
+        try:
+            yield
+        finally:
+            if env:
+                self.scopes.pop_env()
+            if configs:
+                self.scopes.pop_configs()
+
+    # ------------------------------------------------------------------ launch actions
+
+    def do_DeclareArgument(self, action: a.DeclareArgument, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        default = None if action.default is None else reducer.reduce(action.default)
+        existing = self.scopes.get(action.name)
+        if existing is None or is_unset(existing):
+            value: s.Sub = Arg(action.name, default)
+            if existing is not None:
+                value = _fill_unset(existing, value)
+            self.scopes.set(action.name, value, ctx.path)
+        current = self.scopes.get(action.name) or Unset(action.name)
+        given = text_of(current)
+        if action.choices is not None and given is not None and given not in action.choices:
+            self.problem(
+                ProblemKind.EVALUATION,
+                f"argument {action.name!r} gets value {given!r}, which is not one of its "
+                f"choices {list(action.choices)} (ros2 launch fails)",
+                action.span, ctx,
+            )
+        self.graph.arguments.append(ArgumentRecord(
+            action.name, ctx.origin(action.span), default, action.description,
+            action.choices, current, action,
+        ))
+        for record in self.include_stack:
+            record.declared.add(action.name)
+
+    def do_SetConfig(self, action: a.SetConfig, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        name = reducer.text(action.name)
+        value = reducer.reduce(action.value)
+        if name is None:
+            self.problem(ProblemKind.UNMODELED, "a configuration whose name is computed is "
+                         "not modelled", action.span, ctx)
+            return
+        self.scopes.set(name, value, ctx.path)
+        for record in self.include_stack:
+            record.declared.add(name)
+
+    def do_UnsetConfig(self, action: a.UnsetConfig, ctx: Ctx) -> None:
+        name = self.reducer.at(ctx, action.span).text(action.name)
+        if name is not None:
+            self.scopes.set(name, Unset(name), ctx.path)
+
+    def do_ResetConfigs(self, action: a.ResetConfigs, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        keep = {}
+        for name_sub, value_sub in action.keep or ():
+            name = reducer.text(name_sub)
+            if name is not None:
+                keep[name] = reducer.reduce(value_sub)
+        self.scopes.configs.clear()
+        self.scopes.configs.update(keep)
+
+    def do_PushConfigs(self, action: a.PushConfigs, ctx: Ctx) -> None:
+        self.scopes.push_configs()
+
+    def do_PopConfigs(self, action: a.PopConfigs, ctx: Ctx) -> None:
+        if not self.scopes.pop_configs():
+            self.problem(ProblemKind.EVALUATION,
+                         "launch_configurations stack unexpectedly empty", action.span, ctx)
+
+    def do_Group(self, action: a.Group, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        keep = [(reducer.text(n), reducer.reduce(v)) for n, v in action.keep]
+        if not action.scoped:
+            for name, value in keep:
+                if name is not None:
+                    self.scopes.set(name, value, ctx.path)
+            self.visit_all(action.actions, ctx)
+            return
+        with self.scope():
+            if not action.forwarding:
+                self.scopes.reset_env()
+                self.scopes.configs.clear()
+            for name, value in keep:
+                if name is not None:
+                    self.scopes.set(name, value, () if not action.forwarding else ctx.path)
+            self.visit_all(action.actions, ctx)
+
+    def do_Include(self, action: a.Include, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        written_in = ctx.file
+        location = reducer.reduce(action.path)
+        origin = ctx.origin(action.span)
+        record = IncludeRecord(origin=origin, action=action, location=location, target=None,
+                               status="loaded")
+        self.graph.includes.append(record)
+        path_text = text_of(location) or self.graph.base(location)
+        if path_text is None:
+            record.status = "unresolved"
+            self.mark_incomplete()
+            return
+        target, note = self.resolve_path(path_text, written_in, action.path)
+        record.note = note
+        if target is None:
+            record.status = "missing"
+            self.mark_incomplete()
+            return
+        record.target = target
+        if target in self.file_stack or len(self.file_stack) >= MAX_INCLUDE_DEPTH:
+            record.status = "cycle"
+            return
+        inner = dataclasses.replace(ctx, file=target, chain=(*ctx.chain, action.span))
+        loaded = self.load(target, inner)
+        if loaded.launch is None:
+            record.status = "unreadable" if loaded.format != "python" else "unmodeled"
+            self.mark_incomplete()
+            return
+        record.static_arguments = self.static_args(loaded)
+        # launch sets the current file before the arguments are evaluated: $(dirname) in an
+        # include argument is the included file's folder.
+        self.current_file = target  # and never restores it (before rolling 3.9.6)
+        arguments = []
+        for argument in action.arguments:
+            arg_reducer = self.reducer.at(ctx, argument.span)
+            name = arg_reducer.text(argument.name)
+            value = arg_reducer.reduce(argument.value)
+            arguments.append((name, value, argument.span))
+            if name is not None:
+                self.scopes.set(name, value, ctx.path)
+        record.arguments = tuple(arguments)
+        self.include_stack.append(record)
+        self.file_stack.append(target)
+        try:
+            self.visit_all(loaded.launch.actions, inner)
+        finally:
+            self.file_stack.pop()
+            self.include_stack.pop()
+
+    def resolve_path(self, text: str, written_in: Path, written: s.Sub) -> tuple[Path | None, str]:
+        """Find an included or referenced file; explain launch's quirks in a note."""
+        path = Path(text)
+        note = ""
+        uses_dirname = any(isinstance(x, (s.ThisLaunchFileDir, s.ThisLaunchFile))
+                           for x in s.walk(written))
+        if uses_dirname and self.current_file != written_in:
+            note = (f"$(dirname) here is the folder of {self.current_file.name}: ros2 launch "
+                    "does not restore it after an include (fixed only in rolling)")
+        if not path.is_absolute():
+            beside = written_in.parent / path
+            note = ("relative paths are resolved against the folder ros2 launch is started "
+                    "from, not the including file; use $(dirname)/" + text)
+            if beside.is_file():
+                return beside, note
+            return None, note
+        return self.index.locate(path), note
+
+    def do_Timer(self, action: a.Timer, ctx: Ctx) -> None:
+        with self.scope():
+            self.visit_all(action.actions, dataclasses.replace(ctx, deferred=True))
+
+    def do_ForLoop(self, action: a.ForLoop, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        length_text = reducer.text(action.length)
+        try:
+            length = int(length_text) if length_text is not None else None
+        except ValueError:
+            self.problem(ProblemKind.EVALUATION,
+                         f"for loop length {length_text!r} is not an integer", action.span, ctx)
+            return
+        if length is None:
+            self.problem(ProblemKind.UNMODELED, "a for loop whose length depends on arguments "
+                         "is walked once", action.span, ctx)
+            iterations: list[s.Sub] = [Unknown("loop index")]
+        else:
+            iterations = [s.Text(str(i)) for i in range(min(length, MAX_LOOP))]
+        for value in iterations:
+            inner = dataclasses.replace(ctx, loop=(*ctx.loop, (action.name, value, True)))
+            self.visit_all(action.actions, inner)
+
+    def do_ForEach(self, action: a.ForEach, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        text = reducer.text(action.values)
+        if text is None:
+            self.problem(ProblemKind.UNMODELED, "for_each over values that depend on "
+                         "arguments is not modelled", action.span, ctx)
+            return
+        for chunk in [part for part in text.split(";") if part.strip()][:MAX_LOOP]:
+            try:
+                mapping = yaml.safe_load(chunk)
+            except yaml.YAMLError as error:
+                self.problem(ProblemKind.EVALUATION, f"for_each value {chunk!r} is not YAML: "
+                             f"{error}", action.span, ctx)
+                return
+            if not isinstance(mapping, dict):
+                self.problem(ProblemKind.EVALUATION, f"for_each value {chunk!r} is not a "
+                             "mapping", action.span, ctx)
+                return
+            loop = tuple((str(k), s.Text(str(v)), False) for k, v in mapping.items())
+            self.visit_all(action.actions, dataclasses.replace(ctx, loop=(*ctx.loop, *loop)))
+
+    # ------------------------------------------------------------------ environment
+
+    def do_SetEnv(self, action: a.SetEnv, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        name = reducer.text(action.name)
+        if name is not None:
+            self.scopes.env[name] = _guard_env(ctx, reducer.reduce(action.value),
+                                               self.scopes.env.get(name), name)
+
+    def do_UnsetEnv(self, action: a.UnsetEnv, ctx: Ctx) -> None:
+        name = self.reducer.at(ctx, action.span).text(action.name)
+        if name is not None:
+            self.scopes.env[name] = None if not ctx.path else Unknown(f"environment {name}")
+
+    def do_AppendEnv(self, action: a.AppendEnv, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        name = reducer.text(action.name)
+        if name is None:
+            return
+        value = reducer.reduce(action.value)
+        separator = s.Text(os.pathsep) if action.separator is None else reducer.reduce(
+            action.separator)
+        previous = self.scopes.env.get(name) or reducer.environment(name, None)
+        prepend = action.prepend if isinstance(action.prepend, bool) else (
+            reducer.text(s.NotSub(s.NotSub(action.prepend))) == "true")
+        parts = [value, separator, previous] if prepend else [previous, separator, value]
+        joined = s.concat(parts)
+        self.scopes.env[name] = _guard_env(ctx, joined, self.scopes.env.get(name), name)
+
+    def do_ResetEnv(self, action: a.ResetEnv, ctx: Ctx) -> None:
+        self.scopes.reset_env()
+
+    def do_PushEnv(self, action: a.PushEnv, ctx: Ctx) -> None:
+        self.scopes.push_env()
+
+    def do_PopEnv(self, action: a.PopEnv, ctx: Ctx) -> None:
+        if not self.scopes.pop_env():
+            self.problem(ProblemKind.EVALUATION, "environment stack unexpectedly empty",
+                         action.span, ctx)
+
+    # ------------------------------------------------------------------ ROS scope
+
+    def do_PushNamespace(self, action: a.PushNamespace, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        pushed = reducer.reduce(action.namespace)
+        previous = self.scopes.get(ROS_NAMESPACE)
+        combined = ns_prefix(previous, pushed)
+        assert combined is not None
+        origin = ctx.origin(action.at("namespace"))
+        self.record_name("namespace", combined, origin)
+        self.scopes.set(ROS_NAMESPACE, combined, ctx.path)
+
+    def do_SetRemap(self, action: a.SetRemap, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        origin = ctx.origin(action.span)
+        src, dst = reducer.reduce(action.src), reducer.reduce(action.dst)
+        self.record_name("remap", src, ctx.origin(action.at("from")))
+        self.record_name("remap", dst, ctx.origin(action.at("to")))
+        self.scopes.append_shared(ROS_REMAPS, ScopedRemap(src, dst, origin, ctx.path))
+
+    def do_SetParameter(self, action: a.SetParameter, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        value = action.value.value
+        reduced = reducer.reduce(value) if isinstance(value, s.Sub) else value
+        self.scopes.append_shared(GLOBAL_PARAMS, ScopedParam(
+            ctx.origin(action.span), ctx.path, name=reducer.reduce(action.name), value=reduced))
+
+    def do_SetParametersFromFile(self, action: a.SetParametersFromFile, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        location = reducer.reduce(action.filename)
+        self.check_file(location, ctx.origin(action.at("filename")), "parameter file", ctx)
+        self.scopes.append_shared(GLOBAL_PARAMS, ScopedParam(
+            ctx.origin(action.span), ctx.path, file=location))
+
+    def do_SetUseSimTime(self, action: a.SetUseSimTime, ctx: Ctx) -> None:
+        """Only the launch process's own node: nothing reaches launched nodes."""
+
+    def do_SetRosLogDir(self, action: a.SetRosLogDir, ctx: Ctx) -> None:
+        """Changes where logs go; nothing the graph models."""
+
+    def do_Log(self, action: a.Log, ctx: Ctx) -> None:
+        self.reducer.at(ctx, action.span).reduce(action.message)
+
+    def do_Shutdown(self, action: a.Shutdown, ctx: Ctx) -> None:
+        """Ends the launch at run time; statically nothing to record."""
+
+    def do_RegisterEventHandler(self, action: a.RegisterEventHandler, ctx: Ctx) -> None:
+        with self.scope():
+            self.visit_all(action.handler.entities, dataclasses.replace(ctx, deferred=True))
+
+    def do_EmitEvent(self, action: a.EmitEvent, ctx: Ctx) -> None:
+        """Events are handled by the event and lifecycle analyses."""
+
+    def do_OpaqueAction(self, action: a.OpaqueAction, ctx: Ctx) -> None:
+        self.problem(ProblemKind.UNMODELED, f"{action.description} is not modelled: what it "
+                     "launches is unknown", action.span, ctx)
+        self.graph.opaque_files.add(ctx.file)
+
+    # ------------------------------------------------------------------ processes and nodes
+
+    def do_ExecuteProcess(self, action: a.ExecuteProcess, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        cmd = tuple(reducer.reduce(part) for part in action.cmd)
+        name = None if action.process.name is None else reducer.reduce(action.process.name)
+        self.graph.processes.append(ProcessRecord(ctx.origin(action.span), cmd, name))
+        self.visit_process_options(action.process, action.span, ctx)
+
+    def visit_process_options(self, options: a.ProcessOptions, span: Span, ctx: Ctx) -> None:
+        """Evaluate what every process takes (reads of configurations count as uses)."""
+        reducer = self.reducer.at(ctx, span)
+        for value in (options.cwd, options.prefix, options.output):
+            if value is not None:
+                reducer.reduce(value)
+        if isinstance(options.respawn, s.Sub):
+            reducer.reduce(options.respawn)
+        for name, value in options.additional_env:
+            reducer.reduce(name)
+            reducer.reduce(value)
+        if options.on_exit:
+            with self.scope():
+                self.visit_all(options.on_exit, dataclasses.replace(ctx, deferred=True))
+
+    def do_Node(self, action: a.Node, ctx: Ctx) -> None:
+        self.run_node(action, ctx)
+
+    def do_LifecycleNode(self, action: a.LifecycleNode, ctx: Ctx) -> None:
+        self.run_node(action, ctx)
+
+    def do_ComposableNodeContainer(self, action: a.ComposableNodeContainer, ctx: Ctx) -> None:
+        container = self.run_node(action, ctx)
+        for description in action.composable_nodes:
+            self.run_composable(description, container.fqn, ctx)
+
+    def do_LoadComposableNodes(self, action: a.LoadComposableNodes, ctx: Ctx) -> None:
+        reducer = self.reducer.at(ctx, action.span)
+        target = reducer.reduce(action.target) if isinstance(action.target, s.Sub) else None
+        for description in action.composable_nodes:
+            self.run_composable(description, target, ctx)
+
+    def run_node(self, action: a.Node, ctx: Ctx) -> NodeRecord:
+        """Execute a Node-like action as launch_ros does and record it."""
+        reducer = self.reducer.at(ctx, action.span)
+        package = None if action.package is None else reducer.reduce(action.package)
+        package_name = text_of(package)
+        if package_name is not None:
+            self.record_package(package_name, ctx.origin(action.at("pkg")),
+                                self.index.find(package_name) is not None, "node")
+        executable = reducer.reduce(action.executable)
+        name = None if action.name is None else reducer.reduce(action.name)
+        if name is not None:
+            self.record_name("node name", name, ctx.origin(action.at("name")))
+        own_ns = None if action.namespace is None else reducer.reduce(action.namespace)
+        namespace = ns_prefix(self.scopes.get(ROS_NAMESPACE), own_ns)
+        if namespace is not None:
+            self.record_name("namespace", namespace, ctx.origin(action.at("namespace")))
+        fqn = None
+        if name is not None and namespace is not None:
+            fqn = ns_prefix(namespace, name)
+        for argument in (*action.arguments, *action.ros_arguments):
+            reducer.reduce(argument)
+        exec_name = action.exec_name
+        if exec_name is not None:
+            reducer.reduce(exec_name)
+        remaps = (*self.scope_remaps(ctx), *self.own_remaps(action.remappings, ctx))
+        params = (*self.scope_params(ctx), *self.own_params(action.parameters, ctx))
+        self.visit_process_options(action.process, action.span, ctx)
+        record = NodeRecord(
+            kind=action.kind, origin=ctx.origin(action.span), package=package,
+            executable=executable, name=name, namespace=namespace, fqn=fqn,
+            remappings=remaps, parameters=params, deferred=ctx.deferred,
+        )
+        self.graph.nodes.append(record)
+        return record
+
+    def run_composable(self, node: a.ComposableNode, container: s.Sub | None, ctx: Ctx) -> None:
+        """Record a composable node loaded into a container."""
+        inner = self.apply_condition(node.condition, node.span, ctx)
+        if inner is None:
+            return
+        reducer = self.reducer.at(inner, node.span)
+        package = reducer.reduce(node.package)
+        package_name = text_of(package)
+        if package_name is not None:
+            self.record_package(package_name, inner.origin(node.at("pkg")),
+                                self.index.find(package_name) is not None, "composable node")
+        plugin = reducer.reduce(node.plugin)
+        name = None if node.name is None else reducer.reduce(node.name)
+        if name is not None:
+            self.record_name("node name", name, inner.origin(node.at("name")))
+        own_ns = None if node.namespace is None else reducer.reduce(node.namespace)
+        namespace = ns_prefix(self.scopes.get(ROS_NAMESPACE), own_ns)
+        if namespace is not None:
+            self.record_name("namespace", namespace, inner.origin(node.at("namespace")))
+        fqn = None
+        if name is not None:
+            fqn = ns_prefix(namespace if namespace is not None else s.Text("/"), name)
+        for item in node.extra_arguments:
+            reducer.reduce(item.name)
+            if isinstance(item.value.value, s.Sub):
+                reducer.reduce(item.value.value)
+        self.graph.nodes.append(NodeRecord(
+            kind="composable_lifecycle_node" if node.lifecycle else "composable_node",
+            origin=inner.origin(node.span), package=package, executable=plugin, name=name,
+            namespace=namespace, fqn=fqn,
+            remappings=(*self.scope_remaps(inner), *self.own_remaps(node.remappings, inner)),
+            parameters=(*self.scope_params(inner), *self.own_params(node.parameters, inner)),
+            container=container, deferred=inner.deferred,
+        ))
+
+    def scope_remaps(self, ctx: Ctx) -> list[RemapRecord]:
+        """Return the SetRemap rules in scope (they come before the node's own)."""
+        return [RemapRecord(r.src, r.dst, r.origin, scope=True)
+                for r in self.scopes.shared(ROS_REMAPS)]
+
+    def own_remaps(self, remaps: tuple[a.Remap, ...], ctx: Ctx) -> list[RemapRecord]:
+        """Evaluate a node's own remap rules."""
+        out = []
+        for remap in remaps:
+            reducer = self.reducer.at(ctx, remap.span)
+            src, dst = reducer.reduce(remap.src), reducer.reduce(remap.dst)
+            origin = ctx.origin(remap.span)
+            self.record_name("remap", src, origin)
+            self.record_name("remap", dst, origin)
+            out.append(RemapRecord(src, dst, origin))
+        return out
+
+    def scope_params(self, ctx: Ctx) -> list[ParamRecord]:
+        """Return SetParameter/SetParametersFromFile values in scope (they come first)."""
+        return [ParamRecord(p.origin, file=p.file, name=p.name, value=p.value, scope=True)
+                for p in self.scopes.shared(GLOBAL_PARAMS)]
+
+    def own_params(self, entries: tuple[a.ParamEntry, ...], ctx: Ctx) -> list[ParamRecord]:
+        """Evaluate a node's own parameters: files are checked, values reduced."""
+        out = []
+        for entry in entries:
+            reducer = self.reducer.at(ctx, entry.span)
+            if isinstance(entry, a.ParamFile):
+                location = reducer.reduce(entry.path)
+                self.check_file(location, ctx.origin(entry.span), "parameter file", ctx)
+                out.append(ParamRecord(ctx.origin(entry.span), file=location))
+                continue
+            for item in entry.items:
+                value = item.value.value
+                if isinstance(value, s.Sub):
+                    value = reducer.reduce(value)
+                elif isinstance(value, tuple):
+                    value = tuple(reducer.reduce(v) if isinstance(v, s.Sub) else v for v in value)
+                out.append(ParamRecord(ctx.origin(item.span), name=reducer.reduce(item.name),
+                                       value=value))
+        return out
+
+    def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx) -> None:
+        """Record whether a file the launch needs exists (when its path is known)."""
+        text = text_of(location) or self.graph.base(location)
+        if text is None:
+            return
+        path = Path(text)
+        if not path.is_absolute():
+            beside = ctx.file.parent / path
+            note = ("relative paths are resolved against the folder ros2 launch is started "
+                    "from, not the launch file")
+            self.graph.file_refs.append(FileRef(text, origin, beside.is_file(), what, note))
+            return
+        located = self.index.locate(path)
+        if located is not None:
+            self.graph.file_refs.append(FileRef(text, origin, True, what))
+            return
+        in_workspace = path.is_relative_to(self.workspace) or self.index.owner(path) is not None
+        if in_workspace:
+            self.graph.file_refs.append(FileRef(text, origin, False, what))
+
+    def record_name(self, kind: str, value: s.Sub, origin: Origin) -> None:
+        """Record a ROS name for validation when its value is concrete."""
+        text = text_of(value)
+        if text is not None:
+            self.graph.names.append(NameRecord(kind, text, origin))
+
+
+def _guard_env(ctx: Ctx, value: s.Sub, old: s.Sub | None, name: str) -> s.Sub:
+    if not ctx.path:
+        return value
+    return Select(ctx.path, value, old if old is not None else Unknown(f"environment {name}"))
+
+
+def _opaque(description: str) -> Guard:
+    from launchverify.ir.symbolic import Opaque
+
+    return Opaque(description)

@@ -1,0 +1,63 @@
+"""Frontends: launch files in, IR out. They record problems; they never report findings."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from launchverify.frontends.tags import TagParser
+from launchverify.frontends.xml_reader import read_xml
+from launchverify.frontends.yaml_reader import read_yaml
+from launchverify.ir.actions import LaunchFile
+from launchverify.problems import Problem, ProblemSink
+from launchverify.span import Span
+
+XML_SUFFIXES = (".xml",)
+YAML_SUFFIXES = (".yaml", ".yml")
+PYTHON_SUFFIXES = (".py",)
+
+
+@dataclass
+class LoadedFile:
+    """The result of reading one launch file: its IR (when readable) and its problems."""
+
+    path: Path
+    format: str
+    launch: LaunchFile | None
+    problems: list[Problem] = field(default_factory=list)
+
+
+def launch_format(path: Path, data: bytes | None = None) -> str:
+    """Return ``xml``, ``yaml`` or ``python`` for a launch file path (sniffing ``.launch``)."""
+    name = path.name.lower()
+    if name.endswith(XML_SUFFIXES):
+        return "xml"
+    if name.endswith(YAML_SUFFIXES):
+        return "yaml"
+    if name.endswith(PYTHON_SUFFIXES):
+        return "python"
+    if data is not None and data.lstrip()[:1] == b"<":
+        return "xml"
+    return "yaml"
+
+
+def load_launch_file(path: Path) -> LoadedFile:
+    """Read and convert one launch file, recording every problem instead of raising."""
+    sink = ProblemSink()
+    try:
+        data = path.read_bytes()
+    except OSError as error:
+        sink.parse(f"cannot read file: {error.strerror or error}", Span.of_file(path))
+        return LoadedFile(path, launch_format(path), None, sink.problems)
+    fmt = launch_format(path, data)
+    if fmt == "python":
+        sink.unmodeled(
+            "Python launch files are not evaluated yet; what it launches is unknown",
+            Span.of_file(path),
+        )
+        return LoadedFile(path, fmt, None, sink.problems)
+    root = read_xml(path, data, sink) if fmt == "xml" else read_yaml(path, data, sink)
+    if root is None:
+        return LoadedFile(path, fmt, None, sink.problems)
+    launch = TagParser(path, sink).launch_file(root, fmt)
+    return LoadedFile(path, fmt, launch, sink.problems)

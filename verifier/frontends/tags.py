@@ -1,0 +1,504 @@
+"""Every tag of the ROS 2 XML and YAML launch frontends, turned into IR actions.
+
+One handler per tag, registered by name like launch's ``@expose_action``. Handlers read
+exactly the attributes the real ``parse`` methods read (launch, launch_ros, and the newer
+tags of kilted/rolling), so anything left unread is reported as launch would refuse it.
+"""
+
+from __future__ import annotations
+
+import contextlib
+from collections.abc import Callable
+from pathlib import Path
+
+from launchverify.frontends.entity import Entity
+from launchverify.frontends.reader import EntityReader, MissingAttribute
+from launchverify.ir import actions as a
+from launchverify.ir import subst as s
+from launchverify.problems import ProblemSink
+
+Handler = Callable[["TagParser", Entity], a.Action | None]
+TAGS: dict[str, Handler] = {}
+
+# Close misspellings and ROS 1 tags users carry over, named in the error message.
+TAG_HINTS = {
+    "prepend_env": "use <append_env prepend='true'>",
+    "rosparam": "ROS 1 tag; use <param from='file.yaml'> in a node",
+    "machine": "ROS 1 tag; not supported by ROS 2 launch",
+    "test": "ROS 1 tag; use launch_testing",
+    "composable_node": "only allowed inside <node_container> or <load_composable_node>",
+    "push_namespace": "use <push_ros_namespace>",
+    "pop_ros_namespace": "namespaces end with the enclosing <group>; there is no pop",
+}
+
+
+def tag(*names: str) -> Callable[[Handler], Handler]:
+    """Register a handler for one or more tag names."""
+
+    def register(handler: Handler) -> Handler:
+        for name in names:
+            if name in TAGS:
+                raise ValueError(f"tag {name} registered twice")
+            TAGS[name] = handler
+        return handler
+
+    return register
+
+
+class TagParser(EntityReader):
+    """Turns the entity tree of one file into IR actions."""
+
+    def __init__(self, path: Path, sink: ProblemSink) -> None:
+        super().__init__(path, sink)
+
+    def launch_file(self, root: Entity, fmt: str) -> a.LaunchFile:
+        """Convert the root entity; the root must be ``launch``."""
+        if root.tag != "launch":
+            self.sink.parse(f"expected `launch` as the root, found `{root.tag}`", root.span)
+            return a.LaunchFile(path=self.path, format=fmt, actions=(), span=root.span)
+        deprecated = self.plain(root, "deprecated")
+        actions = self.actions(root.children())
+        self.finish(root)
+        return a.LaunchFile(
+            path=self.path, format=fmt, actions=actions, span=root.span, deprecated=deprecated
+        )
+
+    def actions(self, entities: list[Entity]) -> tuple[a.Action, ...]:
+        """Convert a list of child entities, skipping the ones that cannot be read."""
+        out = []
+        for entity in entities:
+            action = self.action(entity)
+            if action is not None:
+                out.append(action)
+        return tuple(out)
+
+    def action(self, entity: Entity) -> a.Action | None:
+        """Convert one entity through its tag handler."""
+        handler = TAGS.get(entity.tag)
+        if handler is None:
+            hint = TAG_HINTS.get(entity.tag)
+            extra = f"; {hint}" if hint else ""
+            self.sink.parse(
+                f"unknown tag `{entity.tag}` (ros2 launch: Unrecognized entity){extra}",
+                entity.span,
+            )
+            return None
+        try:
+            action = handler(self, entity)
+        except MissingAttribute:
+            return None
+        self.finish(entity)
+        return action
+
+    def common(self, entity: Entity) -> dict[str, object]:
+        """Return the keyword arguments every action takes: span, condition, spans."""
+        return {
+            "span": entity.span,
+            "condition": self.condition(entity),
+            "attr_spans": self.spans(entity),
+        }
+
+    def pairs(self, entity: Entity, nested: str, first: str = "name",
+              second: str = "value") -> tuple[tuple[s.Sub, s.Sub], ...]:
+        """Read nested ``<keep name value>``-like entities as pairs."""
+        out = []
+        for item in entity.get_nested(nested) or []:
+            try:
+                out.append((self.req(item, first), self.req(item, second)))
+            except MissingAttribute:
+                continue
+            finally:
+                self.finish(item)
+        return tuple(out)
+
+    # ------------------------------------------------------------------ node pieces
+
+    def process_options(self, entity: Entity) -> a.ProcessOptions:
+        """Read the attributes shared by ``executable`` and ``node``."""
+        on_exit: tuple[a.Action, ...] = ()
+        on_exit_attr = entity.get("on_exit")
+        if on_exit_attr is not None:
+            if on_exit_attr.value == "shutdown":
+                on_exit = (a.Shutdown(span=on_exit_attr.span),)
+            else:
+                self.sink.parse(
+                    f"`on_exit` only accepts `shutdown`, got {on_exit_attr.value!r}",
+                    on_exit_attr.span,
+                )
+        return a.ProcessOptions(
+            name=self.sub(entity, "name") if entity.tag == "executable" else None,
+            cwd=self.sub(entity, "cwd"),
+            prefix=self.sub(entity, "launch-prefix"),
+            output=self.sub(entity, "output"),
+            respawn=self.sub_or_bool(entity, "respawn") or False,
+            respawn_delay=self.number(entity, "respawn_delay", float, minimum=0.0),
+            respawn_max_retries=self.number(entity, "respawn_max_retries", int),  # type: ignore[arg-type]
+            sigterm_timeout=self.number(entity, "sigterm_timeout", float, minimum=0.0),
+            sigkill_timeout=self.number(entity, "sigkill_timeout", float, minimum=0.0),
+            shell=self.flag(entity, "shell") or False,
+            emulate_tty=self.flag(entity, "emulate_tty"),
+            additional_env=self.pairs(entity, "env"),
+            on_exit=on_exit,
+        )
+
+    def remaps(self, entity: Entity) -> tuple[a.Remap, ...]:
+        """Read nested ``<remap from to>``."""
+        out = []
+        for item in entity.get_nested("remap") or []:
+            with contextlib.suppress(MissingAttribute):
+                out.append(a.Remap(src=self.req(item, "from"), dst=self.req(item, "to"),
+                                   span=item.span))
+            self.finish(item)
+        return tuple(out)
+
+    def parameters(self, entity: Entity) -> tuple[a.ParamEntry, ...]:
+        """Read nested ``<param>``: files (``from``) and named values, nesting allowed."""
+        out: list[a.ParamEntry] = []
+        for item in entity.get_nested("param") or []:
+            source = self.sub(item, "from")
+            if source is not None:
+                allow = self.sub_or_bool(item, "allow_substs")
+                if item.get("name") is not None:
+                    self.sink.parse("`name` and `from` cannot be used together", item.span)
+                out.append(a.ParamFile(path=source, span=item.span, allow_substs=allow or False))
+                self.finish(item)
+                continue
+            items = self.param_items(item, prefix=())
+            if items:
+                out.append(a.ParamDict(items=tuple(items), span=item.span))
+        return tuple(out)
+
+    def param_items(self, item: Entity, prefix: tuple[s.Sub, ...]) -> list[a.ParamItem]:
+        """Flatten one named ``<param>`` (with nested ``<param>`` children) into items."""
+        try:
+            name = self.req(item, "name")
+        except MissingAttribute:
+            return []
+        value_type = self.plain(item, "type")
+        nested = item.get_nested("param")
+        attr = item.get("value")
+        full = s.concat(_dotted((*prefix, name)))
+        out: list[a.ParamItem] = []
+        if attr is not None and nested:
+            self.sink.parse("nested parameters and `value` are mutually exclusive", item.span)
+        if nested:
+            for child in nested:
+                out.extend(self.param_items(child, (*prefix, name)))
+        elif attr is not None:
+            out.append(a.ParamItem(name=full, value=self.param_value(item, attr.value, value_type),
+                                   span=item.span))
+        else:
+            self.sink.parse(f"parameter {full.describe()!r} needs `value` or nested parameters",
+                            item.span)
+        self.finish(item)
+        return out
+
+    def param_value(self, item: Entity, raw: object, value_type: str | None) -> a.ParamValue:
+        """Read a parameter value: substituted text, ``value-sep`` lists, YAML literals."""
+        span = item.attrs["value"].span
+        if isinstance(raw, str):
+            separator = self.plain(item, "value-sep")
+            if separator is not None:
+                parts = raw.split(separator) if separator else [raw]
+                return a.ParamValue(
+                    value=tuple(self.parse_text(p, span) for p in parts), value_type=value_type
+                )
+            return a.ParamValue(value=self.parse_text(raw, span), value_type=value_type)
+        if isinstance(raw, list):
+            return a.ParamValue(
+                value=tuple(self.parse_text(x, span) if isinstance(x, str) else x for x in raw),
+                value_type=value_type,
+            )
+        return a.ParamValue(value=raw, value_type=value_type)  # type: ignore[arg-type]
+
+    def node_fields(self, entity: Entity) -> dict[str, object]:
+        """Read everything ``<node>`` and its variants share."""
+        if entity.get("node-name") is not None:
+            self.sink.parse(
+                "`node-name` is read by the parser but Node() has no such argument; use `name`",
+                entity.attrs["node-name"].span,
+            )
+        return {
+            **self.common(entity),
+            "executable": self.req(entity, "exec"),
+            "package": self.sub(entity, "pkg"),
+            "name": self.sub(entity, "name"),
+            "namespace": self.sub(entity, "namespace"),
+            "exec_name": self.sub(entity, "exec_name"),
+            "arguments": self.cmdline(entity, "args"),
+            "ros_arguments": self.cmdline(entity, "ros_args"),
+            "parameters": self.parameters(entity),
+            "remappings": self.remaps(entity),
+            "process": self.process_options(entity),
+        }
+
+    def composable_nodes(self, entity: Entity, *, required: bool) -> tuple[a.ComposableNode, ...]:
+        """Read nested ``<composable_node>`` (and ``<composable_lifecycle_node>``)."""
+        out = []
+        found = False
+        for nested_tag, lifecycle in (("composable_node", False),
+                                      ("composable_lifecycle_node", True)):
+            for item in entity.get_nested(nested_tag) or []:
+                found = True
+                node = self.composable_node(item, lifecycle)
+                if node is not None:
+                    out.append(node)
+        if required and not found:
+            self.sink.parse(f"`{entity.tag}` requires nested `composable_node`", entity.span)
+        return tuple(out)
+
+    def composable_node(self, item: Entity, lifecycle: bool) -> a.ComposableNode | None:
+        """Read one composable node description."""
+        try:
+            node = a.ComposableNode(
+                package=self.req(item, "pkg"),
+                plugin=self.req(item, "plugin"),
+                name=self.req(item, "name"),
+                namespace=self.sub(item, "namespace"),
+                condition=self.condition(item),
+                parameters=self.parameters(item),
+                remappings=self.remaps(item),
+                extra_arguments=tuple(
+                    a.ParamItem(name=n, value=a.ParamValue(value=v), span=item.span)
+                    for n, v in self.pairs(item, "extra_arg")
+                ),
+                lifecycle=lifecycle,
+                autostart=(self.sub_or_bool(item, "autostart") or False) if lifecycle else False,
+                span=item.span,
+                attr_spans=self.spans(item),
+            )
+        except MissingAttribute:
+            node = None
+        self.finish(item)
+        return node
+
+
+def _dotted(names: tuple[s.Sub, ...]) -> list[s.Sub]:
+    out: list[s.Sub] = []
+    for index, name in enumerate(names):
+        if index:
+            out.append(s.Text("."))
+        out.append(name)
+    return out
+
+
+# ---------------------------------------------------------------------- launch
+
+
+@tag("arg")
+def _arg(p: TagParser, e: Entity) -> a.Action:
+    name = p.plain(e, "name", required=True)
+    assert name is not None
+    choices = None
+    for item in e.get_nested("choice") or []:
+        value = p.plain(item, "value", required=False)
+        p.finish(item)
+        if value is not None:
+            choices = (*(choices or ()), value)
+    return a.DeclareArgument(
+        **p.common(e),  # type: ignore[arg-type]
+        name=name,
+        default=p.sub(e, "default"),
+        description=p.plain(e, "description"),
+        choices=choices,
+    )
+
+
+@tag("let")
+def _let(p: TagParser, e: Entity) -> a.Action:
+    return a.SetConfig(**p.common(e), name=p.req(e, "name"), value=p.req(e, "value"))  # type: ignore[arg-type]
+
+
+@tag("include")
+def _include(p: TagParser, e: Entity) -> a.Action:
+    arguments = []
+    for nested in ("arg", "let"):
+        for item in e.get_nested(nested) or []:
+            with contextlib.suppress(MissingAttribute):
+                arguments.append(a.IncludeArg(name=p.req(item, "name"),
+                                              value=p.req(item, "value"), span=item.span))
+            p.finish(item)
+    arguments.sort(key=lambda arg: (arg.span.line, arg.span.column))
+    return a.Include(**p.common(e), path=p.req(e, "file"), arguments=tuple(arguments))  # type: ignore[arg-type]
+
+
+@tag("group")
+def _group(p: TagParser, e: Entity) -> a.Action:
+    common = p.common(e)
+    scoped = p.flag(e, "scoped")
+    forwarding = p.flag(e, "forwarding")
+    keep = p.pairs(e, "keep")
+    children = [c for c in e.children() if c.tag != "keep"]
+    return a.Group(
+        **common,  # type: ignore[arg-type]
+        actions=p.actions(children),
+        scoped=True if scoped is None else scoped,
+        forwarding=True if forwarding is None else forwarding,
+        keep=keep,
+    )
+
+
+@tag("reset")
+def _reset(p: TagParser, e: Entity) -> a.Action:
+    return a.ResetConfigs(**p.common(e), keep=p.pairs(e, "keep"))  # type: ignore[arg-type]
+
+
+@tag("executable")
+def _executable(p: TagParser, e: Entity) -> a.Action:
+    common = p.common(e)
+    cmd = p.cmdline(e, "cmd", required=True)
+    return a.ExecuteProcess(**common, cmd=cmd, process=p.process_options(e))  # type: ignore[arg-type]
+
+
+@tag("set_env")
+def _set_env(p: TagParser, e: Entity) -> a.Action:
+    return a.SetEnv(**p.common(e), name=p.req(e, "name"), value=p.req(e, "value"))  # type: ignore[arg-type]
+
+
+@tag("unset_env")
+def _unset_env(p: TagParser, e: Entity) -> a.Action:
+    return a.UnsetEnv(**p.common(e), name=p.req(e, "name"))  # type: ignore[arg-type]
+
+
+@tag("append_env")
+def _append_env(p: TagParser, e: Entity) -> a.Action:
+    return a.AppendEnv(
+        **p.common(e),  # type: ignore[arg-type]
+        name=p.req(e, "name"),
+        value=p.req(e, "value"),
+        prepend=p.sub_or_bool(e, "prepend") or False,
+        separator=p.sub(e, "separator"),
+    )
+
+
+@tag("reset_env")
+def _reset_env(p: TagParser, e: Entity) -> a.Action:
+    return a.ResetEnv(**p.common(e))  # type: ignore[arg-type]
+
+
+@tag("log", "log_info", "log_warning", "log_debug", "log_error")
+def _log(p: TagParser, e: Entity) -> a.Action:
+    level = e.tag[4:] if e.tag != "log" else (p.plain(e, "level") or "info")
+    return a.Log(**p.common(e), message=p.req(e, "message"), level=level)  # type: ignore[arg-type]
+
+
+@tag("timer", "ros_timer")
+def _timer(p: TagParser, e: Entity) -> a.Action:
+    common = p.common(e)
+    period = p.typed(e, "period", float)
+    if period is None:
+        p.sink.parse(f"`{e.tag}` requires the attribute `period`", e.span)
+        raise MissingAttribute("period")
+    period_sub = (
+        p.parse_text(period, e.attrs["period"].span) if isinstance(period, str)
+        else s.Text(str(period))
+    )
+    cancel = p.sub_or_bool(e, "cancel_on_shutdown")
+    return a.Timer(
+        **common,  # type: ignore[arg-type]
+        period=period_sub,
+        actions=p.actions(e.children()),
+        cancel_on_shutdown=True if cancel is None else cancel,
+        ros_time=e.tag == "ros_timer",
+    )
+
+
+@tag("shutdown")
+def _shutdown(p: TagParser, e: Entity) -> a.Action:
+    return a.Shutdown(**p.common(e), reason=p.sub(e, "reason"))  # type: ignore[arg-type]
+
+
+@tag("for")
+def _for(p: TagParser, e: Entity) -> a.Action:
+    common = p.common(e)
+    return a.ForLoop(
+        **common,  # type: ignore[arg-type]
+        length=p.req(e, "len"),
+        name=p.plain(e, "name") or "",
+        actions=p.actions(e.children()),
+    )
+
+
+@tag("for_each")
+def _for_each(p: TagParser, e: Entity) -> a.Action:
+    common = p.common(e)
+    return a.ForEach(**common, values=p.req(e, "values"), actions=p.actions(e.children()))  # type: ignore[arg-type]
+
+
+# ---------------------------------------------------------------------- launch_ros
+
+
+@tag("node")
+def _node(p: TagParser, e: Entity) -> a.Action:
+    return a.Node(**p.node_fields(e))  # type: ignore[arg-type]
+
+
+@tag("lifecycle_node")
+def _lifecycle_node(p: TagParser, e: Entity) -> a.Action:
+    fields = p.node_fields(e)
+    if fields["name"] is None:
+        p.sink.parse("`lifecycle_node` requires the attribute `name`", e.span)
+    if fields["namespace"] is None:
+        p.sink.parse("`lifecycle_node` requires the attribute `namespace`", e.span)
+    return a.LifecycleNode(**fields, autostart=p.sub_or_bool(e, "autostart") or False)  # type: ignore[arg-type]
+
+
+@tag("node_container")
+def _node_container(p: TagParser, e: Entity) -> a.Action:
+    fields = p.node_fields(e)
+    return a.ComposableNodeContainer(
+        **fields,  # type: ignore[arg-type]
+        composable_nodes=p.composable_nodes(e, required=False),
+    )
+
+
+@tag("load_composable_node")
+def _load_composable_node(p: TagParser, e: Entity) -> a.Action:
+    common = p.common(e)
+    return a.LoadComposableNodes(
+        **common,  # type: ignore[arg-type]
+        target=p.req(e, "target"),
+        composable_nodes=p.composable_nodes(e, required=True),
+    )
+
+
+@tag("push_ros_namespace", "push-ros-namespace")
+def _push_ros_namespace(p: TagParser, e: Entity) -> a.Action:
+    return a.PushNamespace(**p.common(e), namespace=p.req(e, "namespace"))  # type: ignore[arg-type]
+
+
+@tag("set_remap")
+def _set_remap(p: TagParser, e: Entity) -> a.Action:
+    return a.SetRemap(**p.common(e), src=p.req(e, "from"), dst=p.req(e, "to"))  # type: ignore[arg-type]
+
+
+@tag("set_parameter")
+def _set_parameter(p: TagParser, e: Entity) -> a.Action:
+    common = p.common(e)
+    name = p.req(e, "name")
+    raw = e.get("value")
+    if raw is None:
+        p.sink.parse("`set_parameter` requires the attribute `value`", e.span)
+        raise MissingAttribute("value")
+    value = p.param_value(e, raw.value, None)
+    return a.SetParameter(**common, name=name, value=value)  # type: ignore[arg-type]
+
+
+@tag("set_parameters_from_file")
+def _set_parameters_from_file(p: TagParser, e: Entity) -> a.Action:
+    return a.SetParametersFromFile(**p.common(e), filename=p.req(e, "filename"))  # type: ignore[arg-type]
+
+
+@tag("set_use_sim_time")
+def _set_use_sim_time(p: TagParser, e: Entity) -> a.Action:
+    common = p.common(e)
+    value = p.sub_or_bool(e, "value")
+    if value is None:
+        p.sink.parse("`set_use_sim_time` requires the attribute `value`", e.span)
+        raise MissingAttribute("value")
+    return a.SetUseSimTime(**common, value=value)  # type: ignore[arg-type]
+
+
+@tag("set_ros_log_dir")
+def _set_ros_log_dir(p: TagParser, e: Entity) -> a.Action:
+    return a.SetRosLogDir(**p.common(e), new_log_dir=p.req(e, "new_log_dir"))  # type: ignore[arg-type]

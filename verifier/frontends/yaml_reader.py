@@ -1,0 +1,175 @@
+"""Read a ``.launch.yaml`` file into entities with line and column spans.
+
+PyYAML's composer gives every node its position; we build entities from the node tree
+ourselves so that spans survive and duplicate keys (which PyYAML silently collapses) are
+seen. Aliases can make a small file expand enormously, so conversion has a node budget.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import yaml
+
+from launchverify.frontends.entity import Attr, Entity, Scalar
+from launchverify.problems import ProblemSink
+from launchverify.span import Span
+
+MAX_BYTES = 5 * 1024 * 1024
+MAX_NODES = 200_000
+
+
+class _Budget(Exception):
+    """Raised when alias expansion makes the document too large."""
+
+
+class YamlLoadError(Exception):
+    """A YAML document that cannot be read; carries its position."""
+
+    def __init__(self, message: str, line: int, column: int) -> None:
+        super().__init__(message)
+        self.line = line
+        self.column = column
+
+
+def span_of(path: Path, node: yaml.Node) -> Span:
+    """Return the span of a YAML node (PyYAML marks are 0-based)."""
+    start, end = node.start_mark, node.end_mark
+    return Span(path, start.line + 1, start.column + 1, end.line + 1, end.column + 1)
+
+
+def compose(text: str) -> yaml.Node | None:
+    """Compose one YAML document safely, raising ``YamlLoadError`` with a position."""
+    try:
+        return yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.MarkedYAMLError as error:
+        mark = error.problem_mark or error.context_mark
+        line, column = (mark.line + 1, mark.column + 1) if mark else (1, 1)
+        raise YamlLoadError(f"invalid YAML: {error.problem or error}", line, column) from None
+    except yaml.YAMLError as error:
+        raise YamlLoadError(f"invalid YAML: {error}", 1, 1) from None
+    except RecursionError:
+        raise YamlLoadError("invalid YAML: nesting too deep", 1, 1) from None
+
+
+class ScalarReader:
+    """Turns scalar nodes into Python values by YAML 1.1 rules (as PyYAML's safe_load)."""
+
+    def __init__(self) -> None:
+        self._constructor = yaml.SafeLoader("")
+
+    def value(self, node: yaml.ScalarNode) -> Scalar:
+        """Return the typed value of a scalar node."""
+        try:
+            result = self._constructor.construct_object(node, deep=True)
+        except yaml.YAMLError:
+            return str(node.value)
+        if isinstance(result, (str, int, float, bool)) or result is None:
+            return result
+        return str(node.value)
+
+
+def read_yaml(path: Path, data: bytes, sink: ProblemSink) -> Entity | None:
+    """Parse YAML launch text into the root entity; record problems, never raise."""
+    whole = Span.of_file(path)
+    if len(data) > MAX_BYTES:
+        sink.parse(f"file is larger than {MAX_BYTES // (1024 * 1024)} MiB; not read", whole)
+        return None
+    try:
+        root = compose(data.decode("utf-8", errors="replace"))
+    except YamlLoadError as error:
+        sink.parse(str(error), Span(path, error.line, error.column))
+        return None
+    if not isinstance(root, yaml.MappingNode) or len(root.value) != 1:
+        sink.parse("a YAML launch file must be a mapping with one root key, 'launch'", whole)
+        return None
+    key, value = root.value[0]
+    converter = _Converter(path, sink)
+    try:
+        return converter.entity(str(key.value), value, span_of(path, key))
+    except _Budget:
+        sink.parse("YAML aliases expand to more than the allowed document size", whole)
+        return None
+
+
+class _Converter:
+    def __init__(self, path: Path, sink: ProblemSink) -> None:
+        self.path = path
+        self.sink = sink
+        self.scalars = ScalarReader()
+        self.count = 0
+
+    def _tick(self) -> None:
+        self.count += 1
+        if self.count > MAX_NODES:
+            raise _Budget
+
+    def entity(self, tag: str, node: yaml.Node, span: Span) -> Entity:
+        self._tick()
+        entity = Entity(tag=tag, span=span, format="yaml")
+        if isinstance(node, yaml.SequenceNode):
+            entity.child_list = self.children(node)
+            return entity
+        if isinstance(node, yaml.ScalarNode):
+            if node.value not in ("", "~", "null"):
+                self.sink.parse(
+                    f"`{tag}` must hold a mapping of attributes or a list of children",
+                    span_of(self.path, node),
+                )
+            return entity
+        assert isinstance(node, yaml.MappingNode)
+        for key_node, value_node in node.value:
+            self._tick()
+            name = str(key_node.value)
+            key_span = span_of(self.path, key_node)
+            if name in entity.attrs or name in entity.nested or (
+                name == "children" and entity.child_list is not None
+            ):
+                self.sink.parse(
+                    f"duplicate key `{name}` in `{tag}`: ros2 launch silently uses the last one",
+                    key_span,
+                )
+            if name == "children" and isinstance(value_node, yaml.SequenceNode):
+                entity.child_list = self.children(value_node)
+                entity.attrs.pop(name, None)
+            elif isinstance(value_node, yaml.SequenceNode) and value_node.value and all(
+                isinstance(item, yaml.MappingNode) for item in value_node.value
+            ):
+                entity.nested[name] = [
+                    self.entity(name, item, span_of(self.path, item)) for item in value_node.value
+                ]
+            else:
+                entity.attrs[name] = Attr(self.plain(value_node), key_span)
+        return entity
+
+    def children(self, node: yaml.SequenceNode) -> list[Entity]:
+        out: list[Entity] = []
+        for item in node.value:
+            self._tick()
+            if not isinstance(item, yaml.MappingNode) or len(item.value) != 1:
+                self.sink.parse(
+                    "each child must be a mapping with one key, the entity type",
+                    span_of(self.path, item),
+                )
+                continue
+            key, value = item.value[0]
+            out.append(self.entity(str(key.value), value, span_of(self.path, key)))
+        return out
+
+    def plain(self, node: yaml.Node) -> Scalar | list[Scalar]:
+        """Return a scalar or a list of scalars; anything deeper becomes its YAML text."""
+        self._tick()
+        if isinstance(node, yaml.ScalarNode):
+            return self.scalars.value(node)
+        if isinstance(node, yaml.SequenceNode):
+            items: list[Scalar] = []
+            for item in node.value:
+                self._tick()
+                if isinstance(item, yaml.ScalarNode):
+                    items.append(self.scalars.value(item))
+                else:
+                    self.sink.parse("nested collections are not allowed here",
+                                    span_of(self.path, item))
+            return items
+        self.sink.parse("a mapping is not allowed here", span_of(self.path, node))
+        return None

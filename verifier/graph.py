@@ -1,0 +1,262 @@
+"""The launch graph: everything one evaluation found, ready for rules and reporters.
+
+Every record carries an ``Origin``: where it is written, the include chain that reached it
+(root first) and its path condition (the guards that must hold for it to run). Values are
+residual expressions (``Text`` when concrete). ``LaunchGraph.base`` gives the view under
+the arguments as given (command line, then defaults): what ``ros2 launch`` would do.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from launchverify.evaluate.values import BaseReducer, describe_value, text_of
+from launchverify.frontends import LoadedFile
+from launchverify.ir import actions as a
+from launchverify.ir.subst import Sub
+from launchverify.ir.symbolic import PathCondition, describe_path
+from launchverify.problems import Problem
+from launchverify.span import Span
+
+
+@dataclass(frozen=True, slots=True)
+class Origin:
+    """Where a record comes from: span, include chain (root first), path condition."""
+
+    span: Span
+    chain: tuple[Span, ...] = ()
+    path: PathCondition = ()
+
+    def condition_text(self) -> str | None:
+        """Return the path condition as text, or ``None`` when unconditional."""
+        return describe_path(self.path)
+
+
+@dataclass(frozen=True, slots=True)
+class RemapRecord:
+    """One remap rule applying to a node, in the order ROS 2 applies them."""
+
+    src: Sub
+    dst: Sub
+    origin: Origin
+    scope: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class ParamRecord:
+    """One parameter source of a node: a file, or one named value."""
+
+    origin: Origin
+    file: Sub | None = None
+    name: Sub | None = None
+    value: object = None
+    scope: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class NodeRecord:
+    """A ROS node that the launch starts (process, lifecycle, container or component)."""
+
+    kind: str
+    origin: Origin
+    package: Sub | None
+    executable: Sub | None
+    name: Sub | None
+    namespace: Sub | None
+    fqn: Sub | None
+    remappings: tuple[RemapRecord, ...] = ()
+    parameters: tuple[ParamRecord, ...] = ()
+    container: Sub | None = None
+    deferred: bool = False
+
+    @property
+    def lifecycle(self) -> bool:
+        """Return whether the node is a managed (lifecycle) node."""
+        return self.kind in ("lifecycle_node", "composable_lifecycle_node")
+
+
+@dataclass(frozen=True, slots=True)
+class ProcessRecord:
+    """A plain process (``<executable>``)."""
+
+    origin: Origin
+    cmd: tuple[Sub, ...]
+    name: Sub | None
+
+
+@dataclass(frozen=True, slots=True)
+class ArgumentRecord:
+    """A launch argument declaration as it executed."""
+
+    name: str
+    origin: Origin
+    default: Sub | None
+    description: str | None
+    choices: tuple[str, ...] | None
+    value: Sub
+    action: a.DeclareArgument
+
+
+@dataclass(frozen=True, slots=True)
+class StaticArgument:
+    """An argument found by launch's static discovery of an included file."""
+
+    name: str
+    has_default: bool
+    conditional: bool
+    span: Span
+    description: str | None
+    via_includes: tuple[frozenset[str], ...] = ()
+
+
+@dataclass
+class IncludeRecord:
+    """An include as it executed, and what its subtree declared and read."""
+
+    origin: Origin
+    action: a.Include
+    location: Sub
+    target: Path | None
+    status: str
+    arguments: tuple[tuple[str | None, Sub, Span], ...] = ()
+    static_arguments: tuple[StaticArgument, ...] = ()
+    declared: set[str] = field(default_factory=set)
+    reads: set[str] = field(default_factory=set)
+    complete: bool = True
+    note: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class ConfigRead:
+    """A read of a launch configuration (``$(var name)``)."""
+
+    name: str
+    origin: Origin
+    found: bool
+    has_default: bool
+
+
+@dataclass(frozen=True, slots=True)
+class PackageRef:
+    """A reference to a package by name (``pkg=``, ``$(find-pkg-share)``...)."""
+
+    name: str
+    origin: Origin
+    found: bool
+    what: str
+
+
+@dataclass(frozen=True, slots=True)
+class FileRef:
+    """A file the launch needs (parameter file, ``$(file-content)``)."""
+
+    location: str
+    origin: Origin
+    exists: bool
+    what: str
+    note: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class NameRecord:
+    """A ROS name launch validates or passes on (node name, namespace, remap side)."""
+
+    kind: str
+    value: str
+    origin: Origin
+
+
+@dataclass(frozen=True, slots=True)
+class ProblemRecord:
+    """A frontend or evaluation problem, with how the file was reached."""
+
+    problem: Problem
+    chain: tuple[Span, ...] = ()
+
+    @property
+    def origin(self) -> Origin:
+        """Return where the problem is, with the include chain that reached it."""
+        return Origin(self.problem.span, self.chain)
+
+
+@dataclass(frozen=True, slots=True)
+class SkippedAction:
+    """An action whose condition is constant false: it never runs."""
+
+    action: a.Action
+    origin: Origin
+
+
+@dataclass
+class LaunchGraph:
+    """Everything one evaluation of a root launch file found."""
+
+    root: Path
+    pinned: dict[str, str]
+    included_elsewhere: bool = False
+    files: dict[Path, LoadedFile] = field(default_factory=dict)
+    nodes: list[NodeRecord] = field(default_factory=list)
+    processes: list[ProcessRecord] = field(default_factory=list)
+    includes: list[IncludeRecord] = field(default_factory=list)
+    arguments: list[ArgumentRecord] = field(default_factory=list)
+    reads: list[ConfigRead] = field(default_factory=list)
+    packages: list[PackageRef] = field(default_factory=list)
+    file_refs: list[FileRef] = field(default_factory=list)
+    names: list[NameRecord] = field(default_factory=list)
+    problems: list[ProblemRecord] = field(default_factory=list)
+    skipped: list[SkippedAction] = field(default_factory=list)
+    root_arguments: tuple[StaticArgument, ...] = ()
+    opaque_files: set[Path] = field(default_factory=set)
+
+    def __post_init__(self) -> None:
+        self._base = BaseReducer(self.pinned)
+
+    # ------------------------------------------------------------------ base view
+
+    def base(self, sub: Sub | None) -> str | None:
+        """Return a value under the given arguments and defaults, or ``None`` if unknown.
+
+        Examples:
+            >>> from launchverify.ir.symbolic import Arg
+            >>> from launchverify.ir.subst import Text
+            >>> LaunchGraph(Path("x"), {}).base(Arg("robot", Text("r1")))
+            'r1'
+        """
+        if sub is None:
+            return None
+        return text_of(self._base.reduce(sub))
+
+    def runs(self, origin: Origin) -> bool | None:
+        """Return whether a record runs under the given arguments (``None``: unknown)."""
+        result: bool | None = True
+        for guard in origin.path:
+            verdict = self._base.guard(guard)
+            if verdict is False:
+                return False
+            if verdict is None:
+                result = None
+        return result
+
+    def display(self, sub: Sub | None) -> str | None:
+        """Return the base value if known, else the expression."""
+        if sub is None:
+            return None
+        return self.base(sub) or describe_value(self._base.reduce(sub))
+
+    # ------------------------------------------------------------------ queries
+
+    def running_nodes(self) -> Iterator[NodeRecord]:
+        """Yield the nodes that run under the given arguments."""
+        for node in self.nodes:
+            if self.runs(node.origin):
+                yield node
+
+    def declared_names(self) -> set[str]:
+        """Return every argument name declared anywhere in the evaluation."""
+        return {arg.name for arg in self.arguments}
+
+    def read_names(self) -> set[str]:
+        """Return every configuration name read anywhere in the evaluation."""
+        return {read.name for read in self.reads}

@@ -1,0 +1,159 @@
+"""Residual values: what evaluation leaves when something is not known statically.
+
+The evaluator reduces every substitution as far as the launch files allow. What depends on
+launch arguments, the environment of the machine, or things outside the workspace stays as
+an input leaf (``Arg``, ``EnvInput``, ``Unknown``); values that depend on which path was
+taken become ``Select``. Path conditions are conjunctions of ``Guard``s. Later stages (the
+SMT layer) give these a meaning over every argument assignment.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from launchverify.ir.subst import Sub
+
+
+@dataclass(frozen=True, slots=True)
+class Arg(Sub):
+    """A launch argument set by the user: its command-line value if given, else ``default``.
+
+    ``default`` is ``None`` for arguments declared without default (required inputs).
+    """
+
+    name: str
+    default: Sub | None = None
+
+    def describe(self) -> str:
+        return f"$(var {self.name})"
+
+    def children(self) -> tuple[Sub, ...]:
+        return () if self.default is None else (self.default,)
+
+
+@dataclass(frozen=True, slots=True)
+class EnvInput(Sub):
+    """An environment variable of the machine that runs the launch."""
+
+    name: str
+    default: Sub | None = None
+
+    def describe(self) -> str:
+        if self.default is None:
+            return f"$(env {self.name})"
+        return f"$(env {self.name} {self.default.describe() or chr(39) * 2})"
+
+    def children(self) -> tuple[Sub, ...]:
+        return () if self.default is None else (self.default,)
+
+
+@dataclass(frozen=True, slots=True)
+class Unknown(Sub):
+    """A value that cannot be known statically (command output, a file outside the tree)."""
+
+    reason: str
+
+    def describe(self) -> str:
+        return f"<{self.reason}>"
+
+
+@dataclass(frozen=True, slots=True)
+class Unset(Sub):
+    """No value: a configuration not set on some path (reading it fails at run time)."""
+
+    name: str
+
+    def describe(self) -> str:
+        return f"<unset {self.name}>"
+
+
+class Guard:
+    """One boolean fact of a path condition."""
+
+    __slots__ = ()
+
+    def describe(self) -> str:
+        """Return a readable form for messages and ``graph --symbolic``."""
+        raise NotImplementedError
+
+
+@dataclass(frozen=True, slots=True)
+class Truthy(Guard):
+    """The expression is ``true``/``1`` by the condition rule (``false``/``0`` if negated)."""
+
+    expression: Sub
+    negate: bool = False
+
+    def describe(self) -> str:
+        text = self.expression.describe()
+        return f"not {text}" if self.negate else text
+
+
+@dataclass(frozen=True, slots=True)
+class StrEquals(Guard):
+    """Exact string equality (``LaunchConfigurationEquals``); ``right=None`` means unset."""
+
+    left: Sub
+    right: Sub | None
+    negate: bool = False
+
+    def describe(self) -> str:
+        op = "!=" if self.negate else "=="
+        right = "<unset>" if self.right is None else repr(self.right.describe())
+        return f"{self.left.describe()} {op} {right}"
+
+
+@dataclass(frozen=True, slots=True)
+class Opaque(Guard):
+    """A guard with no model (Python predicate, event that may never happen)."""
+
+    description: str
+
+    def describe(self) -> str:
+        return f"<{self.description}>"
+
+
+PathCondition = tuple[Guard, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class Select(Sub):
+    """``then`` when every guard holds, else ``otherwise``: a value that depends on the path."""
+
+    guards: PathCondition
+    then: Sub
+    otherwise: Sub
+
+    def describe(self) -> str:
+        cond = " and ".join(g.describe() for g in self.guards)
+        return f"({self.then.describe()} if {cond} else {self.otherwise.describe()})"
+
+    def children(self) -> tuple[Sub, ...]:
+        return (self.then, self.otherwise)
+
+
+def describe_path(path: PathCondition) -> str | None:
+    """Return the text of a path condition, or ``None`` when it always holds."""
+    if not path:
+        return None
+    return " and ".join(g.describe() for g in path)
+
+
+@dataclass(frozen=True, slots=True)
+class NsPrefix(Sub):
+    """launch_ros ``prefix_namespace(base, ns)`` when either side is not yet known.
+
+    ``absolute`` also applies ``make_namespace_absolute``; ``base=None`` means no base.
+    """
+
+    base: Sub | None
+    ns: Sub
+    absolute: bool = True
+
+    def describe(self) -> str:
+        if self.base is None:
+            return self.ns.describe()
+        return f"{self.base.describe()}/{self.ns.describe()}"
+
+    def children(self) -> tuple[Sub, ...]:
+        return (self.ns,) if self.base is None else (self.base, self.ns)

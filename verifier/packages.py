@@ -1,0 +1,226 @@
+"""Resolve ROS package names to folders, with or without ROS 2 installed.
+
+Packages come from the ``package.xml`` files of the workspace (sources), from the
+workspace's ``install/`` tree, and from the ament index of every prefix in
+``AMENT_PREFIX_PATH``. A path written through the install layout
+(``<share of pkg>/launch/x.launch.xml``) is found in the package's sources when only
+sources are present: first at the same relative path, then by file name.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import re
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+SKIP_DIRS = frozenset({
+    ".git", ".hg", ".svn", "build", "install", "log", "node_modules", "__pycache__",
+    ".venv", "venv", ".tox", ".mypy_cache", ".pytest_cache", ".ruff_cache",
+})
+IGNORE_MARKERS = ("COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE")
+MAX_SCANNED_DIRS = 100_000
+_NAME = re.compile(rb"<name>\s*([^<\s]+)\s*</name>")
+
+
+@dataclass(frozen=True, slots=True)
+class Package:
+    """A package: its source folder (workspace) and/or its installed prefix and share."""
+
+    name: str
+    source: Path | None = None
+    prefix: Path | None = None
+
+    @property
+    def share(self) -> Path:
+        """Return the folder ``$(find-pkg-share)`` points at (sources when not installed)."""
+        if self.prefix is not None:
+            return self.prefix / "share" / self.name
+        assert self.source is not None
+        return self.source
+
+    @property
+    def installed(self) -> bool:
+        """Return whether an install prefix is known."""
+        return self.prefix is not None
+
+
+def package_name(package_xml: Path) -> str | None:
+    """Return the ``<name>`` of a package manifest, or ``None`` if unreadable."""
+    try:
+        data = package_xml.read_bytes()[:200_000]
+    except OSError:
+        return None
+    match = _NAME.search(data)
+    return match.group(1).decode("utf-8", "replace") if match else None
+
+
+def scan_sources(root: Path) -> Iterator[tuple[str, Path]]:
+    """Yield ``(name, folder)`` for every package manifest below ``root``.
+
+    Skips build artefacts, hidden folders and folders marked ``COLCON_IGNORE``, and does
+    not descend into a package (packages do not nest).
+    """
+    scanned = 0
+    for current, dirs, files in os.walk(root):
+        scanned += 1
+        if scanned > MAX_SCANNED_DIRS:
+            return
+        if any(marker in files for marker in IGNORE_MARKERS):
+            dirs[:] = []
+            continue
+        if "package.xml" in files:
+            name = package_name(Path(current) / "package.xml")
+            if name:
+                yield name, Path(current)
+            dirs[:] = []
+            continue
+        dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS and not d.startswith("."))
+
+
+def scan_prefix(prefix: Path) -> Iterator[str]:
+    """Yield the package names registered in one install prefix's ament index."""
+    marker_dir = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    try:
+        yield from sorted(entry.name for entry in marker_dir.iterdir())
+    except OSError:
+        return
+
+
+def workspace_prefixes(workspace: Path) -> list[Path]:
+    """Return the install prefixes of a colcon workspace (merged or isolated layout)."""
+    install = workspace / "install"
+    if not install.is_dir():
+        return []
+    prefixes = [install] if (install / "share" / "ament_index").is_dir() else []
+    with contextlib.suppress(OSError):
+        prefixes.extend(
+            child for child in sorted(install.iterdir())
+            if (child / "share" / "ament_index").is_dir()
+        )
+    return prefixes
+
+
+class PackageIndex:
+    """Every package launchverify can see, by name."""
+
+    def __init__(self, workspaces: Iterable[Path] = (), prefixes: Iterable[Path] = ()) -> None:
+        self._packages: dict[str, Package] = {}
+        self.workspaces = [w.resolve() for w in workspaces]
+        self.prefixes = [p.resolve() for p in prefixes]
+        self.has_install = bool(self.prefixes)
+        for prefix in self.prefixes:
+            for name in scan_prefix(prefix):
+                self._packages.setdefault(name, Package(name, prefix=prefix))
+        for workspace in self.workspaces:
+            for prefix in workspace_prefixes(workspace):
+                self.has_install = True
+                for name in scan_prefix(prefix):
+                    self._add(Package(name, prefix=prefix))
+            for name, folder in scan_sources(workspace):
+                self._add(Package(name, source=folder))
+
+    @classmethod
+    def from_environment(cls, workspaces: Iterable[Path]) -> PackageIndex:
+        """Build the index for these workspaces plus ``AMENT_PREFIX_PATH``."""
+        raw = os.environ.get("AMENT_PREFIX_PATH", "")
+        prefixes = [Path(p) for p in raw.split(os.pathsep) if p]
+        return cls(workspaces, prefixes)
+
+    def _add(self, package: Package) -> None:
+        known = self._packages.get(package.name)
+        if known is None:
+            self._packages[package.name] = package
+            return
+        self._packages[package.name] = Package(
+            package.name,
+            source=known.source or package.source,
+            prefix=package.prefix or known.prefix,
+        )
+
+    def find(self, name: str) -> Package | None:
+        """Return the package called ``name``, if any."""
+        return self._packages.get(name)
+
+    def names(self) -> list[str]:
+        """Return every known package name, sorted."""
+        return sorted(self._packages)
+
+    def owner(self, path: Path) -> Package | None:
+        """Return the package whose share or source folder contains ``path``."""
+        best: Package | None = None
+        best_len = -1
+        for package in self._packages.values():
+            for root in (package.share, package.source):
+                if root is None:
+                    continue
+                if path.is_relative_to(root) and len(root.parts) > best_len:
+                    best, best_len = package, len(root.parts)
+        return best
+
+    def locate(self, path: Path) -> Path | None:
+        """Find a file as ros2 launch would, falling back from install layout to sources.
+
+        Returns the existing file, or ``None``.
+        """
+        if path.is_file():
+            return path
+        package = self.owner(path)
+        if package is None or package.source is None:
+            return None
+        relative = path.relative_to(package.share) if path.is_relative_to(package.share) else None
+        if relative is None:
+            return None
+        candidate = package.source / relative
+        if candidate.is_file():
+            return candidate
+        return _by_name(package.source, relative)
+
+
+def _by_name(source: Path, relative: Path) -> Path | None:
+    """Find ``relative``'s file name below ``source``; prefer the longest matching suffix."""
+    matches: list[Path] = []
+    for current, dirs, files in os.walk(source):
+        dirs[:] = [d for d in dirs if d not in SKIP_DIRS and not d.startswith(".")]
+        if relative.name in files:
+            matches.append(Path(current) / relative.name)
+        if len(matches) > 50:
+            break
+    if not matches:
+        return None
+
+    def shared_suffix(candidate: Path) -> int:
+        count = 0
+        for mine, theirs in zip(reversed(candidate.parts), reversed(relative.parts), strict=False):
+            if mine != theirs:
+                break
+            count += 1
+        return count
+
+    matches.sort(key=lambda m: (-shared_suffix(m), len(m.parts), str(m)))
+    return matches[0]
+
+
+def find_workspace(start: Path) -> Path:
+    """Return the nearest colcon workspace or git root above ``start``.
+
+    Falls back to the folder above the outermost package containing ``start``, or to
+    ``start``'s own folder.
+    """
+    start = start.resolve()
+    folder = start if start.is_dir() else start.parent
+    outermost_package: Path | None = None
+    for candidate in (folder, *folder.parents):
+        if (candidate / "src").is_dir() and any(
+            (candidate / marker).exists() for marker in ("install", "build", "log", ".colcon")
+        ):
+            return candidate
+        if (candidate / ".git").exists():
+            return candidate
+        if (candidate / "package.xml").is_file():
+            outermost_package = candidate
+    if outermost_package is not None:
+        return outermost_package.parent
+    return folder

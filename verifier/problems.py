@@ -1,0 +1,49 @@
+"""Diagnostics produced before rules run: frontends and the evaluator record, rules report.
+
+A frontend never reports; it records a ``Problem`` and carries on. The health rules
+(LV001 parse-error, LV002 evaluation-error, LV003 unmodeled-construct) turn them into
+findings, so every finding still comes from a rule module.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+
+from launchverify.span import Span
+
+
+class ProblemKind(enum.Enum):
+    """What went wrong, which decides the rule that reports it."""
+
+    PARSE = "parse"
+    EVALUATION = "evaluation"
+    UNMODELED = "unmodeled"
+
+
+@dataclass(frozen=True, slots=True)
+class Problem:
+    """One diagnostic with where it happened."""
+
+    kind: ProblemKind
+    message: str
+    span: Span
+
+
+class ProblemSink:
+    """Collects problems while a file is parsed or evaluated."""
+
+    def __init__(self) -> None:
+        self.problems: list[Problem] = []
+
+    def parse(self, message: str, span: Span) -> None:
+        """Record that the file cannot be loaded as written (ros2 launch would fail)."""
+        self.problems.append(Problem(ProblemKind.PARSE, message, span))
+
+    def evaluation(self, message: str, span: Span) -> None:
+        """Record that evaluating a construct fails (ros2 launch would fail at run time)."""
+        self.problems.append(Problem(ProblemKind.EVALUATION, message, span))
+
+    def unmodeled(self, message: str, span: Span) -> None:
+        """Record that launchverify does not understand a construct (analysis incomplete)."""
+        self.problems.append(Problem(ProblemKind.UNMODELED, message, span))

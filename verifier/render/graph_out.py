@@ -1,0 +1,146 @@
+"""``launchverify graph``: what a launch would start, as JSON or text.
+
+By default only what runs under the given arguments (command line, then defaults) is
+shown, with concrete values. ``symbolic`` shows every action the evaluation reached with
+its path condition and values as expressions over the arguments.
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any, TextIO
+
+from launchverify.engine import display_path
+from launchverify.graph import LaunchGraph, NodeRecord, Origin, ParamRecord
+from launchverify.ir.subst import Sub
+from launchverify.models.ros_names import node_fqn
+
+
+class GraphView:
+    """Turns a graph into plain data, concrete or symbolic."""
+
+    def __init__(self, graph: LaunchGraph, symbolic: bool) -> None:
+        self.graph = graph
+        self.symbolic = symbolic
+
+    def value(self, sub: Sub | None) -> str | None:
+        """Return a value for output."""
+        if sub is None:
+            return None
+        if self.symbolic:
+            concrete = self.graph.base(sub) if not _has_inputs(sub) else None
+            return concrete if concrete is not None else sub.describe()
+        return self.graph.display(sub)
+
+    def shown(self, origin: Origin) -> bool:
+        """Return whether a record belongs in the output."""
+        return self.symbolic or self.graph.runs(origin) is not False
+
+    def where(self, origin: Origin) -> dict[str, Any]:
+        """Return the location fields of a record."""
+        return {
+            "condition": origin.condition_text(),
+            "file": display_path(origin.span.file),
+            "line": origin.span.line,
+        }
+
+    def node(self, node: NodeRecord) -> dict[str, Any]:
+        """Return one node as a dict in the documented shape."""
+        name = self.value(node.name)
+        namespace = self.value(node.namespace)
+        fqn = self.value(node.fqn)
+        if fqn is None and name is not None and not self.symbolic:
+            fqn = node_fqn(namespace or "/", name)
+        return {
+            "fqn": fqn,
+            "name": name,
+            "namespace": namespace,
+            "package": self.value(node.package),
+            "executable": self.value(node.executable),
+            "kind": node.kind,
+            "lifecycle": node.lifecycle,
+            "container": self.value(node.container),
+            "remappings": [[self.value(r.src), self.value(r.dst)] for r in node.remappings],
+            "parameters": [self.parameter(p) for p in node.parameters],
+            **self.where(node.origin),
+        }
+
+    def parameter(self, param: ParamRecord) -> dict[str, Any]:
+        """Return one parameter source."""
+        if param.file is not None:
+            return {"file": self.value(param.file)}
+        return {"name": self.value(param.name), "value": self.plain(param.value)}
+
+    def plain(self, value: object) -> object:
+        """Return a parameter value as JSON data."""
+        if isinstance(value, Sub):
+            return self.value(value)
+        if isinstance(value, tuple):
+            return [self.plain(v) for v in value]
+        return value
+
+    def document(self) -> dict[str, Any]:
+        """Return the whole graph as the documented JSON object."""
+        graph = self.graph
+        return {
+            "nodes": [self.node(n) for n in graph.nodes if self.shown(n.origin)],
+            "processes": [
+                {"cmd": [self.value(c) for c in p.cmd], "name": self.value(p.name),
+                 **self.where(p.origin)}
+                for p in graph.processes if self.shown(p.origin)
+            ],
+            "includes": [
+                {"file": display_path(i.target) if i.target else self.value(i.location),
+                 "status": i.status,
+                 "arguments": {n: self.value(v) for n, v, _ in i.arguments if n is not None},
+                 **self.where(i.origin)}
+                for i in graph.includes if self.shown(i.origin)
+            ],
+            "arguments": [
+                {"name": a.name, "default": self.value(a.default), "value": self.value(a.value),
+                 "description": a.description,
+                 "choices": list(a.choices) if a.choices is not None else None,
+                 **self.where(a.origin)}
+                for a in graph.arguments if self.shown(a.origin)
+            ],
+        }
+
+
+def _has_inputs(sub: Sub) -> bool:
+    from launchverify.ir.subst import walk
+    from launchverify.ir.symbolic import Arg, EnvInput
+
+    return any(isinstance(x, (Arg, EnvInput)) for x in walk(sub))
+
+
+def render_graph_json(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False) -> None:
+    """Write the graph as JSON."""
+    json.dump(GraphView(graph, symbolic).document(), out, indent=2)
+    out.write("\n")
+
+
+def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False) -> None:
+    """Write the graph as an indented listing."""
+    doc = GraphView(graph, symbolic).document()
+    for node in doc["nodes"]:
+        label = node["fqn"] or f"<unnamed {node['executable']}>"
+        kind = "" if node["kind"] == "node" else f" [{node['kind']}]"
+        out.write(f"{label}{kind}  {node['package']}/{node['executable']}  "
+                  f"({node['file']}:{node['line']})\n")
+        if node["condition"]:
+            out.write(f"    when {node['condition']}\n")
+        for src, dst in node["remappings"]:
+            out.write(f"    remap {src} -> {dst}\n")
+        for param in node["parameters"]:
+            if "file" in param:
+                out.write(f"    params {param['file']}\n")
+            else:
+                out.write(f"    param {param['name']} = {param['value']}\n")
+    for process in doc["processes"]:
+        out.write(f"process: {' '.join(str(c) for c in process['cmd'])}  "
+                  f"({process['file']}:{process['line']})\n")
+    if doc["arguments"]:
+        out.write("arguments:\n")
+        for argument in doc["arguments"]:
+            out.write(f"    {argument['name']} = {argument['value']}"
+                      f"  (default {argument['default']})\n")

@@ -1,0 +1,52 @@
+"""``check --format json``: the machine-readable contract documented in docs/output.md."""
+
+from __future__ import annotations
+
+import json
+from typing import Any, TextIO
+
+from launchverify import __version__
+from launchverify.engine import Report
+from launchverify.rule import Finding, Severity
+
+
+def finding_dict(finding: Finding, report: Report) -> dict[str, Any]:
+    """Return one finding as a JSON object."""
+    span = finding.span
+    return {
+        "code": finding.code,
+        "slug": finding.slug,
+        "severity": finding.severity.value,
+        "message": finding.message,
+        "file": report.display_path(span.file),
+        "line": span.line,
+        "column": span.column,
+        "end_line": span.end_line if span.end_line is not None else span.line,
+        "end_column": span.end_column if span.end_column is not None else span.column,
+        "related": [
+            {"file": report.display_path(r.span.file), "line": r.span.line, "message": r.message}
+            for r in finding.related
+        ],
+        "include_chain": [
+            {"file": report.display_path(s.file), "line": s.line} for s in finding.chain
+        ],
+        "witness": dict(finding.witness) if finding.witness else None,
+    }
+
+
+def render_json(report: Report, out: TextIO) -> None:
+    """Write the report as one JSON object."""
+    counts = {s: sum(1 for f in report.findings if f.severity is s) for s in Severity}
+    document = {
+        "tool": {"name": "launchverify", "version": __version__},
+        "findings": [finding_dict(f, report) for f in report.findings],
+        "summary": {
+            "files": report.files,
+            "errors": counts[Severity.ERROR],
+            "warnings": counts[Severity.WARNING],
+            "infos": counts[Severity.INFO],
+            "seconds": round(report.seconds, 3),
+        },
+    }
+    json.dump(document, out, indent=2)
+    out.write("\n")

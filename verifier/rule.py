@@ -1,0 +1,110 @@
+"""Rules and findings: what a rule module defines and what it yields.
+
+A rule is a class with a code (``LV101``), a slug (``duplicate-node-name``), a severity, a
+message template and a docstring with four headings (What it does / Why it matters /
+Example / Fix) that ``launchverify explain`` prints. ``check`` looks at one launch graph and
+yields findings built with ``self.finding(...)``: a rule cannot mislabel itself.
+"""
+
+from __future__ import annotations
+
+import enum
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass, field
+from typing import ClassVar
+
+from launchverify.graph import LaunchGraph, Origin
+from launchverify.packages import PackageIndex
+from launchverify.span import Span
+
+
+class Severity(enum.Enum):
+    """How bad a finding is; ``error`` fails ``launchverify check``."""
+
+    ERROR = "error"
+    WARNING = "warning"
+    INFO = "info"
+
+    @property
+    def rank(self) -> int:
+        """Return 2 for errors, 1 for warnings, 0 for infos."""
+        return {"error": 2, "warning": 1, "info": 0}[self.value]
+
+
+@dataclass(frozen=True, slots=True)
+class Related:
+    """Another place that explains a finding (the first definition, the declaration...)."""
+
+    span: Span
+    message: str
+
+
+@dataclass(frozen=True, slots=True)
+class Finding:
+    """One reported problem, with everything reporters need."""
+
+    code: str
+    slug: str
+    severity: Severity
+    message: str
+    span: Span
+    related: tuple[Related, ...] = ()
+    chain: tuple[Span, ...] = ()
+    witness: Mapping[str, str] | None = None
+
+    def key(self) -> tuple[object, ...]:
+        """Return what makes two findings the same (for de-duplication across roots)."""
+        return (self.code, str(self.span.file), self.span.line, self.span.column, self.message)
+
+    def sort_key(self) -> tuple[object, ...]:
+        """Return the order reporters use: file, line, column, code."""
+        return (str(self.span.file), self.span.line, self.span.column, self.code, self.message)
+
+
+@dataclass
+class RuleContext:
+    """What a rule may use besides the graph (later: the SMT solver, options)."""
+
+    packages: PackageIndex | None = None
+    options: dict[str, object] = field(default_factory=dict)
+
+
+class Rule:
+    """Base class of every rule module's rule."""
+
+    code: ClassVar[str]
+    slug: ClassVar[str]
+    severity: ClassVar[Severity]
+    message: ClassVar[str]
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        """Yield the findings of this rule on one launch graph."""
+        raise NotImplementedError
+
+    def finding(
+        self,
+        origin: Origin | Span,
+        *,
+        related: tuple[Related, ...] = (),
+        witness: Mapping[str, str] | None = None,
+        **values: object,
+    ) -> Finding:
+        """Build a finding from the message template at a record's origin (or a span)."""
+        span, chain = (origin.span, origin.chain) if isinstance(origin, Origin) else (origin, ())
+        return Finding(
+            code=self.code,
+            slug=self.slug,
+            severity=self.severity,
+            message=self.message.format(**values),
+            span=span,
+            related=related,
+            chain=chain,
+            witness=witness,
+        )
+
+    @classmethod
+    def documentation(cls) -> str:
+        """Return the rule's documentation (its docstring, dedented)."""
+        import inspect
+
+        return inspect.cleandoc(cls.__doc__ or "")

@@ -1,0 +1,29 @@
+"""Source locations: every IR record, problem and finding points back at the user's file."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+
+@dataclass(frozen=True, slots=True)
+class Span:
+    """A region of a source file; lines and columns are 1-based.
+
+    ``file`` is absolute; reporters turn it back into the path the user gave.
+    """
+
+    file: Path
+    line: int
+    column: int = 1
+    end_line: int | None = None
+    end_column: int | None = None
+
+    def short(self) -> str:
+        """Return ``name:line`` for messages that point at another place."""
+        return f"{self.file.name}:{self.line}"
+
+    @classmethod
+    def of_file(cls, file: Path) -> Span:
+        """Return a span for a whole file (its first line)."""
+        return cls(file, 1, 1)
