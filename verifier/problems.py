@@ -28,6 +28,7 @@ class Problem:
     kind: ProblemKind
     message: str
     span: Span
+    contextual: bool = False  # may be caused by what an includer would provide
 
 
 class ProblemSink:

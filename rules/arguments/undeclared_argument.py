@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Rule, RuleContext, Severity
-from launchverify.suggest import did_you_mean
+from launchverify.suggest import typo_of
 
 
 class UndeclaredArgument(Rule):
@@ -15,8 +15,10 @@ class UndeclaredArgument(Rule):
     ## What it does
     Follows the launch in execution order and reports `$(var name)` (or
     `LaunchConfiguration('name')`) without a default where no `<arg>`, `<let>`, include
-    argument or command-line value has set `name` before. Files that are only meant to be
-    included are checked through their includers, which pass them their arguments.
+    argument or command-line value has set `name` before. A file that reads
+    configurations it never declares is meant to be included: it is checked through its
+    includers, which must set them; on its own only a read one or two edits away from a
+    declared name (a typo) is reported.
 
     ## Why it matters
     ros2 launch stops with `launch configuration 'name' does not exist`. Usually the name
@@ -52,4 +54,8 @@ class UndeclaredArgument(Rule):
             if key in seen:
                 continue
             seen.add(key)
-            yield self.finding(read.origin, name=read.name, hint=did_you_mean(read.name, known))
+            typo = typo_of(read.name, known)
+            if not read.origin.chain and typo is None:
+                continue  # the root reads it undeclared: meant to be set by an includer
+            hint = f" (did you mean {typo!r}?)" if typo else ""
+            yield self.finding(read.origin, name=read.name, hint=hint)

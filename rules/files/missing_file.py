@@ -39,14 +39,14 @@ class MissingFile(Rule):
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         for include in graph.includes:
-            if include.status == "missing":
+            if include.status == "missing" and graph.runs(include.origin) is not False:
                 location = graph.display(include.location) or "?"
                 yield self.finding(include.origin, what="included launch file",
                                    location=location, note=_note(include.note))
         seen: set[object] = set()
         for ref in graph.file_refs:
             key = (ref.location, ref.origin.span)
-            if ref.exists or key in seen:
+            if ref.exists or key in seen or graph.runs(ref.origin) is False:
                 continue
             seen.add(key)
             yield self.finding(ref.origin, what=ref.what, location=ref.location,

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from launchverify.graph import LaunchGraph
 from launchverify.models.known_packages import is_released, released_packages
 from launchverify.rule import Finding, Rule, RuleContext, Severity
-from launchverify.suggest import did_you_mean
+from launchverify.suggest import typo_of
 
 
 class UnknownPackage(Rule):
@@ -17,8 +17,8 @@ class UnknownPackage(Rule):
     Looks up every package a launch file names (`pkg=`, `$(find-pkg-share)`,
     `$(find-pkg-prefix)`, `$(exec-in-pkg)`) in the workspace and, when ROS 2 is installed,
     in `AMENT_PREFIX_PATH`. Without an installation, a package missing from the workspace
-    is reported only when it is not a released ROS 2 package either (humble to rolling),
-    which is almost always a typo.
+    may still be installed on the robot; it is reported only when it is not a released
+    ROS 2 package and is one or two edits away from a package that exists: a typo.
 
     ## Why it matters
     ros2 launch stops with `PackageNotFoundError` when it reaches the reference.
@@ -46,11 +46,12 @@ class UnknownPackage(Rule):
             if ref.found or key in seen:
                 continue
             seen.add(key)
+            typo = typo_of(ref.name, frozenset(local)) or typo_of(ref.name, released_packages())
             if installed:
                 where = "neither in the workspace nor installed"
-            elif is_released(ref.name):
-                continue
+            elif is_released(ref.name) or typo is None:
+                continue  # may be installed on the robot; only a near miss is a sure typo
             else:
                 where = "not in the workspace and not a released ROS 2 package"
-            hint = did_you_mean(ref.name, local) or did_you_mean(ref.name, released_packages())
+            hint = f" (did you mean {typo!r}?)" if typo else ""
             yield self.finding(ref.origin, name=ref.name, where=where, hint=hint)

@@ -168,7 +168,13 @@ class ScopeReducer(Reducer):
                 return value if isinstance(value, s.Sub) else s.Text(str(value))
         if default is not None:
             return self.reduce(default)
-        self.fail(f"parameter {name!r} not found (no SetParameter with that name in scope)")
+        if not self.walker.incomplete:
+            assert self.span is not None
+            self.walker.problem(
+                ProblemKind.EVALUATION,
+                f"parameter {name!r} not found (no set_parameter with that name in scope)",
+                self.span, self.ctx, contextual=True,
+            )
         return Unknown(f"parameter {name}")
 
     def loop_variable(self, name: str, default: s.Sub | None, index: bool) -> s.Sub:
@@ -214,18 +220,22 @@ class Walker:
         self.anon_counter = itertools.count(1)
         self.include_stack: list[IncludeRecord] = []
         self.file_stack: list[Path] = []
+        self.incomplete = False  # something before this point was not understood
 
     # ------------------------------------------------------------------ recording
 
-    def problem(self, kind: ProblemKind, message: str, span: Span, ctx: Ctx | None) -> None:
-        """Record an evaluation problem."""
+    def problem(self, kind: ProblemKind, message: str, span: Span, ctx: Ctx | None,
+                *, contextual: bool = False) -> None:
+        """Record an evaluation problem (``contextual``: an includer might prevent it)."""
         chain = ctx.chain if ctx else ()
-        self.graph.problems.append(ProblemRecord(Problem(kind, message, span), chain))
+        self.graph.problems.append(
+            ProblemRecord(Problem(kind, message, span, contextual), chain))
         if kind is ProblemKind.UNMODELED:
             self.mark_incomplete()
 
     def mark_incomplete(self) -> None:
         """Note that the includes being walked contain something not understood."""
+        self.incomplete = True
         for record in self.include_stack:
             record.complete = False
 
@@ -810,8 +820,13 @@ class Walker:
 
     def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx) -> None:
         """Record whether a file the launch needs exists (when its path is known)."""
-        text = text_of(location) or self.graph.base(location)
+        text = text_of(location)
         if text is None:
+            text = self.graph.base(location)
+        if text is None:
+            return
+        if not text.strip():
+            self.graph.file_refs.append(FileRef(text, origin, False, what, "the path is empty"))
             return
         path = Path(text)
         if not path.is_absolute():
