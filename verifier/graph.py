@@ -126,6 +126,7 @@ class IncludeRecord:
     reads: set[str] = field(default_factory=set)
     complete: bool = True
     note: str = ""
+    relative: bool = False
 
 
 @dataclass(frozen=True, slots=True)

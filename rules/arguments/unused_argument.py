@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
 from launchverify.ir.walk import configuration_names
+from launchverify.problems import ProblemKind
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 
 # Configurations launch and launch_ros read by themselves, without a $(var).
@@ -48,6 +49,8 @@ class UnusedArgument(Rule):
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         if graph.opaque_files or any(not inc.complete for inc in graph.includes):
             return
+        if any(r.problem.kind is ProblemKind.PARSE for r in graph.problems):
+            return  # reads may sit in what could not be parsed
         used = set(IMPLICIT_READS) | graph.read_names()
         for loaded in graph.files.values():
             if loaded.launch is not None:

@@ -39,10 +39,16 @@ class MissingFile(Rule):
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         for include in graph.includes:
-            if include.status == "missing" and graph.runs(include.origin) is not False:
-                location = graph.display(include.location) or "?"
+            if graph.runs(include.origin) is False:
+                continue
+            location = graph.display(include.location) or "?"
+            if include.status == "missing":
                 yield self.finding(include.origin, what="included launch file",
                                    location=location, note=_note(include.note))
+            elif include.relative:
+                yield self.finding(include.origin, what="included launch file",
+                                   location=location, note=_note(include.note) + " where ros2 "
+                                   "launch runs; it was found beside the including file")
         seen: set[object] = set()
         for ref in graph.file_refs:
             key = (ref.location, ref.origin.span)

@@ -245,45 +245,43 @@ class Reducer:
         name = self._name(sub.name)
         return Unknown(sub.describe()) if name is None else self.anon(name)
 
-    def _typed(self, values: list[s.Sub]) -> list[bool] | None:
+    def _bool_op(self, values: list[s.Sub], combine: Callable[[list[bool]], bool],
+                 rebuild: Callable[[list[s.Sub]], s.Sub]) -> s.Sub:
+        """Apply a boolean substitution: concrete when every operand is known."""
         texts = [text_of(v) for v in values]
         if any(t is None for t in texts):
-            return None
+            return rebuild(values)
         try:
-            return [booleans.typed_truth(t) for t in texts if t is not None]
+            flags = [booleans.typed_truth(t) for t in texts if t is not None]
         except booleans.InvalidBoolean as error:
             self.fail(str(error))
-            return None
+            return Unknown(f"failed {rebuild(values).describe()}")
+        return s.Text(booleans.bool_text(combine(flags)))
 
     def _not(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.NotSub)
-        value = self.reduce(sub.value)
-        flags = self._typed([value])
-        return s.NotSub(value) if flags is None else s.Text(booleans.bool_text(not flags[0]))
+        return self._bool_op([self.reduce(sub.value)], lambda f: not f[0],
+                             lambda v: s.NotSub(v[0]))
 
     def _and(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.AndSub)
-        left, right = self.reduce(sub.left), self.reduce(sub.right)
-        flags = self._typed([left, right])
-        return s.AndSub(left, right) if flags is None else s.Text(booleans.bool_text(all(flags)))
+        return self._bool_op([self.reduce(sub.left), self.reduce(sub.right)], all,
+                             lambda v: s.AndSub(v[0], v[1]))
 
     def _or(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.OrSub)
-        left, right = self.reduce(sub.left), self.reduce(sub.right)
-        flags = self._typed([left, right])
-        return s.OrSub(left, right) if flags is None else s.Text(booleans.bool_text(any(flags)))
+        return self._bool_op([self.reduce(sub.left), self.reduce(sub.right)], any,
+                             lambda v: s.OrSub(v[0], v[1]))
 
     def _any(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.AnySub)
-        args = [self.reduce(a) for a in sub.args]
-        flags = self._typed(args)
-        return s.AnySub(tuple(args)) if flags is None else s.Text(booleans.bool_text(any(flags)))
+        return self._bool_op([self.reduce(a) for a in sub.args], any,
+                             lambda v: s.AnySub(tuple(v)))
 
     def _all(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.AllSub)
-        args = [self.reduce(a) for a in sub.args]
-        flags = self._typed(args)
-        return s.AllSub(tuple(args)) if flags is None else s.Text(booleans.bool_text(all(flags)))
+        return self._bool_op([self.reduce(a) for a in sub.args], all,
+                             lambda v: s.AllSub(tuple(v)))
 
     def _equals(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.EqualsSub)
@@ -304,10 +302,12 @@ class Reducer:
     def _if_else(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.IfElse)
         condition = self.reduce(sub.condition)
-        flags = self._typed([condition])
-        if flags is None:
-            return s.IfElse(condition, self.reduce(sub.if_value), self.reduce(sub.else_value))
-        return self.reduce(sub.if_value if flags[0] else sub.else_value)
+        chosen = self._bool_op([condition], lambda f: f[0], lambda v: v[0])
+        if isinstance(chosen, s.Text):
+            return self.reduce(sub.if_value if chosen.text == "true" else sub.else_value)
+        if isinstance(chosen, Unknown):
+            return chosen
+        return s.IfElse(condition, self.reduce(sub.if_value), self.reduce(sub.else_value))
 
     def _file_content(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.FileContent)

@@ -28,7 +28,7 @@ from launchverify.evaluate.scope import (
     Scopes,
 )
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
-from launchverify.evaluate.values import Reducer, is_unset, ns_prefix, text_of
+from launchverify.evaluate.values import BaseReducer, Reducer, is_unset, ns_prefix, text_of
 from launchverify.frontends import LoadedFile
 from launchverify.graph import (
     ArgumentRecord,
@@ -187,6 +187,17 @@ class ScopeReducer(Reducer):
         self.fail(f"no value for loop variable {name!r}")
         return Unknown(f"loop variable {name}")
 
+    def guard(self, guard: Guard) -> bool | None:
+        """Guards on the current path are known to hold (and their negations not to)."""
+        if self.ctx is not None and self.ctx.path:
+            if guard in self.ctx.path:
+                return True
+            if isinstance(guard, (Truthy, StrEquals)) and (
+                dataclasses.replace(guard, negate=not guard.negate) in self.ctx.path
+            ):
+                return False
+        return super().guard(guard)
+
     def fail(self, message: str) -> None:
         assert self.span is not None
         self.walker.problem(ProblemKind.EVALUATION, message, self.span, self.ctx)
@@ -194,6 +205,30 @@ class ScopeReducer(Reducer):
     def unmodeled(self, message: str) -> None:
         assert self.span is not None
         self.walker.problem(ProblemKind.UNMODELED, message, self.span, self.ctx)
+
+
+class DefaultsReducer(BaseReducer):
+    """Evaluates residual values under the given arguments and defaults, reporting failures.
+
+    A condition that depends on arguments is explored both ways; with the arguments as
+    given (defaults for the rest) it must still be valid, or ros2 launch fails right away.
+    """
+
+    def __init__(self, walker: Walker) -> None:
+        super().__init__(walker.graph.pinned)
+        self.walker = walker
+        self.ctx: Ctx | None = None
+        self.span: Span | None = None
+
+    def at(self, ctx: Ctx, span: Span) -> DefaultsReducer:
+        """Point problems at ``span`` in ``ctx``."""
+        self.ctx, self.span = ctx, span
+        return self
+
+    def fail(self, message: str) -> None:
+        assert self.span is not None
+        self.walker.problem(ProblemKind.EVALUATION, f"with the default arguments, {message}",
+                            self.span, self.ctx)
 
 
 def _fill_unset(value: s.Sub, fill: s.Sub) -> s.Sub:
@@ -216,10 +251,11 @@ class Walker:
         self.workspace = workspace
         self.scopes = Scopes({k: s.Text(v) for k, v in graph.pinned.items()})
         self.reducer = ScopeReducer(self)
+        self.base_check = DefaultsReducer(self)
         self.current_file = graph.root
         self.anon_counter = itertools.count(1)
         self.include_stack: list[IncludeRecord] = []
-        self.file_stack: list[Path] = []
+        self.file_stack: list[tuple[Path, tuple[tuple[str | None, str], ...]]] = []
         self.incomplete = False  # something before this point was not understood
 
     # ------------------------------------------------------------------ recording
@@ -279,7 +315,8 @@ class Walker:
         if loaded.launch is None:
             return
         self.graph.root_arguments = self.static_args(loaded)
-        self.file_stack.append(self.graph.root)
+        pinned = tuple(sorted((k, v) for k, v in self.graph.pinned.items()))
+        self.file_stack.append((self.graph.root, pinned))
         self.visit_all(loaded.launch.actions, ctx)
         self.file_stack.pop()
 
@@ -358,6 +395,8 @@ class Walker:
             return None
         if isinstance(guard, Truthy) and text_of(guard.expression) is not None:
             return None  # an invalid constant condition: launch raises (recorded)
+        if self.graph.runs(ctx.origin(span)) is not False:
+            self.base_check.at(ctx, span).guard(guard)
         return ctx.guarded(guard)
 
     @contextmanager
@@ -471,11 +510,15 @@ class Walker:
         target, note = self.resolve_path(path_text, written_in, action.path)
         record.note = note
         if target is None:
-            record.status = "missing"
+            record.status = "missing" if self.in_workspace(Path(path_text)) else "external"
             self.mark_incomplete()
             return
         record.target = target
-        if target in self.file_stack or len(self.file_stack) >= MAX_INCLUDE_DEPTH:
+        record.relative = not Path(path_text).is_absolute()
+        # Re-entering a file with the same arguments can only recurse forever; with other
+        # arguments it may terminate (a recursion guarded by a condition), up to a depth.
+        key = (target, self.include_key(action, ctx))
+        if key in self.file_stack or len(self.file_stack) >= MAX_INCLUDE_DEPTH:
             record.status = "cycle"
             return
         inner = dataclasses.replace(ctx, file=target, chain=(*ctx.chain, action.span))
@@ -498,12 +541,26 @@ class Walker:
                 self.scopes.set(name, value, ctx.path)
         record.arguments = tuple(arguments)
         self.include_stack.append(record)
-        self.file_stack.append(target)
+        self.file_stack.append(key)
         try:
             self.visit_all(loaded.launch.actions, inner)
         finally:
             self.file_stack.pop()
             self.include_stack.pop()
+
+    def include_key(self, action: a.Include, ctx: Ctx) -> tuple[tuple[str | None, str], ...]:
+        """Return the include's arguments as text, to tell a cycle from a recursion."""
+        reducer = self.reducer.at(ctx, action.span)
+        return tuple(sorted(
+            (reducer.text(arg.name), reducer.reduce(arg.value).describe())
+            for arg in action.arguments
+        ))
+
+    def in_workspace(self, path: Path) -> bool:
+        """Return whether a missing file would belong to the checked tree."""
+        if not path.is_absolute():
+            return True
+        return path.is_relative_to(self.workspace) or self.index.owner(path) is not None
 
     def resolve_path(self, text: str, written_in: Path, written: s.Sub) -> tuple[Path | None, str]:
         """Find an included or referenced file; explain launch's quirks in a note."""
@@ -518,9 +575,7 @@ class Walker:
             beside = written_in.parent / path
             note = ("relative paths are resolved against the folder ros2 launch is started "
                     "from, not the including file; use $(dirname)/" + text)
-            if beside.is_file():
-                return beside, note
-            return None, note
+            return (beside if beside.is_file() else None), note
         return self.index.locate(path), note
 
     def do_Timer(self, action: a.Timer, ctx: Ctx) -> None:
@@ -838,9 +893,7 @@ class Walker:
         located = self.index.locate(path)
         if located is not None:
             self.graph.file_refs.append(FileRef(text, origin, True, what))
-            return
-        in_workspace = path.is_relative_to(self.workspace) or self.index.owner(path) is not None
-        if in_workspace:
+        elif self.in_workspace(path):
             self.graph.file_refs.append(FileRef(text, origin, False, what))
 
     def record_name(self, kind: str, value: s.Sub, origin: Origin) -> None:
