@@ -110,7 +110,7 @@ def _check(args: argparse.Namespace) -> int:
 
 
 def _graph(args: argparse.Namespace) -> int:
-    from launchverify.evaluate import evaluate
+    from launchverify.evaluate.runner import evaluate
     from launchverify.render.graph_out import render_graph_json, render_graph_text
 
     paths, arguments = parse_arguments(args.targets)

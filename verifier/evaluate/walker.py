@@ -355,7 +355,8 @@ class Walker:
 
     def visit(self, action: a.Action, ctx: Ctx) -> None:
         """Visit one action: evaluate its condition, then execute it."""
-        inner = self.apply_condition(action.condition, action.span, ctx)
+        where = action.attr_spans.get("if") or action.attr_spans.get("unless") or action.span
+        inner = self.apply_condition(action.condition, where, ctx)
         if inner is None:
             self.graph.skipped.append(SkippedAction(action, ctx.origin(action.span)))
             return
@@ -763,16 +764,18 @@ class Walker:
 
     def run_node(self, action: a.Node, ctx: Ctx) -> NodeRecord:
         """Execute a Node-like action as launch_ros does and record it."""
-        reducer = self.reducer.at(ctx, action.span)
+        reducer = self.reducer.at(ctx, action.at("pkg"))
         package = None if action.package is None else reducer.reduce(action.package)
         package_name = text_of(package)
         if package_name is not None:
             self.record_package(package_name, ctx.origin(action.at("pkg")),
                                 self.index.find(package_name) is not None, "node")
-        executable = reducer.reduce(action.executable)
+        executable = self.reducer.at(ctx, action.at("exec")).reduce(action.executable)
+        reducer = self.reducer.at(ctx, action.at("name"))
         name = None if action.name is None else reducer.reduce(action.name)
         if name is not None:
             self.record_name("node name", name, ctx.origin(action.at("name")))
+        reducer = self.reducer.at(ctx, action.at("namespace"))
         own_ns = None if action.namespace is None else reducer.reduce(action.namespace)
         namespace = ns_prefix(self.scopes.get(ROS_NAMESPACE), own_ns)
         if namespace is not None:
@@ -780,6 +783,7 @@ class Walker:
         fqn = None
         if name is not None and namespace is not None:
             fqn = ns_prefix(namespace, name)
+        reducer = self.reducer.at(ctx, action.span)
         for argument in (*action.arguments, *action.ros_arguments):
             reducer.reduce(argument)
         exec_name = action.exec_name

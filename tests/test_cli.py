@@ -1,0 +1,144 @@
+"""The command line: exit codes, output contracts, and no traceback on bad input."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from launchverify import __version__
+from launchverify.cli import main
+
+CORPUS = Path(__file__).resolve().parent.parent / "corpus"
+DUPLICATE = CORPUS / "naming" / "duplicate_same_scope" / "dup.launch.xml"
+CLEAN = CORPUS / "naming" / "scoped_namespaces_clean" / "robots.launch.xml"
+
+
+@pytest.fixture(autouse=True)
+def _no_ros(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+
+
+def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
+    code = main(list(argv))
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_exit_status_reflects_errors(capsys: pytest.CaptureFixture[str]) -> None:
+    assert run(capsys, "check", str(CLEAN))[0] == 0
+    assert run(capsys, "check", str(DUPLICATE))[0] == 1
+
+
+def test_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, "check", str(DUPLICATE), "--format", "json")
+    document = json.loads(out)
+    assert document["tool"] == {"name": "launchverify", "version": __version__}
+    assert set(document["summary"]) == {"files", "errors", "warnings", "infos", "seconds"}
+    finding = document["findings"][0]
+    assert set(finding) == {"code", "slug", "severity", "message", "file", "line", "column",
+                            "end_line", "end_column", "related", "include_chain", "witness"}
+    assert finding["code"] == "LV101" and finding["slug"] == "duplicate-node-name"
+    assert finding["file"] == str(DUPLICATE)
+    assert finding["line"] == 4 and finding["column"] == 3
+    assert finding["related"][0]["line"] == 3
+    assert code == 1
+
+
+def test_include_chain_in_json(capsys: pytest.CaptureFixture[str]) -> None:
+    tree = CORPUS / "naming" / "duplicate_across_includes"
+    _, out, _ = run(capsys, "check", str(tree / "bringup.launch.xml"), "--format", "json")
+    finding = json.loads(out)["findings"][0]
+    assert finding["file"].endswith("camera.launch.xml")
+    assert [step["line"] for step in finding["include_chain"]] == [9]
+
+
+def test_text_output_has_location_frame_and_summary(capsys: pytest.CaptureFixture[str]) -> None:
+    _, out, _ = run(capsys, "check", str(DUPLICATE), "--color", "never")
+    assert f"{DUPLICATE}:4:3: error LV101 [duplicate-node-name]" in out
+    assert ' 4 |   <node pkg="demo_nodes_py"' in out
+    assert "\x1b[" not in out
+    assert out.strip().splitlines()[-1].startswith("Found 2 findings (2 errors)")
+
+
+def test_select_and_ignore(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, "check", str(DUPLICATE), "--ignore", "LV101", "--format", "json")
+    assert code == 0 and json.loads(out)["findings"] == []
+    code, out, _ = run(capsys, "check", str(DUPLICATE), "--select", "naming", "--format",
+                       "json")
+    assert code == 2
+
+
+def test_arguments_are_pinned(capsys: pytest.CaptureFixture[str]) -> None:
+    tree = CORPUS / "naming" / "node_name_from_argument" / "args.launch.xml"
+    assert run(capsys, "check", str(tree))[0] == 1
+    assert run(capsys, "check", str(tree), "right:=camera_right")[0] == 0
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", "/nonexistent/file.launch.xml"],
+    ["check", str(CLEAN), "broken:="],
+    ["check", str(CLEAN), ":=value"],
+    ["graph", str(CLEAN), str(DUPLICATE)],
+    ["check", str(CLEAN), "--workspace", "/nonexistent"],
+    [],
+])
+def test_usage_errors_exit_2_without_traceback(capsys: pytest.CaptureFixture[str],
+                                                argv: list[str]) -> None:
+    code, out, err = run(capsys, *argv)
+    assert code == 2
+    assert "Traceback" not in out + err
+
+
+def test_graph_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
+    tree = CORPUS / "realistic" / "talker_listener_yaml_clean" / "demo.launch.yaml"
+    code, out, _ = run(capsys, "graph", str(tree))
+    document = json.loads(out)
+    assert code == 0
+    assert set(document) >= {"nodes", "processes", "includes", "arguments"}
+    listener = next(n for n in document["nodes"] if n["name"] == "listener")
+    assert listener["fqn"] == "/demo/listener"
+    assert listener["remappings"] == [["chatter", "chatter"]]
+    assert listener["parameters"] == [{"name": "verbose", "value": "true"},
+                                      {"name": "qos.depth", "value": "10"}]
+    assert listener["condition"] is None and listener["lifecycle"] is False
+    assert listener["line"] == 13
+    code, out, _ = run(capsys, "graph", str(tree), "ns:=robot", "topic_name:=talk")
+    nodes = json.loads(out)["nodes"]
+    assert {n["fqn"] for n in nodes} == {"/robot/talker", "/robot/listener"}
+
+
+def test_graph_symbolic_shows_conditions(capsys: pytest.CaptureFixture[str]) -> None:
+    tree = CORPUS / "conditions" / "exclusive_conditions_clean" / "sim.launch.xml"
+    _, out, _ = run(capsys, "graph", str(tree))
+    assert len(json.loads(out)["nodes"]) == 2
+    _, out, _ = run(capsys, "graph", str(tree), "--symbolic")
+    nodes = json.loads(out)["nodes"]
+    assert len(nodes) == 4
+    assert {n["condition"] for n in nodes} >= {"$(var use_sim)", "not $(var use_sim)"}
+
+
+def test_version_and_module_entry_point() -> None:
+    result = subprocess.run([sys.executable, "-m", "launchverify", "--version"],
+                            capture_output=True, text=True, check=False)
+    assert result.returncode == 0
+    assert result.stdout.strip() == f"launchverify {__version__}"
+
+
+def test_folder_without_launch_files(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "notes.txt").write_text("nothing here")
+    code, out, _ = run(capsys, "check", str(tmp_path))
+    assert code == 0 and "No findings in 0 files" in out
+
+
+def test_checking_never_writes_into_the_tree(tmp_path: Path,
+                                             capsys: pytest.CaptureFixture[str]) -> None:
+    launch = tmp_path / "a.launch.xml"
+    launch.write_text('<launch><node pkg="demo_nodes_cpp" exec="talker"/></launch>')
+    before = sorted(p.name for p in tmp_path.rglob("*"))
+    run(capsys, "check", str(tmp_path))
+    run(capsys, "graph", str(launch))
+    assert sorted(p.name for p in tmp_path.rglob("*")) == before

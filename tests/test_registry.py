@@ -1,0 +1,68 @@
+"""Meta-tests: every rule is registered, documented, and exercised by the corpus."""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+from corpus_markers import read_markers
+
+from launchverify.registry import RegistryError, all_rules, resolve, select
+from launchverify.rules import BUILTIN
+
+ROOT = Path(__file__).resolve().parent.parent
+HEADINGS = ("## What it does", "## Why it matters", "## Example", "## Fix")
+
+
+def corpus_codes() -> set[str]:
+    codes: set[str] = set()
+    for tree in (ROOT / "corpus").glob("*/*"):
+        codes |= {code for (_, _, code) in read_markers(tree).expected}
+    return codes
+
+
+def test_builtin_is_sorted_and_unique() -> None:
+    codes = [rule.code for rule in BUILTIN]
+    assert codes == sorted(codes)
+    assert len(set(codes)) == len(codes)
+    assert len({rule.slug for rule in BUILTIN}) == len(BUILTIN)
+
+
+@pytest.mark.parametrize("rule", BUILTIN, ids=lambda r: r.code)
+def test_rule_metadata(rule: type) -> None:
+    assert re.fullmatch(r"LV\d{3}", rule.code)
+    assert re.fullmatch(r"[a-z]+(-[a-z]+)*", rule.slug)
+    doc = rule.documentation()
+    for heading in HEADINGS:
+        assert heading in doc, f"{rule.code} docstring lacks {heading!r}"
+    assert len(doc.splitlines()[0]) <= 99
+
+
+@pytest.mark.parametrize("rule", BUILTIN, ids=lambda r: r.code)
+def test_rule_is_exercised_by_the_corpus(rule: type) -> None:
+    assert rule.code in corpus_codes(), f"no corpus fixture expects {rule.code}"
+
+
+def test_every_rule_module_is_listed() -> None:
+    listed = {rule.__module__ for rule in BUILTIN}
+    modules = {
+        "launchverify.rules." + ".".join(path.relative_to(ROOT / "rules").with_suffix("").parts)
+        for path in (ROOT / "rules").rglob("*.py")
+        if path.name != "__init__.py"
+    }
+    assert modules == listed
+
+
+def test_resolve_accepts_codes_slugs_and_prefixes() -> None:
+    assert [r.code for r in resolve("LV101")] == ["LV101"]
+    assert [r.code for r in resolve("duplicate-node-name")] == ["LV101"]
+    assert {r.code for r in resolve("LV3")} >= {"LV301", "LV302", "LV303"}
+    with pytest.raises(RegistryError):
+        resolve("LV999")
+
+
+def test_select_and_ignore() -> None:
+    chosen = {r.code for r in select(["LV1", "LV201"], ["LV102"])}
+    assert chosen == {"LV101", "LV201"}
+    assert len(select(None, None)) == len(all_rules())

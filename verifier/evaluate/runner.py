@@ -1,0 +1,55 @@
+"""Run an evaluation: a shared file cache and the ``evaluate`` entry point."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+from launchverify.evaluate.walker import Walker
+from launchverify.frontends import LoadedFile, load_launch_file
+from launchverify.graph import LaunchGraph
+from launchverify.packages import PackageIndex
+
+
+class FileCache:
+    """Loads each launch file once per run, whoever asks for it."""
+
+    def __init__(self) -> None:
+        self._files: dict[Path, LoadedFile] = {}
+
+    def __call__(self, path: Path) -> LoadedFile:
+        """Return the loaded file, reading it the first time."""
+        loaded = self._files.get(path)
+        if loaded is None:
+            loaded = load_launch_file(path)
+            self._files[path] = loaded
+        return loaded
+
+
+def evaluate(
+    root: Path,
+    *,
+    index: PackageIndex,
+    workspace: Path,
+    pinned: dict[str, str] | None = None,
+    loader: Callable[[Path], LoadedFile] | None = None,
+    included_elsewhere: bool = False,
+) -> LaunchGraph:
+    """Evaluate ``root`` as ``ros2 launch root name:=value...`` would, without running it.
+
+    Args:
+        root: the launch file, as an absolute path.
+        index: packages to resolve ``pkg=`` and ``$(find-pkg-share)`` against.
+        workspace: files outside it are inputs of the machine, not part of the tree.
+        pinned: argument values given like ``name:=value`` on the command line.
+        loader: shared file cache (a fresh one when omitted).
+        included_elsewhere: the file is also included by others in this check.
+
+    Returns:
+        The launch graph of everything the evaluation found.
+    """
+    graph = LaunchGraph(root=root, pinned=dict(pinned or {}),
+                        included_elsewhere=included_elsewhere)
+    walker = Walker(graph, index, loader or FileCache(), workspace)
+    walker.run()
+    return graph
