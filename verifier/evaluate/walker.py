@@ -717,8 +717,8 @@ class Walker:
         """Events are handled by the event and lifecycle analyses."""
 
     def do_OpaqueAction(self, action: a.OpaqueAction, ctx: Ctx) -> None:
-        self.problem(ProblemKind.UNMODELED, f"{action.description} is not modelled: what it "
-                     "launches is unknown", action.span, ctx)
+        """Something the frontend could not see into (it already said so)."""
+        self.mark_incomplete()
         self.graph.opaque_files.add(ctx.file)
 
     # ------------------------------------------------------------------ processes and nodes

@@ -32,6 +32,13 @@ TAG_HINTS = {
 }
 
 
+# Tags that launch extensions of other packages add; not modelled, so they are opaque.
+EXTENSION_TAGS = {
+    "gz_server": "ros_gz_sim", "gzserver": "ros_gz_sim", "gz_spawn_model": "ros_gz_sim",
+    "ros_gz_bridge": "ros_gz_bridge",
+}
+
+
 def tag(*names: str) -> Callable[[Handler], Handler]:
     """Register a handler for one or more tag names."""
 
@@ -75,6 +82,12 @@ class TagParser(EntityReader):
     def action(self, entity: Entity) -> a.Action | None:
         """Convert one entity through its tag handler."""
         handler = TAGS.get(entity.tag)
+        if handler is None and entity.tag in EXTENSION_TAGS:
+            package = EXTENSION_TAGS[entity.tag]
+            self.sink.unmodeled(
+                f"`{entity.tag}` is a launch extension of {package}; what it starts is not "
+                "modelled", entity.span)
+            return a.OpaqueAction(span=entity.span, description=f"<{entity.tag}>")
         if handler is None:
             hint = TAG_HINTS.get(entity.tag)
             extra = f"; {hint}" if hint else ""

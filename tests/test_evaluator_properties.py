@@ -1,0 +1,145 @@
+"""Property tests: namespaces and scoping computed by the evaluator match launch_ros's rules.
+
+Random trees of groups, pushed namespaces and nodes are written as XML and as YAML; a small
+reference interpreter written here from launch_ros's documented behaviour says which fully
+qualified names must come out.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from launchverify.evaluate.runner import evaluate
+from launchverify.packages import PackageIndex
+from launchverify.render.graph_out import GraphView
+
+NAMESPACES = st.sampled_from(["robot", "/fleet", "arm/", "", "a/b", "/"])
+
+
+@dataclass(frozen=True)
+class Node:
+    name: str
+    namespace: str | None
+
+
+@dataclass(frozen=True)
+class Push:
+    namespace: str
+
+
+@dataclass(frozen=True)
+class Group:
+    scoped: bool
+    items: tuple[object, ...]
+
+
+items = st.deferred(lambda: st.lists(item, max_size=4).map(tuple))
+item = st.one_of(
+    st.builds(Node, st.sampled_from(["talker", "listener"]), st.none() | NAMESPACES),
+    st.builds(Push, NAMESPACES.filter(lambda ns: ns != "")),
+    st.builds(Group, st.booleans(), items),
+)
+
+
+def prefix(base: str | None, ns: str | None) -> str | None:
+    """launch_ros prefix_namespace, restated."""
+    if base is None and ns is None:
+        return None
+    if ns is None:
+        combined = base
+    elif not base or ns.startswith("/"):
+        combined = ns
+    else:
+        combined = ("" if base == "/" else base) + "/" + ns
+    assert combined is not None
+    return combined if combined == "/" else combined.rstrip("/")
+
+
+def absolute(ns: str | None) -> str | None:
+    return None if ns is None else ns if ns.startswith("/") else "/" + ns
+
+
+def expected(tree: tuple[object, ...]) -> list[str]:
+    out: list[str] = []
+
+    def run(entries: tuple[object, ...], pushed: str | None) -> str | None:
+        for entry in entries:
+            if isinstance(entry, Push):
+                pushed = absolute(prefix(pushed, entry.namespace))
+            elif isinstance(entry, Node):
+                ns = absolute(prefix(pushed, entry.namespace)) or "/"
+                out.append(("/" if ns == "/" else ns + "/") + entry.name)
+            elif isinstance(entry, Group):
+                inner = run(entry.items, pushed)
+                if not entry.scoped:
+                    pushed = inner
+        return pushed
+
+    run(tree, None)
+    return out
+
+
+def to_xml(entries: tuple[object, ...], depth: int = 1) -> str:
+    pad = "  " * depth
+    lines = []
+    for entry in entries:
+        if isinstance(entry, Push):
+            lines.append(f'{pad}<push_ros_namespace namespace="{entry.namespace}"/>')
+        elif isinstance(entry, Node):
+            ns = "" if entry.namespace is None else f' namespace="{entry.namespace}"'
+            lines.append(f'{pad}<node pkg="demo_nodes_cpp" exec="x" name="{entry.name}"{ns}/>')
+        elif isinstance(entry, Group):
+            lines.append(f'{pad}<group scoped="{str(entry.scoped).lower()}">')
+            lines.append(to_xml(entry.items, depth + 1))
+            lines.append(f"{pad}</group>")
+    return "\n".join(line for line in lines if line)
+
+
+def to_yaml(entries: tuple[object, ...], depth: int = 0) -> str:
+    pad = "  " * depth
+    lines = []
+    for entry in entries:
+        if isinstance(entry, Push):
+            lines.append(f'{pad}- push_ros_namespace: {{namespace: "{entry.namespace}"}}')
+        elif isinstance(entry, Node):
+            ns = "" if entry.namespace is None else f', namespace: "{entry.namespace}"'
+            lines.append(f"{pad}- node: {{pkg: demo_nodes_cpp, exec: x, name: {entry.name}{ns}}}")
+        elif isinstance(entry, Group):
+            lines.append(f"{pad}- group:")
+            lines.append(f"{pad}    scoped: {str(entry.scoped).lower()}")
+            if entry.items:
+                lines.append(f"{pad}    children:")
+                lines.append(to_yaml(entry.items, depth + 3))
+            else:
+                lines.append(f"{pad}    children: []")
+    return "\n".join(line for line in lines if line)
+
+
+def fqns(path: Path) -> list[str]:
+    graph = evaluate(path, index=PackageIndex(), workspace=path.parent)
+    assert not [p for p in graph.problems], graph.problems
+    return [node["fqn"] for node in GraphView(graph, symbolic=False).document()["nodes"]]
+
+
+@settings(max_examples=60, deadline=None)
+@given(items)
+def test_xml_namespaces_match_launch_ros(tmp_path_factory: object, tree: tuple[object, ...]
+                                         ) -> None:
+    folder = tmp_path_factory.mktemp("xml")  # type: ignore[attr-defined]
+    path = folder / "t.launch.xml"
+    path.write_text(f"<launch>\n{to_xml(tree)}\n</launch>\n")
+    assert fqns(path) == expected(tree)
+
+
+@settings(max_examples=60, deadline=None)
+@given(items)
+def test_yaml_matches_xml(tmp_path_factory: object, tree: tuple[object, ...]) -> None:
+    folder = tmp_path_factory.mktemp("yaml")  # type: ignore[attr-defined]
+    path = folder / "t.launch.yaml"
+    body = to_yaml(tree)
+    path.write_text("launch:\n" + (body + "\n" if body else "  []\n"))
+    assert fqns(path) == expected(tree)
