@@ -12,8 +12,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from launchverify.ir.subst import Sub
-from launchverify.ir.symbolic import PathCondition, Select, Unset
+from launchverify.ir.subst import Sub, tree_size
+from launchverify.ir.symbolic import PathCondition, Select, Unknown, Unset
 
 ROS_NAMESPACE = "ros_namespace"
 ROS_REMAPS = "ros_remaps"
@@ -41,14 +41,22 @@ class ScopedParam:
     file: Sub | None = None
 
 
+MAX_VALUE_SIZE = 2000
+
+
 def guarded(path: PathCondition, new: Sub, old: Sub | None, name: str) -> Sub:
-    """Return the value after an assignment made under ``path``."""
-    if not path:
-        return new
-    previous = Unset(name) if old is None else old
-    if previous == new:
-        return new
-    return Select(path, new, previous)
+    """Return the value after an assignment made under ``path``.
+
+    A value that grows past ``MAX_VALUE_SIZE`` (a file doubling a configuration under
+    conditions, say) becomes unknown instead of exponentially large.
+    """
+    if path:
+        previous = Unset(name) if old is None else old
+        if previous != new:
+            new = Select(path, new, previous)
+    if tree_size(new, MAX_VALUE_SIZE) > MAX_VALUE_SIZE:
+        return Unknown(f"value of {name} (too complex to follow)")
+    return new
 
 
 class Scopes:

@@ -26,6 +26,7 @@ from launchverify.evaluate.scope import (
     ScopedParam,
     ScopedRemap,
     Scopes,
+    guarded,
 )
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
 from launchverify.evaluate.values import BaseReducer, Reducer, is_unset, ns_prefix, text_of
@@ -908,9 +909,8 @@ class Walker:
 
 
 def _guard_env(ctx: Ctx, value: s.Sub, old: s.Sub | None, name: str) -> s.Sub:
-    if not ctx.path:
-        return value
-    return Select(ctx.path, value, old if old is not None else Unknown(f"environment {name}"))
+    previous = old if old is not None or not ctx.path else Unknown(f"environment {name}")
+    return guarded(ctx.path, value, previous, name)
 
 
 def _opaque(description: str) -> Guard:
