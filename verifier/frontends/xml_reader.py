@@ -8,7 +8,10 @@ attributes are recovered from the source text.
 
 from __future__ import annotations
 
+import bisect
 import re
+from collections.abc import Iterator
+from dataclasses import dataclass
 from pathlib import Path
 
 from lxml import etree
@@ -21,60 +24,105 @@ MAX_BYTES = 5 * 1024 * 1024
 _ENTITY_DECL = re.compile(rb"<!ENTITY", re.IGNORECASE)
 
 
-class _Locator:
-    """Finds columns of start tags and attributes in the source text."""
-
-    def __init__(self, path: Path, text: str) -> None:
-        self.path = path
-        self.lines = text.splitlines()
-        self.cursor: dict[int, int] = {}
-
-    def element(self, tag: str, line: int) -> tuple[Span, str]:
-        """Return the span of ``<tag`` on ``line`` and the start-tag text that follows it."""
-        source = self.lines[line - 1] if 0 < line <= len(self.lines) else ""
-        start = self.cursor.get(line, 0)
-        found = source.find("<" + tag, start)
-        if found < 0:
-            found = max(source.find("<"), 0)
-        self.cursor[line] = found + 1
-        tail = "\n".join([source[found:], *self.lines[line : line + 40]])
-        end = _start_tag_end(tail)
-        return Span(self.path, line, found + 1), tail[:end]
-
-    def attribute(self, element_span: Span, start_tag: str, name: str) -> Span:
-        """Return the span of ``name="..."`` inside the start tag, or the element's span."""
-        match = re.search(r"(?:^|\s)(" + re.escape(name) + r")\s*=\s*(['\"])", start_tag)
-        if match is None:
-            return element_span
-        offset = match.start(1)
-        before = start_tag[:offset]
-        line = element_span.line + before.count("\n")
-        column = (
-            element_span.column + offset if "\n" not in before else offset - before.rfind("\n")
-        )
-        value_end = start_tag.find(match.group(2), match.end())
-        end_text = start_tag[:value_end + 1] if value_end >= 0 else start_tag[: match.end()]
-        end_line = element_span.line + end_text.count("\n")
-        end_column = (
-            element_span.column + len(end_text)
-            if "\n" not in end_text
-            else len(end_text) - end_text.rfind("\n")
-        )
-        return Span(element_span.file, line, column, end_line, end_column)
+_PREDEFINED_ENTITIES = frozenset({"lt", "gt", "amp", "quot", "apos"})
+_ENTITY_REF = re.compile(r"&([A-Za-z_][\w.-]*);")
+_ATTRIBUTE = re.compile(r"""([^\s=/>]+)\s*=\s*(?:"[^"]*"|'[^']*')""")
 
 
-def _start_tag_end(text: str) -> int:
-    """Return the index just past the ``>`` closing the start tag at the beginning of text."""
+@dataclass(frozen=True, slots=True)
+class _StartTag:
+    """Offsets of one start tag in the source text, and of its attributes."""
+
+    start: int
+    end: int
+    attributes: dict[str, tuple[int, int]]
+
+
+def scan_start_tags(text: str) -> list[_StartTag]:
+    """Return every start tag in document order, skipping comments, CDATA and the like.
+
+    lxml reports only the line where a start tag ends; this scan gives the exact start of
+    each element and of each attribute, in the same order as the elements lxml yields.
+    """
+    tags: list[_StartTag] = []
+    index = text.find("<")
+    while index >= 0:
+        if text.startswith("<!--", index):
+            close = text.find("-->", index + 4)
+            index = text.find("<", close + 3 if close >= 0 else len(text))
+            continue
+        if text.startswith("<![CDATA[", index):
+            close = text.find("]]>", index)
+            index = text.find("<", close + 3 if close >= 0 else len(text))
+            continue
+        if text.startswith("<!", index):
+            index = text.find("<", _declaration_end(text, index))
+            continue
+        if text.startswith("<?", index):
+            close = text.find("?>", index)
+            index = text.find("<", close + 2 if close >= 0 else len(text))
+            continue
+        end = _start_tag_end(text, index)
+        if not text.startswith("</", index):
+            body = text[index:end]
+            name_end = index + 1
+            while name_end < end and not text[name_end].isspace() and text[name_end] not in "/>":
+                name_end += 1
+            attributes = {
+                match.group(1): (index + match.start(1), index + match.end())
+                for match in _ATTRIBUTE.finditer(body, name_end - index)
+            }
+            tags.append(_StartTag(index, end, attributes))
+        index = text.find("<", end)
+    return tags
+
+
+def _declaration_end(text: str, index: int) -> int:
+    """Return the end of ``<!DOCTYPE ...>``, including a bracketed internal subset."""
+    depth = 0
+    for position in range(index + 2, len(text)):
+        char = text[position]
+        if char == "[":
+            depth += 1
+        elif char == "]":
+            depth -= 1
+        elif char == ">" and depth <= 0:
+            return position + 1
+    return len(text)
+
+
+def _start_tag_end(text: str, index: int) -> int:
+    """Return the index just past the ``>`` that closes the tag starting at ``index``."""
     quote = ""
-    for index, char in enumerate(text):
+    for position in range(index + 1, len(text)):
+        char = text[position]
         if quote:
             if char == quote:
                 quote = ""
         elif char in "\"'":
             quote = char
         elif char == ">":
-            return index + 1
+            return position + 1
     return len(text)
+
+
+class _Locator:
+    """Turns text offsets into spans."""
+
+    def __init__(self, path: Path, text: str) -> None:
+        self.path = path
+        self.line_starts = [0]
+        for match in re.finditer("\n", text):
+            self.line_starts.append(match.end())
+
+    def span(self, start: int, end: int | None = None) -> Span:
+        """Return the span between two offsets."""
+        line = bisect.bisect_right(self.line_starts, start)
+        column = start - self.line_starts[line - 1] + 1
+        if end is None:
+            return Span(self.path, line, column)
+        end_line = bisect.bisect_right(self.line_starts, end)
+        return Span(self.path, line, column, end_line, end - self.line_starts[end_line - 1] + 1)
 
 
 def read_xml(path: Path, data: bytes, sink: ProblemSink) -> Entity | None:
@@ -104,23 +152,54 @@ def read_xml(path: Path, data: bytes, sink: ProblemSink) -> Entity | None:
         sink.parse(f"invalid XML: {message}", Span(path, max(line, 1), max(column, 1)))
         return None
     text = data.decode("utf-8", errors="replace")
+    undefined = _undefined_entity(text)
+    if undefined is not None:
+        name, offset = undefined
+        line = text.count("\n", 0, offset) + 1
+        sink.parse(f"undefined XML entity &{name};", Span(path, line))
+        return None
     locator = _Locator(path, text)
-    return _convert(root, locator)
+    elements = [e for e in root.iter() if isinstance(e.tag, str)]
+    tags = scan_start_tags(text)
+    if len(tags) != len(elements):  # should not happen; fall back to lxml's lines
+        tags = []
+    return _convert(root, locator, iter(zip(elements, tags, strict=False)) if tags else None)
 
 
-def _convert(element: etree._Element, locator: _Locator) -> Entity:
+def _undefined_entity(text: str) -> tuple[str, int] | None:
+    """Return the first reference to an entity XML does not predefine, outside comments."""
+    without_comments = re.sub(r"<!--.*?-->", lambda m: " " * len(m.group()), text, flags=re.S)
+    for match in _ENTITY_REF.finditer(without_comments):
+        if match.group(1) not in _PREDEFINED_ENTITIES:
+            return match.group(1), match.start()
+    return None
+
+
+def _convert(
+    element: etree._Element,
+    locator: _Locator,
+    tags: Iterator[tuple[etree._Element, _StartTag]] | None,
+) -> Entity:
     tag = str(element.tag)
-    line = element.sourceline
-    span, start_tag = locator.element(tag, line if isinstance(line, int) else 1)
+    start_tag = None
+    if tags is not None:
+        matched, start_tag = next(tags)
+        assert matched is element
+    if start_tag is None:
+        line = element.sourceline if isinstance(element.sourceline, int) else 1
+        span = Span(locator.path, line)
+    else:
+        span = locator.span(start_tag.start, start_tag.end)
     entity = Entity(tag=tag, span=span, format="xml")
     for name, value in element.attrib.items():
         key = str(name)
-        entity.attrs[key] = Attr(str(value), locator.attribute(span, start_tag, key))
+        where = start_tag.attributes.get(key) if start_tag is not None else None
+        entity.attrs[key] = Attr(str(value), locator.span(*where) if where else span)
     children: list[Entity] = []
     for child in element:
         if not isinstance(child.tag, str):
-            continue  # comments, entity references
-        converted = _convert(child, locator)
+            continue  # comments, processing instructions
+        converted = _convert(child, locator, tags)
         children.append(converted)
         entity.nested.setdefault(converted.tag, []).append(converted)
     entity.child_list = children

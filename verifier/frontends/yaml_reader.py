@@ -23,6 +23,14 @@ class _Budget(Exception):
     """Raised when alias expansion makes the document too large."""
 
 
+class _Recursive(Exception):
+    """Raised when an alias refers to a node that contains it."""
+
+    def __init__(self, node: yaml.Node) -> None:
+        super().__init__("recursive alias")
+        self.node = node
+
+
 class YamlLoadError(Exception):
     """A YAML document that cannot be read; carries its position."""
 
@@ -76,7 +84,8 @@ def read_yaml(path: Path, data: bytes, sink: ProblemSink) -> Entity | None:
         sink.parse(f"file is larger than {MAX_BYTES // (1024 * 1024)} MiB; not read", whole)
         return None
     try:
-        root = compose(data.decode("utf-8", errors="replace"))
+        text = decode(data)
+        root = compose(text)
     except YamlLoadError as error:
         sink.parse(str(error), Span(path, error.line, error.column))
         return None
@@ -89,7 +98,25 @@ def read_yaml(path: Path, data: bytes, sink: ProblemSink) -> Entity | None:
         return converter.entity(str(key.value), value, span_of(path, key))
     except _Budget:
         sink.parse("YAML aliases expand to more than the allowed document size", whole)
-        return None
+    except _Recursive as error:
+        sink.parse("a YAML alias refers to a node that contains it (infinite document)",
+                   span_of(path, error.node))
+    except RecursionError:
+        sink.parse("the YAML document nests too deeply", whole)
+    return None
+
+
+def decode(data: bytes) -> str:
+    """Decode YAML bytes as UTF-8 (or UTF-16/32 with a byte-order mark), strictly."""
+    marks = ((b"\xef\xbb\xbf", "utf-8-sig"), (b"\xff\xfe\x00\x00", "utf-32"),
+             (b"\x00\x00\xfe\xff", "utf-32"), (b"\xff\xfe", "utf-16"), (b"\xfe\xff", "utf-16"))
+    codec = next((name for bom, name in marks if data.startswith(bom)), "utf-8")
+    try:
+        return data.decode(codec)
+    except UnicodeDecodeError as error:
+        line = data[: error.start].count(b"\n") + 1
+        raise YamlLoadError(f"the file is not valid {codec.upper()}: {error.reason}", line,
+                            1) from None
 
 
 class _Converter:
@@ -98,6 +125,7 @@ class _Converter:
         self.sink = sink
         self.scalars = ScalarReader()
         self.count = 0
+        self.open: set[int] = set()  # collections being converted (to catch cycles)
 
     def _tick(self) -> None:
         self.count += 1
@@ -105,10 +133,19 @@ class _Converter:
             raise _Budget
 
     def entity(self, tag: str, node: yaml.Node, span: Span) -> Entity:
+        if id(node) in self.open:
+            raise _Recursive(node)
+        self.open.add(id(node))
+        try:
+            return self._entity(tag, node, span)
+        finally:
+            self.open.discard(id(node))
+
+    def _entity(self, tag: str, node: yaml.Node, span: Span) -> Entity:
         self._tick()
         entity = Entity(tag=tag, span=span, format="yaml")
         if isinstance(node, yaml.SequenceNode):
-            entity.child_list = self.children(node)
+            entity.child_list = self._children(node)  # the same node: already marked open
             return entity
         if isinstance(node, yaml.ScalarNode):
             if node.value not in ("", "~", "null"):
@@ -143,6 +180,15 @@ class _Converter:
         return entity
 
     def children(self, node: yaml.SequenceNode) -> list[Entity]:
+        if id(node) in self.open:
+            raise _Recursive(node)
+        self.open.add(id(node))
+        try:
+            return self._children(node)
+        finally:
+            self.open.discard(id(node))
+
+    def _children(self, node: yaml.SequenceNode) -> list[Entity]:
         out: list[Entity] = []
         for item in node.value:
             self._tick()

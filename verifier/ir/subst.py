@@ -34,7 +34,12 @@ def _quote_text(text: str) -> str:
 
 
 def _arg(sub: Sub) -> str:
-    """Spell one substitution argument so that the frontend grammar reads it back."""
+    """Spell one substitution argument so that the frontend grammar reads it back.
+
+    The grammar has no spelling for a quoted argument holding a substitution whose own
+    argument needs quotes (``$(var 'a $(var 'b c')')``); such expressions are shown as
+    display text that does not read back.
+    """
     parts = sub.parts if isinstance(sub, Concat) else (sub,)
     if all(not isinstance(p, Text) or _PLAIN_ARG.fullmatch(p.text) for p in parts) and parts != (
         Text(""),
@@ -57,7 +62,7 @@ class Text(Sub):
     text: str
 
     def describe(self) -> str:
-        return self.text
+        return self.text.replace("\\", "\\\\").replace("$(", "\\$(")
 
 
 @dataclass(frozen=True, slots=True)
