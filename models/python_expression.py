@@ -46,7 +46,7 @@ _CMP: dict[type, Callable[[Any, Any], Any]] = {
 _BUILTINS: dict[str, Any] = {
     "str": str, "int": int, "float": float, "bool": bool, "len": len, "abs": abs,
     "min": min, "max": max, "round": round, "sorted": sorted, "list": list, "tuple": tuple,
-    "any": any, "all": all, "True": True, "False": False, "None": None,
+    "any": any, "all": all, "set": set, "True": True, "False": False, "None": None,
 }
 _STR_METHODS = frozenset({
     "lower", "upper", "strip", "lstrip", "rstrip", "split", "startswith", "endswith",
@@ -54,6 +54,10 @@ _STR_METHODS = frozenset({
     "zfill", "ljust", "rjust", "center",
 })
 _PERCENT_FIELD = re.compile(r"%[-+ #0]*(\*|\d+)?(?:\.(\*|\d+))?")
+_SET_METHODS = frozenset({
+    "intersection", "union", "difference", "symmetric_difference", "issubset", "issuperset",
+    "isdisjoint",
+})
 _MATH = {name: getattr(math, name) for name in dir(math) if not name.startswith("_")}
 _COMBINATORIAL = {math.factorial, math.comb, math.perm}
 
@@ -232,6 +236,8 @@ class _Interpreter:
             return getattr(value, node.attr)
         if isinstance(value, str) and node.attr in _STR_METHODS:
             return getattr(value, node.attr)
+        if isinstance(value, (set, frozenset)) and node.attr in _SET_METHODS:
+            return getattr(value, node.attr)
         raise Unsupported(f"attribute .{node.attr} in $(eval) is not modelled")
 
     def visit_Call(self, node: ast.Call) -> Any:
@@ -242,7 +248,7 @@ class _Interpreter:
         allowed = callable(function) and (
             any(function is f for f in _BUILTINS.values())
             or any(function is f for f in _MATH.values())
-            or isinstance(owner, str)
+            or isinstance(owner, (str, set, frozenset))
         )
         if not allowed:
             raise Unsupported("this call in $(eval) is not modelled")

@@ -142,3 +142,11 @@ def test_checking_never_writes_into_the_tree(tmp_path: Path,
     run(capsys, "check", str(tmp_path))
     run(capsys, "graph", str(launch))
     assert sorted(p.name for p in tmp_path.rglob("*")) == before
+
+
+def test_arguments_may_follow_options(capsys: pytest.CaptureFixture[str]) -> None:
+    tree = CORPUS / "naming" / "node_name_from_argument" / "args.launch.xml"
+    assert run(capsys, "check", str(tree), "--format", "json", "right:=camera_right")[0] == 0
+    with pytest.raises(SystemExit) as stop:
+        main(["check", str(tree), "--bogus"])
+    assert stop.value.code == 2

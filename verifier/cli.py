@@ -70,7 +70,14 @@ def build_parser() -> argparse.ArgumentParser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return the exit status."""
     parser = build_parser()
-    args = parser.parse_args(argv)
+    args, extra = parser.parse_known_args(argv)
+    # name:=value may follow options (`check f.xml --format json x:=1`); argparse leaves
+    # those as unknown tokens.
+    unknown = [token for token in extra if ":=" not in token or token.startswith("-")]
+    if unknown:
+        parser.error(f"unrecognized arguments: {' '.join(unknown)}")
+    if extra:
+        args.targets = [*args.targets, *extra]
     if args.command is None:
         parser.print_help()
         return EXIT_ERROR

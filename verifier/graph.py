@@ -124,6 +124,7 @@ class IncludeRecord:
     static_arguments: tuple[StaticArgument, ...] = ()
     declared: set[str] = field(default_factory=set)
     reads: set[str] = field(default_factory=set)
+    files: set[Path] = field(default_factory=set)
     complete: bool = True
     note: str = ""
     relative: bool = False
@@ -210,6 +211,7 @@ class LaunchGraph:
     skipped: list[SkippedAction] = field(default_factory=list)
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
+    complete: bool = True  # False when part of the launch could not be seen into
 
     def __post_init__(self) -> None:
         self._base = BaseReducer(self.pinned)

@@ -15,10 +15,10 @@ class UndeclaredArgument(Rule):
     ## What it does
     Follows the launch in execution order and reports `$(var name)` (or
     `LaunchConfiguration('name')`) without a default where no `<arg>`, `<let>`, include
-    argument or command-line value has set `name` before. A file that reads
-    configurations it never declares is meant to be included: it is checked through its
-    includers, which must set them; on its own only a read one or two edits away from a
-    declared name (a typo) is reported.
+    argument or command-line value has set `name` before. A file that others include,
+    that declares arguments without defaults, or that reads configurations it never
+    declares is meant to be included: its includers must set them, so on its own only a
+    read one or two edits away from a declared name (a typo) is reported.
 
     ## Why it matters
     ros2 launch stops with `launch configuration 'name' does not exist`. Usually the name
@@ -41,21 +41,36 @@ class UndeclaredArgument(Rule):
     message = "launch configuration {name!r} is read but never declared or set{hint}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        if graph.included_elsewhere or any(not inc.complete for inc in graph.includes):
-            return
-        if graph.opaque_files:
-            return
+        if not graph.complete:
+            return  # a part we cannot see may set it
         known = graph.declared_names() | set(graph.pinned)
+        unset = [r for r in graph.reads if not r.found and not r.has_default]
+        alone = launchable_alone(graph, known)
         seen: set[tuple[object, ...]] = set()
-        for read in graph.reads:
-            if read.found or read.has_default or graph.runs(read.origin) is False:
-                continue
+        for read in unset:
             key = (read.name, read.origin.span)
-            if key in seen:
+            if key in seen or graph.runs(read.origin) is False:
                 continue
             seen.add(key)
             typo = typo_of(read.name, known)
-            if not read.origin.chain and typo is None:
-                continue  # the root reads it undeclared: meant to be set by an includer
+            if typo is None and not alone:
+                continue  # meant to be included: the includer sets it
             hint = f" (did you mean {typo!r}?)" if typo else ""
             yield self.finding(read.origin, name=read.name, hint=hint)
+
+
+def launchable_alone(graph: LaunchGraph, known: set[str]) -> bool:
+    """Return whether the root is meant to be launched by itself, not only included.
+
+    A root that others include, that declares arguments without defaults, or that reads
+    configurations it never declares expects an includer to provide values.
+    """
+    if graph.included_elsewhere:
+        return False
+    if any(not a.has_default and not a.conditional and a.name not in graph.pinned
+           for a in graph.root_arguments):
+        return False
+    return not any(
+        not r.found and not r.has_default and not r.origin.chain and typo_of(r.name, known) is None
+        for r in graph.reads
+    )

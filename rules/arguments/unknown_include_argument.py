@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph, Origin
+from launchverify.ir.walk import configuration_names
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.suggest import did_you_mean
 
@@ -44,6 +45,10 @@ class UnknownIncludeArgument(Rule):
             known = include.declared | include.reads | {
                 a.name for a in include.static_arguments
             }
+            for path in include.files:  # reads on branches this evaluation did not take
+                launch = graph.files[path].launch if path in graph.files else None
+                if launch is not None:
+                    known |= configuration_names(launch)
             for name, _value, span in include.arguments:
                 if name is None or name in known:
                     continue

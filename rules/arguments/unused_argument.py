@@ -47,8 +47,8 @@ class UnusedArgument(Rule):
     every_context = True
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        if graph.opaque_files or any(not inc.complete for inc in graph.includes):
-            return
+        if not graph.complete:
+            return  # a part we cannot see may read it
         if any(r.problem.kind is ProblemKind.PARSE for r in graph.problems):
             return  # reads may sit in what could not be parsed
         used = set(IMPLICIT_READS) | graph.read_names()

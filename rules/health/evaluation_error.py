@@ -15,8 +15,10 @@ class EvaluationError(Rule):
     ## What it does
     Reports what makes ros2 launch raise while it executes actions: a condition whose value
     is not `true`/`false`/`1`/`0`, an argument value outside its `choices`, `$(eval ...)`
-    expressions Python rejects, boolean substitutions on non-booleans, a `$(param)` with no
-    `set_parameter` in scope, a `for` loop length that is not an integer.
+    expressions Python rejects, boolean substitutions on non-booleans, a `for` loop length
+    that is not an integer, and a `$(param)` with no `set_parameter` in scope (in files
+    reached through includes: a file checked on its own may get it from its includer).
+    Values that depend on arguments are checked with the default arguments too.
 
     ## Why it matters
     launch logs `Caught exception in launch` and shuts everything down; on a robot this

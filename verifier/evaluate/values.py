@@ -177,6 +177,9 @@ class Reducer:
         """Return the value of a machine environment variable (kept symbolic)."""
         return sub
 
+    def probe(self, residual: s.Sub) -> None:
+        """Look at a residual expression under the default arguments (hook)."""
+
     def fail(self, message: str) -> None:
         """Record that launch would raise while evaluating the current action."""
 
@@ -213,7 +216,9 @@ class Reducer:
         text = text_of(expression)
         module_text = text_of(modules) if modules is not None else "math"
         if text is None or module_text is None:
-            return s.PythonExpr(expression, modules)
+            residual = s.PythonExpr(expression, modules)
+            self.probe(residual)
+            return residual
         names = [m.strip() for m in module_text.split(",") if m.strip()]
         try:
             return s.Text(evaluate_expression(text, names))

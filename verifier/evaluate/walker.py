@@ -31,6 +31,7 @@ from launchverify.evaluate.scope import (
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
 from launchverify.evaluate.values import BaseReducer, Reducer, is_unset, ns_prefix, text_of
 from launchverify.frontends import LoadedFile
+from launchverify.frontends.subst_parser import SubstitutionSyntaxError, parse_substitution
 from launchverify.graph import (
     ArgumentRecord,
     ConfigRead,
@@ -61,6 +62,7 @@ from launchverify.ir.symbolic import (
     Unknown,
     Unset,
 )
+from launchverify.models import booleans
 from launchverify.packages import PackageIndex
 from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
@@ -207,6 +209,12 @@ class ScopeReducer(Reducer):
         assert self.span is not None
         self.walker.problem(ProblemKind.UNMODELED, message, self.span, self.ctx)
 
+    def probe(self, residual: s.Sub) -> None:
+        """A ``$(eval)`` over arguments: it must work with the default arguments too."""
+        assert self.ctx is not None and self.span is not None
+        if self.walker.graph.runs(self.ctx.origin(self.span)) is not False:
+            self.walker.base_check.at(self.ctx, self.span).reduce(residual)
+
 
 class DefaultsReducer(BaseReducer):
     """Evaluates residual values under the given arguments and defaults, reporting failures.
@@ -230,6 +238,10 @@ class DefaultsReducer(BaseReducer):
         assert self.span is not None
         self.walker.problem(ProblemKind.EVALUATION, f"with the default arguments, {message}",
                             self.span, self.ctx)
+
+    def unmodeled(self, message: str) -> None:
+        assert self.span is not None
+        self.walker.problem(ProblemKind.UNMODELED, message, self.span, self.ctx)
 
 
 def _fill_unset(value: s.Sub, fill: s.Sub) -> s.Sub:
@@ -273,6 +285,7 @@ class Walker:
     def mark_incomplete(self) -> None:
         """Note that the includes being walked contain something not understood."""
         self.incomplete = True
+        self.graph.complete = False
         for record in self.include_stack:
             record.complete = False
 
@@ -324,6 +337,8 @@ class Walker:
     def load(self, path: Path, ctx: Ctx) -> LoadedFile:
         """Load a file (cached by the loader) and record its problems once."""
         loaded: LoadedFile = self.loader(path)
+        for record in self.include_stack:
+            record.files.add(path)
         if path not in self.graph.files:
             self.graph.files[path] = loaded
             for problem in loaded.problems:
@@ -529,6 +544,7 @@ class Walker:
             record.status = "unreadable" if loaded.format != "python" else "unmodeled"
             self.mark_incomplete()
             return
+        record.files.add(target)
         record.static_arguments = self.static_args(loaded)
         # launch sets the current file before the arguments are evaluated: $(dirname) in an
         # include argument is the included file's folder.
@@ -867,6 +883,8 @@ class Walker:
                 location = reducer.reduce(entry.path)
                 self.check_file(location, ctx.origin(entry.span), "parameter file", ctx)
                 out.append(ParamRecord(ctx.origin(entry.span), file=location))
+                if self.allows_substitutions(entry, ctx):
+                    self.substitute_param_file(location, entry.span, ctx)
                 continue
             for item in entry.items:
                 value = item.value.value
@@ -877,6 +895,45 @@ class Walker:
                 out.append(ParamRecord(ctx.origin(item.span), name=reducer.reduce(item.name),
                                        value=value))
         return out
+
+    def allows_substitutions(self, entry: a.ParamFile, ctx: Ctx) -> bool:
+        """Return whether a parameter file is read with ``allow_substs`` true."""
+        flag = entry.allow_substs
+        if isinstance(flag, bool):
+            return flag
+        value = self.reducer.at(ctx, entry.span).text(flag)
+        try:
+            return value is not None and booleans.typed_truth(value)
+        except booleans.InvalidBoolean:
+            return False
+
+    def substitute_param_file(self, location: s.Sub, span: Span, ctx: Ctx) -> None:
+        """Evaluate the ``$(...)`` in a parameter file loaded with ``allow_substs``.
+
+        launch performs them in the node's context, so their reads count like any other;
+        they are pointed at their line of the parameter file.
+        """
+        text = text_of(location) or self.graph.base(location)
+        located = None if text is None else self.index.locate(Path(text))
+        if located is None or not located.resolve().is_relative_to(self.workspace):
+            self.mark_incomplete()  # its reads are unknown
+            return
+        try:
+            content = located.read_bytes()[:MAX_FILE_CONTENT].decode("utf-8", "replace")
+        except OSError:
+            return
+        for number, line in enumerate(content.splitlines(), 1):
+            column = line.find("$(")
+            if column < 0:
+                continue
+            where = Span(located, number, column + 1)
+            try:
+                expression = parse_substitution(line)
+            except SubstitutionSyntaxError as error:
+                self.problem(ProblemKind.EVALUATION, f"invalid substitution in parameter file "
+                             f"loaded with allow_substs: {error}", where, ctx)
+                continue
+            self.reducer.at(ctx, where).reduce(expression)
 
     def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx) -> None:
         """Record whether a file the launch needs exists (when its path is known)."""

@@ -35,7 +35,7 @@ TAG_HINTS = {
 # Tags that launch extensions of other packages add; not modelled, so they are opaque.
 EXTENSION_TAGS = {
     "gz_server": "ros_gz_sim", "gzserver": "ros_gz_sim", "gz_spawn_model": "ros_gz_sim",
-    "ros_gz_bridge": "ros_gz_bridge",
+    "ros_gz_bridge": "ros_gz_bridge", "trace": "tracetools_launch",
 }
 
 
