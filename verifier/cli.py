@@ -7,8 +7,10 @@ internal failure (never a traceback on the user's screen).
 from __future__ import annotations
 
 import argparse
+import os
 import sys
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 
 from launchverify import __version__
@@ -107,12 +109,13 @@ def _check(args: argparse.Namespace) -> int:
         paths=[Path(p) for p in paths], arguments=arguments, workspace=args.workspace,
         select=_codes(args.select), ignore=_codes(args.ignore),
     ))
-    if args.format == "json":
-        render_json(report, sys.stdout)
-    else:
-        color = {"auto": None, "always": True, "never": False}[args.color]
-        render_text(report, sys.stdout, color=color)
     failed = any(f.severity is Severity.ERROR for f in report.findings)
+    with _output_may_close():
+        if args.format == "json":
+            render_json(report, sys.stdout)
+        else:
+            color = {"auto": None, "always": True, "never": False}[args.color]
+            render_text(report, sys.stdout, color=color)
     return EXIT_FINDINGS if failed else EXIT_OK
 
 
@@ -128,8 +131,20 @@ def _graph(args: argparse.Namespace) -> int:
         raise UsageError(f"no such file: {paths[0]!r}")
     workspace, index = build_index([path], args.workspace)
     graph = evaluate(canonical(path), index=index, workspace=workspace, pinned=arguments)
-    if args.format == "json":
-        render_graph_json(graph, sys.stdout, symbolic=args.symbolic)
-    else:
-        render_graph_text(graph, sys.stdout, symbolic=args.symbolic)
+    with _output_may_close():
+        if args.format == "json":
+            render_graph_json(graph, sys.stdout, symbolic=args.symbolic)
+        else:
+            render_graph_text(graph, sys.stdout, symbolic=args.symbolic)
     return EXIT_OK
+
+
+@contextmanager
+def _output_may_close() -> Iterator[None]:
+    """Stop writing quietly when the reader goes away (``launchverify check | head``)."""
+    try:
+        yield
+        sys.stdout.flush()
+    except BrokenPipeError:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())

@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from pathlib import Path
 
 from launchverify.evaluate.walker import Walker
 from launchverify.frontends import LoadedFile, load_launch_file
-from launchverify.graph import LaunchGraph
+from launchverify.graph import LaunchGraph, StaticArgument
 from launchverify.packages import PackageIndex
 
 
@@ -16,6 +15,7 @@ class FileCache:
 
     def __init__(self) -> None:
         self._files: dict[Path, LoadedFile] = {}
+        self.static_arguments: dict[Path, tuple[StaticArgument, ...]] = {}
 
     def __call__(self, path: Path) -> LoadedFile:
         """Return the loaded file, reading it the first time."""
@@ -32,7 +32,7 @@ def evaluate(
     index: PackageIndex,
     workspace: Path,
     pinned: dict[str, str] | None = None,
-    loader: Callable[[Path], LoadedFile] | None = None,
+    loader: FileCache | None = None,
     included_elsewhere: bool = False,
 ) -> LaunchGraph:
     """Evaluate ``root`` as ``ros2 launch root name:=value...`` would, without running it.

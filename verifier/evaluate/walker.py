@@ -348,9 +348,12 @@ class Walker:
         return loaded
 
     def static_args(self, loaded: LoadedFile) -> tuple[StaticArgument, ...]:
-        """Return the statically discovered arguments of a loaded file."""
+        """Return the statically discovered arguments of a loaded file (cached per run)."""
         if loaded.launch is None:
             return ()
+        cache = getattr(self.loader, "static_arguments", None)
+        if cache is not None and loaded.path in cache:
+            return cache[loaded.path]  # type: ignore[no-any-return]
         out = []
         for declaration, includes, conditional in static_arguments(
             loaded.launch, self.loader, self.index
@@ -360,6 +363,8 @@ class Walker:
                 declaration.name, declaration.default is not None, conditional,
                 declaration.span, declaration.description, via,
             ))
+        if cache is not None:
+            cache[loaded.path] = tuple(out)
         return tuple(out)
 
     # ------------------------------------------------------------------ visiting

@@ -16,6 +16,8 @@ from launchverify.problems import ProblemSink
 from launchverify.span import Span
 
 MAX_BYTES = 5 * 1024 * 1024
+# libyaml composes about 16 times faster and keeps the same marks; PyYAML may lack it.
+_COMPOSER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 MAX_NODES = 200_000
 
 
@@ -49,7 +51,7 @@ def span_of(path: Path, node: yaml.Node) -> Span:
 def compose(text: str) -> yaml.Node | None:
     """Compose one YAML document safely, raising ``YamlLoadError`` with a position."""
     try:
-        return yaml.compose(text, Loader=yaml.SafeLoader)
+        return yaml.compose(text, Loader=_COMPOSER)
     except yaml.MarkedYAMLError as error:
         mark = error.problem_mark or error.context_mark
         line, column = (mark.line + 1, mark.column + 1) if mark else (1, 1)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Iterator
+from functools import cache
 
 from launchverify.ir import actions as a
 from launchverify.ir import conditions as c
@@ -35,8 +36,12 @@ def iter_subs(record: object) -> Iterator[s.Sub]:
             stack.extend(item)
 
 
-def configuration_names(launch: a.LaunchFile) -> set[str]:
-    """Return every configuration name a file reads literally (``$(var name)``)."""
+@cache
+def configuration_names(launch: a.LaunchFile) -> frozenset[str]:
+    """Return every configuration name a file reads literally (``$(var name)``).
+
+    Cached per parsed file: rules ask for it once per launch the file takes part in.
+    """
     names: set[str] = set()
     for action in iter_actions(launch.actions):
         for sub in iter_subs(action):
@@ -46,4 +51,4 @@ def configuration_names(launch: a.LaunchFile) -> set[str]:
             action.condition.name, s.Text
         ):
             names.add(action.condition.name.text)
-    return names
+    return frozenset(names)
