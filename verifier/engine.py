@@ -15,7 +15,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from launchverify.discover import discover
-from launchverify.evaluate.runner import FileCache, evaluate
+from launchverify.evaluate.files import FileCache
+from launchverify.evaluate.runner import evaluate
 from launchverify.graph import LaunchGraph
 from launchverify.packages import PackageIndex, find_workspace
 from launchverify.registry import select as select_rules

@@ -12,13 +12,14 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import os
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
 
+from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.scope import (
     GLOBAL_PARAMS,
     ROS_NAMESPACE,
@@ -257,7 +258,7 @@ class Walker:
     """Evaluates one root launch file into a ``LaunchGraph``."""
 
     def __init__(self, graph: LaunchGraph, index: PackageIndex,
-                 loader: Callable[[Path], LoadedFile], workspace: Path) -> None:
+                 loader: FileCache, workspace: Path) -> None:
         self.graph = graph
         self.index = index
         self.loader = loader
@@ -351,9 +352,9 @@ class Walker:
         """Return the statically discovered arguments of a loaded file (cached per run)."""
         if loaded.launch is None:
             return ()
-        cache = getattr(self.loader, "static_arguments", None)
-        if cache is not None and loaded.path in cache:
-            return cache[loaded.path]  # type: ignore[no-any-return]
+        cache = self.loader.static_arguments
+        if loaded.path in cache:
+            return cache[loaded.path]
         out = []
         for declaration, includes, conditional in static_arguments(
             loaded.launch, self.loader, self.index
@@ -363,9 +364,8 @@ class Walker:
                 declaration.name, declaration.default is not None, conditional,
                 declaration.span, declaration.description, via,
             ))
-        if cache is not None:
-            cache[loaded.path] = tuple(out)
-        return tuple(out)
+        cache[loaded.path] = tuple(out)
+        return cache[loaded.path]
 
     # ------------------------------------------------------------------ visiting
 

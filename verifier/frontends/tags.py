@@ -10,14 +10,40 @@ from __future__ import annotations
 import contextlib
 from collections.abc import Callable
 from pathlib import Path
+from typing import TypedDict
 
-from launchverify.frontends.entity import Entity
+from launchverify.frontends.entity import Entity, Scalar
 from launchverify.frontends.reader import EntityReader, MissingAttribute
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
+from launchverify.ir.conditions import Condition
 from launchverify.problems import ProblemSink
+from launchverify.span import Span
 
 Handler = Callable[["TagParser", Entity], a.Action | None]
+
+
+class Common(TypedDict):
+    """What every action is built with."""
+
+    span: Span
+    condition: Condition | None
+    attr_spans: dict[str, Span]
+
+
+class NodeFields(Common):
+    """What ``<node>`` and its variants are built with."""
+
+    executable: s.Sub
+    package: s.Sub | None
+    name: s.Sub | None
+    namespace: s.Sub | None
+    exec_name: s.Sub | None
+    arguments: tuple[s.Sub, ...]
+    ros_arguments: tuple[s.Sub, ...]
+    parameters: tuple[a.ParamEntry, ...]
+    remappings: tuple[a.Remap, ...]
+    process: a.ProcessOptions
 TAGS: dict[str, Handler] = {}
 
 # Close misspellings and ROS 1 tags users carry over, named in the error message.
@@ -103,7 +129,7 @@ class TagParser(EntityReader):
         self.finish(entity)
         return action
 
-    def common(self, entity: Entity) -> dict[str, object]:
+    def common(self, entity: Entity) -> Common:
         """Return the keyword arguments every action takes: span, condition, spans."""
         return {
             "span": entity.span,
@@ -145,7 +171,7 @@ class TagParser(EntityReader):
             output=self.sub(entity, "output"),
             respawn=self.sub_or_bool(entity, "respawn") or False,
             respawn_delay=self.number(entity, "respawn_delay", float, minimum=0.0),
-            respawn_max_retries=self.number(entity, "respawn_max_retries", int),  # type: ignore[arg-type]
+            respawn_max_retries=_integer(self.number(entity, "respawn_max_retries", int)),
             sigterm_timeout=self.number(entity, "sigterm_timeout", float, minimum=0.0),
             sigkill_timeout=self.number(entity, "sigkill_timeout", float, minimum=0.0),
             shell=self.flag(entity, "shell") or False,
@@ -206,7 +232,8 @@ class TagParser(EntityReader):
         self.finish(item)
         return out
 
-    def param_value(self, item: Entity, raw: object, value_type: str | None) -> a.ParamValue:
+    def param_value(self, item: Entity, raw: Scalar | list[Scalar],
+                    value_type: str | None) -> a.ParamValue:
         """Read a parameter value: substituted text, ``value-sep`` lists, YAML literals."""
         span = item.attrs["value"].span
         if isinstance(raw, str):
@@ -222,9 +249,9 @@ class TagParser(EntityReader):
                 value=tuple(self.parse_text(x, span) if isinstance(x, str) else x for x in raw),
                 value_type=value_type,
             )
-        return a.ParamValue(value=raw, value_type=value_type)  # type: ignore[arg-type]
+        return a.ParamValue(value=raw, value_type=value_type)
 
-    def node_fields(self, entity: Entity) -> dict[str, object]:
+    def node_fields(self, entity: Entity) -> NodeFields:
         """Read everything ``<node>`` and its variants share."""
         if entity.get("node-name") is not None:
             self.sink.parse(
@@ -286,6 +313,10 @@ class TagParser(EntityReader):
         return node
 
 
+def _integer(value: float | int | None) -> int | None:
+    return None if value is None else int(value)
+
+
 def _dotted(names: tuple[s.Sub, ...]) -> list[s.Sub]:
     out: list[s.Sub] = []
     for index, name in enumerate(names):
@@ -309,7 +340,7 @@ def _arg(p: TagParser, e: Entity) -> a.Action:
         if value is not None:
             choices = (*(choices or ()), value)
     return a.DeclareArgument(
-        **p.common(e),  # type: ignore[arg-type]
+        **p.common(e),
         name=name,
         default=p.sub(e, "default"),
         description=p.plain(e, "description"),
@@ -319,7 +350,7 @@ def _arg(p: TagParser, e: Entity) -> a.Action:
 
 @tag("let")
 def _let(p: TagParser, e: Entity) -> a.Action:
-    return a.SetConfig(**p.common(e), name=p.req(e, "name"), value=p.req(e, "value"))  # type: ignore[arg-type]
+    return a.SetConfig(**p.common(e), name=p.req(e, "name"), value=p.req(e, "value"))
 
 
 @tag("include")
@@ -332,7 +363,7 @@ def _include(p: TagParser, e: Entity) -> a.Action:
                                               value=p.req(item, "value"), span=item.span))
             p.finish(item)
     arguments.sort(key=lambda arg: (arg.span.line, arg.span.column))
-    return a.Include(**p.common(e), path=p.req(e, "file"), arguments=tuple(arguments))  # type: ignore[arg-type]
+    return a.Include(**p.common(e), path=p.req(e, "file"), arguments=tuple(arguments))
 
 
 @tag("group")
@@ -343,7 +374,7 @@ def _group(p: TagParser, e: Entity) -> a.Action:
     keep = p.pairs(e, "keep")
     children = [c for c in e.children() if c.tag != "keep"]
     return a.Group(
-        **common,  # type: ignore[arg-type]
+        **common,
         actions=p.actions(children),
         scoped=True if scoped is None else scoped,
         forwarding=True if forwarding is None else forwarding,
@@ -353,30 +384,30 @@ def _group(p: TagParser, e: Entity) -> a.Action:
 
 @tag("reset")
 def _reset(p: TagParser, e: Entity) -> a.Action:
-    return a.ResetConfigs(**p.common(e), keep=p.pairs(e, "keep"))  # type: ignore[arg-type]
+    return a.ResetConfigs(**p.common(e), keep=p.pairs(e, "keep"))
 
 
 @tag("executable")
 def _executable(p: TagParser, e: Entity) -> a.Action:
     common = p.common(e)
     cmd = p.cmdline(e, "cmd", required=True)
-    return a.ExecuteProcess(**common, cmd=cmd, process=p.process_options(e))  # type: ignore[arg-type]
+    return a.ExecuteProcess(**common, cmd=cmd, process=p.process_options(e))
 
 
 @tag("set_env")
 def _set_env(p: TagParser, e: Entity) -> a.Action:
-    return a.SetEnv(**p.common(e), name=p.req(e, "name"), value=p.req(e, "value"))  # type: ignore[arg-type]
+    return a.SetEnv(**p.common(e), name=p.req(e, "name"), value=p.req(e, "value"))
 
 
 @tag("unset_env")
 def _unset_env(p: TagParser, e: Entity) -> a.Action:
-    return a.UnsetEnv(**p.common(e), name=p.req(e, "name"))  # type: ignore[arg-type]
+    return a.UnsetEnv(**p.common(e), name=p.req(e, "name"))
 
 
 @tag("append_env")
 def _append_env(p: TagParser, e: Entity) -> a.Action:
     return a.AppendEnv(
-        **p.common(e),  # type: ignore[arg-type]
+        **p.common(e),
         name=p.req(e, "name"),
         value=p.req(e, "value"),
         prepend=p.sub_or_bool(e, "prepend") or False,
@@ -386,13 +417,13 @@ def _append_env(p: TagParser, e: Entity) -> a.Action:
 
 @tag("reset_env")
 def _reset_env(p: TagParser, e: Entity) -> a.Action:
-    return a.ResetEnv(**p.common(e))  # type: ignore[arg-type]
+    return a.ResetEnv(**p.common(e))
 
 
 @tag("log", "log_info", "log_warning", "log_debug", "log_error")
 def _log(p: TagParser, e: Entity) -> a.Action:
     level = e.tag[4:] if e.tag != "log" else (p.plain(e, "level") or "info")
-    return a.Log(**p.common(e), message=p.req(e, "message"), level=level)  # type: ignore[arg-type]
+    return a.Log(**p.common(e), message=p.req(e, "message"), level=level)
 
 
 @tag("timer", "ros_timer")
@@ -408,7 +439,7 @@ def _timer(p: TagParser, e: Entity) -> a.Action:
     )
     cancel = p.sub_or_bool(e, "cancel_on_shutdown")
     return a.Timer(
-        **common,  # type: ignore[arg-type]
+        **common,
         period=period_sub,
         actions=p.actions(e.children()),
         cancel_on_shutdown=True if cancel is None else cancel,
@@ -418,14 +449,14 @@ def _timer(p: TagParser, e: Entity) -> a.Action:
 
 @tag("shutdown")
 def _shutdown(p: TagParser, e: Entity) -> a.Action:
-    return a.Shutdown(**p.common(e), reason=p.sub(e, "reason"))  # type: ignore[arg-type]
+    return a.Shutdown(**p.common(e), reason=p.sub(e, "reason"))
 
 
 @tag("for")
 def _for(p: TagParser, e: Entity) -> a.Action:
     common = p.common(e)
     return a.ForLoop(
-        **common,  # type: ignore[arg-type]
+        **common,
         length=p.req(e, "len"),
         name=p.plain(e, "name") or "",
         actions=p.actions(e.children()),
@@ -435,7 +466,7 @@ def _for(p: TagParser, e: Entity) -> a.Action:
 @tag("for_each")
 def _for_each(p: TagParser, e: Entity) -> a.Action:
     common = p.common(e)
-    return a.ForEach(**common, values=p.req(e, "values"), actions=p.actions(e.children()))  # type: ignore[arg-type]
+    return a.ForEach(**common, values=p.req(e, "values"), actions=p.actions(e.children()))
 
 
 # ---------------------------------------------------------------------- launch_ros
@@ -443,7 +474,7 @@ def _for_each(p: TagParser, e: Entity) -> a.Action:
 
 @tag("node")
 def _node(p: TagParser, e: Entity) -> a.Action:
-    return a.Node(**p.node_fields(e))  # type: ignore[arg-type]
+    return a.Node(**p.node_fields(e))
 
 
 @tag("lifecycle_node")
@@ -453,14 +484,14 @@ def _lifecycle_node(p: TagParser, e: Entity) -> a.Action:
         p.sink.parse("`lifecycle_node` requires the attribute `name`", e.span)
     if fields["namespace"] is None:
         p.sink.parse("`lifecycle_node` requires the attribute `namespace`", e.span)
-    return a.LifecycleNode(**fields, autostart=p.sub_or_bool(e, "autostart") or False)  # type: ignore[arg-type]
+    return a.LifecycleNode(**fields, autostart=p.sub_or_bool(e, "autostart") or False)
 
 
 @tag("node_container")
 def _node_container(p: TagParser, e: Entity) -> a.Action:
     fields = p.node_fields(e)
     return a.ComposableNodeContainer(
-        **fields,  # type: ignore[arg-type]
+        **fields,
         composable_nodes=p.composable_nodes(e, required=False),
     )
 
@@ -469,7 +500,7 @@ def _node_container(p: TagParser, e: Entity) -> a.Action:
 def _load_composable_node(p: TagParser, e: Entity) -> a.Action:
     common = p.common(e)
     return a.LoadComposableNodes(
-        **common,  # type: ignore[arg-type]
+        **common,
         target=p.req(e, "target"),
         composable_nodes=p.composable_nodes(e, required=True),
     )
@@ -477,12 +508,12 @@ def _load_composable_node(p: TagParser, e: Entity) -> a.Action:
 
 @tag("push_ros_namespace", "push-ros-namespace")
 def _push_ros_namespace(p: TagParser, e: Entity) -> a.Action:
-    return a.PushNamespace(**p.common(e), namespace=p.req(e, "namespace"))  # type: ignore[arg-type]
+    return a.PushNamespace(**p.common(e), namespace=p.req(e, "namespace"))
 
 
 @tag("set_remap")
 def _set_remap(p: TagParser, e: Entity) -> a.Action:
-    return a.SetRemap(**p.common(e), src=p.req(e, "from"), dst=p.req(e, "to"))  # type: ignore[arg-type]
+    return a.SetRemap(**p.common(e), src=p.req(e, "from"), dst=p.req(e, "to"))
 
 
 @tag("set_parameter")
@@ -494,12 +525,12 @@ def _set_parameter(p: TagParser, e: Entity) -> a.Action:
         p.sink.parse("`set_parameter` requires the attribute `value`", e.span)
         raise MissingAttribute("value")
     value = p.param_value(e, raw.value, None)
-    return a.SetParameter(**common, name=name, value=value)  # type: ignore[arg-type]
+    return a.SetParameter(**common, name=name, value=value)
 
 
 @tag("set_parameters_from_file")
 def _set_parameters_from_file(p: TagParser, e: Entity) -> a.Action:
-    return a.SetParametersFromFile(**p.common(e), filename=p.req(e, "filename"))  # type: ignore[arg-type]
+    return a.SetParametersFromFile(**p.common(e), filename=p.req(e, "filename"))
 
 
 @tag("set_use_sim_time")
@@ -509,9 +540,9 @@ def _set_use_sim_time(p: TagParser, e: Entity) -> a.Action:
     if value is None:
         p.sink.parse("`set_use_sim_time` requires the attribute `value`", e.span)
         raise MissingAttribute("value")
-    return a.SetUseSimTime(**common, value=value)  # type: ignore[arg-type]
+    return a.SetUseSimTime(**common, value=value)
 
 
 @tag("set_ros_log_dir")
 def _set_ros_log_dir(p: TagParser, e: Entity) -> a.Action:
-    return a.SetRosLogDir(**p.common(e), new_log_dir=p.req(e, "new_log_dir"))  # type: ignore[arg-type]
+    return a.SetRosLogDir(**p.common(e), new_log_dir=p.req(e, "new_log_dir"))

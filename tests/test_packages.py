@@ -1,0 +1,81 @@
+"""Package resolution: workspace sources, install prefixes, install layout to sources."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from launchverify.packages import PackageIndex, find_workspace, scan_sources
+
+
+def make_package(root: Path, name: str, folder: str | None = None) -> Path:
+    path = root / (folder or name)
+    path.mkdir(parents=True)
+    (path / "package.xml").write_text(
+        f'<?xml version="1.0"?>\n<package format="3"><name>{name}</name></package>\n'
+    )
+    return path
+
+
+def test_sources_are_found_and_ignored_folders_skipped(tmp_path: Path) -> None:
+    make_package(tmp_path / "src", "alpha")
+    make_package(tmp_path / "src", "beta", folder="nested/beta_folder")
+    make_package(tmp_path / "build", "built")
+    ignored = make_package(tmp_path / "src", "ignored")
+    (ignored / "COLCON_IGNORE").write_text("")
+    names = {name for name, _ in scan_sources(tmp_path)}
+    assert names == {"alpha", "beta"}
+
+
+def test_install_layout_resolves_to_sources(tmp_path: Path) -> None:
+    source = make_package(tmp_path, "robot")
+    (source / "launch" / "sensors").mkdir(parents=True)
+    (source / "launch" / "sensors" / "lidar.launch.xml").write_text("<launch/>")
+    (source / "params").mkdir()
+    (source / "params" / "driver.yaml").write_text("{}")
+    index = PackageIndex([tmp_path])
+    package = index.find("robot")
+    assert package is not None and package.share == source.resolve()
+    share = package.share
+    assert index.locate(share / "launch" / "sensors" / "lidar.launch.xml") == (
+        source.resolve() / "launch" / "sensors" / "lidar.launch.xml")
+    # installed to share/robot/config but kept in params/ in the sources
+    assert index.locate(share / "config" / "driver.yaml") == source.resolve() / "params" / (
+        "driver.yaml")
+    assert index.locate(share / "config" / "missing.yaml") is None
+
+
+def test_ament_prefix_packages(tmp_path: Path) -> None:
+    prefix = tmp_path / "opt"
+    marker = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    marker.mkdir(parents=True)
+    (marker / "demo_nodes_cpp").write_text("")
+    (prefix / "share" / "demo_nodes_cpp" / "launch").mkdir(parents=True)
+    index = PackageIndex([], [prefix])
+    package = index.find("demo_nodes_cpp")
+    assert package is not None and package.installed
+    assert package.share == prefix.resolve() / "share" / "demo_nodes_cpp"
+    assert index.has_install
+
+
+def test_workspace_install_folder_wins_for_share(tmp_path: Path) -> None:
+    make_package(tmp_path / "src", "robot")
+    prefix = tmp_path / "install" / "robot"
+    marker = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    marker.mkdir(parents=True)
+    (marker / "robot").write_text("")
+    index = PackageIndex([tmp_path])
+    package = index.find("robot")
+    assert package is not None and package.source is not None and package.installed
+    assert package.share == prefix.resolve() / "share" / "robot"
+
+
+def test_find_workspace(tmp_path: Path) -> None:
+    workspace = tmp_path / "ws"
+    (workspace / "src").mkdir(parents=True)
+    (workspace / "build").mkdir()
+    launch = make_package(workspace / "src", "robot") / "launch"
+    launch.mkdir()
+    assert find_workspace(launch) == workspace.resolve()
+    loose = make_package(tmp_path / "loose", "thing") / "launch"
+    loose.mkdir()
+    assert find_workspace(loose) == (tmp_path / "loose").resolve()
