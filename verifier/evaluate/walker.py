@@ -14,12 +14,13 @@ import itertools
 import os
 from collections.abc import Iterator
 from contextlib import contextmanager
-from dataclasses import dataclass
 from pathlib import Path
 
 import yaml
 
 from launchverify.evaluate.files import FileCache
+from launchverify.evaluate.nodes import NodeBuilder
+from launchverify.evaluate.reducers import Ctx, DefaultsReducer, ScopeReducer, fill_unset
 from launchverify.evaluate.scope import (
     GLOBAL_PARAMS,
     ROS_NAMESPACE,
@@ -30,9 +31,8 @@ from launchverify.evaluate.scope import (
     guarded,
 )
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
-from launchverify.evaluate.values import BaseReducer, Reducer, is_unset, ns_prefix, text_of
+from launchverify.evaluate.values import is_unset, ns_prefix, text_of
 from launchverify.frontends import LoadedFile
-from launchverify.frontends.subst_parser import SubstitutionSyntaxError, parse_substitution
 from launchverify.graph import (
     ArgumentRecord,
     ConfigRead,
@@ -40,13 +40,10 @@ from launchverify.graph import (
     IncludeRecord,
     LaunchGraph,
     NameRecord,
-    NodeRecord,
     Origin,
     PackageRef,
-    ParamRecord,
     ProblemRecord,
     ProcessRecord,
-    RemapRecord,
     SkippedAction,
     StaticArgument,
 )
@@ -56,14 +53,11 @@ from launchverify.ir import subst as s
 from launchverify.ir.symbolic import (
     Arg,
     Guard,
-    PathCondition,
-    Select,
     StrEquals,
     Truthy,
     Unknown,
     Unset,
 )
-from launchverify.models import booleans
 from launchverify.packages import PackageIndex
 from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
@@ -71,187 +65,6 @@ from launchverify.span import Span
 MAX_INCLUDE_DEPTH = 40
 MAX_LOOP = 256
 MAX_FILE_CONTENT = 1024 * 1024
-
-
-@dataclass(frozen=True, slots=True)
-class Ctx:
-    """Where the walk is: the file being executed, the include chain, the path condition."""
-
-    file: Path
-    chain: tuple[Span, ...]
-    path: PathCondition
-    deferred: bool = False
-    loop: tuple[tuple[str, s.Sub, bool], ...] = ()
-
-    def origin(self, span: Span) -> Origin:
-        """Return the origin of something written at ``span`` here."""
-        return Origin(span, self.chain, self.path)
-
-    def guarded(self, guard: Guard) -> Ctx:
-        """Return this context with one more guard."""
-        return dataclasses.replace(self, path=(*self.path, guard))
-
-
-class ScopeReducer(Reducer):
-    """Reduces expressions against the evaluator's current scope."""
-
-    def __init__(self, walker: Walker) -> None:
-        super().__init__()
-        self.walker = walker
-        self.ctx: Ctx | None = None
-        self.span: Span | None = None
-
-    def at(self, ctx: Ctx, span: Span) -> ScopeReducer:
-        """Point problems and records at ``span`` in ``ctx``."""
-        self.ctx, self.span = ctx, span
-        return self
-
-    def _origin(self) -> Origin:
-        assert self.ctx is not None and self.span is not None
-        return self.ctx.origin(self.span)
-
-    def config(self, name: str, default: s.Sub | None) -> s.Sub:
-        value = self.walker.scopes.get(name)
-        self.walker.record_read(name, self._origin(), value is not None, default is not None)
-        if value is None:
-            return Unset(name) if default is None else self.reduce(default)
-        if default is not None and is_unset(value):
-            return _fill_unset(value, self.reduce(default))
-        return value
-
-    def environment(self, name: str, default: s.Sub | None) -> s.Sub:
-        if name in self.walker.scopes.env:
-            value = self.walker.scopes.env[name]
-            if value is not None:
-                return value
-            if default is None:
-                self.fail(f"environment variable {name!r} was unset by the launch file")
-                return Unknown(f"unset environment variable {name}")
-            return self.reduce(default)
-        return super().environment(name, default)
-
-    def package_share(self, name: str) -> s.Sub:
-        package = self.walker.index.find(name)
-        self.walker.record_package(name, self._origin(), package is not None, "share")
-        return Unknown(f"share folder of {name}") if package is None else s.Text(
-            str(package.share)
-        )
-
-    def package_prefix(self, name: str) -> s.Sub:
-        package = self.walker.index.find(name)
-        self.walker.record_package(name, self._origin(), package is not None, "prefix")
-        if package is None or package.prefix is None:
-            return Unknown(f"install prefix of {name}")
-        return s.Text(str(package.prefix))
-
-    def executable_path(self, executable: str, package: str) -> s.Sub:
-        found = self.walker.index.find(package)
-        self.walker.record_package(package, self._origin(), found is not None, "executable")
-        return Unknown(f"path of {executable} in {package}")
-
-    def this_file(self, directory: bool) -> s.Sub:
-        current = self.walker.current_file
-        return s.Text(str(current.parent if directory else current))
-
-    def anon(self, name: str) -> s.Sub:
-        key = "anon" + name
-        value = self.walker.scopes.get(key)
-        if value is None:
-            clean = name.replace(".", "_").replace("-", "_").replace(":", "_")
-            value = s.Text(f"{clean}_anon{next(self.walker.anon_counter)}")
-            self.walker.scopes.set(key, value, ())
-        return value
-
-    def file_content(self, path: str) -> s.Sub:
-        return self.walker.read_file_content(path, self._origin())
-
-    def ros_parameter(self, name: str, default: s.Sub | None) -> s.Sub:
-        for item in self.walker.scopes.shared(GLOBAL_PARAMS):
-            if item.name is not None and text_of(item.name) == name:
-                value = item.value
-                return value if isinstance(value, s.Sub) else s.Text(str(value))
-        if default is not None:
-            return self.reduce(default)
-        if not self.walker.incomplete:
-            assert self.span is not None
-            self.walker.problem(
-                ProblemKind.EVALUATION,
-                f"parameter {name!r} not found (no set_parameter with that name in scope)",
-                self.span, self.ctx, contextual=True,
-            )
-        return Unknown(f"parameter {name}")
-
-    def loop_variable(self, name: str, default: s.Sub | None, index: bool) -> s.Sub:
-        assert self.ctx is not None
-        for var, value, is_index in reversed(self.ctx.loop):
-            if var == name and is_index == index:
-                return value
-        if default is not None:
-            return self.reduce(default)
-        self.fail(f"no value for loop variable {name!r}")
-        return Unknown(f"loop variable {name}")
-
-    def guard(self, guard: Guard) -> bool | None:
-        """Guards on the current path are known to hold (and their negations not to)."""
-        if self.ctx is not None and self.ctx.path:
-            if guard in self.ctx.path:
-                return True
-            if isinstance(guard, (Truthy, StrEquals)) and (
-                dataclasses.replace(guard, negate=not guard.negate) in self.ctx.path
-            ):
-                return False
-        return super().guard(guard)
-
-    def fail(self, message: str) -> None:
-        assert self.span is not None
-        self.walker.problem(ProblemKind.EVALUATION, message, self.span, self.ctx)
-
-    def unmodeled(self, message: str) -> None:
-        assert self.span is not None
-        self.walker.problem(ProblemKind.UNMODELED, message, self.span, self.ctx)
-
-    def probe(self, residual: s.Sub) -> None:
-        """A ``$(eval)`` over arguments: it must work with the default arguments too."""
-        assert self.ctx is not None and self.span is not None
-        if self.walker.graph.runs(self.ctx.origin(self.span)) is not False:
-            self.walker.base_check.at(self.ctx, self.span).reduce(residual)
-
-
-class DefaultsReducer(BaseReducer):
-    """Evaluates residual values under the given arguments and defaults, reporting failures.
-
-    A condition that depends on arguments is explored both ways; with the arguments as
-    given (defaults for the rest) it must still be valid, or ros2 launch fails right away.
-    """
-
-    def __init__(self, walker: Walker) -> None:
-        super().__init__(walker.graph.pinned)
-        self.walker = walker
-        self.ctx: Ctx | None = None
-        self.span: Span | None = None
-
-    def at(self, ctx: Ctx, span: Span) -> DefaultsReducer:
-        """Point problems at ``span`` in ``ctx``."""
-        self.ctx, self.span = ctx, span
-        return self
-
-    def fail(self, message: str) -> None:
-        assert self.span is not None
-        self.walker.problem(ProblemKind.EVALUATION, f"with the default arguments, {message}",
-                            self.span, self.ctx)
-
-    def unmodeled(self, message: str) -> None:
-        assert self.span is not None
-        self.walker.problem(ProblemKind.UNMODELED, message, self.span, self.ctx)
-
-
-def _fill_unset(value: s.Sub, fill: s.Sub) -> s.Sub:
-    if isinstance(value, Unset):
-        return fill
-    if isinstance(value, Select):
-        then = _fill_unset(value.then, fill)
-        return Select(value.guards, then, _fill_unset(value.otherwise, fill))
-    return value
 
 
 class Walker:
@@ -265,6 +78,7 @@ class Walker:
         self.workspace = workspace
         self.scopes = Scopes({k: s.Text(v) for k, v in graph.pinned.items()})
         self.reducer = ScopeReducer(self)
+        self.nodes = NodeBuilder(self)
         self.base_check = DefaultsReducer(self)
         self.current_file = graph.root
         self.anon_counter = itertools.count(1)
@@ -445,7 +259,7 @@ class Walker:
         if existing is None or is_unset(existing):
             value: s.Sub = Arg(action.name, default)
             if existing is not None:
-                value = _fill_unset(existing, value)
+                value = fill_unset(existing, value)
             self.scopes.set(action.name, value, ctx.path)
         current = self.scopes.get(action.name) or Unset(action.name)
         given = text_of(current)
@@ -715,7 +529,7 @@ class Walker:
     def do_SetParametersFromFile(self, action: a.SetParametersFromFile, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
         location = reducer.reduce(action.filename)
-        self.check_file(location, ctx.origin(action.at("filename")), "parameter file", ctx)
+        self.nodes.check_file(location, ctx.origin(action.at("filename")), "parameter file", ctx)
         self.scopes.append_shared(GLOBAL_PARAMS, ScopedParam(
             ctx.origin(action.span), ctx.path, file=location))
 
@@ -768,200 +582,21 @@ class Walker:
                 self.visit_all(options.on_exit, dataclasses.replace(ctx, deferred=True))
 
     def do_Node(self, action: a.Node, ctx: Ctx) -> None:
-        self.run_node(action, ctx)
+        self.nodes.run_node(action, ctx)
 
     def do_LifecycleNode(self, action: a.LifecycleNode, ctx: Ctx) -> None:
-        self.run_node(action, ctx)
+        self.nodes.run_node(action, ctx)
 
     def do_ComposableNodeContainer(self, action: a.ComposableNodeContainer, ctx: Ctx) -> None:
-        container = self.run_node(action, ctx)
+        container = self.nodes.run_node(action, ctx)
         for description in action.composable_nodes:
-            self.run_composable(description, container.fqn, ctx)
+            self.nodes.run_composable(description, container.fqn, ctx)
 
     def do_LoadComposableNodes(self, action: a.LoadComposableNodes, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
         target = reducer.reduce(action.target) if isinstance(action.target, s.Sub) else None
         for description in action.composable_nodes:
-            self.run_composable(description, target, ctx)
-
-    def run_node(self, action: a.Node, ctx: Ctx) -> NodeRecord:
-        """Execute a Node-like action as launch_ros does and record it."""
-        reducer = self.reducer.at(ctx, action.at("pkg"))
-        package = None if action.package is None else reducer.reduce(action.package)
-        package_name = text_of(package)
-        if package_name is not None:
-            self.record_package(package_name, ctx.origin(action.at("pkg")),
-                                self.index.find(package_name) is not None, "node")
-        executable = self.reducer.at(ctx, action.at("exec")).reduce(action.executable)
-        reducer = self.reducer.at(ctx, action.at("name"))
-        name = None if action.name is None else reducer.reduce(action.name)
-        if name is not None:
-            self.record_name("node name", name, ctx.origin(action.at("name")))
-        reducer = self.reducer.at(ctx, action.at("namespace"))
-        own_ns = None if action.namespace is None else reducer.reduce(action.namespace)
-        namespace = ns_prefix(self.scopes.get(ROS_NAMESPACE), own_ns)
-        if namespace is not None:
-            self.record_name("namespace", namespace, ctx.origin(action.at("namespace")))
-        fqn = None
-        if name is not None and namespace is not None:
-            fqn = ns_prefix(namespace, name)
-        reducer = self.reducer.at(ctx, action.span)
-        for argument in (*action.arguments, *action.ros_arguments):
-            reducer.reduce(argument)
-        exec_name = action.exec_name
-        if exec_name is not None:
-            reducer.reduce(exec_name)
-        remaps = (*self.scope_remaps(ctx), *self.own_remaps(action.remappings, ctx))
-        params = (*self.scope_params(ctx), *self.own_params(action.parameters, ctx))
-        self.visit_process_options(action.process, action.span, ctx)
-        record = NodeRecord(
-            kind=action.kind, origin=ctx.origin(action.span), package=package,
-            executable=executable, name=name, namespace=namespace, fqn=fqn,
-            remappings=remaps, parameters=params, deferred=ctx.deferred,
-        )
-        self.graph.nodes.append(record)
-        return record
-
-    def run_composable(self, node: a.ComposableNode, container: s.Sub | None, ctx: Ctx) -> None:
-        """Record a composable node loaded into a container."""
-        inner = self.apply_condition(node.condition, node.span, ctx)
-        if inner is None:
-            return
-        reducer = self.reducer.at(inner, node.span)
-        package = reducer.reduce(node.package)
-        package_name = text_of(package)
-        if package_name is not None:
-            self.record_package(package_name, inner.origin(node.at("pkg")),
-                                self.index.find(package_name) is not None, "composable node")
-        plugin = reducer.reduce(node.plugin)
-        name = None if node.name is None else reducer.reduce(node.name)
-        if name is not None:
-            self.record_name("node name", name, inner.origin(node.at("name")))
-        own_ns = None if node.namespace is None else reducer.reduce(node.namespace)
-        namespace = ns_prefix(self.scopes.get(ROS_NAMESPACE), own_ns)
-        if namespace is not None:
-            self.record_name("namespace", namespace, inner.origin(node.at("namespace")))
-        fqn = None
-        if name is not None:
-            fqn = ns_prefix(namespace if namespace is not None else s.Text("/"), name)
-        for item in node.extra_arguments:
-            reducer.reduce(item.name)
-            if isinstance(item.value.value, s.Sub):
-                reducer.reduce(item.value.value)
-        self.graph.nodes.append(NodeRecord(
-            kind="composable_lifecycle_node" if node.lifecycle else "composable_node",
-            origin=inner.origin(node.span), package=package, executable=plugin, name=name,
-            namespace=namespace, fqn=fqn,
-            remappings=(*self.scope_remaps(inner), *self.own_remaps(node.remappings, inner)),
-            parameters=(*self.scope_params(inner), *self.own_params(node.parameters, inner)),
-            container=container, deferred=inner.deferred,
-        ))
-
-    def scope_remaps(self, ctx: Ctx) -> list[RemapRecord]:
-        """Return the SetRemap rules in scope (they come before the node's own)."""
-        return [RemapRecord(r.src, r.dst, r.origin, scope=True)
-                for r in self.scopes.shared(ROS_REMAPS)]
-
-    def own_remaps(self, remaps: tuple[a.Remap, ...], ctx: Ctx) -> list[RemapRecord]:
-        """Evaluate a node's own remap rules."""
-        out = []
-        for remap in remaps:
-            reducer = self.reducer.at(ctx, remap.span)
-            src, dst = reducer.reduce(remap.src), reducer.reduce(remap.dst)
-            origin = ctx.origin(remap.span)
-            self.record_name("remap", src, origin)
-            self.record_name("remap", dst, origin)
-            out.append(RemapRecord(src, dst, origin))
-        return out
-
-    def scope_params(self, ctx: Ctx) -> list[ParamRecord]:
-        """Return SetParameter/SetParametersFromFile values in scope (they come first)."""
-        return [ParamRecord(p.origin, file=p.file, name=p.name, value=p.value, scope=True)
-                for p in self.scopes.shared(GLOBAL_PARAMS)]
-
-    def own_params(self, entries: tuple[a.ParamEntry, ...], ctx: Ctx) -> list[ParamRecord]:
-        """Evaluate a node's own parameters: files are checked, values reduced."""
-        out = []
-        for entry in entries:
-            reducer = self.reducer.at(ctx, entry.span)
-            if isinstance(entry, a.ParamFile):
-                location = reducer.reduce(entry.path)
-                self.check_file(location, ctx.origin(entry.span), "parameter file", ctx)
-                out.append(ParamRecord(ctx.origin(entry.span), file=location))
-                if self.allows_substitutions(entry, ctx):
-                    self.substitute_param_file(location, entry.span, ctx)
-                continue
-            for item in entry.items:
-                value = item.value.value
-                if isinstance(value, s.Sub):
-                    value = reducer.reduce(value)
-                elif isinstance(value, tuple):
-                    value = tuple(reducer.reduce(v) if isinstance(v, s.Sub) else v for v in value)
-                out.append(ParamRecord(ctx.origin(item.span), name=reducer.reduce(item.name),
-                                       value=value))
-        return out
-
-    def allows_substitutions(self, entry: a.ParamFile, ctx: Ctx) -> bool:
-        """Return whether a parameter file is read with ``allow_substs`` true."""
-        flag = entry.allow_substs
-        if isinstance(flag, bool):
-            return flag
-        value = self.reducer.at(ctx, entry.span).text(flag)
-        try:
-            return value is not None and booleans.typed_truth(value)
-        except booleans.InvalidBoolean:
-            return False
-
-    def substitute_param_file(self, location: s.Sub, span: Span, ctx: Ctx) -> None:
-        """Evaluate the ``$(...)`` in a parameter file loaded with ``allow_substs``.
-
-        launch performs them in the node's context, so their reads count like any other;
-        they are pointed at their line of the parameter file.
-        """
-        text = text_of(location) or self.graph.base(location)
-        located = None if text is None else self.index.locate(Path(text))
-        if located is None or not located.resolve().is_relative_to(self.workspace):
-            self.mark_incomplete()  # its reads are unknown
-            return
-        try:
-            content = located.read_bytes()[:MAX_FILE_CONTENT].decode("utf-8", "replace")
-        except OSError:
-            return
-        for number, line in enumerate(content.splitlines(), 1):
-            column = line.find("$(")
-            if column < 0:
-                continue
-            where = Span(located, number, column + 1)
-            try:
-                expression = parse_substitution(line)
-            except SubstitutionSyntaxError as error:
-                self.problem(ProblemKind.EVALUATION, f"invalid substitution in parameter file "
-                             f"loaded with allow_substs: {error}", where, ctx)
-                continue
-            self.reducer.at(ctx, where).reduce(expression)
-
-    def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx) -> None:
-        """Record whether a file the launch needs exists (when its path is known)."""
-        text = text_of(location)
-        if text is None:
-            text = self.graph.base(location)
-        if text is None:
-            return
-        if not text.strip():
-            self.graph.file_refs.append(FileRef(text, origin, False, what, "the path is empty"))
-            return
-        path = Path(text)
-        if not path.is_absolute():
-            beside = ctx.file.parent / path
-            note = ("relative paths are resolved against the folder ros2 launch is started "
-                    "from, not the launch file")
-            self.graph.file_refs.append(FileRef(text, origin, beside.is_file(), what, note))
-            return
-        located = self.index.locate(path)
-        if located is not None:
-            self.graph.file_refs.append(FileRef(text, origin, True, what))
-        elif self.in_workspace(path):
-            self.graph.file_refs.append(FileRef(text, origin, False, what))
+            self.nodes.run_composable(description, target, ctx)
 
     def record_name(self, kind: str, value: s.Sub, origin: Origin) -> None:
         """Record a ROS name for validation when its value is concrete."""

@@ -1,0 +1,216 @@
+"""Nodes, composable nodes and their remaps and parameters, as launch_ros builds them.
+
+``NodeBuilder`` works for the walker: it resolves a node's package, name and namespace,
+collects the remap rules and parameter sources in the order ROS 2 applies them (scope
+first, then the node's own), checks parameter files, and evaluates parameter files loaded
+with ``allow_substs`` in the node's scope.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from launchverify.evaluate.reducers import Ctx
+from launchverify.evaluate.scope import GLOBAL_PARAMS, ROS_NAMESPACE, ROS_REMAPS
+from launchverify.evaluate.values import ns_prefix, text_of
+from launchverify.frontends.subst_parser import SubstitutionSyntaxError, parse_substitution
+from launchverify.graph import FileRef, NodeRecord, Origin, ParamRecord, RemapRecord
+from launchverify.ir import actions as a
+from launchverify.ir import subst as s
+from launchverify.models import booleans
+from launchverify.problems import ProblemKind
+from launchverify.span import Span
+
+if TYPE_CHECKING:
+    from launchverify.evaluate.walker import Walker
+
+MAX_PARAM_FILE = 1024 * 1024
+
+
+class NodeBuilder:
+    """Evaluates Node-like actions for a walker and records them in its graph."""
+
+    def __init__(self, walker: Walker) -> None:
+        self.walker = walker
+
+    def run_node(self, action: a.Node, ctx: Ctx) -> NodeRecord:
+        """Execute a Node-like action as launch_ros does and record it."""
+        reducer = self.walker.reducer.at(ctx, action.at("pkg"))
+        package = None if action.package is None else reducer.reduce(action.package)
+        package_name = text_of(package)
+        if package_name is not None:
+            self.walker.record_package(package_name, ctx.origin(action.at("pkg")),
+                                self.walker.index.find(package_name) is not None, "node")
+        executable = self.walker.reducer.at(ctx, action.at("exec")).reduce(action.executable)
+        reducer = self.walker.reducer.at(ctx, action.at("name"))
+        name = None if action.name is None else reducer.reduce(action.name)
+        if name is not None:
+            self.walker.record_name("node name", name, ctx.origin(action.at("name")))
+        reducer = self.walker.reducer.at(ctx, action.at("namespace"))
+        own_ns = None if action.namespace is None else reducer.reduce(action.namespace)
+        namespace = ns_prefix(self.walker.scopes.get(ROS_NAMESPACE), own_ns)
+        if namespace is not None:
+            self.walker.record_name("namespace", namespace, ctx.origin(action.at("namespace")))
+        fqn = None
+        if name is not None and namespace is not None:
+            fqn = ns_prefix(namespace, name)
+        reducer = self.walker.reducer.at(ctx, action.span)
+        for argument in (*action.arguments, *action.ros_arguments):
+            reducer.reduce(argument)
+        exec_name = action.exec_name
+        if exec_name is not None:
+            reducer.reduce(exec_name)
+        remaps = (*self.scope_remaps(ctx), *self.own_remaps(action.remappings, ctx))
+        params = (*self.scope_params(ctx), *self.own_params(action.parameters, ctx))
+        self.walker.visit_process_options(action.process, action.span, ctx)
+        record = NodeRecord(
+            kind=action.kind, origin=ctx.origin(action.span), package=package,
+            executable=executable, name=name, namespace=namespace, fqn=fqn,
+            remappings=remaps, parameters=params, deferred=ctx.deferred,
+        )
+        self.walker.graph.nodes.append(record)
+        return record
+
+    def run_composable(self, node: a.ComposableNode, container: s.Sub | None, ctx: Ctx) -> None:
+        """Record a composable node loaded into a container."""
+        inner = self.walker.apply_condition(node.condition, node.span, ctx)
+        if inner is None:
+            return
+        reducer = self.walker.reducer.at(inner, node.span)
+        package = reducer.reduce(node.package)
+        package_name = text_of(package)
+        if package_name is not None:
+            found = self.walker.index.find(package_name) is not None
+            self.walker.record_package(package_name, inner.origin(node.at("pkg")), found,
+                                       "composable node")
+        plugin = reducer.reduce(node.plugin)
+        name = None if node.name is None else reducer.reduce(node.name)
+        if name is not None:
+            self.walker.record_name("node name", name, inner.origin(node.at("name")))
+        own_ns = None if node.namespace is None else reducer.reduce(node.namespace)
+        namespace = ns_prefix(self.walker.scopes.get(ROS_NAMESPACE), own_ns)
+        if namespace is not None:
+            self.walker.record_name("namespace", namespace, inner.origin(node.at("namespace")))
+        fqn = None
+        if name is not None:
+            fqn = ns_prefix(namespace if namespace is not None else s.Text("/"), name)
+        for item in node.extra_arguments:
+            reducer.reduce(item.name)
+            if isinstance(item.value.value, s.Sub):
+                reducer.reduce(item.value.value)
+        self.walker.graph.nodes.append(NodeRecord(
+            kind="composable_lifecycle_node" if node.lifecycle else "composable_node",
+            origin=inner.origin(node.span), package=package, executable=plugin, name=name,
+            namespace=namespace, fqn=fqn,
+            remappings=(*self.scope_remaps(inner), *self.own_remaps(node.remappings, inner)),
+            parameters=(*self.scope_params(inner), *self.own_params(node.parameters, inner)),
+            container=container, deferred=inner.deferred,
+        ))
+
+    def scope_remaps(self, ctx: Ctx) -> list[RemapRecord]:
+        """Return the SetRemap rules in scope (they come before the node's own)."""
+        return [RemapRecord(r.src, r.dst, r.origin, scope=True)
+                for r in self.walker.scopes.shared(ROS_REMAPS)]
+
+    def own_remaps(self, remaps: tuple[a.Remap, ...], ctx: Ctx) -> list[RemapRecord]:
+        """Evaluate a node's own remap rules."""
+        out = []
+        for remap in remaps:
+            reducer = self.walker.reducer.at(ctx, remap.span)
+            src, dst = reducer.reduce(remap.src), reducer.reduce(remap.dst)
+            origin = ctx.origin(remap.span)
+            self.walker.record_name("remap", src, origin)
+            self.walker.record_name("remap", dst, origin)
+            out.append(RemapRecord(src, dst, origin))
+        return out
+
+    def scope_params(self, ctx: Ctx) -> list[ParamRecord]:
+        """Return SetParameter/SetParametersFromFile values in scope (they come first)."""
+        return [ParamRecord(p.origin, file=p.file, name=p.name, value=p.value, scope=True)
+                for p in self.walker.scopes.shared(GLOBAL_PARAMS)]
+
+    def own_params(self, entries: tuple[a.ParamEntry, ...], ctx: Ctx) -> list[ParamRecord]:
+        """Evaluate a node's own parameters: files are checked, values reduced."""
+        out = []
+        for entry in entries:
+            reducer = self.walker.reducer.at(ctx, entry.span)
+            if isinstance(entry, a.ParamFile):
+                location = reducer.reduce(entry.path)
+                self.check_file(location, ctx.origin(entry.span), "parameter file", ctx)
+                out.append(ParamRecord(ctx.origin(entry.span), file=location))
+                if self.allows_substitutions(entry, ctx):
+                    self.substitute_param_file(location, entry.span, ctx)
+                continue
+            for item in entry.items:
+                value = item.value.value
+                if isinstance(value, s.Sub):
+                    value = reducer.reduce(value)
+                elif isinstance(value, tuple):
+                    value = tuple(reducer.reduce(v) if isinstance(v, s.Sub) else v for v in value)
+                out.append(ParamRecord(ctx.origin(item.span), name=reducer.reduce(item.name),
+                                       value=value))
+        return out
+
+    def allows_substitutions(self, entry: a.ParamFile, ctx: Ctx) -> bool:
+        """Return whether a parameter file is read with ``allow_substs`` true."""
+        flag = entry.allow_substs
+        if isinstance(flag, bool):
+            return flag
+        value = self.walker.reducer.at(ctx, entry.span).text(flag)
+        try:
+            return value is not None and booleans.typed_truth(value)
+        except booleans.InvalidBoolean:
+            return False
+
+    def substitute_param_file(self, location: s.Sub, span: Span, ctx: Ctx) -> None:
+        """Evaluate the ``$(...)`` in a parameter file loaded with ``allow_substs``.
+
+        launch performs them in the node's context, so their reads count like any other;
+        they are pointed at their line of the parameter file.
+        """
+        text = text_of(location) or self.walker.graph.base(location)
+        located = None if text is None else self.walker.index.locate(Path(text))
+        if located is None or not located.resolve().is_relative_to(self.walker.workspace):
+            self.walker.mark_incomplete()  # its reads are unknown
+            return
+        try:
+            content = located.read_bytes()[:MAX_PARAM_FILE].decode("utf-8", "replace")
+        except OSError:
+            return
+        for number, line in enumerate(content.splitlines(), 1):
+            column = line.find("$(")
+            if column < 0:
+                continue
+            where = Span(located, number, column + 1)
+            try:
+                expression = parse_substitution(line)
+            except SubstitutionSyntaxError as error:
+                self.walker.problem(ProblemKind.EVALUATION, "invalid substitution in parameter "
+                                    f"file loaded with allow_substs: {error}", where, ctx)
+                continue
+            self.walker.reducer.at(ctx, where).reduce(expression)
+
+    def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx) -> None:
+        """Record whether a file the launch needs exists (when its path is known)."""
+        text = text_of(location)
+        if text is None:
+            text = self.walker.graph.base(location)
+        if text is None:
+            return
+        if not text.strip():
+            empty = FileRef(text, origin, False, what, "the path is empty")
+            self.walker.graph.file_refs.append(empty)
+            return
+        path = Path(text)
+        if not path.is_absolute():
+            beside = ctx.file.parent / path
+            note = ("relative paths are resolved against the folder ros2 launch is started "
+                    "from, not the launch file")
+            self.walker.graph.file_refs.append(FileRef(text, origin, beside.is_file(), what, note))
+            return
+        located = self.walker.index.locate(path)
+        if located is not None:
+            self.walker.graph.file_refs.append(FileRef(text, origin, True, what))
+        elif self.walker.in_workspace(path):
+            self.walker.graph.file_refs.append(FileRef(text, origin, False, what))

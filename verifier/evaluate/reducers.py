@@ -1,0 +1,213 @@
+"""The reducers the walker evaluates with, and the walk's position (``Ctx``).
+
+``ScopeReducer`` looks values up in the walker's current scope and records reads, package
+references and problems at the action being evaluated; ``DefaultsReducer`` re-evaluates a
+value that depends on arguments with the arguments as given and the defaults, reporting
+what would fail with them.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TYPE_CHECKING, TypeVar
+
+from launchverify.evaluate.scope import GLOBAL_PARAMS
+from launchverify.evaluate.values import BaseReducer, Reducer, is_unset, text_of
+from launchverify.graph import Origin
+from launchverify.ir import subst as s
+from launchverify.ir.symbolic import (
+    Guard,
+    PathCondition,
+    Select,
+    StrEquals,
+    Truthy,
+    Unknown,
+    Unset,
+)
+from launchverify.problems import ProblemKind
+from launchverify.span import Span
+
+if TYPE_CHECKING:
+    from launchverify.evaluate.walker import Walker
+
+
+@dataclass(frozen=True, slots=True)
+class Ctx:
+    """Where the walk is: the file being executed, the include chain, the path condition."""
+
+    file: Path
+    chain: tuple[Span, ...]
+    path: PathCondition
+    deferred: bool = False
+    loop: tuple[tuple[str, s.Sub, bool], ...] = ()
+
+    def origin(self, span: Span) -> Origin:
+        """Return the origin of something written at ``span`` here."""
+        return Origin(span, self.chain, self.path)
+
+    def guarded(self, guard: Guard) -> Ctx:
+        """Return this context with one more guard."""
+        return dataclasses.replace(self, path=(*self.path, guard))
+
+
+R = TypeVar("R", bound="_Located")
+
+
+class _Located:
+    """Where a reducer's problems and records point, and how it reports them."""
+
+    prefix = ""
+
+    def __init__(self, walker: Walker) -> None:
+        self.walker = walker
+        self.ctx: Ctx | None = None
+        self.span: Span | None = None
+
+    def at(self: R, ctx: Ctx, span: Span) -> R:
+        """Point problems and records at ``span`` in ``ctx``."""
+        self.ctx, self.span = ctx, span
+        return self
+
+    def fail(self, message: str) -> None:
+        assert self.span is not None
+        self.walker.problem(ProblemKind.EVALUATION, self.prefix + message, self.span, self.ctx)
+
+    def unmodeled(self, message: str) -> None:
+        assert self.span is not None
+        self.walker.problem(ProblemKind.UNMODELED, message, self.span, self.ctx)
+
+
+class ScopeReducer(_Located, Reducer):
+    """Reduces expressions against the evaluator's current scope."""
+
+    def __init__(self, walker: Walker) -> None:
+        Reducer.__init__(self)
+        _Located.__init__(self, walker)
+
+    def _origin(self) -> Origin:
+        assert self.ctx is not None and self.span is not None
+        return self.ctx.origin(self.span)
+
+    def config(self, name: str, default: s.Sub | None) -> s.Sub:
+        value = self.walker.scopes.get(name)
+        self.walker.record_read(name, self._origin(), value is not None, default is not None)
+        if value is None:
+            return Unset(name) if default is None else self.reduce(default)
+        if default is not None and is_unset(value):
+            return fill_unset(value, self.reduce(default))
+        return value
+
+    def environment(self, name: str, default: s.Sub | None) -> s.Sub:
+        if name in self.walker.scopes.env:
+            value = self.walker.scopes.env[name]
+            if value is not None:
+                return value
+            if default is None:
+                self.fail(f"environment variable {name!r} was unset by the launch file")
+                return Unknown(f"unset environment variable {name}")
+            return self.reduce(default)
+        return super().environment(name, default)
+
+    def package_share(self, name: str) -> s.Sub:
+        package = self.walker.index.find(name)
+        self.walker.record_package(name, self._origin(), package is not None, "share")
+        return Unknown(f"share folder of {name}") if package is None else s.Text(
+            str(package.share)
+        )
+
+    def package_prefix(self, name: str) -> s.Sub:
+        package = self.walker.index.find(name)
+        self.walker.record_package(name, self._origin(), package is not None, "prefix")
+        if package is None or package.prefix is None:
+            return Unknown(f"install prefix of {name}")
+        return s.Text(str(package.prefix))
+
+    def executable_path(self, executable: str, package: str) -> s.Sub:
+        found = self.walker.index.find(package)
+        self.walker.record_package(package, self._origin(), found is not None, "executable")
+        return Unknown(f"path of {executable} in {package}")
+
+    def this_file(self, directory: bool) -> s.Sub:
+        current = self.walker.current_file
+        return s.Text(str(current.parent if directory else current))
+
+    def anon(self, name: str) -> s.Sub:
+        key = "anon" + name
+        value = self.walker.scopes.get(key)
+        if value is None:
+            clean = name.replace(".", "_").replace("-", "_").replace(":", "_")
+            value = s.Text(f"{clean}_anon{next(self.walker.anon_counter)}")
+            self.walker.scopes.set(key, value, ())
+        return value
+
+    def file_content(self, path: str) -> s.Sub:
+        return self.walker.read_file_content(path, self._origin())
+
+    def ros_parameter(self, name: str, default: s.Sub | None) -> s.Sub:
+        for item in self.walker.scopes.shared(GLOBAL_PARAMS):
+            if item.name is not None and text_of(item.name) == name:
+                value = item.value
+                return value if isinstance(value, s.Sub) else s.Text(str(value))
+        if default is not None:
+            return self.reduce(default)
+        if not self.walker.incomplete:
+            assert self.span is not None
+            self.walker.problem(
+                ProblemKind.EVALUATION,
+                f"parameter {name!r} not found (no set_parameter with that name in scope)",
+                self.span, self.ctx, contextual=True,
+            )
+        return Unknown(f"parameter {name}")
+
+    def loop_variable(self, name: str, default: s.Sub | None, index: bool) -> s.Sub:
+        assert self.ctx is not None
+        for var, value, is_index in reversed(self.ctx.loop):
+            if var == name and is_index == index:
+                return value
+        if default is not None:
+            return self.reduce(default)
+        self.fail(f"no value for loop variable {name!r}")
+        return Unknown(f"loop variable {name}")
+
+    def guard(self, guard: Guard) -> bool | None:
+        """Guards on the current path are known to hold (and their negations not to)."""
+        if self.ctx is not None and self.ctx.path:
+            if guard in self.ctx.path:
+                return True
+            if isinstance(guard, (Truthy, StrEquals)) and (
+                dataclasses.replace(guard, negate=not guard.negate) in self.ctx.path
+            ):
+                return False
+        return super().guard(guard)
+
+    def probe(self, residual: s.Sub) -> None:
+        """A ``$(eval)`` over arguments: it must work with the default arguments too."""
+        assert self.ctx is not None and self.span is not None
+        if self.walker.graph.runs(self.ctx.origin(self.span)) is not False:
+            self.walker.base_check.at(self.ctx, self.span).reduce(residual)
+
+
+class DefaultsReducer(_Located, BaseReducer):
+    """Evaluates residual values under the given arguments and defaults, reporting failures.
+
+    A condition that depends on arguments is explored both ways; with the arguments as
+    given (defaults for the rest) it must still be valid, or ros2 launch fails right away.
+    """
+
+    prefix = "with the default arguments, "
+
+    def __init__(self, walker: Walker) -> None:
+        BaseReducer.__init__(self, walker.graph.pinned)
+        _Located.__init__(self, walker)
+
+
+def fill_unset(value: s.Sub, fill: s.Sub) -> s.Sub:
+    """Replace the "unset" branches of a path-dependent value with ``fill``."""
+    if isinstance(value, Unset):
+        return fill
+    if isinstance(value, Select):
+        then = fill_unset(value.then, fill)
+        return Select(value.guards, then, fill_unset(value.otherwise, fill))
+    return value
