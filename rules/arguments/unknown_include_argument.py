@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from launchverify.graph import LaunchGraph, Origin
 from launchverify.ir.walk import configuration_names
 from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.span import Span
 from launchverify.suggest import did_you_mean
 
 
@@ -16,7 +17,8 @@ class UnknownIncludeArgument(Rule):
     ## What it does
     For each `<include>` (`IncludeLaunchDescription`), compares the argument names it
     passes with what the included file (and the files it includes) declares or reads.
-    Includes into files launchverify cannot fully see are skipped.
+    Arguments given on the command line (`name:=value`) are checked against the whole
+    launch the same way. Includes into files launchverify cannot fully see are skipped.
 
     ## Why it matters
     launch sets undeclared arguments silently, so a misspelled name
@@ -39,6 +41,7 @@ class UnknownIncludeArgument(Rule):
     message = "argument {name!r} is not declared by {target}{hint}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        yield from self.command_line(graph)
         for include in graph.includes:
             if include.status != "loaded" or not include.complete or include.target is None:
                 continue
@@ -55,3 +58,16 @@ class UnknownIncludeArgument(Rule):
                 origin = Origin(span, include.origin.chain, include.origin.path)
                 yield self.finding(origin, name=name, target=include.target.name,
                                    hint=did_you_mean(name, known))
+
+    def command_line(self, graph: LaunchGraph) -> Iterator[Finding]:
+        """Arguments given as name:=value that the launch never declares nor reads."""
+        if not graph.pinned or not graph.complete:
+            return
+        known = graph.declared_names() | graph.read_names()
+        for loaded in graph.files.values():
+            if loaded.launch is not None:
+                known |= configuration_names(loaded.launch)
+        for name in sorted(set(graph.pinned) - known):
+            yield self.finding(Span.of_file(graph.root), name=f"{name}:={graph.pinned[name]}",
+                               target=graph.root.name + " (given on the command line)",
+                               hint=did_you_mean(name, known))
