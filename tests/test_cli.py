@@ -154,7 +154,7 @@ def test_arguments_may_follow_options(capsys: pytest.CaptureFixture[str]) -> Non
 
 def test_command_line_argument_typo(capsys: pytest.CaptureFixture[str]) -> None:
     tree = CORPUS / "naming" / "node_name_from_argument" / "args.launch.xml"
-    code, out, _ = run(capsys, "check", str(tree), "rihgt:=camera_right", "--format", "json")
+    _code, out, _ = run(capsys, "check", str(tree), "rihgt:=camera_right", "--format", "json")
     finding = next(f for f in json.loads(out)["findings"] if f["code"] == "LV204")
     assert "rihgt:=camera_right" in finding["message"]
     assert "did you mean 'right'" in finding["message"]

@@ -19,6 +19,7 @@ from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
 from launchverify.graph import LaunchGraph
 from launchverify.packages import PackageIndex, find_workspace
+from launchverify.paths import display_path
 from launchverify.registry import select as select_rules
 from launchverify.rule import Finding, Rule, RuleContext
 
@@ -51,14 +52,6 @@ class Report:
     def display_path(self, path: Path) -> str:
         """Return a path as the user gave it, else relative to the working directory."""
         return self.display.get(path) or display_path(path)
-
-
-def display_path(path: Path) -> str:
-    """Return ``path`` relative to the working directory when below it, else absolute."""
-    try:
-        return str(path.relative_to(Path.cwd().resolve()))
-    except ValueError:
-        return str(path)
 
 
 def parse_arguments(tokens: list[str]) -> tuple[list[str], dict[str, str]]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
+from launchverify.paths import display_path
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 
 
@@ -35,19 +36,19 @@ class MissingFile(Rule):
     code = "LV302"
     slug = "missing-file"
     severity = Severity.ERROR
-    message = "{what} {location!r} does not exist{note}"
+    message = "{what} {written} does not exist{note}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         for include in graph.includes:
             if graph.runs(include.origin) is False:
                 continue
-            location = graph.display(include.location) or "?"
+            written = _written(include.action.path.describe(), graph.display(include.location))
             if include.status == "missing":
                 yield self.finding(include.origin, what="included launch file",
-                                   location=location, note=_note(include.note))
+                                   written=written, note=_note(include.note))
             elif include.relative:
                 yield self.finding(include.origin, what="included launch file",
-                                   location=location, note=_note(include.note) + " where ros2 "
+                                   written=written, note=_note(include.note) + " where ros2 "
                                    "launch runs; it was found beside the including file")
         seen: set[object] = set()
         for ref in graph.file_refs:
@@ -55,8 +56,16 @@ class MissingFile(Rule):
             if ref.exists or key in seen or graph.runs(ref.origin) is False:
                 continue
             seen.add(key)
-            yield self.finding(ref.origin, what=ref.what, location=ref.location,
+            yield self.finding(ref.origin, what=ref.what, written=_written(None, ref.location),
                                note=_note(ref.note))
+
+
+def _written(expression: str | None, resolved: str | None) -> str:
+    """Show a path as written and, when different, what it resolved to."""
+    shown = display_path(resolved) if resolved else "?"
+    if expression is None or expression == resolved:
+        return repr(shown)
+    return f"{expression!r} ({shown})"
 
 
 def _note(note: str) -> str:

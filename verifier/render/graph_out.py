@@ -10,10 +10,10 @@ from __future__ import annotations
 import json
 from typing import Any, TextIO
 
-from launchverify.engine import display_path
 from launchverify.graph import LaunchGraph, NodeRecord, Origin, ParamRecord
 from launchverify.ir.subst import Sub
 from launchverify.models.ros_names import node_fqn
+from launchverify.paths import display_path
 
 
 class GraphView:

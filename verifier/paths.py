@@ -1,0 +1,16 @@
+"""How paths are shown: as the user gave them, else relative to the working directory."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+
+def display_path(path: Path | str) -> str:
+    """Return ``path`` relative to the working directory when below it, else unchanged."""
+    candidate = Path(path)
+    if not candidate.is_absolute():
+        return str(candidate)
+    try:
+        return str(candidate.relative_to(Path.cwd().resolve()))
+    except ValueError:
+        return str(candidate)
