@@ -9,29 +9,41 @@ from pathlib import Path
 from launchverify.packages import SKIP_DIRS
 
 LAUNCH_SUFFIXES = ("launch.xml", "launch.yaml", "launch.yml")
+PYTHON_SUFFIX = "launch.py"
 FRONTEND_SUFFIXES = (".xml", ".yaml", ".yml")
 _XML_ROOT = re.compile(rb"<launch[\s>/]")
 _YAML_ROOT = re.compile(rb"^launch\s*:", re.MULTILINE)
 
 
 def is_launch_file(path: Path) -> bool:
-    """Return whether a file looks like an XML or YAML launch file.
+    """Return whether a file looks like a launch file.
 
-    Names ending in ``launch.xml``/``launch.yaml`` count; other ``.xml``/``.yaml`` files
-    count when they sit in a ``launch`` folder and their root is ``launch``.
+    Names ending in ``launch.xml``/``launch.yaml`` count; ``*launch.py`` files count when
+    they define ``generate_launch_description``; other ``.xml``/``.yaml`` files count when
+    they sit in a ``launch`` folder and their root is ``launch``.
     """
     name = path.name.lower()
     if name.endswith(LAUNCH_SUFFIXES):
         return True
+    if name.endswith(PYTHON_SUFFIX):
+        return _head_contains(path, (b"generate_launch_description", b"generate_test_description"))
     if not name.endswith(FRONTEND_SUFFIXES) or "launch" not in path.parent.name.lower():
         return False
+    pattern = _XML_ROOT if name.endswith(".xml") else _YAML_ROOT
+    return pattern.search(_head(path, 8192)) is not None
+
+
+def _head(path: Path, size: int) -> bytes:
     try:
         with path.open("rb") as handle:
-            head = handle.read(8192)
+            return handle.read(size)
     except OSError:
-        return False
-    pattern = _XML_ROOT if name.endswith(".xml") else _YAML_ROOT
-    return pattern.search(head) is not None
+        return b""
+
+
+def _head_contains(path: Path, needles: tuple[bytes, ...]) -> bool:
+    head = _head(path, 256 * 1024)
+    return any(needle in head for needle in needles)
 
 
 def discover(paths: list[Path]) -> list[Path]:

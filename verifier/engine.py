@@ -99,7 +99,7 @@ def run_check(options: CheckOptions) -> Report:
     if not files:
         return Report([], 0, time.perf_counter() - started, display)
     workspace, index = build_index(options.paths, options.workspace)
-    loader = FileCache()
+    loader = FileCache(index, workspace)
     graphs = [
         evaluate(canonical(f), index=index, workspace=workspace, pinned=options.arguments,
                  loader=loader)

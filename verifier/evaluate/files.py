@@ -5,20 +5,23 @@ from __future__ import annotations
 from pathlib import Path
 
 from launchverify.frontends import LoadedFile, load_launch_file
+from launchverify.frontends.python import PythonFrontend
 from launchverify.graph import StaticArgument
+from launchverify.packages import PackageIndex
 
 
 class FileCache:
     """Loads each launch file once per run, whoever asks for it."""
 
-    def __init__(self) -> None:
+    def __init__(self, index: PackageIndex, workspace: Path) -> None:
         self._files: dict[Path, LoadedFile] = {}
         self.static_arguments: dict[Path, tuple[StaticArgument, ...]] = {}
+        self.python = PythonFrontend(index, workspace)
 
     def __call__(self, path: Path) -> LoadedFile:
         """Return the loaded file, reading it the first time."""
         loaded = self._files.get(path)
         if loaded is None:
-            loaded = load_launch_file(path)
+            loaded = load_launch_file(path, self.python)
             self._files[path] = loaded
         return loaded

@@ -34,6 +34,6 @@ def evaluate(
     """
     graph = LaunchGraph(root=root, pinned=dict(pinned or {}),
                         included_elsewhere=included_elsewhere)
-    walker = Walker(graph, index, loader or FileCache(), workspace)
+    walker = Walker(graph, index, loader or FileCache(index, workspace), workspace)
     walker.run()
     return graph

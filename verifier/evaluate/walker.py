@@ -58,6 +58,7 @@ from launchverify.ir.symbolic import (
     Unknown,
     Unset,
 )
+from launchverify.models.launch_api.placeholders import placeholder
 from launchverify.packages import PackageIndex
 from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
@@ -551,6 +552,27 @@ class Walker:
 
     def do_EmitEvent(self, action: a.EmitEvent, ctx: Ctx) -> None:
         """Events are handled by the event and lifecycle analyses."""
+
+    def do_OpaqueFunction(self, action: a.OpaqueFunction, ctx: Ctx) -> None:
+        """Run the function's body with the configurations as they are here."""
+        configurations = self.concrete_configurations()
+        result = action.run(configurations, self.current_file)
+        for name in dict.fromkeys(result.reads):
+            self.record_read(name, ctx.origin(action.span), True, True)  # failures: LV002
+        for problem in result.problems:
+            assert isinstance(problem, Problem)
+            self.problem(problem.kind, problem.message, problem.span, ctx)
+        self.visit_all(result.actions, ctx)
+
+    def concrete_configurations(self) -> dict[str, str]:
+        """Return the configurations in scope as strings (placeholders where unknown)."""
+        out = {}
+        for name, value in self.scopes.configs.items():
+            if not isinstance(value, s.Sub):
+                continue  # launch_ros's own lists
+            text = self.graph.base(value)
+            out[name] = text if text is not None else placeholder("arg", name)
+        return out
 
     def do_OpaqueAction(self, action: a.OpaqueAction, ctx: Ctx) -> None:
         """Something the frontend could not see into (it already said so)."""

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from launchverify.frontends.python import PythonFrontend
 from launchverify.frontends.tags import TagParser
 from launchverify.frontends.xml_reader import read_xml
 from launchverify.frontends.yaml_reader import read_yaml
@@ -41,9 +42,14 @@ def launch_format(path: Path, data: bytes | None = None) -> str:
     return "yaml"
 
 
-def load_launch_file(path: Path) -> LoadedFile:
-    """Read and convert one launch file, recording every problem instead of raising."""
+def load_launch_file(path: Path, python: PythonFrontend | None = None) -> LoadedFile:
+    """Read and convert one launch file, recording every problem instead of raising.
+
+    Python launch files need ``python`` (which knows the packages and the workspace).
+    """
     sink = ProblemSink()
+    if launch_format(path) == "python" and python is not None:
+        return LoadedFile(path, "python", python.load(path, sink), sink.problems)
     try:
         data = path.read_bytes()
     except OSError as error:
@@ -51,10 +57,8 @@ def load_launch_file(path: Path) -> LoadedFile:
         return LoadedFile(path, launch_format(path), None, sink.problems)
     fmt = launch_format(path, data)
     if fmt == "python":
-        sink.unmodeled(
-            "Python launch files are not evaluated yet; what it launches is unknown",
-            Span.of_file(path),
-        )
+        sink.unmodeled("Python launch files are evaluated only within a check",
+                       Span.of_file(path))
         return LoadedFile(path, fmt, None, sink.problems)
     root = read_xml(path, data, sink) if fmt == "xml" else read_yaml(path, data, sink)
     if root is None:

@@ -7,6 +7,7 @@ actions do (event handlers target an action object). Each carries its ``span`` a
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -474,6 +475,28 @@ class EmitEvent(Action):
     event: str
     details: dict[str, object] = field(default_factory=dict)
     kind = "emit_event"
+
+
+@dataclass(frozen=True, eq=False, kw_only=True)
+class OpaqueResult:
+    """What running an OpaqueFunction gave: actions to visit, problems to report."""
+
+    actions: tuple[Action, ...]
+    problems: tuple[object, ...] = ()
+    reads: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True, eq=False, kw_only=True)
+class OpaqueFunction(Action):
+    """``OpaqueFunction``: Python run with a concrete context when the walk reaches it.
+
+    ``run`` takes the launch configurations (name to value; unknown values as
+    placeholders) and the current launch file, and returns what the function yields.
+    """
+
+    description: str
+    run: Callable[[Mapping[str, str], Path], OpaqueResult]
+    kind = "opaque_function"
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)

@@ -1,4 +1,4 @@
-from launch import LaunchDescription  # expect: LV003
+from launch import LaunchDescription
 
 
 def generate_launch_description():

@@ -1,0 +1,154 @@
+"""Models of the launch API, served to Python launch files under the real module names.
+
+``MODULES`` maps each module name a launch file may import (``launch.actions``,
+``launch_ros.actions.node``...) to the names it exports. A module not listed whose parent
+is listed exports what its parent exports, which covers paths like
+``launch.actions.include_launch_description``.
+"""
+
+from __future__ import annotations
+
+import typing
+from typing import Any
+
+from launchverify.models.launch_api import ament, base, context, launch_events, launch_ros
+from launchverify.models.launch_api import launch_actions as la
+from launchverify.models.launch_api import launch_substitutions as ls
+from launchverify.models.launch_api.lifecycle_msgs import State, Transition
+
+SomeSubstitutionsType = str | base.Substitution | typing.Iterable[Any]
+SomeSubstitutionsType_types_tuple = (str, base.Substitution)
+
+
+def _exports(module: Any, *names: str) -> dict[str, Any]:
+    return {name: getattr(module, name) for name in names}
+
+
+ACTIONS = _exports(
+    la, "AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteLocal",
+    "ExecuteProcess", "GroupAction", "IncludeLaunchDescription", "Log", "LogInfo",
+    "OpaqueCoroutine", "OpaqueFunction", "PopEnvironment", "PopLaunchConfigurations",
+    "PushEnvironment", "PushLaunchConfigurations", "RegisterEventHandler", "ResetEnvironment",
+    "ResetLaunchConfigurations", "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown",
+    "TimerAction", "UnregisterEventHandler", "UnsetEnvironmentVariable",
+    "UnsetLaunchConfiguration",
+)
+SUBSTITUTIONS = _exports(
+    ls, "AllSubstitution", "AndSubstitution", "AnonName", "AnySubstitution", "Command",
+    "EnvironmentVariable", "EqualsSubstitution", "FileContent", "FindExecutable", "ForEachVar",
+    "ForLoopIndex", "IfElseSubstitution", "LaunchConfiguration", "LaunchLogDir",
+    "LocalSubstitution", "NotEqualsSubstitution", "NotSubstitution", "OrSubstitution",
+    "PathJoinSubstitution", "PythonExpression", "StringJoinSubstitution", "TextSubstitution",
+    "ThisLaunchFile", "ThisLaunchFileDir",
+)
+CONDITIONS = _exports(
+    ls, "IfCondition", "UnlessCondition", "LaunchConfigurationEquals",
+    "LaunchConfigurationNotEquals",
+)
+EVENT_HANDLERS = _exports(
+    launch_events, "EventHandler", "OnExecutionComplete", "OnIncludeLaunchDescription",
+    "OnProcessExit", "OnProcessIO", "OnProcessStart", "OnShutdown",
+)
+SOURCES = _exports(
+    la, "AnyLaunchDescriptionSource", "FrontendLaunchDescriptionSource",
+    "LaunchDescriptionSource", "PythonLaunchDescriptionSource",
+)
+UTILITIES = _exports(
+    context, "normalize_to_list_of_substitutions", "perform_substitutions",
+    "perform_typed_substitution",
+)
+ROS_ACTIONS = _exports(
+    launch_ros, "ComposableNodeContainer", "LifecycleNode", "LifecycleTransition",
+    "LoadComposableNodes", "Node", "PushROSNamespace", "PushRosNamespace", "ROSTimer",
+    "RosTimer", "SetParameter", "SetParametersFromFile", "SetRemap", "SetROSLogDir",
+    "SetUseSimTime",
+)
+ROS_DESCRIPTIONS = _exports(
+    launch_ros, "ComposableLifecycleNode", "ComposableNode", "Parameter", "ParameterFile",
+    "ParameterValue",
+)
+ROS_SUBSTITUTIONS = {
+    **_exports(launch_ros, "ExecutableInPackage", "FindPackage", "FindPackagePrefix",
+               "FindPackageShare"),
+    "Parameter": launch_ros.ParameterSubstitution,
+}
+AMENT = _exports(
+    ament, "PackageNotFoundError", "get_package_prefix", "get_package_share_directory",
+    "get_package_xml_path", "get_packages_with_prefixes",
+)
+
+MODULES: dict[str, dict[str, Any]] = {
+    "launch": {
+        "LaunchDescription": la.LaunchDescription, "LaunchContext": context.LaunchContext,
+        "Action": base.Action, "Substitution": base.Substitution,
+        "Condition": ls.FunctionCondition,
+        "LaunchDescriptionEntity": base.LaunchDescriptionEntity,
+        "LaunchDescriptionSource": la.LaunchDescriptionSource,
+        "SomeSubstitutionsType": SomeSubstitutionsType,
+        "SomeSubstitutionsType_types_tuple": SomeSubstitutionsType_types_tuple,
+        "EventHandler": launch_events.EventHandler, "Event": launch_events.Event,
+    },
+    "launch.actions": ACTIONS,
+    "launch.substitutions": SUBSTITUTIONS,
+    "launch.conditions": CONDITIONS,
+    "launch.event_handlers": EVENT_HANDLERS,
+    "launch.events": {"Shutdown": launch_events.Shutdown,
+                      "matches_action": launch_events.matches_action},
+    "launch.events.process": _exports(launch_events, "ShutdownProcess", "SignalProcess"),
+    "launch.launch_description_sources": SOURCES,
+    "launch.launch_description": {"LaunchDescription": la.LaunchDescription},
+    "launch.launch_context": {"LaunchContext": context.LaunchContext},
+    "launch.action": {"Action": base.Action},
+    "launch.substitution": {"Substitution": base.Substitution},
+    "launch.condition": {"Condition": ls.FunctionCondition},
+    "launch.utilities": UTILITIES,
+    "launch.some_substitutions_type": {
+        "SomeSubstitutionsType": SomeSubstitutionsType,
+        "SomeSubstitutionsType_types_tuple": SomeSubstitutionsType_types_tuple,
+    },
+    "launch.frontend": {},
+    "launch.logging": {"get_logger": lambda name=None: _Logger()},
+    "launch_ros": {},
+    "launch_ros.actions": ROS_ACTIONS,
+    "launch_ros.descriptions": ROS_DESCRIPTIONS,
+    "launch_ros.parameter_descriptions": _exports(
+        launch_ros, "Parameter", "ParameterFile", "ParameterValue"),
+    "launch_ros.substitutions": ROS_SUBSTITUTIONS,
+    "launch_ros.event_handlers": {"OnStateTransition": launch_events.OnStateTransition},
+    "launch_ros.events": {},
+    "launch_ros.events.lifecycle": _exports(launch_events, "ChangeState", "StateTransition"),
+    "launch_ros.events.matchers": {"matches_node_name": launch_events.matches_node_name},
+    "launch_ros.utilities": {},
+    "launch_xml": {},
+    "launch_xml.launch_description_sources": {
+        "XMLLaunchDescriptionSource": la.XMLLaunchDescriptionSource},
+    "launch_yaml": {},
+    "launch_yaml.launch_description_sources": {
+        "YAMLLaunchDescriptionSource": la.YAMLLaunchDescriptionSource},
+    "ament_index_python": AMENT,
+    "ament_index_python.packages": AMENT,
+    "lifecycle_msgs": {},
+    "lifecycle_msgs.msg": {"State": State, "Transition": Transition},
+}
+
+
+class _Logger:
+    """A logger that drops everything (``launch.logging.get_logger``)."""
+
+    def __getattr__(self, name: str) -> Any:
+        return lambda *args, **kwargs: None
+
+
+def exports_for(name: str) -> dict[str, Any] | None:
+    """Return what module ``name`` exports, or ``None`` when it is not modelled."""
+    probe = name
+    while probe:
+        if probe in MODULES:
+            return MODULES[probe]
+        probe = probe.rpartition(".")[0]
+    return None
+
+
+def is_modelled(name: str) -> bool:
+    """Return whether imports of ``name`` are served by the models."""
+    return exports_for(name) is not None

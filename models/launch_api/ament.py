@@ -1,0 +1,47 @@
+"""Models of ``ament_index_python.packages``."""
+
+from __future__ import annotations
+
+from launchverify.models.launch_api.placeholders import placeholder
+from launchverify.models.launch_api.runtime import active
+
+
+class PackageNotFoundError(KeyError):
+    """``ament_index_python.packages.PackageNotFoundError``."""
+
+
+def get_package_share_directory(package_name: str, print_warning: bool = True) -> str:
+    """Return the share folder; unknown packages get a placeholder (they may be installed)."""
+    runtime = active()
+    runtime.packages_seen.add(package_name)
+    package = runtime.index.find(package_name)
+    if package is None:
+        return placeholder("pkg", package_name)
+    return str(package.share)
+
+
+def get_package_prefix(package_name: str) -> str:
+    """Return the install prefix, or a placeholder when only sources are known."""
+    runtime = active()
+    runtime.packages_seen.add(package_name)
+    package = runtime.index.find(package_name)
+    if package is None or package.prefix is None:
+        return placeholder("prefix", package_name)
+    return str(package.prefix)
+
+
+def get_packages_with_prefixes() -> dict[str, str]:
+    """Return every known package with its prefix (sources stand in for prefixes)."""
+    runtime = active()
+    out = {}
+    for name in runtime.index.names():
+        package = runtime.index.find(name)
+        if package is not None:
+            out[name] = str(package.prefix or package.source)
+    return out
+
+
+def get_package_xml_path(package_name: str) -> str:
+    """Return the package.xml of a package."""
+    share = get_package_share_directory(package_name)
+    return share + "/package.xml"

@@ -1,0 +1,24 @@
+"""Strings that stand for values only known on the robot.
+
+Python launch code needs real strings (``os.path.join(get_package_share_directory(p), ...)``,
+``os.environ['ROBOT']``); where the value is not known statically we hand it a placeholder
+such as ``⟨env:ROBOT⟩``. The Python frontend turns placeholders back into symbolic IR
+(an environment input, a package's share folder...) when the string reaches an action.
+"""
+
+from __future__ import annotations
+
+import re
+
+OPEN, CLOSE = "\u27e8", "\u27e9"
+PATTERN = re.compile(OPEN + r"(env|pkg|prefix|arg|opaque):([^" + CLOSE + r"]*)" + CLOSE)
+
+
+def placeholder(kind: str, name: str) -> str:
+    """Return the placeholder for an unknown value (``kind``: env, pkg, prefix, arg, opaque)."""
+    return f"{OPEN}{kind}:{name}{CLOSE}"
+
+
+def has_placeholder(text: str) -> bool:
+    """Return whether a string carries a value that is not known statically."""
+    return OPEN in text

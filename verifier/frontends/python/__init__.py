@@ -1,0 +1,284 @@
+"""The Python frontend: run a launch file's ``generate_launch_description()`` against models.
+
+The file runs in the sandbox (no side effects, time and memory limits) with the launch API
+served by ``launchverify.models.launch_api``; the objects it builds record the user's
+lines and become the same IR as the XML and YAML frontends produce. What goes wrong is
+recorded as a problem at the user's line, never raised.
+"""
+
+from __future__ import annotations
+
+import builtins
+import io
+import traceback
+from collections.abc import Iterator, Mapping
+from contextlib import contextmanager
+from pathlib import Path
+from types import CodeType
+from typing import Any
+
+from launchverify.frontends.python.convert import PythonConverter
+from launchverify.frontends.python.importer import Opaque, import_context
+from launchverify.frontends.python.sandbox import SandboxViolation, TimeLimitExceeded, sandbox
+from launchverify.ir import actions as a
+from launchverify.models.launch_api import runtime
+from launchverify.models.launch_api.base import _is_ours
+from launchverify.models.launch_api.context import LaunchContext
+from launchverify.models.launch_api.launch_actions import LaunchDescription
+from launchverify.models.launch_api.placeholders import has_placeholder
+from launchverify.packages import PackageIndex
+from launchverify.problems import ProblemSink
+from launchverify.span import Span
+
+MAX_SOURCE = 2 * 1024 * 1024
+ENTRY_POINTS = ("generate_launch_description", "generate_test_description")
+
+
+class UnknownInput(Exception):
+    """The launch file needs something only the robot has (a file outside the workspace)."""
+
+
+class PythonFrontend:
+    """Loads Python launch files for one run (one package index, one workspace)."""
+
+    def __init__(self, index: PackageIndex, workspace: Path) -> None:
+        self.index = index
+        self.workspace = workspace
+
+    def load(self, path: Path, sink: ProblemSink) -> a.LaunchFile | None:
+        """Run a Python launch file and return its IR, recording problems in ``sink``."""
+        try:
+            data = path.read_bytes()
+        except OSError as error:
+            sink.parse(f"cannot read file: {error.strerror or error}", Span.of_file(path))
+            return None
+        if len(data) > MAX_SOURCE:
+            sink.parse("file is larger than 2 MiB; not read", Span.of_file(path))
+            return None
+        try:
+            code = compile(data, str(path), "exec", dont_inherit=True)
+        except SyntaxError as error:
+            sink.parse(f"invalid Python: {error.msg}",
+                       Span(path, error.lineno or 1, (error.offset or 1)))
+            return None
+        except (ValueError, MemoryError, RecursionError) as error:
+            sink.parse(f"invalid Python: {error}", Span.of_file(path))
+            return None
+        session = _Session(self, path, sink)
+        description = session.run_module(code)
+        if description is None:
+            return None
+        return session.convert(description)
+
+
+class _Session:
+    """One launch file's run: its module, its problems, its OpaqueFunctions."""
+
+    def __init__(self, frontend: PythonFrontend, path: Path, sink: ProblemSink) -> None:
+        self.frontend = frontend
+        self.path = path
+        self.sink = sink
+        self.reported: set[str] = set()
+        self.namespace: dict[str, Any] = {}
+
+    # ------------------------------------------------------------------ reporting
+
+    def unmodeled(self, what: str, span: Span) -> None:
+        """Record LV003 once per message."""
+        if what not in self.reported:
+            self.reported.add(what)
+            self.sink.unmodeled(what, span)
+
+    def module_unmodeled(self, name: str) -> None:
+        """Record an import nothing provides."""
+        self.unmodeled(f"module {name!r} is not modelled and not installed; values from it "
+                       "are unknown", self._user_span())
+
+    def _user_span(self) -> Span:
+        import sys
+
+        frame = sys._getframe(1)
+        while frame is not None and (_is_ours(frame.f_code.co_filename)
+                                     or "importlib" in frame.f_code.co_filename):
+            frame = frame.f_back  # type: ignore[assignment]
+        if frame is None:
+            return Span.of_file(self.path)
+        return Span(Path(frame.f_code.co_filename), frame.f_lineno or 1)
+
+    def failure(self, error: BaseException) -> None:
+        """Record an exception raised while running the launch file."""
+        span = self._error_span(error)
+        if isinstance(error, UnknownInput):
+            self.sink.unmodeled(str(error), span)
+        elif isinstance(error, SandboxViolation):
+            self.sink.unmodeled(f"{error}; the launch file's evaluation stopped there", span)
+        elif isinstance(error, TimeLimitExceeded):
+            self.sink.evaluation(f"{error} (an endless loop?)", span)
+        elif isinstance(error, MemoryError):
+            self.sink.evaluation("evaluation ran out of memory", span)
+        else:
+            text = str(error)
+            message = f"{type(error).__name__}: {text}" if text else type(error).__name__
+            self.sink.evaluation(f"the launch file raises {message}", span)
+
+    def _error_span(self, error: BaseException) -> Span:
+        frames = traceback.extract_tb(error.__traceback__)
+        user = [f for f in frames if not _is_ours(f.filename) and _is_file(f.filename)
+                and not f.filename.startswith(_STDLIB)]
+        if not user:
+            return Span.of_file(self.path)
+        frame = user[-1]
+        column = (frame.colno or 0) + 1 if getattr(frame, "colno", None) is not None else 1
+        return Span(Path(frame.filename), frame.lineno or 1, column)
+
+    # ------------------------------------------------------------------ running
+
+    @contextmanager
+    def environment(self) -> Iterator[None]:
+        """Run a block as this file's code runs: models, workspace imports, sandbox."""
+        frontend = self.frontend
+        runtime.current = runtime.Runtime(frontend.index, frontend.workspace, self.unmodeled,
+                                          self.path)
+        try:
+            with import_context([self.path.parent], frontend.index, self.module_unmodeled), \
+                    sandbox():
+                yield
+        finally:
+            runtime.current = None
+
+    def run_module(self, code: CodeType) -> Any:
+        """Execute the module and call its entry point; ``None`` after a problem."""
+        self.namespace = {
+            "__name__": "__launchverify_launch_file__",
+            "__file__": str(self.path),
+            "__builtins__": self._builtins(),
+        }
+        try:
+            with self.environment():
+                exec(code, self.namespace)
+                entry = next((self.namespace[n] for n in ENTRY_POINTS if n in self.namespace),
+                             None)
+                if entry is None:
+                    self.sink.parse(
+                        "launch file does not contain the required function "
+                        "'generate_launch_description()'", Span.of_file(self.path))
+                    return None
+                result = entry()
+        except KeyboardInterrupt:
+            raise
+        except BaseException as error:  # the user's code: anything may come out
+            self.failure(error)
+            return None
+        if isinstance(result, tuple) and result:
+            result = result[0]  # generate_test_description returns (description, context)
+        if not isinstance(result, LaunchDescription):
+            self.sink.evaluation(
+                "generate_launch_description() must return a LaunchDescription, got "
+                f"{type(result).__name__}", Span.of_file(self.path))
+            return None
+        return result
+
+    def convert(self, description: LaunchDescription) -> a.LaunchFile | None:
+        """Turn the description into IR."""
+        converter = self.converter()
+        try:
+            actions = converter.actions(description.entities)
+        except Exception as error:  # a model rejecting a value the user passed
+            self.failure(error)
+            return None
+        return a.LaunchFile(path=self.path, format="python", actions=actions,
+                            span=Span.of_file(self.path),
+                            deprecated=description.deprecated_reason)
+
+    def converter(self) -> PythonConverter:
+        """Return a converter reporting into this session."""
+        return PythonConverter(self.unmodeled, self.opaque_function)
+
+    def _builtins(self) -> dict[str, Any]:
+        namespace = dict(vars(builtins))
+        namespace["open"] = self._open
+        return namespace
+
+    def _open(self, file: Any, mode: str = "r", *args: Any, **kwargs: Any) -> Any:
+        """``open`` for launch files: files only the robot has are unknown inputs."""
+        name = str(file)
+        if has_placeholder(name):
+            raise UnknownInput(f"the launch file reads {name!r}, which is only known on the "
+                               "robot; evaluation stopped there")
+        path = Path(name)
+        if path.is_absolute() and not path.exists() and not path.resolve().is_relative_to(
+                self.frontend.workspace):
+            raise UnknownInput(f"the launch file reads {name!r}, outside the workspace and "
+                               "not on this machine; evaluation stopped there")
+        if isinstance(file, Opaque):
+            return io.StringIO("")
+        return builtins.open(file, mode, *args, **kwargs)  # noqa: PTH123 (user code's open)
+
+    # ------------------------------------------------------------------ OpaqueFunction
+
+    def opaque_function(self, model: Any) -> a.Action:
+        """Return the IR of an OpaqueFunction whose body runs when the walk reaches it."""
+        name = getattr(model.function, "__name__", "function")
+
+        def run(configurations: Mapping[str, str], current: Path) -> a.OpaqueResult:
+            return self.run_opaque(model, configurations, current)
+
+        return a.OpaqueFunction(span=model._span, condition=self.converter().condition(
+            model.condition), description=f"OpaqueFunction {name}()", run=run)
+
+    def run_opaque(self, model: Any, configurations: Mapping[str, str],
+                   current: Path) -> a.OpaqueResult:
+        """Run an OpaqueFunction's body with a concrete context."""
+        sink = ProblemSink()
+        saved = self.sink
+        self.sink = sink
+        performer = _Performer(self.frontend, configurations, current)
+        context = LaunchContext(configurations=dict(configurations), performer=performer.perform,
+                                condition_evaluator=performer.evaluate,
+                                launch_file=str(current))
+        actions: tuple[a.Action, ...] = ()
+        try:
+            with self.environment():
+                entities = model.function(context, *model.args, **model.kwargs)
+            actions = self.converter().actions(entities or [])
+        except KeyboardInterrupt:
+            raise
+        except BaseException as error:  # the user's code
+            self.failure(error)
+        finally:
+            self.sink = saved
+        reads = (*performer.reducer.reads, *context.launch_configurations.read)
+        return a.OpaqueResult(actions=actions, problems=tuple(sink.problems), reads=reads)
+
+
+class _Performer:
+    """Performs substitutions for an OpaqueFunction's context."""
+
+    def __init__(self, frontend: PythonFrontend, configurations: Mapping[str, str],
+                 current: Path) -> None:
+        from launchverify.frontends.python.concrete import ConcreteReducer
+
+        self.reducer = ConcreteReducer(frontend.index, configurations, current)
+        self.converter = PythonConverter(lambda what, span: None, lambda model: None)  # type: ignore[arg-type, return-value]
+
+    def perform(self, substitution: Any) -> str:
+        return self.reducer.perform(self.converter.sub(substitution))
+
+    def evaluate(self, condition: Any) -> bool:
+        ir = self.converter.condition(condition)
+        return self.reducer.holds(ir)
+
+
+def _is_file(name: str) -> bool:
+    return not name.startswith("<")
+
+
+_STDLIB = str(Path(traceback.__file__).parent)
+
+
+def load_python(path: Path, sink: ProblemSink, index: PackageIndex | None,
+                workspace: Path | None) -> a.LaunchFile | None:
+    """Load a Python launch file (used by ``frontends.load_launch_file``)."""
+    frontend = PythonFrontend(index or PackageIndex(), workspace or path.parent)
+    return frontend.load(path, sink)
+

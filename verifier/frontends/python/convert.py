@@ -1,0 +1,195 @@
+"""Python values built by a launch file, turned into IR.
+
+Launch accepts strings, substitutions and lists of them almost everywhere
+(``SomeSubstitutionsType``); parameters take files, dicts and descriptions; remappings are
+pairs. ``PythonConverter`` maps each to the IR the XML and YAML frontends produce, turning
+placeholders (values only known on the robot) back into symbolic expressions. Each model
+object maps to one IR object, so event handlers keep pointing at their target.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Mapping
+from pathlib import Path
+from typing import Any
+
+from launchverify.ir import actions as a
+from launchverify.ir import conditions as c
+from launchverify.ir import subst as s
+from launchverify.models.launch_api import base, launch_ros
+from launchverify.models.launch_api.placeholders import PATTERN
+from launchverify.span import Span
+
+Unmodeled = Callable[[str, Span], None]
+
+
+def placeholder_sub(text: str) -> s.Sub:
+    """Return text as an expression, with placeholders as the symbolic values they stand for."""
+    if "\u27e8" not in text:
+        return s.Text(text)
+    parts: list[s.Sub] = []
+    position = 0
+    for match in PATTERN.finditer(text):
+        parts.append(s.Text(text[position:match.start()]))
+        kind, name = match.group(1), match.group(2)
+        if kind == "env":
+            parts.append(s.EnvVar(s.Text(name)))
+        elif kind == "pkg":
+            parts.append(s.FindPackageShare(s.Text(name)))
+        elif kind == "prefix":
+            parts.append(s.FindPackagePrefix(s.Text(name)))
+        elif kind == "arg":
+            parts.append(s.LaunchConfig(s.Text(name)))
+        else:
+            parts.append(s.Opaque(name))
+        position = match.end()
+    parts.append(s.Text(text[position:]))
+    return s.concat(parts)
+
+
+class PythonConverter:
+    """Implements ``launch_api.base.Converter`` for one launch file."""
+
+    def __init__(self, unmodeled: Unmodeled,
+                 opaque_function: Callable[[Any], a.Action]) -> None:
+        self._unmodeled = unmodeled
+        self._opaque_function = opaque_function
+        self._memo: dict[int, a.Action | None] = {}
+        self._keep: list[Any] = []  # keep converted objects alive while their id is a key
+
+    # ------------------------------------------------------------------ values
+
+    def sub(self, value: Any) -> s.Sub:
+        if isinstance(value, s.Sub):
+            return value
+        if isinstance(value, base.Substitution):
+            return value.to_sub(self)
+        if isinstance(value, str):
+            return placeholder_sub(value)
+        if isinstance(value, os.PathLike):
+            return placeholder_sub(os.fspath(value))
+        if isinstance(value, (list, tuple)):
+            return s.concat([self.sub(item) for item in value])
+        if isinstance(value, bool):
+            return s.Text("true" if value else "false")
+        if isinstance(value, (int, float)):
+            return s.Text(str(value))
+        if value is None:
+            return s.Text("")
+        return placeholder_sub(str(value))
+
+    def opt_sub(self, value: Any) -> s.Sub | None:
+        return None if value is None else self.sub(value)
+
+    def condition(self, value: Any) -> c.Condition | None:
+        if value is None:
+            return None
+        if isinstance(value, base.Condition):
+            return value.to_condition(self)
+        return c.OpaqueCondition(f"condition {type(value).__name__}")
+
+    def pairs(self, value: Any) -> tuple[tuple[s.Sub, s.Sub], ...]:
+        items = value.items() if isinstance(value, Mapping) else value
+        return tuple((self.sub(k), self.sub(v)) for k, v in items)
+
+    # ------------------------------------------------------------------ actions
+
+    def action(self, entity: Any) -> a.Action | None:
+        key = id(entity)
+        if key in self._memo:
+            return self._memo[key]
+        self._memo[key] = None  # a cycle through handlers resolves to nothing
+        self._keep.append(entity)
+        if isinstance(entity, base.LaunchDescriptionEntity):
+            result = entity.to_ir(self)
+        else:
+            result = None
+            span = getattr(entity, "_span", None)
+            self._unmodeled(f"{type(entity).__name__} is not a launch entity launchverify "
+                            "models", span if isinstance(span, Span) else Span(Path("?"), 1))
+        self._memo[key] = result
+        return result
+
+    def actions(self, entities: Any) -> tuple[a.Action, ...]:
+        out = []
+        for entity in base.flatten(entities if isinstance(entities, (list, tuple)) else
+                                   [entities]):
+            if entity is None:
+                continue
+            result = self.action(entity)
+            if result is not None:
+                out.append(result)
+        return tuple(out)
+
+    def opaque_function(self, function: Any) -> a.Action:
+        """Return the IR of an OpaqueFunction (runs later, with a concrete context)."""
+        return self._opaque_function(function)
+
+    # ------------------------------------------------------------------ node pieces
+
+    def parameters(self, value: Any) -> tuple[a.ParamEntry, ...]:
+        out: list[a.ParamEntry] = []
+        for item in value or []:
+            span = getattr(item, "_span", None)
+            where = span if isinstance(span, Span) else Span(Path("?"), 1)
+            if isinstance(item, launch_ros.ParameterFile):
+                allow = item.allow_substs
+                out.append(a.ParamFile(path=self.sub(item.param_file), span=item._span,
+                                       allow_substs=allow if isinstance(allow, bool)
+                                       else self.sub(allow)))
+            elif isinstance(item, Mapping):
+                out.append(a.ParamDict(items=tuple(self._items(item, (), where)), span=where))
+            elif isinstance(item, launch_ros.Parameter):
+                out.append(a.ParamDict(items=(a.ParamItem(
+                    name=self.sub(item.name), value=self.param_value(item.value),
+                    span=item._span),), span=item._span))
+            else:
+                out.append(a.ParamFile(path=self.sub(item), span=where))
+        return tuple(out)
+
+    def _items(self, mapping: Mapping[Any, Any], prefix: tuple[s.Sub, ...],
+               span: Span) -> list[a.ParamItem]:
+        out: list[a.ParamItem] = []
+        for key, value in mapping.items():
+            name = (*prefix, self.sub(key))
+            if isinstance(value, Mapping):
+                out.extend(self._items(value, name, span))
+                continue
+            dotted: list[s.Sub] = []
+            for index, part in enumerate(name):
+                if index:
+                    dotted.append(s.Text("."))
+                dotted.append(part)
+            out.append(a.ParamItem(name=s.concat(dotted), value=self.param_value(value),
+                                   span=span))
+        return out
+
+    def param_value(self, value: Any) -> a.ParamValue:
+        if isinstance(value, launch_ros.ParameterValue):
+            value_type = value.value_type
+            name = getattr(value_type, "__name__", None) if value_type is not None else None
+            return a.ParamValue(value=self.param_value(value.value).value,
+                                value_type=name or (str(value_type) if value_type else None))
+        if isinstance(value, (bool, int, float)) or value is None:
+            return a.ParamValue(value=value)
+        if isinstance(value, (list, tuple)) and not any(
+            isinstance(item, base.Substitution) for item in value
+        ) and all(isinstance(item, (bool, int, float, str)) for item in value):
+            return a.ParamValue(value=tuple(
+                self.sub(item) if isinstance(item, str) else item for item in value))
+        return a.ParamValue(value=self.sub(value))
+
+    def remaps(self, value: Any, span: Span) -> tuple[a.Remap, ...]:
+        out = []
+        for pair in value or []:
+            try:
+                src, dst = pair
+            except (TypeError, ValueError):
+                self._unmodeled(f"remapping {pair!r} is not a (from, to) pair", span)
+                continue
+            out.append(a.Remap(src=self.sub(src), dst=self.sub(dst), span=span))
+        return tuple(out)
+
+    def unmodeled(self, what: str, span: Span) -> None:
+        self._unmodeled(what, span)

@@ -1,0 +1,166 @@
+"""What ``import`` means inside a launch file being evaluated.
+
+Three finders, in order of precedence:
+
+- the launch API (``launch``, ``launch_ros``, ``ament_index_python``...) comes from our
+  models, whatever is installed;
+- modules next to the launch file and Python packages of the workspace come from the
+  workspace (``from my_robot.launch_utils import ...``);
+- after Python's own finders (the standard library, installed libraries), anything still
+  missing becomes an opaque stand-in, reported once per module as not modelled.
+
+``ImportContext`` installs them for one evaluation and removes every module it loaded, so
+one launch file's helpers never leak into the next.
+"""
+
+from __future__ import annotations
+
+import importlib.abc
+import importlib.machinery
+import importlib.util
+import sys
+import types
+from collections.abc import Callable, Iterator, Sequence
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any
+
+from launchverify.models.launch_api import exports_for, is_modelled
+from launchverify.packages import PackageIndex
+
+
+class _ModelLoader(importlib.abc.Loader):
+    def create_module(self, spec: importlib.machinery.ModuleSpec) -> types.ModuleType:
+        module = types.ModuleType(spec.name)
+        module.__dict__.update(exports_for(spec.name) or {})
+        module.__path__ = []  # every model module can have submodules
+        return module
+
+    def exec_module(self, module: types.ModuleType) -> None:
+        parent, _, child = module.__name__.rpartition(".")
+        if parent and parent in sys.modules:
+            setattr(sys.modules[parent], child, module)
+
+
+class ModelFinder(importlib.abc.MetaPathFinder):
+    """Serves the launch API models under their real module names."""
+
+    def find_spec(self, fullname: str, path: Sequence[str] | None = None,
+                  target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
+        if not is_modelled(fullname):
+            return None
+        return importlib.machinery.ModuleSpec(fullname, _ModelLoader(), is_package=True)
+
+
+class WorkspaceFinder(importlib.abc.MetaPathFinder):
+    """Finds modules beside the launch file and Python packages of workspace packages."""
+
+    def __init__(self, folders: list[Path], index: PackageIndex) -> None:
+        self.folders = folders
+        self.index = index
+
+    def find_spec(self, fullname: str, path: Sequence[str] | None = None,
+                  target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
+        if "." in fullname:
+            return None  # submodules are found through the parent's __path__
+        roots = list(self.folders)
+        package = self.index.find(fullname)
+        if package is not None and package.source is not None:
+            roots.append(package.source)
+        for root in roots:
+            spec = importlib.machinery.PathFinder.find_spec(fullname, [str(root)])
+            if spec is not None and spec.origin and not spec.origin.endswith((".so", ".pyd")):
+                return spec
+        return None
+
+
+class _OpaqueLoader(importlib.abc.Loader):
+    def create_module(self, spec: importlib.machinery.ModuleSpec) -> types.ModuleType:
+        return OpaqueModule(spec.name)
+
+    def exec_module(self, module: types.ModuleType) -> None:
+        return None
+
+
+class OpaqueFinder(importlib.abc.MetaPathFinder):
+    """Last resort: a module nothing else provides becomes an opaque stand-in."""
+
+    def __init__(self, report: Callable[[str], None]) -> None:
+        self.report = report
+
+    def find_spec(self, fullname: str, path: Sequence[str] | None = None,
+                  target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
+        self.report(fullname.partition(".")[0])
+        return importlib.machinery.ModuleSpec(fullname, _OpaqueLoader(), is_package=True)
+
+
+class OpaqueModule(types.ModuleType):
+    """A module we cannot see into: every attribute is an opaque value."""
+
+    def __init__(self, name: str) -> None:
+        super().__init__(name)
+        self.__path__: list[str] = []
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        return Opaque(f"{self.__name__}.{name}")
+
+
+class Opaque:
+    """A value from unmodelled code: calling it or reading attributes gives more of it."""
+
+    def __init__(self, description: str) -> None:
+        self._description = description
+
+    def __call__(self, *args: Any, **kwargs: Any) -> Opaque:
+        return Opaque(f"{self._description}()")
+
+    def __getattr__(self, name: str) -> Opaque:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        return Opaque(f"{self._description}.{name}")
+
+    def __iter__(self) -> Iterator[Any]:
+        return iter(())
+
+    def __bool__(self) -> bool:
+        return False
+
+    def __str__(self) -> str:
+        from launchverify.models.launch_api.placeholders import placeholder
+
+        return placeholder("opaque", self._description)
+
+    def __repr__(self) -> str:
+        return f"<opaque {self._description}>"
+
+    def __mro_entries__(self, bases: tuple[Any, ...]) -> tuple[type, ...]:
+        return (object,)
+
+
+@contextmanager
+def import_context(folders: list[Path], index: PackageIndex,
+                   report: Callable[[str], None]) -> Iterator[None]:
+    """Install the finders for one evaluation and forget what it imported afterwards."""
+    before = set(sys.modules)
+    front = [ModelFinder(), WorkspaceFinder(folders, index)]
+    back = OpaqueFinder(report)
+    sys.meta_path[:0] = front
+    sys.meta_path.append(back)
+    try:
+        yield
+    finally:
+        for finder in (*front, back):
+            if finder in sys.meta_path:
+                sys.meta_path.remove(finder)
+        for name in set(sys.modules) - before:
+            module = sys.modules.get(name)
+            spec = getattr(module, "__spec__", None)
+            loader = getattr(spec, "loader", None)
+            origin = str(getattr(spec, "origin", "") or "")
+            ours = isinstance(loader, (_ModelLoader, _OpaqueLoader))
+            local = any(origin.startswith(str(folder)) for folder in folders) or (
+                index.owner(Path(origin)) is not None if origin else False)
+            if ours or local:
+                del sys.modules[name]

@@ -1,0 +1,187 @@
+"""Running a launch file's Python with no side effects, within time and memory limits.
+
+An audit hook (installed once, active only inside ``sandbox()``) refuses what would touch
+the world: starting processes, sockets, writing, renaming or deleting files, changing the
+working directory or the environment of the process. The environment the code sees is a
+symbolic stand-in: unknown variables read as placeholders instead of this machine's
+values. A timer interrupts endless loops; an address-space limit stops runaway memory.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import threading
+from collections.abc import Iterator, MutableMapping
+from contextlib import contextmanager
+from pathlib import Path
+from typing import Any
+
+from launchverify.models.launch_api.placeholders import placeholder
+
+try:
+    import resource
+except ImportError:  # pragma: no cover - not on POSIX
+    resource = None  # type: ignore[assignment]
+
+BLOCKED_PREFIXES = (
+    "subprocess.", "os.exec", "os.spawn", "os.posix_spawn", "os.fork", "os.forkpty", "os.system",
+    "os.kill", "os.killpg", "socket.", "urllib.Request", "http.client.", "ftplib.", "smtplib.",
+    "poplib.", "imaplib.", "nntplib.", "telnetlib.", "webbrowser.", "ctypes.", "pty.",
+)
+BLOCKED_EVENTS = frozenset({
+    "os.remove", "os.rename", "os.rmdir", "os.mkdir", "os.chmod", "os.chown", "os.symlink",
+    "os.link", "os.truncate", "os.utime", "os.chdir", "os.chroot", "os.putenv", "os.unsetenv",
+    "os.setxattr", "os.removexattr", "shutil.rmtree", "shutil.move", "shutil.copyfile",
+    "shutil.copytree", "shutil.chown", "shutil.make_archive", "shutil.unpack_archive",
+    "os.startfile", "os.system", "sys.setrecursionlimit", "sys.settrace", "sys.setprofile",
+})
+_WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_APPEND | os.O_TRUNC
+TIME_LIMIT = 10.0
+MEMORY_LIMIT = 2 * 1024 ** 3  # bytes of address space beyond what is used already
+
+
+class SandboxViolation(PermissionError):
+    """A launch file tried to act on the world while being evaluated."""
+
+
+class TimeLimitExceeded(Exception):
+    """A launch file ran for longer than the evaluation allows."""
+
+
+_state = threading.local()
+_hook: list[bool] = []  # installed once per process (audit hooks cannot be removed)
+
+
+def _active() -> bool:
+    return getattr(_state, "depth", 0) > 0
+
+
+def _audit(event: str, args: tuple[Any, ...]) -> None:
+    if not _active():
+        return
+    if event in BLOCKED_EVENTS or event.startswith(BLOCKED_PREFIXES):
+        raise SandboxViolation(f"launch files are evaluated without side effects: {event} "
+                               "is not allowed")
+    if event == "open" and len(args) >= 3:
+        path, mode, flags = args[0], args[1], args[2]
+        writes = (isinstance(mode, str) and any(c in mode for c in "wax+")) or (
+            isinstance(flags, int) and flags & _WRITE_FLAGS)
+        if writes:
+            raise SandboxViolation(f"launch files are evaluated without side effects: writing "
+                                   f"{path!r} is not allowed")
+
+
+def _install_hook() -> None:
+    if not _hook:
+        sys.addaudithook(_audit)
+        _hook.append(True)
+
+
+class SymbolicEnviron(MutableMapping[str, str]):
+    """``os.environ`` as a launch file sees it: variables of the robot, not of this machine.
+
+    Reading a variable gives a placeholder for its unknown value; ``get`` with a default
+    gives the default (the same choice as ``$(env NAME default)``). Writes stay here.
+    """
+
+    def __init__(self) -> None:
+        self._set: dict[str, str] = {}
+
+    def __getitem__(self, key: str) -> str:
+        if key in self._set:
+            return self._set[key]
+        return placeholder("env", key)
+
+    def get(self, key: str, default: Any = None) -> Any:
+        if key in self._set:
+            return self._set[key]
+        return default if default is not None else placeholder("env", key)
+
+    def __setitem__(self, key: str, value: str) -> None:
+        self._set[key] = value
+
+    def __delitem__(self, key: str) -> None:
+        self._set.pop(key, None)
+
+    def __contains__(self, key: object) -> bool:
+        return True
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._set)
+
+    def __len__(self) -> int:
+        return len(self._set)
+
+    def copy(self) -> dict[str, str]:
+        """Return the variables set by the launch file itself."""
+        return dict(self._set)
+
+
+@contextmanager
+def sandbox(time_limit: float = TIME_LIMIT) -> Iterator[None]:
+    """Run a block with side effects refused, a symbolic environment and resource limits."""
+    _install_hook()
+    nested = _active()
+    _state.depth = getattr(_state, "depth", 0) + 1
+    saved_bytecode = sys.dont_write_bytecode
+    saved_environ = os.environ
+    sys.dont_write_bytecode = True
+    if not nested:
+        os.environ = SymbolicEnviron()  # type: ignore[assignment]  # noqa: B003
+    try:
+        with _time_limit(time_limit if not nested else 0), _memory_limit(not nested):
+            yield
+    finally:
+        os.environ = saved_environ  # noqa: B003
+        sys.dont_write_bytecode = saved_bytecode
+        _state.depth -= 1
+
+
+@contextmanager
+def _time_limit(seconds: float) -> Iterator[None]:
+    main = threading.current_thread() is threading.main_thread()
+    if seconds <= 0 or not main or not hasattr(signal, "setitimer"):
+        yield
+        return
+
+    def expire(signum: int, frame: Any) -> None:
+        raise TimeLimitExceeded(f"evaluation took longer than {seconds:g} s")
+
+    previous = signal.signal(signal.SIGALRM, expire)
+    signal.setitimer(signal.ITIMER_REAL, seconds)
+    try:
+        yield
+    finally:
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
+
+
+@contextmanager
+def _memory_limit(apply: bool) -> Iterator[None]:
+    if not apply or resource is None:
+        yield
+        return
+    try:
+        soft, hard = resource.getrlimit(resource.RLIMIT_AS)
+        used = _address_space()
+        limit = used + MEMORY_LIMIT
+        if hard != resource.RLIM_INFINITY:
+            limit = min(limit, hard)
+        resource.setrlimit(resource.RLIMIT_AS, (limit, hard))
+    except (ValueError, OSError):
+        yield
+        return
+    try:
+        yield
+    finally:
+        resource.setrlimit(resource.RLIMIT_AS, (soft, hard))
+
+
+def _address_space() -> int:
+    try:
+        pages = int(Path("/proc/self/statm").read_text().split()[0])
+        return pages * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, IndexError):
+        return 0
