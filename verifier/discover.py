@@ -13,20 +13,22 @@ PYTHON_SUFFIX = "launch.py"
 FRONTEND_SUFFIXES = (".xml", ".yaml", ".yml")
 _XML_ROOT = re.compile(rb"<launch[\s>/]")
 _YAML_ROOT = re.compile(rb"^launch\s*:", re.MULTILINE)
+_PYTHON_ENTRY = re.compile(rb"^\s*def generate_launch_description\s*\(", re.MULTILINE)
 
 
 def is_launch_file(path: Path) -> bool:
     """Return whether a file looks like a launch file.
 
     Names ending in ``launch.xml``/``launch.yaml`` count; ``*launch.py`` files count when
-    they define ``generate_launch_description``; other ``.xml``/``.yaml`` files count when
+    they define ``generate_launch_description`` (what ``ros2 launch`` runs; launch tests
+    are left to ``launch_test``); other ``.xml``/``.yaml`` files count when
     they sit in a ``launch`` folder and their root is ``launch``.
     """
     name = path.name.lower()
     if name.endswith(LAUNCH_SUFFIXES):
         return True
     if name.endswith(PYTHON_SUFFIX):
-        return _head_contains(path, (b"generate_launch_description", b"generate_test_description"))
+        return _PYTHON_ENTRY.search(_head(path, 256 * 1024)) is not None
     if not name.endswith(FRONTEND_SUFFIXES) or "launch" not in path.parent.name.lower():
         return False
     pattern = _XML_ROOT if name.endswith(".xml") else _YAML_ROOT
@@ -41,9 +43,7 @@ def _head(path: Path, size: int) -> bytes:
         return b""
 
 
-def _head_contains(path: Path, needles: tuple[bytes, ...]) -> bool:
-    head = _head(path, 256 * 1024)
-    return any(needle in head for needle in needles)
+
 
 
 def discover(paths: list[Path]) -> list[Path]:

@@ -11,13 +11,35 @@ from __future__ import annotations
 import typing
 from typing import Any
 
-from launchverify.models.launch_api import ament, base, context, launch_events, launch_ros
+from launchverify.models.launch_api import (
+    ament,
+    base,
+    context,
+    helpers,
+    launch_events,
+    launch_ros,
+)
 from launchverify.models.launch_api import launch_actions as la
 from launchverify.models.launch_api import launch_substitutions as ls
 from launchverify.models.launch_api.lifecycle_msgs import State, Transition
 
 SomeSubstitutionsType = str | base.Substitution | typing.Iterable[Any]
 SomeSubstitutionsType_types_tuple = (str, base.Substitution)
+
+
+# Test machinery a launch file may import but never needs to build its description: names
+# without a model are opaque without being reported.
+QUIET_ROOTS = frozenset({"launch_testing", "launch_testing_ros"})
+
+
+class _Unused:
+    """A class launch files import but that never matters statically (``LaunchService``)."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        pass
+
+    def __getattr__(self, name: str) -> Any:
+        return lambda *args, **kwargs: 0
 
 
 def _exports(module: Any, *names: str) -> dict[str, Any]:
@@ -27,7 +49,8 @@ def _exports(module: Any, *names: str) -> dict[str, Any]:
 ACTIONS = _exports(
     la, "AppendEnvironmentVariable", "DeclareLaunchArgument", "EmitEvent", "ExecuteLocal",
     "ExecuteProcess", "GroupAction", "IncludeLaunchDescription", "Log", "LogInfo",
-    "OpaqueCoroutine", "OpaqueFunction", "PopEnvironment", "PopLaunchConfigurations",
+    "ForEach", "ForLoop", "OpaqueCoroutine", "OpaqueFunction", "PopEnvironment",
+    "PopLaunchConfigurations",
     "PushEnvironment", "PushLaunchConfigurations", "RegisterEventHandler", "ResetEnvironment",
     "ResetLaunchConfigurations", "SetEnvironmentVariable", "SetLaunchConfiguration", "Shutdown",
     "TimerAction", "UnregisterEventHandler", "UnsetEnvironmentVariable",
@@ -74,7 +97,7 @@ ROS_SUBSTITUTIONS = {
 }
 AMENT = _exports(
     ament, "PackageNotFoundError", "get_package_prefix", "get_package_share_directory",
-    "get_package_xml_path", "get_packages_with_prefixes",
+    "get_package_xml_path", "get_packages_with_prefixes", "has_resource", "get_resource",
 )
 
 MODULES: dict[str, dict[str, Any]] = {
@@ -87,6 +110,7 @@ MODULES: dict[str, dict[str, Any]] = {
         "SomeSubstitutionsType": SomeSubstitutionsType,
         "SomeSubstitutionsType_types_tuple": SomeSubstitutionsType_types_tuple,
         "EventHandler": launch_events.EventHandler, "Event": launch_events.Event,
+        "LaunchService": _Unused,
     },
     "launch.actions": ACTIONS,
     "launch.substitutions": SUBSTITUTIONS,
@@ -127,6 +151,15 @@ MODULES: dict[str, dict[str, Any]] = {
         "YAMLLaunchDescriptionSource": la.YAMLLaunchDescriptionSource},
     "ament_index_python": AMENT,
     "ament_index_python.packages": AMENT,
+    "nav2_common": {},
+    "nav2_common.launch": _exports(
+        helpers, "HasNodeParams", "LaunchConfigAsBool", "ParseMultiRobotPose", "ReplaceString",
+        "RewrittenYaml"),
+    "xacro": _exports(helpers, "open_output", "parse", "process_doc", "process_file"),
+    "launch_testing": {"LaunchTestService": _Unused},
+    "launch_testing.actions": {"ReadyToTest": la.NoGraphEffect},
+    "launch_testing.markers": {"keep_alive": lambda function: function},
+    "launch_testing_ros": {},
     "lifecycle_msgs": {},
     "lifecycle_msgs.msg": {"State": State, "Transition": Transition},
 }

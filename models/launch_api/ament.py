@@ -45,3 +45,17 @@ def get_package_xml_path(package_name: str) -> str:
     """Return the package.xml of a package."""
     share = get_package_share_directory(package_name)
     return share + "/package.xml"
+
+
+def has_resource(resource_type: str, resource_name: str) -> bool:
+    """``ament_index_python.resources.has_resource``: packages the analysis knows of."""
+    if resource_type != "packages":
+        return False
+    from launchverify.models.known_packages import is_released
+
+    return active().index.find(resource_name) is not None or is_released(resource_name)
+
+
+def get_resource(resource_type: str, resource_name: str) -> tuple[str, str]:
+    """``ament_index_python.resources.get_resource``: content unknown statically."""
+    return "", get_package_prefix(resource_name)

@@ -80,8 +80,8 @@ class Converter(Protocol):
     def action(self, entity: Any) -> IRAction | None:
         """Return the IR action for one entity (the same object every time)."""
 
-    def parameters(self, value: Any) -> tuple[a.ParamEntry, ...]:
-        """Return IR parameter entries for a Node's ``parameters`` list."""
+    def parameters(self, value: Any, span: Span) -> tuple[a.ParamEntry, ...]:
+        """Return IR parameter entries for a Node's ``parameters`` list (built at ``span``)."""
 
     def param_value(self, value: Any) -> a.ParamValue:
         """Return an IR parameter value for one Python value."""
@@ -103,9 +103,13 @@ class LaunchDescriptionEntity:
         self._span = caller_span()
 
     def to_ir(self, cv: Converter) -> IRAction | None:
-        """Return the IR action for this entity."""
-        cv.unmodeled(f"{type(self).__name__} is not modelled", self._span)
-        return None
+        """Return the IR action for this entity (a subclass we do not know is opaque)."""
+        from launchverify.ir.actions import OpaqueAction
+
+        span = getattr(self, "_span", None) or caller_span()
+        name = type(self).__name__
+        cv.unmodeled(f"action {name} is not modelled; what it does is unknown", span)
+        return OpaqueAction(span=span, description=name)
 
     def describe(self) -> str:
         """Return a short description (launch's API)."""
@@ -148,8 +152,11 @@ class Substitution:
         self._span = caller_span()
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        """Return the IR expression."""
-        raise NotImplementedError
+        """Return the IR expression (a subclass we do not know is opaque)."""
+        name = type(self).__name__
+        cv.unmodeled(f"substitution {name} is not modelled; its value is unknown",
+                     getattr(self, "_span", None) or caller_span())
+        return s.Opaque(name)
 
     def describe(self) -> str:
         """Return a description (launch's API)."""
@@ -181,8 +188,10 @@ class Condition:
         self._span = caller_span()
 
     def to_condition(self, cv: Converter) -> IRCondition:
-        """Return the IR condition."""
-        raise NotImplementedError
+        """Return the IR condition (a subclass we do not know is opaque)."""
+        from launchverify.ir.conditions import OpaqueCondition
+
+        return OpaqueCondition(f"condition {type(self).__name__}")
 
     def evaluate(self, context: Any) -> bool:
         """Evaluate in an OpaqueFunction's concrete context."""

@@ -28,6 +28,12 @@ class LaunchContext:
         self.argv = list(argv or [])
         self.noninteractive = noninteractive
         self.launch_configurations = RecordingDict(configurations or {})
+        if performer is None:  # a context the launch file made itself: a fresh one
+            from launchverify.models.launch_api import runtime
+
+            tools = runtime.current.context_tools if runtime.current is not None else None
+            if tools is not None:
+                performer, condition_evaluator = tools(self.launch_configurations)
         self._performer = performer
         self._condition_evaluator = condition_evaluator
         self.locals = SimpleNamespace(

@@ -268,6 +268,61 @@ class OpaqueFunction(Action):
     def to_ir(self, cv: Converter) -> a.Action:
         return cv.opaque_function(self)  # type: ignore[attr-defined, no-any-return]
 
+    def call(self, context: Any) -> Any:
+        """Run the function with a concrete context; return what it yields."""
+        return self.function(context, *self.args, **self.kwargs)
+
+    @property
+    def label(self) -> str:
+        """Return how findings name this action."""
+        return f"OpaqueFunction {getattr(self.function, '__name__', 'function')}()"
+
+
+class ForEach(OpaqueFunction):
+    """``ForEach(input_values, *, function)`` (kilted, rolling): one call per mapping."""
+
+    def __init__(self, input_values: Any, *, function: Callable[..., Any], **kwargs: Any) -> None:
+        super().__init__(function=function, **kwargs)
+        self.input_values = input_values
+
+    def call(self, context: Any) -> Any:
+        import yaml
+
+        values = self.input_values
+        text = values if isinstance(values, str) else context.perform_substitution(values)
+        entities: list[Any] = []
+        for chunk in (part for part in text.split(";") if part.strip()):
+            mapping = yaml.safe_load(chunk)
+            if not isinstance(mapping, dict):
+                raise ValueError(f"ForEach value {chunk!r} is not a mapping")
+            entities.extend(self.function(**mapping) or [])
+        return entities
+
+    @property
+    def label(self) -> str:
+        return "ForEach"
+
+
+class ForLoop(OpaqueFunction):
+    """``ForLoop(length, *, function, name=None)`` (kilted, rolling): one call per index."""
+
+    def __init__(self, length: Any, *, function: Callable[..., Any], name: Any = None,
+                 **kwargs: Any) -> None:
+        super().__init__(function=function, **kwargs)
+        self.length = length
+
+    def call(self, context: Any) -> Any:
+        length = self.length
+        count = length if isinstance(length, int) else int(context.perform_substitution(length))
+        entities: list[Any] = []
+        for index in range(min(count, 256)):
+            entities.extend(self.function(index) or [])
+        return entities
+
+    @property
+    def label(self) -> str:
+        return "ForLoop"
+
 
 class OpaqueCoroutine(Action):
     """``OpaqueCoroutine(*, coroutine, ...)``: not modelled."""

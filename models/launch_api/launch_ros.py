@@ -66,7 +66,7 @@ class ComposableNode:
         return a.ComposableNode(
             package=cv.sub(self.package), plugin=cv.sub(self.plugin), span=self._span,
             name=cv.opt_sub(self.name), namespace=cv.opt_sub(self.namespace),
-            parameters=cv.parameters(self.parameters),
+            parameters=cv.parameters(self.parameters, self._span),
             remappings=cv.remaps(self.remappings, self._span),
             extra_arguments=tuple(extra), condition=cv.condition(self.condition),
             lifecycle=self.lifecycle,
@@ -109,7 +109,7 @@ class Node(ExecuteProcess):
             "name": cv.opt_sub(self.node_name_value),
             "namespace": cv.opt_sub(self.node_namespace),
             "exec_name": cv.opt_sub(self.exec_name),
-            "parameters": cv.parameters(self.parameters),
+            "parameters": cv.parameters(self.parameters, self._span),
             "remappings": cv.remaps(self.remappings, self._span),
             "ros_arguments": tuple(cv.sub(x) for x in self.ros_arguments or []),
             "arguments": tuple(cv.sub(x) for x in self.arguments or []),

@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from launchverify.span import Span
 
@@ -26,6 +26,8 @@ class Runtime:
     unmodeled: Callable[[str, Span], None]
     launch_file: Path
     packages_seen: set[str] = field(default_factory=set)
+    # Builds (perform, evaluate) for a LaunchContext the launch file makes itself.
+    context_tools: Callable[[dict[str, str]], tuple[Any, Any]] | None = None
 
 
 current: Runtime | None = None

@@ -62,9 +62,9 @@ class MissingFile(Rule):
 
 def _written(expression: str | None, resolved: str | None) -> str:
     """Show a path as written and, when different, what it resolved to."""
-    shown = display_path(resolved) if resolved else "?"
+    shown = display_path(resolved) if resolved else ("''" if resolved == "" else "?")
     if expression is None or expression == resolved:
-        return repr(shown)
+        return repr(shown) if resolved else shown
     return f"{expression!r} ({shown})"
 
 

@@ -79,6 +79,8 @@ class Reducer:
             s.PathJoin: self._path_join,
             s.LocalSub: lambda x: Unknown(f"event value {x.describe()}"),
             s.Opaque: lambda x: Unknown(x.describe()),
+            s.Rewritten: self._rewritten,
+            s.AsBool: self._as_bool,
             Arg: lambda x: self.arg(x) if isinstance(x, Arg) else x,
             EnvInput: lambda x: self.env_input(x) if isinstance(x, EnvInput) else x,
             Unknown: lambda x: x,
@@ -354,6 +356,20 @@ class Reducer:
             return s.PathJoin(tuple(parts))
         joined = os.path.join(*(t for t in texts if t is not None)) if texts else ""  # noqa: PTH118
         return s.Text(joined)
+
+    def _rewritten(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.Rewritten)
+        for item in sub.inputs:
+            self.reduce(item)
+        return self.reduce(sub.source)
+
+    def _as_bool(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, s.AsBool)
+        value = self.reduce(sub.value)
+        text = text_of(value)
+        if text is None:
+            return s.AsBool(value)
+        return s.Text("True" if text.strip().lower() in ("true", "1", "yes", "on") else "False")
 
     def _select(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, Select)

@@ -547,6 +547,8 @@ class Walker:
         """Ends the launch at run time; statically nothing to record."""
 
     def do_RegisterEventHandler(self, action: a.RegisterEventHandler, ctx: Ctx) -> None:
+        if action.handler.event == "shutdown":
+            return  # what runs at shutdown is not part of the running system
         with self.scope():
             self.visit_all(action.handler.entities, dataclasses.replace(ctx, deferred=True))
 

@@ -426,6 +426,38 @@ class LocalSub(Sub):
 
 
 @dataclass(frozen=True, slots=True)
+class Rewritten(Sub):
+    """A file a helper rewrites at launch time (nav2's ``RewrittenYaml``, ``ReplaceString``).
+
+    Statically it stands for its ``source`` file; ``inputs`` are the values the rewrite
+    reads (so their configurations count as used).
+    """
+
+    source: Sub
+    inputs: tuple[Sub, ...]
+    description: str
+
+    def describe(self) -> str:
+        return f"{self.description}({self.source.describe()})"
+
+    def children(self) -> tuple[Sub, ...]:
+        return (self.source, *self.inputs)
+
+
+@dataclass(frozen=True, slots=True)
+class AsBool(Sub):
+    """nav2's ``LaunchConfigAsBool``: ``True`` for true/1/yes/on (any case), else ``False``."""
+
+    value: Sub
+
+    def describe(self) -> str:
+        return f"AsBool({self.value.describe()})"
+
+    def children(self) -> tuple[Sub, ...]:
+        return (self.value,)
+
+
+@dataclass(frozen=True, slots=True)
 class Opaque(Sub):
     """A value launchverify cannot model (an arbitrary Python object or call)."""
 

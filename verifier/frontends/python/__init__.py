@@ -25,7 +25,7 @@ from launchverify.models.launch_api import runtime
 from launchverify.models.launch_api.base import _is_ours
 from launchverify.models.launch_api.context import LaunchContext
 from launchverify.models.launch_api.launch_actions import LaunchDescription
-from launchverify.models.launch_api.placeholders import has_placeholder
+from launchverify.models.launch_api.placeholders import has_placeholder, placeholder
 from launchverify.packages import PackageIndex
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
@@ -68,7 +68,8 @@ class PythonFrontend:
         description = session.run_module(code)
         if description is None:
             return None
-        return session.convert(description)
+        with session.environment():  # models may call back into the launch file's code
+            return session.convert(description)
 
 
 class _Session:
@@ -93,6 +94,11 @@ class _Session:
         """Record an import nothing provides."""
         self.unmodeled(f"module {name!r} is not modelled and not installed; values from it "
                        "are unknown", self._user_span())
+
+    def name_unmodeled(self, name: str) -> None:
+        """Record a name of the launch API that has no model."""
+        self.unmodeled(f"{name} is not modelled; values from it are unknown",
+                       self._user_span())
 
     def _user_span(self) -> Span:
         import sys
@@ -138,10 +144,10 @@ class _Session:
         """Run a block as this file's code runs: models, workspace imports, sandbox."""
         frontend = self.frontend
         runtime.current = runtime.Runtime(frontend.index, frontend.workspace, self.unmodeled,
-                                          self.path)
+                                          self.path, context_tools=self._context_tools)
         try:
-            with import_context([self.path.parent], frontend.index, self.module_unmodeled), \
-                    sandbox():
+            with import_context([self.path.parent], frontend.index, self.module_unmodeled,
+                                self.name_unmodeled), sandbox():
                 yield
         finally:
             runtime.current = None
@@ -192,7 +198,7 @@ class _Session:
 
     def converter(self) -> PythonConverter:
         """Return a converter reporting into this session."""
-        return PythonConverter(self.unmodeled, self.opaque_function)
+        return PythonConverter(self.unmodeled, self.opaque_function, Span.of_file(self.path))
 
     def _builtins(self) -> dict[str, Any]:
         namespace = dict(vars(builtins))
@@ -202,29 +208,29 @@ class _Session:
     def _open(self, file: Any, mode: str = "r", *args: Any, **kwargs: Any) -> Any:
         """``open`` for launch files: files only the robot has are unknown inputs."""
         name = str(file)
-        if has_placeholder(name):
-            raise UnknownInput(f"the launch file reads {name!r}, which is only known on the "
-                               "robot; evaluation stopped there")
         path = Path(name)
-        if path.is_absolute() and not path.exists() and not path.resolve().is_relative_to(
-                self.frontend.workspace):
-            raise UnknownInput(f"the launch file reads {name!r}, outside the workspace and "
-                               "not on this machine; evaluation stopped there")
-        if isinstance(file, Opaque):
-            return io.StringIO("")
+        unknown = has_placeholder(name) or isinstance(file, Opaque) or (
+            path.is_absolute() and not path.exists()
+            and not path.resolve().is_relative_to(self.frontend.workspace))
+        if unknown and "r" in mode and not any(c in mode for c in "wax+"):
+            # A file of the robot (a package not in the workspace): an input, not an error.
+            content = placeholder("opaque", f"content of {path.name}")
+            return io.BytesIO(content.encode()) if "b" in mode else io.StringIO(content)
         return builtins.open(file, mode, *args, **kwargs)  # noqa: PTH123 (user code's open)
 
     # ------------------------------------------------------------------ OpaqueFunction
 
     def opaque_function(self, model: Any) -> a.Action:
         """Return the IR of an OpaqueFunction whose body runs when the walk reaches it."""
-        name = getattr(model.function, "__name__", "function")
-
         def run(configurations: Mapping[str, str], current: Path) -> a.OpaqueResult:
             return self.run_opaque(model, configurations, current)
 
         return a.OpaqueFunction(span=model._span, condition=self.converter().condition(
-            model.condition), description=f"OpaqueFunction {name}()", run=run)
+            model.condition), description=model.label, run=run)
+
+    def _context_tools(self, configurations: dict[str, str]) -> tuple[Any, Any]:
+        performer = _Performer(self.frontend, configurations, self.path)
+        return performer.perform, performer.evaluate
 
     def run_opaque(self, model: Any, configurations: Mapping[str, str],
                    current: Path) -> a.OpaqueResult:
@@ -239,7 +245,7 @@ class _Session:
         actions: tuple[a.Action, ...] = ()
         try:
             with self.environment():
-                entities = model.function(context, *model.args, **model.kwargs)
+                entities = model.call(context)
             actions = self.converter().actions(entities or [])
         except KeyboardInterrupt:
             raise
@@ -259,7 +265,8 @@ class _Performer:
         from launchverify.frontends.python.concrete import ConcreteReducer
 
         self.reducer = ConcreteReducer(frontend.index, configurations, current)
-        self.converter = PythonConverter(lambda what, span: None, lambda model: None)  # type: ignore[arg-type, return-value]
+        self.converter = PythonConverter(lambda what, span: None, _no_opaque,
+                                         Span.of_file(current))
 
     def perform(self, substitution: Any) -> str:
         return self.reducer.perform(self.converter.sub(substitution))
@@ -267,6 +274,10 @@ class _Performer:
     def evaluate(self, condition: Any) -> bool:
         ir = self.converter.condition(condition)
         return self.reducer.holds(ir)
+
+
+def _no_opaque(model: Any) -> a.Action:
+    raise TypeError("an OpaqueFunction cannot be performed as a substitution")
 
 
 def _is_file(name: str) -> bool:

@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Mapping
-from pathlib import Path
 from typing import Any
 
 from launchverify.ir import actions as a
@@ -51,9 +50,10 @@ def placeholder_sub(text: str) -> s.Sub:
 class PythonConverter:
     """Implements ``launch_api.base.Converter`` for one launch file."""
 
-    def __init__(self, unmodeled: Unmodeled,
-                 opaque_function: Callable[[Any], a.Action]) -> None:
+    def __init__(self, unmodeled: Unmodeled, opaque_function: Callable[[Any], a.Action],
+                 fallback: Span) -> None:
         self._unmodeled = unmodeled
+        self._fallback = fallback  # where to point when an object knows no line
         self._opaque_function = opaque_function
         self._memo: dict[int, a.Action | None] = {}
         self._keep: list[Any] = []  # keep converted objects alive while their id is a key
@@ -106,8 +106,9 @@ class PythonConverter:
         else:
             result = None
             span = getattr(entity, "_span", None)
-            self._unmodeled(f"{type(entity).__name__} is not a launch entity launchverify "
-                            "models", span if isinstance(span, Span) else Span(Path("?"), 1))
+            what = getattr(entity, "_description", None) or type(entity).__name__
+            self._unmodeled(f"{what} is not a launch entity launchverify models",
+                            span if isinstance(span, Span) else self._fallback)
         self._memo[key] = result
         return result
 
@@ -128,11 +129,11 @@ class PythonConverter:
 
     # ------------------------------------------------------------------ node pieces
 
-    def parameters(self, value: Any) -> tuple[a.ParamEntry, ...]:
+    def parameters(self, value: Any, span: Span) -> tuple[a.ParamEntry, ...]:
         out: list[a.ParamEntry] = []
         for item in value or []:
-            span = getattr(item, "_span", None)
-            where = span if isinstance(span, Span) else Span(Path("?"), 1)
+            own = getattr(item, "_span", None)
+            where = own if isinstance(own, Span) else span
             if isinstance(item, launch_ros.ParameterFile):
                 allow = item.allow_substs
                 out.append(a.ParamFile(path=self.sub(item.param_file), span=item._span,

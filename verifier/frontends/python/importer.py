@@ -15,6 +15,7 @@ one launch file's helpers never leak into the next.
 
 from __future__ import annotations
 
+import importlib
 import importlib.abc
 import importlib.machinery
 import importlib.util
@@ -25,31 +26,54 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-from launchverify.models.launch_api import exports_for, is_modelled
+from launchverify.models.launch_api import MODULES, QUIET_ROOTS, exports_for, is_modelled
+from launchverify.models.launch_api.base import _is_ours
 from launchverify.packages import PackageIndex
 
 
 class _ModelLoader(importlib.abc.Loader):
+    def __init__(self, report: Callable[[str], None]) -> None:
+        self.report = report
+
     def create_module(self, spec: importlib.machinery.ModuleSpec) -> types.ModuleType:
         module = types.ModuleType(spec.name)
         module.__dict__.update(exports_for(spec.name) or {})
         module.__path__ = []  # every model module can have submodules
+        report = self.report
+
+        quiet = spec.name.partition(".")[0] in QUIET_ROOTS
+
+        def missing(name: str) -> Any:
+            if name.startswith("__"):
+                raise AttributeError(name)
+            if not quiet:
+                report(f"{spec.name}.{name}")
+            return Opaque(f"{spec.name}.{name}")
+
+        module.__getattr__ = missing  # type: ignore[method-assign]
         return module
 
     def exec_module(self, module: types.ModuleType) -> None:
-        parent, _, child = module.__name__.rpartition(".")
-        if parent and parent in sys.modules:
-            setattr(sys.modules[parent], child, module)
+        # Like the real packages, a module imports its submodules: `import launch` is
+        # enough to use `launch.actions.ExecuteProcess`.
+        prefix = module.__name__ + "."
+        for name in MODULES:
+            if name.startswith(prefix) and "." not in name[len(prefix):]:
+                setattr(module, name[len(prefix):], importlib.import_module(name))
 
 
 class ModelFinder(importlib.abc.MetaPathFinder):
     """Serves the launch API models under their real module names."""
 
+    def __init__(self, report: Callable[[str], None]) -> None:
+        self.report = report
+
     def find_spec(self, fullname: str, path: Sequence[str] | None = None,
                   target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
         if not is_modelled(fullname):
             return None
-        return importlib.machinery.ModuleSpec(fullname, _ModelLoader(), is_package=True)
+        return importlib.machinery.ModuleSpec(fullname, _ModelLoader(self.report),
+                                              is_package=True)
 
 
 class WorkspaceFinder(importlib.abc.MetaPathFinder):
@@ -83,15 +107,35 @@ class _OpaqueLoader(importlib.abc.Loader):
 
 
 class OpaqueFinder(importlib.abc.MetaPathFinder):
-    """Last resort: a module nothing else provides becomes an opaque stand-in."""
+    """Last resort: a module nothing else provides becomes an opaque stand-in.
 
-    def __init__(self, report: Callable[[str], None]) -> None:
+    Only for imports written in the launch file or workspace code: libraries that probe
+    for optional modules must keep getting ``ImportError``.
+    """
+
+    def __init__(self, report: Callable[[str], None], user_folders: list[str]) -> None:
         self.report = report
+        self.user_folders = user_folders
 
     def find_spec(self, fullname: str, path: Sequence[str] | None = None,
                   target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
+        if not self.imported_by_user(fullname):
+            return None  # libraries probe optional modules (try: import _winapi)
         self.report(fullname.partition(".")[0])
         return importlib.machinery.ModuleSpec(fullname, _OpaqueLoader(), is_package=True)
+
+    def imported_by_user(self, fullname: str) -> bool:
+        """Return whether the import statement is in the launch file or workspace code."""
+        parent = fullname.rpartition(".")[0]
+        if parent and isinstance(sys.modules.get(parent), OpaqueModule):
+            return True
+        frame = sys._getframe(1)
+        while frame is not None:
+            name = frame.f_code.co_filename
+            if "importlib" not in name and not _is_ours(name):
+                return any(name.startswith(folder) for folder in self.user_folders)
+            frame = frame.f_back  # type: ignore[assignment]
+        return False
 
 
 class OpaqueModule(types.ModuleType):
@@ -140,12 +184,17 @@ class Opaque:
 
 
 @contextmanager
-def import_context(folders: list[Path], index: PackageIndex,
-                   report: Callable[[str], None]) -> Iterator[None]:
-    """Install the finders for one evaluation and forget what it imported afterwards."""
+def import_context(folders: list[Path], index: PackageIndex, report: Callable[[str], None],
+                   report_name: Callable[[str], None]) -> Iterator[None]:
+    """Install the finders for one evaluation and forget what it imported afterwards.
+
+    ``report`` hears of modules nothing provides, ``report_name`` of names the launch API
+    models do not have.
+    """
     before = set(sys.modules)
-    front = [ModelFinder(), WorkspaceFinder(folders, index)]
-    back = OpaqueFinder(report)
+    front = [ModelFinder(report_name), WorkspaceFinder(folders, index)]
+    user_folders = [str(f) for f in folders] + [str(w) for w in index.workspaces]
+    back = OpaqueFinder(report, user_folders)
     sys.meta_path[:0] = front
     sys.meta_path.append(back)
     try:

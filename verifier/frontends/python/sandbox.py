@@ -2,19 +2,24 @@
 
 An audit hook (installed once, active only inside ``sandbox()``) refuses what would touch
 the world: starting processes, sockets, writing, renaming or deleting files, changing the
-working directory or the environment of the process. The environment the code sees is a
-symbolic stand-in: unknown variables read as placeholders instead of this machine's
-values. A timer interrupts endless loops; an address-space limit stops runaway memory.
+working directory or the environment of the process. The only writable place is a private
+temporary folder (``tempfile`` points there), deleted when the evaluation ends. The
+environment the code sees is a symbolic stand-in: unknown variables read as placeholders
+instead of this machine's values. A timer interrupts endless loops; an address-space limit
+stops runaway memory.
 """
 
 from __future__ import annotations
 
+import io
 import os
+import shutil
 import signal
 import sys
+import tempfile
 import threading
 from collections.abc import Iterator, MutableMapping
-from contextlib import contextmanager
+from contextlib import contextmanager, redirect_stderr, redirect_stdout
 from pathlib import Path
 from typing import Any
 
@@ -37,6 +42,8 @@ BLOCKED_EVENTS = frozenset({
     "shutil.copytree", "shutil.chown", "shutil.make_archive", "shutil.unpack_archive",
     "os.startfile", "os.system", "sys.setrecursionlimit", "sys.settrace", "sys.setprofile",
 })
+_SCRATCH_EVENTS = frozenset({"os.remove", "os.rename", "os.rmdir", "os.mkdir", "os.chmod",
+                             "os.utime", "shutil.rmtree", "shutil.copyfile", "shutil.move"})
 _WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_APPEND | os.O_TRUNC
 TIME_LIMIT = 10.0
 MEMORY_LIMIT = 2 * 1024 ** 3  # bytes of address space beyond what is used already
@@ -51,6 +58,7 @@ class TimeLimitExceeded(Exception):
 
 
 _state = threading.local()
+_scratch: list[str] = []  # the private temporary folder of the current evaluation
 _hook: list[bool] = []  # installed once per process (audit hooks cannot be removed)
 
 
@@ -58,9 +66,18 @@ def _active() -> bool:
     return getattr(_state, "depth", 0) > 0
 
 
+def _in_scratch(path: Any) -> bool:
+    if not _scratch or not isinstance(path, (str, bytes, os.PathLike)):
+        return False
+    text = os.fsdecode(path)
+    return os.path.abspath(text).startswith(_scratch[-1] + os.sep)  # noqa: PTH100
+
+
 def _audit(event: str, args: tuple[Any, ...]) -> None:
     if not _active():
         return
+    if args and _in_scratch(args[0]) and (event == "open" or event in _SCRATCH_EVENTS):
+        return  # the evaluation's own temporary folder, deleted afterwards
     if event in BLOCKED_EVENTS or event.startswith(BLOCKED_PREFIXES):
         raise SandboxViolation(f"launch files are evaluated without side effects: {event} "
                                "is not allowed")
@@ -127,16 +144,28 @@ def sandbox(time_limit: float = TIME_LIMIT) -> Iterator[None]:
     _state.depth = getattr(_state, "depth", 0) + 1
     saved_bytecode = sys.dont_write_bytecode
     saved_environ = os.environ
+    saved_tempdir = tempfile.tempdir
     sys.dont_write_bytecode = True
+    scratch = None
     if not nested:
         os.environ = SymbolicEnviron()  # type: ignore[assignment]  # noqa: B003
+        _state.depth -= 1  # our own folder is made outside the sandbox
+        scratch = tempfile.mkdtemp(prefix="launchverify-", dir=saved_tempdir)
+        _state.depth += 1
+        _scratch.append(scratch)
+        tempfile.tempdir = scratch
     try:
-        with _time_limit(time_limit if not nested else 0), _memory_limit(not nested):
+        with _time_limit(time_limit if not nested else 0), _memory_limit(not nested), \
+                redirect_stdout(io.StringIO()), redirect_stderr(io.StringIO()):
             yield
     finally:
         os.environ = saved_environ  # noqa: B003
         sys.dont_write_bytecode = saved_bytecode
         _state.depth -= 1
+        if scratch is not None:
+            _scratch.pop()
+            tempfile.tempdir = saved_tempdir
+            shutil.rmtree(scratch, ignore_errors=True)
 
 
 @contextmanager

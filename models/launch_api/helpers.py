@@ -1,0 +1,135 @@
+"""Models of helper libraries real launch files use: nav2_common, xacro.
+
+``RewrittenYaml`` and ``ReplaceString`` write a temporary file at launch time; statically
+they stand for their source file, and what they substitute counts as read. ``xacro``
+documents become an opaque robot description.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from pathlib import Path
+from typing import Any
+
+from launchverify.ir import subst as s
+from launchverify.models.launch_api.base import Converter, Substitution
+from launchverify.models.launch_api.placeholders import has_placeholder, placeholder
+from launchverify.models.launch_api.runtime import active
+
+
+def _values(mapping: Mapping[Any, Any] | None) -> list[Any]:
+    if not mapping:
+        return []
+    return [item for pair in mapping.items() for item in pair]
+
+
+class RewrittenYaml(Substitution):
+    """``nav2_common.launch.RewrittenYaml(source_file, param_rewrites, root_key=None, ...)``."""
+
+    def __init__(self, source_file: Any, param_rewrites: Mapping[Any, Any],
+                 root_key: Any = None, key_rewrites: Mapping[Any, Any] | None = None,
+                 value_rewrites: Mapping[Any, Any] | None = None, convert_types: bool = False,
+                 out_dir: Any = None) -> None:
+        super().__init__()
+        self.source_file = source_file
+        self.inputs = [*_values(param_rewrites), *_values(key_rewrites),
+                       *_values(value_rewrites)]
+        if root_key is not None:
+            self.inputs.append(root_key)
+
+    def to_sub(self, cv: Converter) -> s.Sub:
+        return s.Rewritten(cv.sub(self.source_file), tuple(cv.sub(x) for x in self.inputs),
+                           "RewrittenYaml")
+
+
+class ReplaceString(Substitution):
+    """``nav2_common.launch.ReplaceString(source_file, replacements, condition=None)``."""
+
+    def __init__(self, source_file: Any, replacements: Mapping[Any, Any],
+                 condition: Any = None) -> None:
+        super().__init__()
+        self.source_file = source_file
+        self.inputs = _values(replacements)
+
+    def to_sub(self, cv: Converter) -> s.Sub:
+        return s.Rewritten(cv.sub(self.source_file), tuple(cv.sub(x) for x in self.inputs),
+                           "ReplaceString")
+
+
+class LaunchConfigAsBool(Substitution):
+    """``nav2_common.launch.LaunchConfigAsBool(name)``."""
+
+    def __init__(self, name: str) -> None:
+        super().__init__()
+        self.name = name
+
+    def to_sub(self, cv: Converter) -> s.Sub:
+        return s.AsBool(s.LaunchConfig(cv.sub(self.name)))
+
+
+class HasNodeParams(Substitution):
+    """``nav2_common.launch.HasNodeParams(source_file, node_name)``: depends on file content."""
+
+    def __init__(self, source_file: Any, node_name: str) -> None:
+        super().__init__()
+        self.source_file, self.node_name = source_file, node_name
+
+    def to_sub(self, cv: Converter) -> s.Sub:
+        return s.Rewritten(s.Opaque(f"HasNodeParams {self.node_name}"),
+                           (cv.sub(self.source_file),), "HasNodeParams")
+
+
+class ParseMultiRobotPose(Substitution):
+    """``nav2_common.launch.ParseMultiRobotPose(robots_substitution)``."""
+
+    def __init__(self, robots_substitution: Any) -> None:
+        super().__init__()
+        self.robots_substitution = robots_substitution
+
+    def value(self) -> dict[str, dict[str, float]]:
+        """Return the parsed robots; unknown statically, so none."""
+        return {}
+
+    def to_sub(self, cv: Converter) -> s.Sub:
+        return s.Opaque("ParseMultiRobotPose")
+
+
+class XacroDocument:
+    """What ``xacro.process_file`` returns: an opaque robot description."""
+
+    def __init__(self, source: str) -> None:
+        self.source = source
+
+    def toxml(self, *args: Any, **kwargs: Any) -> str:
+        """Return the description (unknown statically)."""
+        return placeholder("opaque", f"robot description from {Path(self.source).name}")
+
+    toprettyxml = toxml
+
+
+def process_file(input_file_name: Any, **kwargs: Any) -> XacroDocument:
+    """``xacro.process_file``: checks the file exists, never runs xacro."""
+    name = str(input_file_name)
+    runtime = active()
+    path = Path(name)
+    if not has_placeholder(name) and path.is_absolute() and not path.exists() and (
+        path.resolve().is_relative_to(runtime.workspace)
+    ):
+        raise FileNotFoundError(f"[Errno 2] No such file or directory: '{name}'")
+    return XacroDocument(name)
+
+
+def process_doc(doc: Any, **kwargs: Any) -> None:
+    """``xacro.process_doc``: nothing to do statically."""
+
+
+def open_output(output_filename: Any) -> Any:
+    """``xacro.open_output``: writing is not allowed while evaluating; return a sink."""
+    import io
+
+    return io.StringIO()
+
+
+def parse(inp: Any, filename: Any = None, **kwargs: Any) -> XacroDocument:
+    """``xacro.parse``."""
+    return XacroDocument(str(filename or "robot.xacro"))
