@@ -152,7 +152,8 @@ class NsPrefix(Sub):
 
     def describe(self) -> str:
         if self.base is None:
-            return self.ns.describe()
+            text = self.ns.describe()
+            return text if not self.absolute or text.startswith("/") else "/" + text
         return f"{self.base.describe()}/{self.ns.describe()}"
 
     def children(self) -> tuple[Sub, ...]:

@@ -137,8 +137,10 @@ class SymbolicEnviron(MutableMapping[str, str]):
 
 
 @contextmanager
-def sandbox(time_limit: float = TIME_LIMIT) -> Iterator[None]:
+def sandbox(time_limit: float | None = None) -> Iterator[None]:
     """Run a block with side effects refused, a symbolic environment and resource limits."""
+    if time_limit is None:
+        time_limit = TIME_LIMIT
     _install_hook()
     nested = _active()
     _state.depth = getattr(_state, "depth", 0) + 1

@@ -1,0 +1,192 @@
+"""The Python frontend: no side effects, limits, isolation, exact lines, OpaqueFunction."""
+
+from __future__ import annotations
+
+import importlib
+import json
+import os
+import sys
+from pathlib import Path
+
+import pytest
+
+from launchverify.cli import main
+from launchverify.engine import CheckOptions, run_check
+
+SANDBOX = importlib.import_module("launchverify.frontends.python.sandbox")
+
+HEADER = """\
+import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+"""
+
+
+def write(folder: Path, name: str, body: str) -> Path:
+    path = folder / name
+    path.write_text(HEADER + body)
+    return path
+
+
+def findings(path: Path, *arguments: str) -> list[tuple[str, int, str]]:
+    pinned = dict(a.split(":=") for a in arguments)
+    report = run_check(CheckOptions(paths=[path], arguments=pinned, workspace=path.parent))
+    return [(f.code, f.span.line, f.message) for f in report.findings]
+
+
+def test_side_effects_are_refused(tmp_path: Path) -> None:
+    target = tmp_path / "written.txt"
+    victim = tmp_path / "victim.txt"
+    victim.write_text("keep me")
+    body = f"""
+import subprocess, socket, shutil
+
+def generate_launch_description():
+    for attempt in (
+        lambda: subprocess.run(['touch', {str(tmp_path / 'touched')!r}]),
+        lambda: open({str(target)!r}, 'w').write('x'),
+        lambda: os.remove({str(victim)!r}),
+        lambda: socket.create_connection(('127.0.0.1', 9)),
+        lambda: os.chdir('/'),
+        lambda: os.system('true'),
+    ):
+        try:
+            attempt()
+        except PermissionError:
+            pass
+    os.environ['LV_SET_BY_LAUNCH_FILE'] = '1'
+    return LaunchDescription([])
+"""
+    path = write(tmp_path, "effects.launch.py", body)
+    cwd = Path.cwd()
+    assert findings(path) == []
+    assert not target.exists() and not (tmp_path / "touched").exists()
+    assert victim.read_text() == "keep me"
+    assert Path.cwd() == cwd
+    assert "LV_SET_BY_LAUNCH_FILE" not in os.environ
+
+
+def test_refused_side_effect_is_reported(tmp_path: Path) -> None:
+    body = """
+import subprocess
+OUTPUT = subprocess.run(['ros2', 'component', 'types'], capture_output=True)
+
+def generate_launch_description():
+    return LaunchDescription([])
+"""
+    path = write(tmp_path, "runs.launch.py", body)
+    [(code, line, message)] = findings(path)
+    assert code == "LV003" and line == 8 and "subprocess.Popen is not allowed" in message
+
+
+def test_endless_loop_is_stopped(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(SANDBOX, "TIME_LIMIT", 0.3)
+    body = """
+def generate_launch_description():
+    while True:
+        pass
+"""
+    path = write(tmp_path, "loop.launch.py", body)
+    [(code, line, message)] = findings(path)
+    assert code == "LV002" and "longer than 0.3 s" in message and line in (8, 9)
+
+
+def test_exception_points_at_the_raising_line(tmp_path: Path) -> None:
+    body = """
+def generate_launch_description():
+    names = {'a': 1}
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable=names['b'])])
+"""
+    path = write(tmp_path, "raises.launch.py", body)
+    [(code, line, message)] = findings(path)
+    assert (code, line) == ("LV002", 9) and "KeyError" in message
+
+
+def test_old_keywords_are_rejected_like_the_real_api(tmp_path: Path) -> None:
+    body = """
+def generate_launch_description():
+    return LaunchDescription([Node(package='demo_nodes_cpp', node_executable='talker')])
+"""
+    [(code, _, message)] = findings(write(tmp_path, "old.launch.py", body))
+    assert code == "LV002" and "TypeError" in message
+
+
+def test_helper_module_lines_and_isolation(tmp_path: Path) -> None:
+    (tmp_path / "robot_helpers.py").write_text(
+        "from launch_ros.actions import Node\n\n\n"
+        "def camera(name):\n"
+        "    return Node(package='usb_cam', executable='usb_cam_node_exe', name=name)\n"
+    )
+    body = """
+from robot_helpers import camera
+
+def generate_launch_description():
+    return LaunchDescription([camera('cam'), camera('cam')])
+"""
+    path = write(tmp_path, "helpers.launch.py", body)
+    result = findings(path)
+    assert [(c, l) for c, l, _ in result] == [("LV101", 5)]
+    assert "robot_helpers" not in sys.modules
+    assert "launch" not in sys.modules or "launchverify" in repr(sys.modules["launch"])
+
+
+def test_environment_is_symbolic(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    body = """
+def generate_launch_description():
+    robot = os.environ['ROBOT_NAME']
+    model = os.getenv('ROBOT_MODEL', 'burger')
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='driver', namespace=robot),
+        Node(package='demo_nodes_cpp', executable='talker', name=model),
+    ])
+"""
+    path = write(tmp_path, "env.launch.py", body)
+    assert main(["graph", str(path), "--symbolic"]) == 0
+    nodes = json.loads(capsys.readouterr().out)["nodes"]
+    assert nodes[0]["namespace"] == "/$(env ROBOT_NAME)"
+    assert nodes[0]["fqn"] == "/$(env ROBOT_NAME)/driver"
+    assert nodes[1]["name"] == "burger"
+
+
+def test_opaque_function_sees_the_arguments(tmp_path: Path) -> None:
+    body = """
+def setup(context):
+    count = int(LaunchConfiguration('count').perform(context))
+    return [Node(package='demo_nodes_cpp', executable='talker', name=f'talker_{i}')
+            for i in range(count)]
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('count', default_value='2'),
+        OpaqueFunction(function=setup),
+        Node(package='demo_nodes_cpp', executable='talker', name='talker_2'),
+    ])
+"""
+    path = write(tmp_path, "opaque.launch.py", body)
+    assert findings(path) == []
+    assert [(c, l) for c, l, _ in findings(path, "count:=3")] == [("LV101", 16)]
+
+
+def test_unknown_import_is_opaque_and_reported_once(tmp_path: Path) -> None:
+    body = """
+import acme_vendor_sdk
+from acme_vendor_sdk.tools import helper
+
+def generate_launch_description():
+    helper(acme_vendor_sdk.CONFIG)
+    return LaunchDescription([])
+"""
+    result = findings(write(tmp_path, "vendor.launch.py", body))
+    assert [(c, l) for c, l, _ in result] == [("LV003", 7)]
+
+
+def test_syntax_error_and_missing_entry_point(tmp_path: Path) -> None:
+    broken = tmp_path / "broken.launch.py"
+    broken.write_text("def generate_launch_description(:\n    pass\n")
+    [(code, line, _)] = findings(broken)
+    assert (code, line) == ("LV001", 1)
+    empty = write(tmp_path, "empty.launch.py", "\nVALUE = 1\n")
+    [(code, _, message)] = findings(empty)
+    assert code == "LV001" and "generate_launch_description" in message
