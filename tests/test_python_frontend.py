@@ -127,7 +127,7 @@ def generate_launch_description():
 """
     path = write(tmp_path, "helpers.launch.py", body)
     result = findings(path)
-    assert [(c, l) for c, l, _ in result] == [("LV101", 5)]
+    assert [(code, line) for code, line, _ in result] == [("LV101", 5)]
     assert "robot_helpers" not in sys.modules
     assert "launch" not in sys.modules or "launchverify" in repr(sys.modules["launch"])
 
@@ -166,7 +166,7 @@ def generate_launch_description():
 """
     path = write(tmp_path, "opaque.launch.py", body)
     assert findings(path) == []
-    assert [(c, l) for c, l, _ in findings(path, "count:=3")] == [("LV101", 16)]
+    assert [(code, line) for code, line, _ in findings(path, "count:=3")] == [("LV101", 16)]
 
 
 def test_unknown_import_is_opaque_and_reported_once(tmp_path: Path) -> None:
@@ -179,7 +179,7 @@ def generate_launch_description():
     return LaunchDescription([])
 """
     result = findings(write(tmp_path, "vendor.launch.py", body))
-    assert [(c, l) for c, l, _ in result] == [("LV003", 7)]
+    assert [(code, line) for code, line, _ in result] == [("LV003", 7)]
 
 
 def test_syntax_error_and_missing_entry_point(tmp_path: Path) -> None:
