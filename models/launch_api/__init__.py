@@ -18,6 +18,7 @@ from launchverify.models.launch_api import (
     helpers,
     launch_events,
     launch_ros,
+    moveit,
 )
 from launchverify.models.launch_api import launch_actions as la
 from launchverify.models.launch_api import launch_substitutions as ls
@@ -156,6 +157,16 @@ MODULES: dict[str, dict[str, Any]] = {
         helpers, "HasNodeParams", "LaunchConfigAsBool", "ParseMultiRobotPose", "ReplaceString",
         "RewrittenYaml"),
     "xacro": _exports(helpers, "open_output", "parse", "process_doc", "process_file"),
+    "moveit_configs_utils": _exports(moveit, "MoveItConfigs", "MoveItConfigsBuilder"),
+    "moveit_configs_utils.launches": _exports(
+        moveit, "generate_demo_launch", "generate_move_group_launch",
+        "generate_moveit_rviz_launch", "generate_rsp_launch", "generate_setup_assistant_launch",
+        "generate_spawn_controllers_launch", "generate_static_virtual_joint_tfs_launch",
+        "generate_warehouse_db_launch"),
+    "moveit_configs_utils.launch_utils": _exports(
+        moveit, "DeclareBooleanLaunchArg", "add_debuggable_node"),
+    "launch_param_builder": _exports(
+        moveit, "ParameterBuilder", "get_path", "load_xacro", "load_yaml"),
     "launch_testing": {"LaunchTestService": _Unused},
     "launch_testing.actions": {"ReadyToTest": la.NoGraphEffect},
     "launch_testing.markers": {"keep_alive": lambda function: function},
