@@ -61,7 +61,9 @@ def generate_launch_description():
 """
     path = write(tmp_path, "effects.launch.py", body)
     cwd = Path.cwd()
-    assert findings(path) == []
+    result = findings(path)
+    # every refusal is reported, even when the launch file catches the exception
+    assert {code for code, _, _ in result} == {"LV003"} and len(result) == 6
     assert not target.exists() and not (tmp_path / "touched").exists()
     assert victim.read_text() == "keep me"
     assert Path.cwd() == cwd
@@ -120,6 +122,8 @@ def test_helper_module_lines_and_isolation(tmp_path: Path) -> None:
         "    return Node(package='usb_cam', executable='usb_cam_node_exe', name=name)\n"
     )
     body = """
+import sys
+sys.path.append(os.path.dirname(__file__))  # ros2 launch does not put it on sys.path
 from robot_helpers import camera
 
 def generate_launch_description():
@@ -129,7 +133,20 @@ def generate_launch_description():
     result = findings(path)
     assert [(code, line) for code, line, _ in result] == [("LV101", 5)]
     assert "robot_helpers" not in sys.modules
+    assert str(tmp_path) not in sys.path
     assert "launch" not in sys.modules or "launchverify" in repr(sys.modules["launch"])
+
+
+def test_sibling_module_without_sys_path_fails_like_ros2_launch(tmp_path: Path) -> None:
+    (tmp_path / "robot_helpers.py").write_text("VALUE = 1\n")
+    body = """
+from robot_helpers import VALUE
+
+def generate_launch_description():
+    return LaunchDescription([])
+"""
+    [(code, line, message)] = findings(write(tmp_path, "sibling.launch.py", body))
+    assert (code, line) == ("LV002", 7) and "ModuleNotFoundError" in message
 
 
 def test_environment_is_symbolic(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

@@ -13,7 +13,11 @@ PYTHON_SUFFIX = "launch.py"
 FRONTEND_SUFFIXES = (".xml", ".yaml", ".yml")
 _XML_ROOT = re.compile(rb"<launch[\s>/]")
 _YAML_ROOT = re.compile(rb"^launch\s*:", re.MULTILINE)
-_PYTHON_ENTRY = re.compile(rb"^\s*def generate_launch_description\s*\(", re.MULTILINE)
+# What ros2 launch runs: a generate_launch_description function (any spelling close to it,
+# so a misspelt one is checked and reported) or a name bound to one.
+_PYTHON_ENTRY = re.compile(
+    rb"^\s*(def\s+generate_launch_description\w*\s*\(|generate_launch_description\s*=)",
+    re.MULTILINE)
 
 
 def is_launch_file(path: Path) -> bool:

@@ -19,6 +19,7 @@ from launchverify.ir.subst import Sub
 from launchverify.ir.symbolic import PathCondition, describe_path
 from launchverify.problems import Problem
 from launchverify.span import Span
+from launchverify.suggest import typo_of
 
 
 @dataclass(frozen=True, slots=True)
@@ -255,6 +256,25 @@ class LaunchGraph:
         for node in self.nodes:
             if self.runs(node.origin):
                 yield node
+
+    def launchable_alone(self) -> bool:
+        """Return whether the root is meant to be launched by itself, not only included.
+
+        A root that others include, that declares arguments without defaults, or that reads
+        configurations it never declares expects an includer to provide values: what such
+        values would fix is not reported there.
+        """
+        if self.included_elsewhere:
+            return False
+        if any(not a.has_default and not a.conditional and a.name not in self.pinned
+               for a in self.root_arguments):
+            return False
+        known = self.declared_names() | set(self.pinned)
+        return not any(
+            not r.found and not r.has_default and not r.origin.chain and r.name not in known
+            and typo_of(r.name, known) is None
+            for r in self.reads
+        )
 
     def declared_names(self) -> set[str]:
         """Return every argument name declared anywhere in the evaluation."""

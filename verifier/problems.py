@@ -41,9 +41,12 @@ class ProblemSink:
         """Record that the file cannot be loaded as written (ros2 launch would fail)."""
         self.problems.append(Problem(ProblemKind.PARSE, message, span))
 
-    def evaluation(self, message: str, span: Span) -> None:
-        """Record that evaluating a construct fails (ros2 launch would fail at run time)."""
-        self.problems.append(Problem(ProblemKind.EVALUATION, message, span))
+    def evaluation(self, message: str, span: Span, *, contextual: bool = False) -> None:
+        """Record that evaluating a construct fails (ros2 launch would fail at run time).
+
+        ``contextual``: it fails only if no includer provides what is missing.
+        """
+        self.problems.append(Problem(ProblemKind.EVALUATION, message, span, contextual))
 
     def unmodeled(self, message: str, span: Span) -> None:
         """Record that launchverify does not understand a construct (analysis incomplete)."""

@@ -62,7 +62,8 @@ SUBSTITUTIONS = _exports(
     "EnvironmentVariable", "EqualsSubstitution", "FileContent", "FindExecutable", "ForEachVar",
     "ForLoopIndex", "IfElseSubstitution", "LaunchConfiguration", "LaunchLogDir",
     "LocalSubstitution", "NotEqualsSubstitution", "NotSubstitution", "OrSubstitution",
-    "PathJoinSubstitution", "PythonExpression", "StringJoinSubstitution", "TextSubstitution",
+    "PathJoinSubstitution", "PathSubstitution", "PythonExpression", "StringJoinSubstitution",
+    "TextSubstitution",
     "ThisLaunchFile", "ThisLaunchFileDir",
 )
 CONDITIONS = _exports(
@@ -99,6 +100,7 @@ ROS_SUBSTITUTIONS = {
 AMENT = _exports(
     ament, "PackageNotFoundError", "get_package_prefix", "get_package_share_directory",
     "get_package_xml_path", "get_packages_with_prefixes", "has_resource", "get_resource",
+    "get_package_share_path",
 )
 
 MODULES: dict[str, dict[str, Any]] = {
@@ -119,7 +121,12 @@ MODULES: dict[str, dict[str, Any]] = {
     "launch.event_handlers": EVENT_HANDLERS,
     "launch.events": {"Shutdown": launch_events.Shutdown,
                       "matches_action": launch_events.matches_action},
-    "launch.events.process": _exports(launch_events, "ShutdownProcess", "SignalProcess"),
+    "launch.events.process": {
+        **_exports(launch_events, "ShutdownProcess", "SignalProcess"),
+        "ProcessExited": launch_events.Event, "ProcessStarted": launch_events.Event,
+        "ProcessIO": launch_events.Event, "ProcessStdout": launch_events.Event,
+        "ProcessStderr": launch_events.Event,
+    },
     "launch.launch_description_sources": SOURCES,
     "launch.launch_description": {"LaunchDescription": la.LaunchDescription},
     "launch.launch_context": {"LaunchContext": context.LaunchContext},
@@ -131,7 +138,9 @@ MODULES: dict[str, dict[str, Any]] = {
         "SomeSubstitutionsType": SomeSubstitutionsType,
         "SomeSubstitutionsType_types_tuple": SomeSubstitutionsType_types_tuple,
     },
-    "launch.frontend": {},
+    "launch.frontend": {"expose_action": lambda name: (lambda cls: cls),
+                        "expose_substitution": lambda name: (lambda cls: cls),
+                        "Entity": object, "Parser": object},
     "launch.logging": {"get_logger": lambda name=None: _Logger()},
     "launch_ros": {},
     "launch_ros.actions": ROS_ACTIONS,
@@ -157,6 +166,11 @@ MODULES: dict[str, dict[str, Any]] = {
         helpers, "HasNodeParams", "LaunchConfigAsBool", "ParseMultiRobotPose", "ReplaceString",
         "RewrittenYaml"),
     "xacro": _exports(helpers, "open_output", "parse", "process_doc", "process_file"),
+    "controller_manager": {},
+    "controller_manager.launch_utils": _exports(
+        helpers, "generate_controllers_spawner_launch_description",
+        "generate_controllers_spawner_launch_description_from_dict",
+        "generate_load_controller_launch_description"),
     "moveit_configs_utils": _exports(moveit, "MoveItConfigs", "MoveItConfigsBuilder"),
     "moveit_configs_utils.launches": _exports(
         moveit, "generate_demo_launch", "generate_move_group_launch",

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
+from launchverify.models.launch_api.base import caller_span
 from launchverify.models.launch_api.placeholders import placeholder
 from launchverify.models.launch_api.runtime import active
 
@@ -14,16 +17,23 @@ def get_package_share_directory(package_name: str, print_warning: bool = True) -
     """Return the share folder; unknown packages get a placeholder (they may be installed)."""
     runtime = active()
     runtime.packages_seen.add(package_name)
+    runtime.lookups.append((package_name, caller_span()))
     package = runtime.index.find(package_name)
     if package is None:
         return placeholder("pkg", package_name)
     return str(package.share)
 
 
+def get_package_share_path(package_name: str, print_warning: bool = True) -> Path:
+    """``get_package_share_path``: the share folder as a ``Path``."""
+    return Path(get_package_share_directory(package_name))
+
+
 def get_package_prefix(package_name: str) -> str:
     """Return the install prefix, or a placeholder when only sources are known."""
     runtime = active()
     runtime.packages_seen.add(package_name)
+    runtime.lookups.append((package_name, caller_span()))
     package = runtime.index.find(package_name)
     if package is None or package.prefix is None:
         return placeholder("prefix", package_name)

@@ -95,6 +95,12 @@ class Converter(Protocol):
     def unmodeled(self, what: str, span: Span) -> None:
         """Record that something was not modelled (LV003)."""
 
+    def fail(self, message: str, span: Span) -> None:
+        """Record that the launch would raise at ``span`` (LV002)."""
+
+    def claim(self, source: Any) -> bool:
+        """Return ``False`` when a description source was already used by an include."""
+
 
 class LaunchDescriptionEntity:
     """Base of everything that can appear in a launch description."""
@@ -170,16 +176,6 @@ class Substitution:
         result: str = performer(self)
         return result
 
-    def __truediv__(self, other: Any) -> Substitution:
-        from launchverify.models.launch_api.launch_substitutions import PathJoinSubstitution
-
-        return PathJoinSubstitution([self, other])
-
-    def __rtruediv__(self, other: Any) -> Substitution:
-        from launchverify.models.launch_api.launch_substitutions import PathJoinSubstitution
-
-        return PathJoinSubstitution([other, self])
-
 
 class Condition:
     """Base of the modelled conditions."""
@@ -200,6 +196,32 @@ class Condition:
             raise TypeError("evaluate() needs a LaunchContext")
         result: bool = evaluator(self)
         return result
+
+
+def check_substitutions(value: Any) -> Any:
+    """Raise like ``normalize_to_list_of_substitutions`` on what launch does not accept.
+
+    Launch takes a string, a substitution, or an iterable of those; anything else (a bool,
+    a number, None) is a ``TypeError`` in the launch file. Paths and values from
+    unmodelled code are accepted.
+    """
+    if isinstance(value, (str, Substitution, os.PathLike)) or _unknown(value):
+        return value
+    if isinstance(value, (bool, int, float)) or value is None:
+        raise TypeError(f"'{type(value).__name__}' object is not iterable")
+    try:
+        items = list(value)
+    except TypeError:
+        raise TypeError(f"'{type(value).__name__}' object is not iterable") from None
+    for item in items:
+        if not isinstance(item, (str, Substitution, os.PathLike)) and not _unknown(item):
+            raise TypeError(f"Failed to normalize given item of type '{type(item)}', when "
+                            "only 'str' or 'launch.Substitution' were expected.")
+    return value
+
+
+def _unknown(value: Any) -> bool:
+    return type(value).__name__ in ("Opaque", "OpaqueBase") or hasattr(value, "_description")
 
 
 def flatten(entities: Iterable[Any] | None) -> list[Any]:

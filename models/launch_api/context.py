@@ -68,24 +68,36 @@ class LaunchContext:
         """Accept a handler registration (statically nothing happens)."""
 
 
+class MissingConfiguration(KeyError):
+    """A configuration the OpaqueFunction reads but nobody set."""
+
+    @property
+    def configuration(self) -> str:
+        """Return the name read."""
+        return str(self.args[0])
+
+
 class RecordingDict(dict[str, str]):
     """The configurations an OpaqueFunction sees; remembers which ones it read."""
 
     def __init__(self, values: dict[str, str]) -> None:
         super().__init__(values)
-        self.read: list[str] = []
+        self.read: list[tuple[str, bool, bool]] = []  # name, found, has a default
 
     def __getitem__(self, key: str) -> str:
-        self.read.append(key)
+        found = super().__contains__(key)
+        self.read.append((key, found, False))
+        if not found:
+            raise MissingConfiguration(key)
         return super().__getitem__(key)
 
     def get(self, key: str, default: Any = None) -> Any:
-        self.read.append(key)
+        self.read.append((key, super().__contains__(key), True))
         return super().get(key, default)
 
     def __contains__(self, key: object) -> bool:
         if isinstance(key, str):
-            self.read.append(key)
+            self.read.append((key, super().__contains__(key), True))
         return super().__contains__(key)
 
 

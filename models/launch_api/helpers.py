@@ -133,3 +133,50 @@ def open_output(output_filename: Any) -> Any:
 def parse(inp: Any, filename: Any = None, **kwargs: Any) -> XacroDocument:
     """``xacro.parse``."""
     return XacroDocument(str(filename or "robot.xacro"))
+
+
+# ----------------------------------------------------------------------------- ros2_control
+
+
+def generate_controllers_spawner_launch_description(
+    controller_names: list[str], controller_params_files: Any = None,
+    extra_spawner_args: list[Any] | None = None,
+) -> Any:
+    """``controller_manager.launch_utils``: one spawner for the controllers."""
+    from launchverify.models.launch_api.launch_actions import (
+        DeclareLaunchArgument,
+        LaunchDescription,
+    )
+    from launchverify.models.launch_api.launch_ros import Node
+    from launchverify.models.launch_api.launch_substitutions import LaunchConfiguration
+
+    arguments: list[Any] = [*controller_names, "--controller-manager",
+                            LaunchConfiguration("controller_manager_name")]
+    files = controller_params_files
+    for file in (files if isinstance(files, (list, tuple)) else [files] if files else []):
+        arguments += ["--param-file", file]
+    arguments += list(extra_spawner_args or [])
+    return LaunchDescription([
+        DeclareLaunchArgument("controller_manager_name", default_value="controller_manager"),
+        DeclareLaunchArgument("unload_on_kill", default_value="false"),
+        Node(package="controller_manager", executable="spawner", arguments=arguments,
+             shell=True, output="screen"),
+    ])
+
+
+def generate_controllers_spawner_launch_description_from_dict(
+    controller_info_dict: dict[str, Any], extra_spawner_args: list[Any] | None = None,
+) -> Any:
+    """``controller_manager.launch_utils``: spawners from ``{name: params file}``."""
+    files = [f for f in controller_info_dict.values() if f]
+    return generate_controllers_spawner_launch_description(
+        list(controller_info_dict), files or None, extra_spawner_args)
+
+
+def generate_load_controller_launch_description(
+    controller_name: str, controller_params_file: Any = None,
+    extra_spawner_args: list[Any] | None = None,
+) -> Any:
+    """``controller_manager.launch_utils``: a spawner for one controller."""
+    return generate_controllers_spawner_launch_description(
+        [controller_name], controller_params_file, extra_spawner_args)

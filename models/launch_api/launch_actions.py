@@ -16,6 +16,7 @@ from launchverify.models.launch_api.base import (
     Action,
     Converter,
     LaunchDescriptionEntity,
+    check_substitutions,
     flatten,
 )
 
@@ -74,7 +75,8 @@ class DeclareLaunchArgument(Action):
             raise RuntimeError(
                 "Provided choices arg is empty. Use None to ignore the choice list.")
         self.name = name
-        self.default_value = default_value
+        self.default_value = None if default_value is None else check_substitutions(
+            default_value)
         self.description = description
         self.choices = None if choices is None else tuple(choices)
 
@@ -91,7 +93,7 @@ class SetLaunchConfiguration(Action):
 
     def __init__(self, name: Any, value: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.name, self.value = name, value
+        self.name, self.value = check_substitutions(name), check_substitutions(value)
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.SetConfig(**cv_common(self, cv), name=cv.sub(self.name),
@@ -194,8 +196,11 @@ class IncludeLaunchDescription(Action):
                  **kwargs: Any) -> None:
         super().__init__(**kwargs)
         self.source = launch_description_source
-        self.launch_arguments = list(launch_arguments.items() if isinstance(
-            launch_arguments, dict) else launch_arguments or [])
+        pairs = []
+        for pair in launch_arguments or []:  # a dict iterates its keys: launch fails there too
+            name, value = pair
+            pairs.append((check_substitutions(name), check_substitutions(value)))
+        self.launch_arguments = pairs
 
     def to_ir(self, cv: Converter) -> a.Action:
         arguments = tuple(
@@ -208,6 +213,10 @@ class IncludeLaunchDescription(Action):
                          for arg in arguments)
             inner = cv.actions([source.launch_description])
             return a.Group(**cv_common(self, cv), actions=(*sets, *inner), scoped=False)
+        if isinstance(source, LaunchDescriptionSource) and not cv.claim(source):
+            cv.fail("this include reuses another include's description source: its actions "
+                    "are the same objects, and ros2 launch fails executing them a second time "
+                    "('executed more than once')", self._span)
         location = source.location if isinstance(source, LaunchDescriptionSource) else source
         kind = source.kind if isinstance(source, LaunchDescriptionSource) else "any"
         return a.Include(**cv_common(self, cv), path=cv.sub(location), arguments=arguments,

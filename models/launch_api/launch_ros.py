@@ -14,6 +14,7 @@ from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.models.launch_api.base import Action, Converter, Substitution, caller_span
 from launchverify.models.launch_api.launch_actions import ExecuteProcess, TimerAction, cv_common
+from launchverify.models.launch_api.launch_substitutions import PathJoinSubstitution
 
 # ----------------------------------------------------------------------------- descriptions
 
@@ -94,6 +95,9 @@ class Node(ExecuteProcess):
                  remappings: Any = None, ros_arguments: Any = None, arguments: Any = None,
                  **kwargs: Any) -> None:
         super().__init__(cmd=[], **kwargs)
+        if parameters is not None and not isinstance(parameters, list):
+            raise TypeError(f"Expected 'parameters' to be one of [<class 'list'>], but got "
+                            f"'{parameters}' of type '{type(parameters)}'")
         self.node_executable, self.node_package = executable, package
         self.node_name_value, self.node_namespace = name, namespace
         self.exec_name = exec_name
@@ -275,15 +279,18 @@ class LifecycleTransition(Action):
 # ----------------------------------------------------------------------------- substitutions
 
 
-class FindPackageShare(Substitution):
-    """``FindPackageShare(package)``."""
+class FindPackageShare(PathJoinSubstitution):
+    """``FindPackageShare(package)`` (a ``PathSubstitution`` in rolling: ``/`` appends)."""
 
     def __init__(self, package: Any) -> None:
-        super().__init__()
+        super().__init__([])
         self.package = package
 
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.FindPackageShare(cv.sub(self.package))
+
+    def __truediv__(self, other: Any) -> PathJoinSubstitution:
+        return PathJoinSubstitution([self, other])
 
     def find(self, package_name: str) -> str:
         """Return the share folder (launch_ros's API)."""
@@ -292,12 +299,15 @@ class FindPackageShare(Substitution):
         return get_package_share_directory(package_name)
 
 
-class FindPackagePrefix(Substitution):
-    """``FindPackagePrefix(package)``."""
+class FindPackagePrefix(PathJoinSubstitution):
+    """``FindPackagePrefix(package)`` (a ``PathSubstitution`` in rolling)."""
 
     def __init__(self, package: Any) -> None:
-        super().__init__()
+        super().__init__([])
         self.package = package
+
+    def __truediv__(self, other: Any) -> PathJoinSubstitution:
+        return PathJoinSubstitution([self, other])
 
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.FindPackagePrefix(cv.sub(self.package))

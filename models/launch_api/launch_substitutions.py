@@ -11,7 +11,12 @@ from typing import Any
 
 from launchverify.ir import conditions as c
 from launchverify.ir import subst as s
-from launchverify.models.launch_api.base import Condition, Converter, Substitution
+from launchverify.models.launch_api.base import (
+    Condition,
+    Converter,
+    Substitution,
+    check_substitutions,
+)
 
 
 class TextSubstitution(Substitution):
@@ -104,7 +109,7 @@ class FindExecutable(Substitution):
 
 
 class PathJoinSubstitution(Substitution):
-    """``PathJoinSubstitution(substitutions)``: ``os.path.join`` of the parts."""
+    """``PathJoinSubstitution(substitutions)``: ``os.path.join`` of the parts; ``/`` appends."""
 
     def __init__(self, substitutions: Iterable[Any]) -> None:
         super().__init__()
@@ -112,6 +117,16 @@ class PathJoinSubstitution(Substitution):
 
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.PathJoin(tuple(cv.sub(part) for part in self.substitutions))
+
+    def __truediv__(self, other: Any) -> PathJoinSubstitution:
+        return PathJoinSubstitution([*self.substitutions, other])
+
+
+class PathSubstitution(PathJoinSubstitution):
+    """``PathSubstitution(path)`` (rolling): a path to build on with ``/``."""
+
+    def __init__(self, path: Any) -> None:
+        super().__init__([path])
 
 
 class ThisLaunchFile(Substitution):
@@ -312,7 +327,7 @@ class IfCondition(Condition):
 
     def __init__(self, predicate_expression: Any) -> None:
         super().__init__()
-        self.predicate_expression = predicate_expression
+        self.predicate_expression = check_substitutions(predicate_expression)
 
     def to_condition(self, cv: Converter) -> c.Condition:
         return c.IfCondition(cv.sub(self.predicate_expression))
@@ -323,7 +338,7 @@ class UnlessCondition(Condition):
 
     def __init__(self, predicate_expression: Any) -> None:
         super().__init__()
-        self.predicate_expression = predicate_expression
+        self.predicate_expression = check_substitutions(predicate_expression)
 
     def to_condition(self, cv: Converter) -> c.Condition:
         return c.UnlessCondition(cv.sub(self.predicate_expression))

@@ -16,7 +16,8 @@ PATTERN = re.compile(OPEN + r"(env|pkg|prefix|arg|opaque):([^" + CLOSE + r"]*)" 
 
 def placeholder(kind: str, name: str) -> str:
     """Return the placeholder for an unknown value (``kind``: env, pkg, prefix, arg, opaque)."""
-    return f"{OPEN}{kind}:{name}{CLOSE}"
+    clean = name.replace(OPEN, "<").replace(CLOSE, ">")  # no placeholder inside another
+    return f"{OPEN}{kind}:{clean}{CLOSE}"
 
 
 def has_placeholder(text: str) -> bool:

@@ -26,6 +26,7 @@ class Runtime:
     unmodeled: Callable[[str, Span], None]
     launch_file: Path
     packages_seen: set[str] = field(default_factory=set)
+    lookups: list[tuple[str, Span]] = field(default_factory=list)  # package lookups by call
     # Builds (perform, evaluate) for a LaunchContext the launch file makes itself.
     context_tools: Callable[[dict[str, str]], tuple[Any, Any]] | None = None
 

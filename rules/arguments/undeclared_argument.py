@@ -45,7 +45,7 @@ class UndeclaredArgument(Rule):
             return  # a part we cannot see may set it
         known = graph.declared_names() | set(graph.pinned)
         unset = [r for r in graph.reads if not r.found and not r.has_default]
-        alone = launchable_alone(graph, known)
+        alone = graph.launchable_alone()
         seen: set[tuple[object, ...]] = set()
         for read in unset:
             key = (read.name, read.origin.span)
@@ -53,24 +53,11 @@ class UndeclaredArgument(Rule):
                 continue
             seen.add(key)
             typo = typo_of(read.name, known)
-            if typo is None and not alone:
+            declared = read.name in known  # read before its declaration, or out of its scope
+            if typo is None and not declared and not alone:
                 continue  # meant to be included: the includer sets it
-            hint = f" (did you mean {typo!r}?)" if typo else ""
+            hint = f" (did you mean {typo!r}?)" if typo else (
+                " here (it is declared elsewhere, not in scope before this read)"
+                if declared else "")
             yield self.finding(read.origin, name=read.name, hint=hint)
 
-
-def launchable_alone(graph: LaunchGraph, known: set[str]) -> bool:
-    """Return whether the root is meant to be launched by itself, not only included.
-
-    A root that others include, that declares arguments without defaults, or that reads
-    configurations it never declares expects an includer to provide values.
-    """
-    if graph.included_elsewhere:
-        return False
-    if any(not a.has_default and not a.conditional and a.name not in graph.pinned
-           for a in graph.root_arguments):
-        return False
-    return not any(
-        not r.found and not r.has_default and not r.origin.chain and typo_of(r.name, known) is None
-        for r in graph.reads
-    )

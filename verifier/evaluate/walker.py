@@ -115,6 +115,12 @@ class Walker:
         """Record a package reference."""
         self.graph.packages.append(PackageRef(name, origin, found, what))
 
+    def record_lookups(self, lookups: tuple[tuple[str, Span], ...], ctx: Ctx) -> None:
+        """Record the packages Python code looked up (get_package_share_directory...)."""
+        for name, span in lookups:
+            found = self.index.find(name) is not None
+            self.record_package(name, Origin(span, ctx.chain, ctx.path), found, "lookup")
+
     def read_file_content(self, path: str, origin: Origin) -> s.Sub:
         """Return ``$(file-content)`` of a workspace file, never reading outside it."""
         located = self.index.locate(Path(path))
@@ -147,6 +153,7 @@ class Walker:
         self.graph.root_arguments = self.static_args(loaded)
         pinned = tuple(sorted((k, v) for k, v in self.graph.pinned.items()))
         self.file_stack.append((self.graph.root, pinned))
+        self.record_lookups(loaded.launch.lookups, ctx)
         self.visit_all(loaded.launch.actions, ctx)
         self.file_stack.pop()
 
@@ -380,6 +387,7 @@ class Walker:
         record.arguments = tuple(arguments)
         self.include_stack.append(record)
         self.file_stack.append(key)
+        self.record_lookups(loaded.launch.lookups, inner)
         try:
             self.visit_all(loaded.launch.actions, inner)
         finally:
@@ -559,20 +567,34 @@ class Walker:
         """Run the function's body with the configurations as they are here."""
         configurations = self.concrete_configurations()
         result = action.run(configurations, self.current_file)
-        for name in dict.fromkeys(result.reads):
-            self.record_read(name, ctx.origin(action.span), True, True)  # failures: LV002
+        failed = {read[0]: read[3] for read in result.reads if len(read) == 4}
+        for name, found, has_default, *_ in dict.fromkeys(result.reads):
+            if name in failed and not found:
+                continue
+            self.record_read(name, ctx.origin(action.span), found, has_default)
+        for name, span in failed.items():
+            self.record_read(name, ctx.origin(span), False, False)
+        self.record_lookups(result.lookups, ctx)
         for problem in result.problems:
             assert isinstance(problem, Problem)
-            self.problem(problem.kind, problem.message, problem.span, ctx)
+            self.problem(problem.kind, problem.message, problem.span, ctx,
+                         contextual=problem.contextual)
         self.visit_all(result.actions, ctx)
 
     def concrete_configurations(self) -> dict[str, str]:
-        """Return the configurations in scope as strings (placeholders where unknown)."""
+        """Return the configurations in scope as strings.
+
+        An argument without a value takes its first choice when it has choices, else a
+        placeholder (Python code then sees an unknown value, not an arbitrary one).
+        """
+        choices = {arg.name: arg.choices for arg in self.graph.arguments if arg.choices}
         out = {}
         for name, value in self.scopes.configs.items():
             if not isinstance(value, s.Sub):
                 continue  # launch_ros's own lists
             text = self.graph.base(value)
+            if text is None and choices.get(name):
+                text = choices[name][0]
             out[name] = text if text is not None else placeholder("arg", name)
         return out
 

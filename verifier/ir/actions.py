@@ -483,7 +483,9 @@ class OpaqueResult:
 
     actions: tuple[Action, ...]
     problems: tuple[object, ...] = ()
-    reads: tuple[str, ...] = ()
+    # name, found, has a default [, where the read failed]
+    reads: tuple[tuple[str, bool, bool] | tuple[str, bool, bool, Span], ...] = ()
+    lookups: tuple[tuple[str, Span], ...] = ()  # packages looked up by Python code
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
@@ -516,3 +518,4 @@ class LaunchFile:
     actions: tuple[Action, ...]
     span: Span
     deprecated: str | None = None
+    lookups: tuple[tuple[str, Span], ...] = ()  # packages looked up by Python code

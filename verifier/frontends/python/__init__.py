@@ -17,13 +17,19 @@ from pathlib import Path
 from types import CodeType
 from typing import Any
 
+from launchverify.frontends.python.concrete import SubstitutionFailure
 from launchverify.frontends.python.convert import PythonConverter
 from launchverify.frontends.python.importer import Opaque, import_context
-from launchverify.frontends.python.sandbox import SandboxViolation, TimeLimitExceeded, sandbox
+from launchverify.frontends.python.sandbox import (
+    SandboxViolation,
+    TimeLimitExceeded,
+    sandbox,
+    take_refusals,
+)
 from launchverify.ir import actions as a
 from launchverify.models.launch_api import runtime
 from launchverify.models.launch_api.base import _is_ours
-from launchverify.models.launch_api.context import LaunchContext
+from launchverify.models.launch_api.context import LaunchContext, MissingConfiguration
 from launchverify.models.launch_api.launch_actions import LaunchDescription
 from launchverify.models.launch_api.placeholders import has_placeholder, placeholder
 from launchverify.packages import PackageIndex
@@ -80,7 +86,10 @@ class _Session:
         self.path = path
         self.sink = sink
         self.reported: set[str] = set()
+        self.in_opaque = False
         self.namespace: dict[str, Any] = {}
+        self.lookups: list[tuple[str, Span]] = []
+        self.failed_read: tuple[str, Span] | None = None  # OpaqueFunction read of nothing
 
     # ------------------------------------------------------------------ reporting
 
@@ -117,7 +126,7 @@ class _Session:
         if isinstance(error, UnknownInput):
             self.sink.unmodeled(str(error), span)
         elif isinstance(error, SandboxViolation):
-            self.sink.unmodeled(f"{error}; the launch file's evaluation stopped there", span)
+            pass  # reported with every other refusal when the run ends
         elif isinstance(error, TimeLimitExceeded):
             self.sink.evaluation(f"{error} (an endless loop?)", span)
         elif isinstance(error, MemoryError):
@@ -125,7 +134,13 @@ class _Session:
         else:
             text = str(error)
             message = f"{type(error).__name__}: {text}" if text else type(error).__name__
-            self.sink.evaluation(f"the launch file raises {message}", span)
+            # A configuration nobody set: an includer may set it (LV201's policy decides).
+            contextual = isinstance(error, (SubstitutionFailure, MissingConfiguration))
+            if contextual and getattr(error, "configuration", None) and self.in_opaque:
+                self.failed_read = (str(getattr(error, "configuration", "")), span)
+                return
+            self.sink.evaluation(f"the launch file raises {message}", span,
+                                 contextual=contextual)
 
     def _error_span(self, error: BaseException) -> Span:
         frames = traceback.extract_tb(error.__traceback__)
@@ -144,13 +159,19 @@ class _Session:
         """Run a block as this file's code runs: models, workspace imports, sandbox."""
         frontend = self.frontend
         runtime.current = runtime.Runtime(frontend.index, frontend.workspace, self.unmodeled,
-                                          self.path, context_tools=self._context_tools)
+                                          self.path, context_tools=self._context_tools,
+                                          lookups=self.lookups)
+        take_refusals()
         try:
             with import_context([self.path.parent], frontend.index, self.module_unmodeled,
-                                self.name_unmodeled), sandbox():
+                                self.name_unmodeled), sandbox(), _yaml_knows_opaque_files():
                 yield
         finally:
             runtime.current = None
+            for message, where in take_refusals():
+                span = Span(Path(where[0]), where[1]) if where else Span.of_file(self.path)
+                self.unmodeled(f"{message}; launchverify did not do it (the evaluation of "
+                               "this file may be incomplete)", span)
 
     def run_module(self, code: CodeType) -> Any:
         """Execute the module and call its entry point; ``None`` after a problem."""
@@ -194,11 +215,14 @@ class _Session:
             return None
         return a.LaunchFile(path=self.path, format="python", actions=actions,
                             span=Span.of_file(self.path),
-                            deprecated=description.deprecated_reason)
+                            deprecated=description.deprecated_reason,
+                            lookups=tuple(self.lookups))
 
     def converter(self) -> PythonConverter:
         """Return a converter reporting into this session."""
-        return PythonConverter(self.unmodeled, self.opaque_function, Span.of_file(self.path))
+        return PythonConverter(self.unmodeled, self.opaque_function, Span.of_file(self.path),
+                               fail=lambda message, span: self.sink.evaluation(  # noqa: PLW0108
+                                   message, span))
 
     def _builtins(self) -> dict[str, Any]:
         namespace = dict(vars(builtins))
@@ -209,13 +233,18 @@ class _Session:
         """``open`` for launch files: files only the robot has are unknown inputs."""
         name = str(file)
         path = Path(name)
+        reading = not any(c in mode for c in "wax+")
+        if reading and path.is_absolute() and not path.exists() and not has_placeholder(name):
+            located = self.frontend.index.locate(path)  # install layout -> sources
+            if located is not None:
+                file = located
         unknown = has_placeholder(name) or isinstance(file, Opaque) or (
-            path.is_absolute() and not path.exists()
+            path.is_absolute() and not Path(file).exists()
             and not path.resolve().is_relative_to(self.frontend.workspace))
-        if unknown and "r" in mode and not any(c in mode for c in "wax+"):
+        if unknown and reading:
             # A file of the robot (a package not in the workspace): an input, not an error.
             content = placeholder("opaque", f"content of {path.name}")
-            return io.BytesIO(content.encode()) if "b" in mode else io.StringIO(content)
+            return OpaqueText(content) if "b" not in mode else io.BytesIO(content.encode())
         return builtins.open(file, mode, *args, **kwargs)  # noqa: PTH123 (user code's open)
 
     # ------------------------------------------------------------------ OpaqueFunction
@@ -236,8 +265,9 @@ class _Session:
                    current: Path) -> a.OpaqueResult:
         """Run an OpaqueFunction's body with a concrete context."""
         sink = ProblemSink()
-        saved = self.sink
-        self.sink = sink
+        saved, saved_lookups = self.sink, self.lookups
+        self.sink, self.lookups = sink, []
+        self.in_opaque, self.failed_read = True, None
         performer = _Performer(self.frontend, configurations, current)
         context = LaunchContext(configurations=dict(configurations), performer=performer.perform,
                                 condition_evaluator=performer.evaluate,
@@ -252,9 +282,16 @@ class _Session:
         except BaseException as error:  # the user's code
             self.failure(error)
         finally:
-            self.sink = saved
-        reads = (*performer.reducer.reads, *context.launch_configurations.read)
-        return a.OpaqueResult(actions=actions, problems=tuple(sink.problems), reads=reads)
+            lookups = tuple(self.lookups)
+            self.sink, self.lookups = saved, saved_lookups
+            self.in_opaque = False
+        reads: tuple[tuple[str, bool, bool] | tuple[str, bool, bool, Span], ...] = (
+            *performer.reducer.reads, *context.launch_configurations.read)
+        if self.failed_read is not None:
+            name, span = self.failed_read
+            reads = (*reads, (name, False, False, span))
+        return a.OpaqueResult(actions=actions, problems=tuple(sink.problems), reads=reads,
+                              lookups=lookups)
 
 
 class _Performer:
@@ -274,6 +311,42 @@ class _Performer:
     def evaluate(self, condition: Any) -> bool:
         ir = self.converter.condition(condition)
         return self.reducer.holds(ir)
+
+
+class OpaqueText(io.StringIO):
+    """The content of a file only the robot has."""
+
+
+class UnknownMapping(dict[Any, Any]):
+    """What YAML in a file only the robot has parses to: any key gives more of it."""
+
+    def __missing__(self, key: Any) -> UnknownMapping:
+        return UnknownMapping()
+
+
+@contextmanager
+def _yaml_knows_opaque_files() -> Iterator[None]:
+    """Make ``yaml.safe_load(open(robot_file))`` an unknown mapping rather than a string."""
+    import yaml
+
+    originals = {name: getattr(yaml, name) for name in ("safe_load", "load", "full_load")}
+
+    def wrap(original: Any) -> Any:
+        def load(stream: Any, *args: Any, **kwargs: Any) -> Any:
+            if isinstance(stream, OpaqueText) or (
+                    isinstance(stream, str) and has_placeholder(stream) and "\n" not in stream):
+                return UnknownMapping()
+            return original(stream, *args, **kwargs)
+
+        return load
+
+    for name, original in originals.items():
+        setattr(yaml, name, wrap(original))
+    try:
+        yield
+    finally:
+        for name, original in originals.items():
+            setattr(yaml, name, original)
 
 
 def _no_opaque(model: Any) -> a.Action:

@@ -17,6 +17,10 @@ from launchverify.packages import PackageIndex
 class SubstitutionFailure(Exception):
     """``launch.substitutions.SubstitutionFailure``: what launch raises on a bad lookup."""
 
+    def __init__(self, message: str, configuration: str | None = None) -> None:
+        super().__init__(message)
+        self.configuration = configuration  # the launch configuration that does not exist
+
 
 class ConcreteReducer(Reducer):
     """Reduces against fixed launch configurations (unknown values are placeholders)."""
@@ -27,15 +31,15 @@ class ConcreteReducer(Reducer):
         self.index = index
         self.configurations = configurations
         self.current = current
-        self.reads: list[str] = []
+        self.reads: list[tuple[str, bool, bool]] = []  # name, found, has a default
 
     def config(self, name: str, default: s.Sub | None) -> s.Sub:
-        self.reads.append(name)
+        self.reads.append((name, name in self.configurations, default is not None))
         if name in self.configurations:
             return s.Text(self.configurations[name])
         if default is not None:
             return self.reduce(default)
-        raise SubstitutionFailure(f"launch configuration '{name}' does not exist")
+        raise SubstitutionFailure(f"launch configuration '{name}' does not exist", name)
 
     def package_share(self, name: str) -> s.Sub:
         package = self.index.find(name)

@@ -34,10 +34,9 @@ def placeholder_sub(text: str) -> s.Sub:
         kind, name = match.group(1), match.group(2)
         if kind == "env":
             parts.append(s.EnvVar(s.Text(name)))
-        elif kind == "pkg":
-            parts.append(s.FindPackageShare(s.Text(name)))
-        elif kind == "prefix":
-            parts.append(s.FindPackagePrefix(s.Text(name)))
+        elif kind in ("pkg", "prefix"):  # the lookup itself was recorded where it was made
+            folder = "share folder" if kind == "pkg" else "install prefix"
+            parts.append(s.Opaque(f"{folder} of {name}"))
         elif kind == "arg":
             parts.append(s.LaunchConfig(s.Text(name)))
         else:
@@ -51,9 +50,12 @@ class PythonConverter:
     """Implements ``launch_api.base.Converter`` for one launch file."""
 
     def __init__(self, unmodeled: Unmodeled, opaque_function: Callable[[Any], a.Action],
-                 fallback: Span) -> None:
+                 fallback: Span, fail: Unmodeled | None = None) -> None:
         self._unmodeled = unmodeled
+        self._fail = fail or unmodeled
         self._fallback = fallback  # where to point when an object knows no line
+        self._executed: set[int] = set()  # processes already placed in a description
+        self._claimed: set[int] = set()  # description sources already used by an include
         self._opaque_function = opaque_function
         self._memo: dict[int, a.Action | None] = {}
         self._keep: list[Any] = []  # keep converted objects alive while their id is a key
@@ -119,9 +121,27 @@ class PythonConverter:
             if entity is None:
                 continue
             result = self.action(entity)
+            if isinstance(result, (a.ExecuteProcess, a.Node)):
+                if id(result) in self._executed:
+                    self._fail("this action object is added twice: ros2 launch executes it "
+                               "twice and fails ('executed more than once')", result.span)
+                    continue
+                self._executed.add(id(result))
             if result is not None:
                 out.append(result)
         return tuple(out)
+
+    def claim(self, source: Any) -> bool:
+        """Return ``False`` when an include reuses another include's description source."""
+        if id(source) in self._claimed:
+            return False
+        self._claimed.add(id(source))
+        self._keep.append(source)
+        return True
+
+    def fail(self, message: str, span: Span) -> None:
+        """Record that the launch would raise here (LV002)."""
+        self._fail(message, span)
 
     def opaque_function(self, function: Any) -> a.Action:
         """Return the IR of an OpaqueFunction (runs later, with a concrete context)."""

@@ -4,8 +4,10 @@ Three finders, in order of precedence:
 
 - the launch API (``launch``, ``launch_ros``, ``ament_index_python``...) comes from our
   models, whatever is installed;
-- modules next to the launch file and Python packages of the workspace come from the
-  workspace (``from my_robot.launch_utils import ...``);
+- Python packages of workspace packages come from the workspace
+  (``from my_robot.launch_utils import ...``), as they do once the workspace is built and
+  sourced; modules beside the launch file are importable only if the file puts its folder
+  on ``sys.path`` (ros2 launch does not), and that change is undone afterwards;
 - after Python's own finders (the standard library, installed libraries), anything still
   missing becomes an opaque stand-in, reported once per module as not modelled.
 
@@ -113,14 +115,21 @@ class OpaqueFinder(importlib.abc.MetaPathFinder):
     for optional modules must keep getting ``ImportError``.
     """
 
-    def __init__(self, report: Callable[[str], None], user_folders: list[str]) -> None:
+    def __init__(self, report: Callable[[str], None], user_folders: list[str],
+                 sibling_folders: list[str]) -> None:
         self.report = report
         self.user_folders = user_folders
+        self.sibling_folders = sibling_folders
 
     def find_spec(self, fullname: str, path: Sequence[str] | None = None,
                   target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
         if not self.imported_by_user(fullname):
             return None  # libraries probe optional modules (try: import _winapi)
+        if "." not in fullname and any(
+            importlib.machinery.PathFinder.find_spec(fullname, [folder]) is not None
+            for folder in self.sibling_folders
+        ):
+            return None  # beside the launch file but not importable: ros2 launch fails too
         self.report(fullname.partition(".")[0])
         return importlib.machinery.ModuleSpec(fullname, _OpaqueLoader(), is_package=True)
 
@@ -180,7 +189,57 @@ class Opaque:
         return f"<opaque {self._description}>"
 
     def __mro_entries__(self, bases: tuple[Any, ...]) -> tuple[type, ...]:
-        return (object,)
+        return (OpaqueBase,)
+
+    def __or__(self, other: Any) -> Opaque:
+        return self
+
+    __ror__ = __or__
+
+    def __enter__(self) -> Opaque:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        return None
+
+    def __getitem__(self, key: Any) -> Opaque:
+        return Opaque(f"{self._description}[]")
+
+    def __len__(self) -> int:
+        return 0
+
+    def __int__(self) -> int:
+        return 0
+
+    def __float__(self) -> float:
+        return 0.0
+
+    def __index__(self) -> int:
+        return 0
+
+    def _same(self, *args: Any) -> Opaque:
+        return self
+
+    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _same
+    __truediv__ = __rtruediv__ = __floordiv__ = __mod__ = __neg__ = _same
+
+    def __eq__(self, other: object) -> bool:
+        return other is self
+
+    def __hash__(self) -> int:
+        return id(self)
+
+
+class OpaqueBase:
+    """What a class deriving from an opaque one derives from: accepts anything."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        pass
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        return Opaque(f"{type(self).__name__}.{name}")
 
 
 @contextmanager
@@ -192,14 +251,17 @@ def import_context(folders: list[Path], index: PackageIndex, report: Callable[[s
     models do not have.
     """
     before = set(sys.modules)
-    front = [ModelFinder(report_name), WorkspaceFinder(folders, index)]
+    saved_path = list(sys.path)
+    front = [ModelFinder(report_name), WorkspaceFinder([], index)]
     user_folders = [str(f) for f in folders] + [str(w) for w in index.workspaces]
-    back = OpaqueFinder(report, user_folders)
+    back = OpaqueFinder(report, user_folders, [str(f) for f in folders])
     sys.meta_path[:0] = front
     sys.meta_path.append(back)
     try:
         yield
     finally:
+        sys.path[:] = saved_path  # a launch file's sys.path.append must not reach the next
+        sys.path_importer_cache.clear()
         for finder in (*front, back):
             if finder in sys.meta_path:
                 sys.meta_path.remove(finder)

@@ -44,6 +44,7 @@ BLOCKED_EVENTS = frozenset({
 })
 _SCRATCH_EVENTS = frozenset({"os.remove", "os.rename", "os.rmdir", "os.mkdir", "os.chmod",
                              "os.utime", "shutil.rmtree", "shutil.copyfile", "shutil.move"})
+_STDLIB = os.path.dirname(os.__file__)  # noqa: PTH120
 _WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_APPEND | os.O_TRUNC
 TIME_LIMIT = 10.0
 MEMORY_LIMIT = 2 * 1024 ** 3  # bytes of address space beyond what is used already
@@ -79,15 +80,37 @@ def _audit(event: str, args: tuple[Any, ...]) -> None:
     if args and _in_scratch(args[0]) and (event == "open" or event in _SCRATCH_EVENTS):
         return  # the evaluation's own temporary folder, deleted afterwards
     if event in BLOCKED_EVENTS or event.startswith(BLOCKED_PREFIXES):
-        raise SandboxViolation(f"launch files are evaluated without side effects: {event} "
-                               "is not allowed")
+        _refuse(f"{event} is not allowed")
     if event == "open" and len(args) >= 3:
         path, mode, flags = args[0], args[1], args[2]
         writes = (isinstance(mode, str) and any(c in mode for c in "wax+")) or (
             isinstance(flags, int) and flags & _WRITE_FLAGS)
         if writes:
-            raise SandboxViolation(f"launch files are evaluated without side effects: writing "
-                                   f"{path!r} is not allowed")
+            _refuse(f"writing {path!r} is not allowed")
+
+
+def _refuse(what: str) -> None:
+    """Remember the refusal (the launch file may catch the exception) and raise."""
+    message = f"launch files are evaluated without side effects: {what}"
+    frame = sys._getframe(2)
+    while frame is not None and not _user_code(frame.f_code.co_filename):
+        frame = frame.f_back  # type: ignore[assignment]
+    where = (frame.f_code.co_filename, frame.f_lineno) if frame is not None else None
+    refusals = getattr(_state, "refused", None)
+    if refusals is not None:
+        refusals.append((message, where))
+    raise SandboxViolation(message)
+
+
+def _user_code(filename: str) -> bool:
+    return not filename.startswith(("<", _STDLIB)) and "launchverify" not in filename
+
+
+def take_refusals() -> list[tuple[str, tuple[str, int] | None]]:
+    """Return and forget the side effects refused in this thread's evaluation."""
+    refusals: list[tuple[str, tuple[str, int] | None]] = getattr(_state, "refused", [])
+    _state.refused = []
+    return refusals
 
 
 def _install_hook() -> None:

@@ -1,0 +1,15 @@
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot_name'),
+        DeclareLaunchArgument('world', default_value='empty'),
+        Node(package='demo_nodes_cpp', executable='listener', name='simulator',
+             parameters=[{'world': LaunchConfiguration('world')}]),
+        Node(package='demo_nodes_cpp', executable='talker', name='driver',  # expect-not: LV101
+             namespace=LaunchConfiguration('robot_name')),
+    ])

@@ -1,0 +1,17 @@
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition, UnlessCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('camera', default_value='on'),
+        DeclareLaunchArgument('headless', default_value='True'),
+        Node(package='usb_cam', executable='usb_cam_node_exe', name='camera',  # expect: LV002
+             condition=IfCondition(LaunchConfiguration('camera'))),
+        # 'True' is fine: launch lowercases before comparing
+        Node(package='rviz2', executable='rviz2', name='rviz',  # expect-not: LV002
+             condition=UnlessCondition(LaunchConfiguration('headless'))),
+    ])

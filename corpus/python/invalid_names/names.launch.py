@@ -1,0 +1,27 @@
+from launch import LaunchDescription
+from launch.actions import GroupAction
+from launch_ros.actions import Node, PushRosNamespace, SetRemap
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='front-camera'),  # expect: LV102
+        Node(package='demo_nodes_cpp', executable='talker', name='2nd_talker'),  # expect: LV102
+        Node(package='demo_nodes_cpp', executable='talker', name='ok_talker',  # expect: LV102
+             namespace='robot 1'),
+        Node(package='demo_nodes_cpp', executable='talker', name='t3',  # expect: LV102
+             namespace='/robot//arm'),
+        GroupAction([
+            PushRosNamespace('9lives'),  # expect: LV102
+        ]),
+        # remap rules are plain tuples: the finding points at the Node( line
+        Node(  # expect: LV102
+            package='demo_nodes_cpp', executable='listener', name='listener',
+            remappings=[
+                ('chatter', '/robot/2chatter'),
+                ('~/status', 'status_out'),  # fine: private name
+                ('{node}/in', '/out'),
+            ],
+        ),
+        SetRemap(src='scan*', dst='scan_filtered'),  # expect: LV102
+    ])

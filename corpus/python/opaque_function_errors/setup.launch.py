@@ -1,0 +1,35 @@
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+# This file reads configurations it never declares ('robot', 'camera_ns'): launchverify takes
+# it as meant to be included (an includer may set them), so the SubstitutionFailure and the
+# KeyError that a direct `ros2 launch` of it would raise are not reported. Launched through
+# an includer that does not set them, they are (see opaque_function_included).
+
+
+def driver(context):
+    # declared as 'robot_name', read as 'robot': SubstitutionFailure when launched directly
+    robot = LaunchConfiguration('robot').perform(context)  # expect-not: LV002
+    return [Node(package='demo_nodes_cpp', executable='talker', name='driver', namespace=robot)]
+
+
+def camera(context):
+    ns = context.launch_configurations['camera_ns']  # expect-not: LV002
+    return [Node(package='usb_cam', executable='usb_cam_node_exe', name='camera', namespace=ns)]
+
+
+def monitor(context):
+    ns = context.launch_configurations.get('monitor_ns', 'monitor')  # expect-not: LV002
+    return [Node(package='demo_nodes_cpp', executable='listener', name='monitor', namespace=ns)]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot_name', default_value='r1'),  # expect: LV202
+        OpaqueFunction(function=driver),
+        OpaqueFunction(function=camera),
+        OpaqueFunction(function=monitor),
+    ])

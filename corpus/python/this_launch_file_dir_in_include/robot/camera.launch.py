@@ -1,0 +1,14 @@
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('params'),
+        DeclareLaunchArgument('name', default_value='camera'),
+        Node(package='usb_cam', executable='usb_cam_node_exe',
+             name=LaunchConfiguration('name'),
+             parameters=[LaunchConfiguration('params')]),  # expect: LV302
+    ])

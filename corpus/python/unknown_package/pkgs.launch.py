@@ -1,0 +1,17 @@
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution
+from launch_ros.actions import Node
+from launch_ros.substitutions import FindPackageShare
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo_node_cpp', executable='talker', name='talker'),  # expect: LV303
+        Node(package='demo_nodes_cpp', executable='listener', name='listener'),
+        Node(package='acme_private_driver', executable='driver', name='driver'),
+        Node(package='local_tools', executable='tool', name='tool'),
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(  # expect: LV303
+            PathJoinSubstitution([FindPackageShare('local_tool'), 'launch', 'tool.launch.py']))),
+    ])
