@@ -177,6 +177,7 @@ MODULES: dict[str, dict[str, Any]] = {
         "generate_moveit_rviz_launch", "generate_rsp_launch", "generate_setup_assistant_launch",
         "generate_spawn_controllers_launch", "generate_static_virtual_joint_tfs_launch",
         "generate_warehouse_db_launch"),
+    "moveit_configs_utils.substitutions": {"Xacro": moveit.Xacro},
     "moveit_configs_utils.launch_utils": _exports(
         moveit, "DeclareBooleanLaunchArg", "add_debuggable_node"),
     "launch_param_builder": _exports(

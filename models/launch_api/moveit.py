@@ -14,7 +14,9 @@ from typing import Any
 
 import yaml
 
+from launchverify.ir import subst as s
 from launchverify.models.launch_api.ament import get_package_share_directory
+from launchverify.models.launch_api.base import Converter, Substitution
 from launchverify.models.launch_api.launch_actions import (
     DeclareLaunchArgument,
     IncludeLaunchDescription,
@@ -27,7 +29,11 @@ from launchverify.models.launch_api.launch_substitutions import (
     LaunchConfiguration,
     UnlessCondition,
 )
-from launchverify.models.launch_api.placeholders import has_placeholder, placeholder
+from launchverify.models.launch_api.placeholders import (
+    UnknownMapping,
+    has_placeholder,
+    placeholder,
+)
 from launchverify.models.launch_api.runtime import active
 
 
@@ -35,20 +41,28 @@ def _opaque(what: str) -> str:
     return placeholder("opaque", what)
 
 
+def locate(file_path: Any) -> Path:
+    """Find a package file as the package index does (install layout -> sources)."""
+    path = Path(str(file_path))
+    if has_placeholder(str(file_path)) or path.exists():
+        return path
+    return active().index.locate(path) or path
+
+
 def load_yaml(file_path: Any) -> Any:
     """Return a YAML file's content when the workspace has it, else an opaque value."""
-    path = Path(str(file_path))
+    path = locate(file_path)
     if has_placeholder(str(file_path)) or not path.is_file():
-        return _opaque(f"content of {path.name}")
+        return UnknownMapping()  # a file only the robot has
     try:
         return yaml.safe_load(path.read_text(encoding="utf-8"))
     except (OSError, yaml.YAMLError):
-        return _opaque(f"content of {path.name}")
+        return UnknownMapping()
 
 
 def load_xacro(file_path: Any, mappings: Any = None) -> str:
     """Return a robot description: opaque (xacro is never run)."""
-    path = Path(str(file_path))
+    path = locate(file_path)
     runtime = active()
     if not has_placeholder(str(file_path)) and path.is_absolute() and not path.exists() and (
         path.resolve().is_relative_to(runtime.workspace)
@@ -107,8 +121,8 @@ class ParameterBuilder:
 class MoveItConfigs:
     """What ``MoveItConfigsBuilder.to_moveit_configs()`` returns."""
 
-    def __init__(self) -> None:
-        self.package_path: Path | None = None
+    def __init__(self, package_path: Path | None = None) -> None:
+        self.package_path = package_path
         self.robot_description: dict[str, Any] = {}
         self.robot_description_semantic: dict[str, Any] = {}
         self.robot_description_kinematics: dict[str, Any] = {}
@@ -116,7 +130,8 @@ class MoveItConfigs:
         self.trajectory_execution: dict[str, Any] = {}
         self.planning_scene_monitor: dict[str, Any] = {}
         self.sensors_3d: dict[str, Any] = {}
-        self.move_group_capabilities: dict[str, Any] = {}
+        self.move_group_capabilities: dict[str, Any] = {"capabilities": "",
+                                                         "disable_capabilities": ""}
         self.joint_limits: dict[str, Any] = {}
         self.moveit_cpp: dict[str, Any] = {}
         self.pilz_cartesian_limits: dict[str, Any] = {}
@@ -127,9 +142,23 @@ class MoveItConfigs:
         for part in (self.robot_description, self.robot_description_semantic,
                      self.robot_description_kinematics, self.planning_pipelines,
                      self.trajectory_execution, self.planning_scene_monitor, self.sensors_3d,
-                     self.joint_limits, self.moveit_cpp, self.pilz_cartesian_limits):
+                     self.joint_limits, self.moveit_cpp, self.move_group_capabilities):
             parameters.update(part)
+        for key, value in self.pilz_cartesian_limits.items():  # merged into joint limits
+            if isinstance(parameters.get(key), dict) and isinstance(value, dict):
+                parameters[key] = {**parameters[key], **value}
+            else:
+                parameters[key] = value
         return parameters
+
+
+def _description(path: Path, mappings: Any) -> Any:
+    """Return a robot description value: an Xacro stand-in when mappings are substituted."""
+    if mappings and any(not isinstance(v, str) for v in dict(mappings).values()):
+        from launchverify.models.launch_api.launch_ros import ParameterValue
+
+        return ParameterValue(Xacro(str(path), mappings=mappings), value_type=str)
+    return load_xacro(path, mappings)
 
 
 class MoveItConfigsBuilder(ParameterBuilder):
@@ -140,30 +169,62 @@ class MoveItConfigsBuilder(ParameterBuilder):
         super().__init__(package_name or f"{robot_name}_moveit_config")
         self._robot_name = robot_name
         self._description_name = robot_description
-        self._configs = MoveItConfigs()
-        self._configs.package_path = self._package_path
+        self._configs = MoveItConfigs(self._package_path)
+        config = self._package_path / "config"
+        self._urdf: Path | None = None
+        self._srdf: Path | None = None
+        xacro = config / f"{robot_name}.urdf.xacro"
+        if xacro.exists():
+            self._urdf = xacro
+        assistant = self._package_path / ".setup_assistant"
+        if assistant.is_file():
+            content = load_yaml(assistant)
+            settings = content.get("moveit_setup_assistant_config", {}) if isinstance(
+                content, dict) else {}
+            urdf = settings.get("urdf", settings.get("URDF")) or {}
+            if self._urdf is None and urdf.get("package") and urdf.get("relative_path"):
+                self._urdf = Path(get_package_share_directory(str(urdf["package"]))) / str(
+                    urdf["relative_path"])
+            srdf = settings.get("srdf", settings.get("SRDF")) or {}
+            if srdf.get("relative_path"):
+                self._srdf = self._package_path / str(srdf["relative_path"])
+        self._urdf = self._urdf or config / f"{robot_name}.urdf"
+        self._srdf = self._srdf or config / f"{robot_name}.srdf"
 
     def _file(self, file_path: Any, default: str) -> Path:
-        return self._package_path / str(file_path or default)
+        if file_path is None:
+            return self._package_path / default
+        path = Path(str(file_path))
+        return path if path.is_absolute() else self._package_path / path
 
     def robot_description(self, file_path: Any = None, mappings: Any = None
                           ) -> MoveItConfigsBuilder:
-        """Load the robot description (xacro/URDF)."""
-        path = self._file(file_path, f"config/{self._robot_name}.urdf.xacro")
-        self._configs.robot_description = {self._description_name: load_xacro(path, mappings)}
+        """Load the robot description; a missing file only warns, as in MoveIt."""
+        path = self._urdf if file_path is None else self._file(file_path, "")
+        assert path is not None
+        try:
+            value = _description(path, mappings)
+        except FileNotFoundError:
+            value = _opaque(f"robot description from {path.name}")
+        self._configs.robot_description = {self._description_name: value}
         return self
 
     def robot_description_semantic(self, file_path: Any = None, mappings: Any = None
                                    ) -> MoveItConfigsBuilder:
         """Load the SRDF."""
-        path = self._file(file_path, f"config/{self._robot_name}.srdf")
+        path = self._srdf if file_path is None else self._file(file_path, "")
+        assert path is not None
         self._configs.robot_description_semantic = {
-            self._description_name + "_semantic": load_xacro(path, mappings)}
+            self._description_name + "_semantic": _description(path, mappings)}
         return self
 
     def _yaml_part(self, attribute: str, key: str | None, file_path: Any, default: str
                    ) -> MoveItConfigsBuilder:
-        content = load_yaml(self._file(file_path, default))
+        path = locate(self._file(file_path, default))
+        if file_path is None and not path.exists():
+            return self  # a default that this package does not have
+        _require(path)
+        content = load_yaml(path)
         value = {key: content} if key else (content if isinstance(content, dict) else {})
         setattr(self._configs, attribute, value)
         return self
@@ -185,10 +246,19 @@ class MoveItConfigsBuilder(ParameterBuilder):
 
     def trajectory_execution(self, file_path: Any = None, moveit_manage_controllers: bool = True
                              ) -> MoveItConfigsBuilder:
-        """Load the controllers MoveIt uses."""
-        self._yaml_part("trajectory_execution", None, file_path, "config/moveit_controllers.yaml")
-        self._configs.trajectory_execution["moveit_manage_controllers"] = (
-            moveit_manage_controllers)
+        """Load the controllers MoveIt uses (``config/*_controllers.yaml`` by default)."""
+        if file_path is None:
+            found = sorted((self._package_path / "config").glob("*_controllers.yaml"))
+            moveit = [f for f in found if f.name in ("moveit_controllers.yaml",
+                                                     "moveit2_controllers.yaml")]
+            chosen = moveit[0] if moveit else (found[0] if len(found) == 1 else None)
+            file_path = chosen
+        self._configs.trajectory_execution = {"moveit_manage_controllers":
+                                              moveit_manage_controllers}
+        if file_path is not None:
+            content = load_yaml(self._file(file_path, ""))
+            if isinstance(content, dict):
+                self._configs.trajectory_execution.update(content)
         return self
 
     def planning_scene_monitor(self, publish_planning_scene: bool = True,
@@ -214,14 +284,30 @@ class MoveItConfigsBuilder(ParameterBuilder):
         return self._yaml_part("sensors_3d", None, file_path, "config/sensors_3d.yaml")
 
     def planning_pipelines(self, default_planning_pipeline: str | None = None,
-                           pipelines: list[str] | None = None,
-                           load_all: bool = True) -> MoveItConfigsBuilder:
-        """Collect the planning pipelines."""
-        names = list(pipelines or ["ompl"])
-        self._configs.planning_pipelines = {
-            "planning_pipelines": names,
-            "default_planning_pipeline": default_planning_pipeline or names[0],
-        }
+                           pipelines: Any = None, load_all: bool = True
+                           ) -> MoveItConfigsBuilder:
+        """Collect the planning pipelines and each one's ``config/<name>_planning.yaml``."""
+        if isinstance(pipelines, str):
+            pipelines = [pipelines]
+        config = self._package_path / "config"
+        if pipelines is None:
+            found = [f.name[: -len("_planning.yaml")]
+                     for f in sorted(config.glob("*_planning.yaml"))]
+            defaults = ["ompl", "chomp", "pilz_industrial_motion_planner", "stomp"]
+            pipelines = found + [p for p in defaults if load_all and p not in found]
+        names = list(pipelines)
+        if default_planning_pipeline is None:
+            default_planning_pipeline = "ompl" if "ompl" in names else names[0]
+        if default_planning_pipeline not in names:
+            raise RuntimeError(f"default_planning_pipeline: `{default_planning_pipeline}` "
+                               f"doesn't name any of the input pipelines `{names}`")
+        parameters: dict[str, Any] = {"planning_pipelines": names,
+                                      "default_planning_pipeline": default_planning_pipeline}
+        for name in names:
+            # missing here: MoveIt falls back to its own default_configs (unknown to us)
+            content = load_yaml(config / f"{name}_planning.yaml")
+            parameters[name] = content if isinstance(content, dict) else UnknownMapping()
+        self._configs.planning_pipelines = parameters
         return self
 
     def pilz_cartesian_limits(self, file_path: Any = None) -> MoveItConfigsBuilder:
@@ -244,8 +330,13 @@ class MoveItConfigsBuilder(ParameterBuilder):
             self.trajectory_execution()
         if not configs.planning_scene_monitor:
             self.planning_scene_monitor()
+        if not configs.sensors_3d:
+            self.sensors_3d()
         if not configs.joint_limits:
             self.joint_limits()
+        if ("pilz_industrial_motion_planner" in configs.planning_pipelines.get(
+                "planning_pipelines", []) and not configs.pilz_cartesian_limits):
+            self.pilz_cartesian_limits()
         return configs
 
     def to_dict(self, include_moveit_configs: bool = True) -> dict[str, Any]:
@@ -254,6 +345,16 @@ class MoveItConfigsBuilder(ParameterBuilder):
         if include_moveit_configs:
             parameters.update(self.to_moveit_configs().to_dict())
         return parameters
+
+
+def _require(path: Path) -> None:
+    """Raise like MoveIt's loaders for a file missing from the workspace."""
+    runtime = active()
+    path = locate(path)
+    text = str(path)
+    if not has_placeholder(text) and path.is_absolute() and not path.exists() and (
+            path.resolve().is_relative_to(runtime.workspace)):
+        raise FileNotFoundError(f"File {text} doesn't exist")
 
 
 # ----------------------------------------------------------------------------- launches
@@ -409,3 +510,21 @@ def _include(path: Path, condition: Any = None) -> IncludeLaunchDescription:
 
 def _package(moveit_config: MoveItConfigs) -> Path:
     return moveit_config.package_path or Path(_opaque("moveit config package"))
+
+
+class Xacro(Substitution):
+    """``moveit_configs_utils.substitutions.Xacro(file_path, *, mappings=None)``.
+
+    A robot description xacro'd at launch time: opaque, but the file and the mappings'
+    values are read (so the configurations they name count as used).
+    """
+
+    def __init__(self, file_path: Any, *, mappings: Any = None) -> None:
+        super().__init__()
+        self.file_path = file_path
+        self.mappings = dict(mappings or {})
+
+    def to_sub(self, cv: Converter) -> s.Sub:
+        inputs = (cv.sub(self.file_path),
+                  *(cv.sub(v) for v in self.mappings.values() if v is not None))
+        return s.Rewritten(s.Opaque("robot description (xacro)"), inputs, "Xacro")

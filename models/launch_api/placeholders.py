@@ -23,3 +23,10 @@ def placeholder(kind: str, name: str) -> str:
 def has_placeholder(text: str) -> bool:
     """Return whether a string carries a value that is not known statically."""
     return OPEN in text
+
+
+class UnknownMapping(dict):  # type: ignore[type-arg]
+    """YAML content only the robot has: any key gives more of it, iteration gives nothing."""
+
+    def __missing__(self, key: object) -> UnknownMapping:
+        return UnknownMapping()

@@ -31,7 +31,11 @@ from launchverify.models.launch_api import runtime
 from launchverify.models.launch_api.base import _is_ours
 from launchverify.models.launch_api.context import LaunchContext, MissingConfiguration
 from launchverify.models.launch_api.launch_actions import LaunchDescription
-from launchverify.models.launch_api.placeholders import has_placeholder, placeholder
+from launchverify.models.launch_api.placeholders import (
+    UnknownMapping,
+    has_placeholder,
+    placeholder,
+)
 from launchverify.packages import PackageIndex
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
@@ -315,13 +319,6 @@ class _Performer:
 
 class OpaqueText(io.StringIO):
     """The content of a file only the robot has."""
-
-
-class UnknownMapping(dict[Any, Any]):
-    """What YAML in a file only the robot has parses to: any key gives more of it."""
-
-    def __missing__(self, key: Any) -> UnknownMapping:
-        return UnknownMapping()
 
 
 @contextmanager
