@@ -270,8 +270,10 @@ class LaunchGraph:
                for a in self.root_arguments):
             return False
         known = self.declared_names() | set(self.pinned)
+        declared_in = {(arg.name, arg.action.span.file) for arg in self.arguments}
         return not any(
-            not r.found and not r.has_default and not r.origin.chain and r.name not in known
+            not r.found and not r.has_default and not r.origin.chain
+            and (r.name, r.origin.span.file) not in declared_in
             and typo_of(r.name, known) is None
             for r in self.reads
         )

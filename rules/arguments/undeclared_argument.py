@@ -44,6 +44,7 @@ class UndeclaredArgument(Rule):
         if not graph.complete:
             return  # a part we cannot see may set it
         known = graph.declared_names() | set(graph.pinned)
+        declared_in = {(arg.name, arg.action.span.file) for arg in graph.arguments}
         unset = [r for r in graph.reads if not r.found and not r.has_default]
         alone = graph.launchable_alone()
         seen: set[tuple[object, ...]] = set()
@@ -53,7 +54,8 @@ class UndeclaredArgument(Rule):
                 continue
             seen.add(key)
             typo = typo_of(read.name, known)
-            declared = read.name in known  # read before its declaration, or out of its scope
+            # read before its declaration in the same file, or out of that declaration's scope
+            declared = (read.name, read.origin.span.file) in declared_in
             if typo is None and not declared and not alone:
                 continue  # meant to be included: the includer sets it
             hint = f" (did you mean {typo!r}?)" if typo else (

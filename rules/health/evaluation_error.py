@@ -44,8 +44,7 @@ class EvaluationError(Rule):
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         for record in graph.problems:
-            if record.problem.contextual and not graph.launchable_alone() and (
-                    graph.included_elsewhere or not record.chain):
-                continue  # what an includer provides is unknown here
+            if record.problem.contextual and not graph.launchable_alone():
+                continue  # what an includer of this root provides is unknown here
             if record.problem.kind is ProblemKind.EVALUATION:
                 yield self.finding(record.origin, text=record.problem.message)

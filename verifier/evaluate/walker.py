@@ -15,6 +15,7 @@ import os
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 import yaml
 
@@ -581,22 +582,36 @@ class Walker:
                          contextual=problem.contextual)
         self.visit_all(result.actions, ctx)
 
-    def concrete_configurations(self) -> dict[str, str]:
+    def concrete_configurations(self) -> dict[str, Any]:
         """Return the configurations in scope as strings.
 
         An argument without a value takes its first choice when it has choices, else a
         placeholder (Python code then sees an unknown value, not an arbitrary one).
         """
         choices = {arg.name: arg.choices for arg in self.graph.arguments if arg.choices}
-        out = {}
+        out: dict[str, Any] = {}
         for name, value in self.scopes.configs.items():
+            if name == GLOBAL_PARAMS:  # launch_ros keeps (name, value) pairs and file paths
+                out[name] = [self.concrete_param(p) for p in value]
+                continue
             if not isinstance(value, s.Sub):
-                continue  # launch_ros's own lists
+                continue  # launch_ros's other lists
             text = self.graph.base(value)
             if text is None and choices.get(name):
                 text = choices[name][0]
             out[name] = text if text is not None else placeholder("arg", name)
         return out
+
+    def concrete_param(self, param: ScopedParam) -> object:
+        """Return a SetParameter/SetParametersFromFile entry as launch_ros stores it."""
+        if param.file is not None:
+            return self.graph.base(param.file) or placeholder("opaque", "parameter file")
+        name = self.graph.base(param.name) if param.name is not None else None
+        value = param.value
+        if isinstance(value, s.Sub):
+            text = self.graph.base(value)
+            value = _yaml_value(text) if text is not None else placeholder("opaque", "value")
+        return (name or placeholder("opaque", "name"), value)
 
     def do_OpaqueAction(self, action: a.OpaqueAction, ctx: Ctx) -> None:
         """Something the frontend could not see into (it already said so)."""
@@ -649,6 +664,15 @@ class Walker:
         text = text_of(value)
         if text is not None:
             self.graph.names.append(NameRecord(kind, text, origin))
+
+
+def _yaml_value(text: str) -> object:
+    """Return a parameter value as launch_ros evaluates it (YAML rules)."""
+    try:
+        value = yaml.safe_load(text) if text else text
+    except yaml.YAMLError:
+        return text
+    return value if isinstance(value, (str, int, float, bool, list)) else text
 
 
 def _guard_env(ctx: Ctx, value: s.Sub, old: s.Sub | None, name: str) -> s.Sub:

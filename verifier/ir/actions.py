@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from launchverify.ir.conditions import Condition
 from launchverify.ir.subst import Sub
@@ -497,7 +498,7 @@ class OpaqueFunction(Action):
     """
 
     description: str
-    run: Callable[[Mapping[str, str], Path], OpaqueResult]
+    run: Callable[[Mapping[str, Any], Path], OpaqueResult]
     kind = "opaque_function"
 
 

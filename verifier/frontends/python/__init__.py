@@ -135,11 +135,19 @@ class _Session:
             self.sink.evaluation(f"{error} (an endless loop?)", span)
         elif isinstance(error, MemoryError):
             self.sink.evaluation("evaluation ran out of memory", span)
+        elif has_placeholder(str(error)):
+            # It failed on a value only the robot or an includer knows: not evaluated.
+            self.unmodeled(f"the launch file's code fails on a value unknown here "
+                           f"({type(error).__name__}: {_shown(str(error))}); what follows "
+                           "is not evaluated", span)
         else:
             text = str(error)
             message = f"{type(error).__name__}: {text}" if text else type(error).__name__
             # A configuration nobody set: an includer may set it (LV201's policy decides).
-            contextual = isinstance(error, (SubstitutionFailure, MissingConfiguration))
+            # An OpaqueFunction runs with what the includers set: without them (a file
+            # checked on its own) its failures may come from what only they provide.
+            contextual = self.in_opaque or isinstance(
+                error, (SubstitutionFailure, MissingConfiguration))
             if contextual and getattr(error, "configuration", None) and self.in_opaque:
                 self.failed_read = (str(getattr(error, "configuration", "")), span)
                 return
@@ -348,6 +356,15 @@ def _yaml_knows_opaque_files() -> Iterator[None]:
 
 def _no_opaque(model: Any) -> a.Action:
     raise TypeError("an OpaqueFunction cannot be performed as a substitution")
+
+
+def _shown(text: str) -> str:
+    """Show placeholders the way users write the values they stand for."""
+    from launchverify.models.launch_api.placeholders import PATTERN
+
+    spelled = {"env": "$(env {})", "arg": "$(var {})", "pkg": "$(find-pkg-share {})",
+               "prefix": "$(find-pkg-prefix {})", "opaque": "<{}>"}
+    return PATTERN.sub(lambda m: spelled[m.group(1)].format(m.group(2)), text)[:200]
 
 
 def _is_file(name: str) -> bool:
