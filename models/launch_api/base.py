@@ -19,19 +19,11 @@ from typing import TYPE_CHECKING, Any, Protocol
 from launchverify.ir import subst as s
 from launchverify.ir.actions import Action as IRAction
 from launchverify.ir.conditions import Condition as IRCondition
+from launchverify.own_code import is_own_file
 from launchverify.span import Span
 
 if TYPE_CHECKING:
     from launchverify.ir import actions as a
-
-# The launchverify package as Python imported it (not resolved: an editable install links
-# files elsewhere, and frames carry the path they were imported from).
-_OURS = str(Path(os.path.abspath(__file__)).parents[2])  # noqa: PTH100
-
-
-def _is_ours(filename: str) -> bool:
-    return filename.startswith(_OURS) or filename.startswith("<frozen")
-
 
 def caller_span(skip: int = 1) -> Span:
     """Return the span of the call in user code that is creating an object.
@@ -40,7 +32,7 @@ def caller_span(skip: int = 1) -> Span:
     helper function of the user's points at the helper's line.
     """
     frame: FrameType | None = sys._getframe(skip)
-    while frame is not None and _is_ours(frame.f_code.co_filename):
+    while frame is not None and is_own_file(frame.f_code.co_filename):
         frame = frame.f_back
     if frame is None:
         return Span(Path("<unknown>"), 1)

@@ -28,7 +28,6 @@ from launchverify.frontends.python.sandbox import (
 )
 from launchverify.ir import actions as a
 from launchverify.models.launch_api import runtime
-from launchverify.models.launch_api.base import _is_ours
 from launchverify.models.launch_api.context import LaunchContext, MissingConfiguration
 from launchverify.models.launch_api.launch_actions import LaunchDescription
 from launchverify.models.launch_api.placeholders import (
@@ -36,6 +35,7 @@ from launchverify.models.launch_api.placeholders import (
     has_placeholder,
     placeholder,
 )
+from launchverify.own_code import is_own_file
 from launchverify.packages import PackageIndex
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
@@ -117,7 +117,7 @@ class _Session:
         import sys
 
         frame = sys._getframe(1)
-        while frame is not None and (_is_ours(frame.f_code.co_filename)
+        while frame is not None and (is_own_file(frame.f_code.co_filename)
                                      or "importlib" in frame.f_code.co_filename):
             frame = frame.f_back  # type: ignore[assignment]
         if frame is None:
@@ -156,7 +156,7 @@ class _Session:
 
     def _error_span(self, error: BaseException) -> Span:
         frames = traceback.extract_tb(error.__traceback__)
-        user = [f for f in frames if not _is_ours(f.filename) and _is_file(f.filename)
+        user = [f for f in frames if not is_own_file(f.filename) and _is_file(f.filename)
                 and not f.filename.startswith(_STDLIB)]
         if not user:
             return Span.of_file(self.path)

@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.models.launch_api import MODULES, QUIET_ROOTS, exports_for, is_modelled
-from launchverify.models.launch_api.base import _is_ours
+from launchverify.own_code import is_own_file
 from launchverify.packages import PackageIndex
 
 
@@ -141,7 +141,7 @@ class OpaqueFinder(importlib.abc.MetaPathFinder):
         frame = sys._getframe(1)
         while frame is not None:
             name = frame.f_code.co_filename
-            if "importlib" not in name and not _is_ours(name):
+            if "importlib" not in name and not is_own_file(name):
                 return any(name.startswith(folder) for folder in self.user_folders)
             frame = frame.f_back  # type: ignore[assignment]
         return False

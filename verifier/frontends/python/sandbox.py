@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.models.launch_api.placeholders import placeholder
+from launchverify.own_code import is_own_file
 
 try:
     import resource
@@ -103,7 +104,7 @@ def _refuse(what: str) -> None:
 
 
 def _user_code(filename: str) -> bool:
-    return not filename.startswith(("<", _STDLIB)) and "launchverify" not in filename
+    return not filename.startswith(("<", _STDLIB)) and not is_own_file(filename)
 
 
 def take_refusals() -> list[tuple[str, tuple[str, int] | None]]:
