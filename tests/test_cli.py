@@ -102,8 +102,8 @@ def test_graph_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
     listener = next(n for n in document["nodes"] if n["name"] == "listener")
     assert listener["fqn"] == "/demo/listener"
     assert listener["remappings"] == [["chatter", "chatter"]]
-    assert listener["parameters"] == [{"name": "verbose", "value": "true"},
-                                      {"name": "qos.depth", "value": "10"}]
+    assert listener["parameters"] == [{"name": "verbose", "value": True},
+                                      {"name": "qos.depth", "value": 10}]
     assert listener["condition"] is None and listener["lifecycle"] is False
     assert listener["line"] == 13
     code, out, _ = run(capsys, "graph", str(tree), "ns:=robot", "topic_name:=talk")

@@ -54,6 +54,7 @@ class ParamRecord:
     name: Sub | None = None
     value: object = None
     scope: bool = False
+    value_type: str | None = None  # forced type (frontend ``type=``, ``ParameterValue``)
 
 
 @dataclass(frozen=True, slots=True)

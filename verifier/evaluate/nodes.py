@@ -127,7 +127,8 @@ class NodeBuilder:
 
     def scope_params(self, ctx: Ctx) -> list[ParamRecord]:
         """Return SetParameter/SetParametersFromFile values in scope (they come first)."""
-        return [ParamRecord(p.origin, file=p.file, name=p.name, value=p.value, scope=True)
+        return [ParamRecord(p.origin, file=p.file, name=p.name, value=p.value, scope=True,
+                            value_type=p.value_type)
                 for p in self.walker.scopes.shared(GLOBAL_PARAMS)]
 
     def own_params(self, entries: tuple[a.ParamEntry, ...], ctx: Ctx) -> list[ParamRecord]:
@@ -149,7 +150,7 @@ class NodeBuilder:
                 elif isinstance(value, tuple):
                     value = tuple(reducer.reduce(v) if isinstance(v, s.Sub) else v for v in value)
                 out.append(ParamRecord(ctx.origin(item.span), name=reducer.reduce(item.name),
-                                       value=value))
+                                       value=value, value_type=item.value.value_type))
         return out
 
     def allows_substitutions(self, entry: a.ParamFile, ctx: Ctx) -> bool:

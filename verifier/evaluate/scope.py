@@ -39,6 +39,7 @@ class ScopedParam:
     name: Sub | None = None
     value: object = None
     file: Sub | None = None
+    value_type: str | None = None
 
 
 MAX_VALUE_SIZE = 2000

@@ -60,6 +60,7 @@ from launchverify.ir.symbolic import (
     Unset,
 )
 from launchverify.models.launch_api.placeholders import placeholder
+from launchverify.models.parameter_values import typed_parameter
 from launchverify.packages import PackageIndex
 from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
@@ -534,7 +535,8 @@ class Walker:
         value = action.value.value
         reduced = reducer.reduce(value) if isinstance(value, s.Sub) else value
         self.scopes.append_shared(GLOBAL_PARAMS, ScopedParam(
-            ctx.origin(action.span), ctx.path, name=reducer.reduce(action.name), value=reduced))
+            ctx.origin(action.span), ctx.path, name=reducer.reduce(action.name), value=reduced,
+            value_type=action.value.value_type))
 
     def do_SetParametersFromFile(self, action: a.SetParametersFromFile, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
@@ -610,7 +612,8 @@ class Walker:
         value = param.value
         if isinstance(value, s.Sub):
             text = self.graph.base(value)
-            value = _yaml_value(text) if text is not None else placeholder("opaque", "value")
+            value = (typed_parameter(text, param.value_type) if text is not None
+                     else placeholder("opaque", "value"))
         return (name or placeholder("opaque", "name"), value)
 
     def do_OpaqueAction(self, action: a.OpaqueAction, ctx: Ctx) -> None:
@@ -664,15 +667,6 @@ class Walker:
         text = text_of(value)
         if text is not None:
             self.graph.names.append(NameRecord(kind, text, origin))
-
-
-def _yaml_value(text: str) -> object:
-    """Return a parameter value as launch_ros evaluates it (YAML rules)."""
-    try:
-        value = yaml.safe_load(text) if text else text
-    except yaml.YAMLError:
-        return text
-    return value if isinstance(value, (str, int, float, bool, list)) else text
 
 
 def _guard_env(ctx: Ctx, value: s.Sub, old: s.Sub | None, name: str) -> s.Sub:

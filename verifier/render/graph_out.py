@@ -12,6 +12,7 @@ from typing import Any, TextIO
 
 from launchverify.graph import LaunchGraph, NodeRecord, Origin, ParamRecord
 from launchverify.ir.subst import Sub
+from launchverify.models.parameter_values import typed_parameter
 from launchverify.models.ros_names import node_fqn
 from launchverify.paths import display_path
 
@@ -69,14 +70,23 @@ class GraphView:
         """Return one parameter source."""
         if param.file is not None:
             return {"file": self.value(param.file)}
-        return {"name": self.value(param.name), "value": self.plain(param.value)}
+        return {"name": self.value(param.name),
+                "value": self.plain(param.value, param.value_type)}
 
-    def plain(self, value: object) -> object:
-        """Return a parameter value as JSON data."""
+    def plain(self, value: object, value_type: str | None = None) -> object:
+        """Return a parameter value as JSON data, typed as the node would receive it.
+
+        Text from substitutions is typed with launch_ros's YAML rules once it is concrete;
+        a value that still depends on arguments (symbolic view) stays an expression.
+        """
         if isinstance(value, Sub):
-            return self.value(value)
+            concrete = self.graph.base(value) if not (self.symbolic and _has_inputs(value)) \
+                else None
+            if concrete is None:
+                return self.value(value)
+            return typed_parameter(concrete, value_type)
         if isinstance(value, tuple):
-            return [self.plain(v) for v in value]
+            return [self.plain(v, value_type) for v in value]
         return value
 
     def document(self) -> dict[str, Any]:

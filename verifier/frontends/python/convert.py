@@ -187,19 +187,34 @@ class PythonConverter:
         return out
 
     def param_value(self, value: Any) -> a.ParamValue:
+        """Return a parameter value; plain ``str`` stays text, substitutions get YAML rules.
+
+        Also inside ``ParameterValue``: ``ParameterValue('7')`` reaches the node as the
+        string ``'7'`` (checked against launch_ros).
+        """
         if isinstance(value, launch_ros.ParameterValue):
             value_type = value.value_type
             name = getattr(value_type, "__name__", None) if value_type is not None else None
-            return a.ParamValue(value=self.param_value(value.value).value,
-                                value_type=name or (str(value_type) if value_type else None))
+            inner = self.param_value(value.value)
+            return a.ParamValue(value=inner.value, value_type=name or (
+                str(value_type) if value_type else inner.value_type))
         if isinstance(value, (bool, int, float)) or value is None:
             return a.ParamValue(value=value)
+        if isinstance(value, str):
+            return self.plain_text(value)
         if isinstance(value, (list, tuple)) and not any(
             isinstance(item, base.Substitution) for item in value
         ) and all(isinstance(item, (bool, int, float, str)) for item in value):
             return a.ParamValue(value=tuple(
-                self.sub(item) if isinstance(item, str) else item for item in value))
+                self.plain_text(item).value if isinstance(item, str) else item
+                for item in value), value_type="str")
         return a.ParamValue(value=self.sub(value))
+
+    def plain_text(self, text: str) -> a.ParamValue:
+        """A Python ``str`` reaches the node as a string, never YAML-parsed."""
+        if PATTERN.search(text):  # computed from values we only know symbolically
+            return a.ParamValue(value=self.sub(text), value_type="str")
+        return a.ParamValue(value=text)
 
     def remaps(self, value: Any, span: Span) -> tuple[a.Remap, ...]:
         out = []
