@@ -79,3 +79,18 @@ def test_find_workspace(tmp_path: Path) -> None:
     loose = make_package(tmp_path / "loose", "thing") / "launch"
     loose.mkdir()
     assert find_workspace(loose) == (tmp_path / "loose").resolve()
+
+
+def test_symlinked_repositories_are_followed_once(tmp_path: Path) -> None:
+    repos = tmp_path / "repos"
+    make_package(repos / "driver_repo", "fast_driver")
+    src = tmp_path / "ws" / "src"
+    src.mkdir(parents=True)
+    (src / "driver_repo").symlink_to(repos / "driver_repo", target_is_directory=True)
+    (src / "again").symlink_to(repos, target_is_directory=True)  # the same package twice
+    (repos / "loop").symlink_to(repos, target_is_directory=True)  # a cycle
+    found = list(scan_sources(tmp_path / "ws"))
+    assert [name for name, _ in found] == ["fast_driver"]
+    package = PackageIndex([tmp_path / "ws"]).find("fast_driver")
+    assert package is not None and package.source is not None
+    assert (package.source / "package.xml").is_file()

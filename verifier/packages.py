@@ -61,13 +61,24 @@ def scan_sources(root: Path) -> Iterator[tuple[str, Path]]:
     """Yield ``(name, folder)`` for every package manifest below ``root``.
 
     Skips build artefacts, hidden folders and folders marked ``COLCON_IGNORE``, and does
-    not descend into a package (packages do not nest).
+    not descend into a package (packages do not nest). Like colcon, it follows symbolic
+    links (repositories linked into ``src/`` are common), visiting each folder once.
     """
     scanned = 0
-    for current, dirs, files in os.walk(root):
+    seen: set[tuple[int, int]] = set()
+    for current, dirs, files in os.walk(root, followlinks=True):
         scanned += 1
         if scanned > MAX_SCANNED_DIRS:
             return
+        try:
+            identity = Path(current).stat()
+        except OSError:
+            dirs[:] = []
+            continue
+        if (identity.st_dev, identity.st_ino) in seen:
+            dirs[:] = []
+            continue
+        seen.add((identity.st_dev, identity.st_ino))
         if any(marker in files for marker in IGNORE_MARKERS):
             dirs[:] = []
             continue
