@@ -98,9 +98,15 @@ class Scopes:
         """Forget every change the launch made to the environment."""
         self.env = {}
 
-    def set(self, name: str, value: Sub, path: PathCondition) -> None:
-        """Set a configuration under a path condition."""
-        self.configs[name] = guarded(path, value, self.configs.get(name), name)
+    def set(self, name: str, value: Sub, path: PathCondition, *,
+            unset: Sub | None = None) -> None:
+        """Set a configuration under a path condition.
+
+        Where the path does not hold, the old value stays; ``unset`` says what a
+        configuration that was never set means to its readers (``None``: reading fails).
+        """
+        old = self.configs.get(name)
+        self.configs[name] = guarded(path, value, unset if old is None else old, name)
 
     def get(self, name: str) -> Sub | None:
         """Return a configuration's value, or ``None`` when it was never set."""

@@ -520,7 +520,8 @@ class Walker:
         assert combined is not None
         origin = ctx.origin(action.at("namespace"))
         self.record_name("namespace", combined, origin)
-        self.scopes.set(ROS_NAMESPACE, combined, ctx.path)
+        # Without a pushed namespace launch_ros uses none, which names nodes like "/".
+        self.scopes.set(ROS_NAMESPACE, combined, ctx.path, unset=s.Text("/"))
 
     def do_SetRemap(self, action: a.SetRemap, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
