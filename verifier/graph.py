@@ -16,7 +16,7 @@ from launchverify.evaluate.values import BaseReducer, describe_value, text_of
 from launchverify.frontends import LoadedFile
 from launchverify.ir import actions as a
 from launchverify.ir.subst import Sub
-from launchverify.ir.symbolic import PathCondition, describe_path
+from launchverify.ir.symbolic import Guard, PathCondition, describe_path
 from launchverify.problems import Problem
 from launchverify.span import Span
 from launchverify.suggest import typo_of
@@ -186,6 +186,23 @@ class ProblemRecord:
 
 
 @dataclass(frozen=True, slots=True)
+class ConditionRecord:
+    """A condition (``if``/``unless``/``LaunchConfigurationEquals``) as it was evaluated.
+
+    ``origin.span`` is the condition, ``origin.path`` the path condition around it.
+    ``guard`` is what must hold for the action to run (``None`` when the condition was
+    decided during evaluation: ``verdict`` says how). ``literal`` marks a condition
+    written without any input (``if="true"``, ``$(eval '1 < 2')``).
+    """
+
+    origin: Origin
+    text: str
+    guard: Guard | None
+    verdict: bool | None
+    literal: bool
+
+
+@dataclass(frozen=True, slots=True)
 class SkippedAction:
     """An action whose condition is constant false: it never runs."""
 
@@ -211,6 +228,7 @@ class LaunchGraph:
     names: list[NameRecord] = field(default_factory=list)
     problems: list[ProblemRecord] = field(default_factory=list)
     skipped: list[SkippedAction] = field(default_factory=list)
+    conditions: list[ConditionRecord] = field(default_factory=list)
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into

@@ -36,6 +36,7 @@ from launchverify.evaluate.values import is_unset, ns_prefix, text_of
 from launchverify.frontends import LoadedFile
 from launchverify.graph import (
     ArgumentRecord,
+    ConditionRecord,
     ConfigRead,
     FileRef,
     IncludeRecord,
@@ -218,10 +219,12 @@ class Walker:
             return ctx
         reducer = self.reducer.at(ctx, span)
         guard: Guard
+        literal = False
         if isinstance(condition, (c.IfCondition, c.UnlessCondition)):
             negate = isinstance(condition, c.UnlessCondition)
             value = reducer.reduce(condition.expression)
-            guard = Truthy(value, negate)
+            guard = Truthy(value, negate, where=span)
+            literal = is_literal(condition.expression)
         elif isinstance(condition, c.ConfigEquals):
             name = reducer.text(condition.name)
             current = (Unknown("configuration") if name is None
@@ -229,18 +232,21 @@ class Walker:
             if name is not None:
                 self.record_read(name, ctx.origin(span), not isinstance(current, Unset), True)
             expected = None if condition.expected is None else reducer.reduce(condition.expected)
-            guard = StrEquals(current, expected, condition.negate)
+            guard = StrEquals(current, expected, condition.negate, where=span)
         else:
             self.problem(ProblemKind.UNMODELED, f"condition {condition.describe()} is not "
                          "modelled", span, ctx)
-            return ctx.guarded(_opaque(condition.describe()))
+            return ctx.guarded(_opaque(condition.describe(), span))
         verdict = reducer.guard(guard)
+        if isinstance(guard, Truthy) and verdict is None and text_of(guard.expression) is not None:
+            verdict = False  # an invalid constant condition: launch raises (recorded)
+        self.graph.conditions.append(ConditionRecord(
+            ctx.origin(span), condition.describe(), guard if verdict is None else None,
+            verdict, literal))
         if verdict is True:
             return ctx
         if verdict is False:
             return None
-        if isinstance(guard, Truthy) and text_of(guard.expression) is not None:
-            return None  # an invalid constant condition: launch raises (recorded)
         if self.graph.runs(ctx.origin(span)) is not False:
             self.base_check.at(ctx, span).guard(guard)
         return ctx.guarded(guard)
@@ -675,7 +681,16 @@ def _guard_env(ctx: Ctx, value: s.Sub, old: s.Sub | None, name: str) -> s.Sub:
     return guarded(ctx.path, value, previous, name)
 
 
-def _opaque(description: str) -> Guard:
+def _opaque(description: str, where: Span) -> Guard:
     from launchverify.ir.symbolic import Opaque
 
-    return Opaque(description)
+    return Opaque(description, where=where)
+
+
+_LITERAL_PARTS = (s.Text, s.Concat, s.PythonExpr, s.NotSub, s.AndSub, s.OrSub, s.AnySub,
+                  s.AllSub, s.EqualsSub, s.NotEqualsSub, s.IfElse)
+
+
+def is_literal(expression: s.Sub) -> bool:
+    """Return whether a condition is written without any input (``if="true"``)."""
+    return all(isinstance(part, _LITERAL_PARTS) for part in s.walk(expression))

@@ -9,9 +9,10 @@ SMT layer) give these a meaning over every argument assignment.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
 from launchverify.ir.subst import Sub
+from launchverify.span import Span
 
 
 @dataclass(frozen=True, slots=True)
@@ -79,10 +80,14 @@ class Guard:
 
 @dataclass(frozen=True, slots=True)
 class Truthy(Guard):
-    """The expression is ``true``/``1`` by the condition rule (``false``/``0`` if negated)."""
+    """The expression is ``true``/``1`` by the condition rule (``false``/``0`` if negated).
+
+    ``where`` is the condition's place in a file (for explanations; not part of equality).
+    """
 
     expression: Sub
     negate: bool = False
+    where: Span | None = field(default=None, compare=False)
 
     def describe(self) -> str:
         text = self.expression.describe()
@@ -96,6 +101,7 @@ class StrEquals(Guard):
     left: Sub
     right: Sub | None
     negate: bool = False
+    where: Span | None = field(default=None, compare=False)
 
     def describe(self) -> str:
         op = "!=" if self.negate else "=="
@@ -108,6 +114,7 @@ class Opaque(Guard):
     """A guard with no model (Python predicate, event that may never happen)."""
 
     description: str
+    where: Span | None = field(default=None, compare=False)
 
     def describe(self) -> str:
         return f"<{self.description}>"

@@ -1,0 +1,186 @@
+"""The questions rules ask about a launch graph, answered with z3.
+
+Rules never build z3 terms: they ask whether path conditions can hold together (and under
+which arguments), whether a condition can never or must always hold (and why), whether a
+condition can take a value launch rejects, and whether two names can be equal. Answers
+are cached per question; a solver that gives up (timeout) counts as "cannot tell", which
+never produces a finding.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+import z3
+
+from launchverify.graph import LaunchGraph
+from launchverify.ir.subst import Sub
+from launchverify.ir.symbolic import Guard, PathCondition, Truthy
+from launchverify.smt.domains import ArgumentDomain, Mode, argument_domains
+from launchverify.smt.encode import Encoder
+from launchverify.smt.types import Contradiction, Witness
+
+TIMEOUT_MS = 2000
+
+
+class Reasoner:
+    """Answers questions about one graph (one root launch file and its arguments)."""
+
+    def __init__(self, graph: LaunchGraph) -> None:
+        self.graph = graph
+        self.domains: dict[str, ArgumentDomain] = argument_domains(graph)
+        self.encoders = {mode: Encoder(self.domains, mode, graph.pinned) for mode in Mode}
+        self._together: dict[tuple[PathCondition, ...], Witness | None] = {}
+        self._names: dict[tuple[object, ...], tuple[Witness, str] | None] = {}
+        self._never_cache: dict[tuple[PathCondition, Guard], Contradiction | None] = {}
+        self._always: dict[tuple[PathCondition, Guard], bool] = {}
+        self._invalid: dict[tuple[PathCondition, Guard], tuple[str, Witness] | None] = {}
+        self.queries = 0
+
+    # ------------------------------------------------------------------ questions
+
+    def together(self, *paths: PathCondition) -> Witness | None:
+        """Return an assignment of the switches under which every path holds, if any."""
+        if paths not in self._together:
+            encoder = self.encoders[Mode.SWITCHES]
+            formula = z3.And(*[encoder.path(p) for p in paths])
+            self._together[paths] = self._witness(encoder, [formula])
+        return self._together[paths]
+
+    def same_name(self, first: Sub, first_path: PathCondition, second: Sub,
+                  second_path: PathCondition) -> tuple[Witness, str] | None:
+        """Return (assignment, name) where two names are equal and both paths hold."""
+        key = (first, first_path, second, second_path)
+        if key not in self._names:
+            encoder = self.encoders[Mode.SWITCHES]
+            left, right = encoder.name(first), encoder.name(second)
+            formula = z3.And(left == right, encoder.path(first_path), encoder.path(second_path))
+            found = self._model(encoder, [formula])
+            self._names[key] = None if found is None else (
+                self._assignment(encoder, found), _text(found.eval(left, model_completion=True)))
+        return self._names[key]
+
+    def never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
+        """Return why ``guard`` cannot hold where ``path`` does (for any argument values).
+
+        ``None`` when it can, or when ``path`` itself cannot hold (that is reported where
+        the path became impossible).
+        """
+        key = (path, guard)
+        if key not in self._never_cache:
+            self._never_cache[key] = self._never(path, guard)
+        return self._never_cache[key]
+
+    def always(self, path: PathCondition, guard: Guard) -> bool:
+        """Return whether ``guard`` holds for every argument value where ``path`` holds."""
+        key = (path, guard)
+        if key not in self._always:
+            encoder = self.encoders[Mode.ANY]
+            possible = self._check(encoder, [encoder.path(path)]) == z3.sat
+            negated = z3.Not(encoder.holds(guard))
+            self._always[key] = possible and self._check(
+                encoder, [encoder.path(path), negated]) == z3.unsat
+        return self._always[key]
+
+    def invalid_value(self, path: PathCondition, guard: Truthy) -> tuple[str, Witness] | None:
+        """Return a value the condition can take that launch rejects, with the switches."""
+        key = (path, guard)
+        if key not in self._invalid:
+            encoder = self.encoders[Mode.SWITCHES]
+            value = encoder.string(guard.expression)
+            found = None
+            if all(_is_argument(v) for v in _variables(value)):  # unknowns: cannot tell
+                found = self._model(encoder, [encoder.path(path), encoder.raises(guard)])
+            self._invalid[key] = None if found is None else (
+                _text(found.eval(value, model_completion=True)),
+                self._assignment(encoder, found))
+        return self._invalid[key]
+
+    # ------------------------------------------------------------------ machinery
+
+    def _never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
+        encoder = self.encoders[Mode.ANY]
+        if self._check(encoder, [encoder.path(path)]) != z3.sat:
+            return None
+        solver = self._solver()
+        facts = (*path, guard)
+        for index, fact in enumerate(facts):
+            solver.assert_and_track(encoder.holds(fact), f"g{index}")
+        constraints = encoder.domain_constraints()
+        for index, (_, formula) in enumerate(constraints):
+            solver.assert_and_track(formula, f"d{index}")
+        self.queries += 1
+        if solver.check() != z3.unsat:
+            return None
+        core = {str(c) for c in solver.unsat_core()}
+        guards = tuple(f for i, f in enumerate(facts) if f"g{i}" in core)
+        domains = tuple(d for i, (d, _) in enumerate(constraints) if f"d{i}" in core)
+        return Contradiction(guards, domains)
+
+    def _solver(self) -> z3.Solver:
+        solver = z3.Solver()
+        solver.set("timeout", TIMEOUT_MS)
+        return solver
+
+    def _check(self, encoder: Encoder, formulas: Iterable[z3.BoolRef]) -> z3.CheckSatResult:
+        solver = self._solver()
+        formulas = list(formulas)
+        solver.add(*formulas)
+        solver.add(*[f for _, f in encoder.domain_constraints()])
+        self.queries += 1
+        return solver.check()
+
+    def _model(self, encoder: Encoder, formulas: list[z3.BoolRef]) -> z3.ModelRef | None:
+        solver = self._solver()
+        solver.add(*formulas)
+        solver.add(*[f for _, f in encoder.domain_constraints()])
+        self.queries += 1
+        if solver.check() != z3.sat:
+            return None
+        model: z3.ModelRef = solver.model()
+        return model
+
+    def _witness(self, encoder: Encoder, formulas: list[z3.BoolRef]) -> Witness | None:
+        model = self._model(encoder, formulas)
+        return None if model is None else self._assignment(encoder, model)
+
+    def _assignment(self, encoder: Encoder, model: z3.ModelRef) -> Witness:
+        """Return the given arguments of a model that differ from their default."""
+        values: dict[str, str] = {}
+        for name in sorted(encoder.arguments):
+            domain = self.domains.get(name)
+            if domain is None or domain.pinned is not None:
+                continue
+            if not z3.is_true(model.eval(encoder.given(name), model_completion=True)):
+                continue
+            value = _text(model.eval(encoder.cli(name), model_completion=True))
+            if domain.defaults != {value}:
+                values[name] = value
+        return Witness(values)
+
+
+
+def _variables(term: z3.ExprRef) -> list[z3.ExprRef]:
+    """Return the free constants of a term (shared subterms visited once)."""
+    found: dict[int, z3.ExprRef] = {}
+    visited: set[int] = set()
+    stack = [term]
+    while stack:
+        item = stack.pop()
+        if item.get_id() in visited:
+            continue
+        visited.add(item.get_id())
+        if z3.is_const(item) and item.decl().kind() == z3.Z3_OP_UNINTERPRETED:
+            found[item.get_id()] = item
+            continue
+        stack.extend(item.children())
+    return list(found.values())
+
+
+def _is_argument(variable: z3.ExprRef) -> bool:
+    name: str = variable.decl().name()
+    return name.startswith(("arg:", "given:"))
+
+
+def _text(value: z3.ExprRef) -> str:
+    return str(value.as_string()) if z3.is_string_value(value) else str(value)
