@@ -131,6 +131,15 @@ class IncludeRecord:
     note: str = ""
     relative: bool = False
 
+    def missing_required(self) -> list[StaticArgument]:
+        """Return the required arguments this include does not pass (launch raises)."""
+        given = {name for name, _value, _span in self.arguments if name is not None}
+        return [
+            argument for argument in self.static_arguments
+            if not argument.has_default and not argument.conditional
+            and argument.name not in given.union(*argument.via_includes)
+        ]
+
 
 @dataclass(frozen=True, slots=True)
 class ConfigRead:

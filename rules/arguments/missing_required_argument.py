@@ -41,13 +41,7 @@ class MissingRequiredArgument(Rule):
         for include in graph.includes:
             if include.status != "loaded" or include.target is None:
                 continue
-            given = {name for name, _value, _span in include.arguments if name is not None}
-            for argument in include.static_arguments:
-                if argument.has_default or argument.conditional:
-                    continue
-                names = given.union(*argument.via_includes)
-                if argument.name in names:
-                    continue
+            for argument in include.missing_required():
                 yield self.finding(
                     include.origin,
                     related=(Related(argument.span, "declared here without a default"),),

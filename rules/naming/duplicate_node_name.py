@@ -2,21 +2,37 @@
 
 from __future__ import annotations
 
+from collections import defaultdict
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph, NodeRecord
-from launchverify.models.ros_names import node_fqn
+from launchverify.ir import subst as s
+from launchverify.ir.symbolic import Arg, Opaque, Select
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+from launchverify.smt import Witness, reasoner_for
+from launchverify.smt.domains import argument_domains
 
 
 class DuplicateNodeName(Rule):
-    """Two nodes that run together resolve to the same fully qualified name.
+    """Two nodes that can run together can have the same fully qualified name.
 
     ## What it does
     Resolves every node's namespace (pushed namespaces, `namespace=`, absolute names) and
-    name as ROS 2 does and reports a node whose fully qualified name is already taken by
-    another node started in the same launch. A node launched without a namespace is in
-    `/`. Nodes under conditions that exclude each other are not compared.
+    name as ROS 2 does, and reports a node whose fully qualified name can equal another
+    node's while both run. It checks every combination of the launch's *switches*
+    (arguments with `choices`, or with a boolean default such as `use_sim:=true`), with
+    the other arguments at their defaults or at the values given on the command line; the
+    finding names the argument values that make the collision happen. Nodes under
+    conditions that exclude each other (`if`/`unless` of one argument, different
+    `LaunchConfigurationEquals` values) are not duplicates. A node launched without a
+    namespace is in `/`.
+
+    Arguments that are not switches (a `namespace` or `robot_name` argument) are not
+    varied: they name one robot per launch, and letting them take any value would make
+    every namespaced node collide with every other one. What the launch cannot know (an
+    argument without default, an environment variable) only makes two names equal when
+    they use it in the same place. Nodes under conditions launchverify cannot model are
+    not compared.
 
     ## Why it matters
     ROS 2 starts both. Parameter services, lifecycle transitions, `ros2 node` tools and
@@ -24,9 +40,11 @@ class DuplicateNodeName(Rule):
 
     ## Example
     ```xml
+    <arg name="use_sim" default="false"/>
     <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>
-    <node pkg="demo_nodes_py" exec="talker" name="talker"/>
+    <node pkg="demo_nodes_py" exec="talker" name="talker" if="$(var use_sim)"/>
     ```
+    (with `use_sim:=true`, two nodes are called `/talker`)
 
     ## Fix
     Rename one node, push it into its own namespace (`<group>` with
@@ -39,29 +57,101 @@ class DuplicateNodeName(Rule):
     message = "node name {fqn} is already used by the node at {other}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        first: dict[str, NodeRecord] = {}
-        for node in graph.running_nodes():
-            fqn = resolved_fqn(graph, node)
-            if fqn is None:
+        switches = {n for n, d in argument_domains(graph).items() if d.switch}
+        fixed_by_text: dict[str, list[NodeRecord]] = defaultdict(list)
+        variable_by_name: dict[str, list[NodeRecord]] = defaultdict(list)
+        all_by_name: dict[str, list[NodeRecord]] = defaultdict(list)
+        seen: list[NodeRecord] = []
+        position: dict[int, int] = {}  # launch order of the nodes seen
+        for node in graph.nodes:
+            if node.fqn is None or any(isinstance(g, Opaque) for g in node.origin.path):
                 continue
-            earlier = first.get(fqn)
-            if earlier is None:
-                first[fqn] = node
-                continue
-            yield self.finding(
-                node.origin,
-                related=(Related(earlier.origin.span, "first started here"),),
-                fqn=fqn,
-                other=earlier.origin.span.short(),
-            )
+            fixed = fixed_name(graph, node, switches)
+            key = name_key(graph, node)
+            if key == "*":
+                candidates = [(n, False) for n in seen]
+            elif fixed is not None:
+                candidates = [(n, True) for n in fixed_by_text[fixed]]
+                candidates += [(n, False) for n in variable_by_name[key]]
+                candidates += [(n, False) for n in all_by_name["*"]]
+            else:
+                candidates = [(n, False) for n in (*all_by_name[key], *all_by_name["*"])]
+            candidates.sort(key=lambda candidate: position[id(candidate[0])])
+            found = first_collision(graph, node, candidates)
+            if found is not None:
+                other, fqn, witness = found
+                yield self.finding(
+                    node.origin,
+                    related=(Related(other.origin.span, "first started here"),),
+                    witness=witness.values or None,
+                    fqn=fqn,
+                    other=other.origin.span.short(),
+                )
+            position[id(node)] = len(seen)
+            seen.append(node)
+            all_by_name[key].append(node)
+            if fixed is not None:
+                fixed_by_text[fixed].append(node)
+            else:
+                variable_by_name[key].append(node)
 
 
-def resolved_fqn(graph: LaunchGraph, node: NodeRecord) -> str | None:
-    """Return a node's fully qualified name under the given arguments, if known."""
+def first_collision(graph: LaunchGraph, node: NodeRecord,
+                    earlier: list[tuple[NodeRecord, bool]]
+                    ) -> tuple[NodeRecord, str, Witness] | None:
+    """Return the first earlier node this one can collide with (name, switches)."""
+    for other, same_fixed_name in earlier:
+        found = collision(graph, other, node, same_fixed_name)
+        if found is not None:
+            return (other, *found)
+    return None
+
+
+def collision(graph: LaunchGraph, first: NodeRecord, second: NodeRecord,
+              same_fixed_name: bool) -> tuple[str, Witness] | None:
+    """Return (name, witness) when two nodes can run together under one name.
+
+    ``same_fixed_name``: both names are the same whatever the switches, so only the path
+    conditions matter.
+    """
+    assert first.fqn is not None and second.fqn is not None
+    first_text, second_text = graph.base(first.fqn), graph.base(second.fqn)
+    if (first_text is not None and first_text == second_text
+            and graph.runs(first.origin) and graph.runs(second.origin)):
+        return first_text, Witness()  # under the arguments as given: no solver needed
+    reasoner = reasoner_for(graph)
+    if same_fixed_name:
+        witness = reasoner.together(first.origin.path, second.origin.path)
+        shown = first_text if first_text is not None else first.fqn.describe()
+        return None if witness is None else (shown, witness)
+    found = reasoner.same_name(first.fqn, first.origin.path, second.fqn, second.origin.path)
+    if found is None:
+        return None
+    witness, name = found
+    return (name if "\x01" not in name else second.fqn.describe()), witness
+
+
+def fixed_name(graph: LaunchGraph, node: NodeRecord, switches: set[str]) -> str | None:
+    """Return a key for a name no switch changes (its text, or its expression), else None."""
+    assert node.fqn is not None
+    if _varies(node.fqn, switches):
+        return None
+    text = graph.base(node.fqn)
+    return text if text is not None else "?" + node.fqn.describe()
+
+
+def name_key(graph: LaunchGraph, node: NodeRecord) -> str:
+    """Return the node's own name (the last segment), or ``*`` when it is not known."""
     name = graph.base(node.name)
     if name is None:
-        return None
-    namespace = "/" if node.namespace is None else graph.base(node.namespace)
-    if namespace is None:
-        return None
-    return node_fqn(namespace, name.lstrip("/"))
+        fqn = graph.base(node.fqn)
+        if fqn is None:
+            return "*"
+        name = fqn
+    return name.rstrip("/").rpartition("/")[2]
+
+
+def _varies(sub: s.Sub, switches: set[str]) -> bool:
+    """Return whether a value can change with the switches (or with the path taken)."""
+    return any(isinstance(part, Select) or (isinstance(part, Arg) and part.name in switches)
+               for part in s.walk(sub))

@@ -53,8 +53,8 @@ class NodeBuilder:
         if namespace is not None:
             self.walker.record_name("namespace", namespace, ctx.origin(action.at("namespace")))
         fqn = None
-        if name is not None and namespace is not None:
-            fqn = ns_prefix(namespace, name)
+        if name is not None:  # without any namespace, a node is in "/"
+            fqn = ns_prefix(namespace if namespace is not None else s.Text("/"), name)
         reducer = self.walker.reducer.at(ctx, action.span)
         for argument in (*action.arguments, *action.ros_arguments):
             reducer.reduce(argument)

@@ -393,6 +393,10 @@ class Walker:
             if name is not None:
                 self.scopes.set(name, value, ctx.path)
         record.arguments = tuple(arguments)
+        missing = record.missing_required()
+        if missing:  # launch raises here: what the file would start is not certain to run
+            inner = inner.guarded(_opaque(f"{target.name} misses required argument "
+                                          f"{missing[0].name!r}", action.span))
         self.include_stack.append(record)
         self.file_stack.append(key)
         self.record_lookups(loaded.launch.lookups, inner)

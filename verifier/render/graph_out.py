@@ -118,9 +118,9 @@ class GraphView:
 
 def _has_inputs(sub: Sub) -> bool:
     from launchverify.ir.subst import walk
-    from launchverify.ir.symbolic import Arg, EnvInput
+    from launchverify.ir.symbolic import Arg, EnvInput, Select
 
-    return any(isinstance(x, (Arg, EnvInput)) for x in walk(sub))
+    return any(isinstance(x, (Arg, EnvInput, Select)) for x in walk(sub))
 
 
 def render_graph_json(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False) -> None:
