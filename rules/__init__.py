@@ -8,6 +8,9 @@ from launchverify.rules.arguments.missing_required_argument import MissingRequir
 from launchverify.rules.arguments.undeclared_argument import UndeclaredArgument
 from launchverify.rules.arguments.unknown_include_argument import UnknownIncludeArgument
 from launchverify.rules.arguments.unused_argument import UnusedArgument
+from launchverify.rules.conditions.constant_condition import ConstantCondition
+from launchverify.rules.conditions.invalid_condition_value import InvalidConditionValue
+from launchverify.rules.conditions.unreachable_condition import UnreachableCondition
 from launchverify.rules.files.include_cycle import IncludeCycle
 from launchverify.rules.files.missing_file import MissingFile
 from launchverify.rules.files.unknown_package import UnknownPackage
@@ -27,6 +30,9 @@ BUILTIN: tuple[type[Rule], ...] = (
     UnusedArgument,           # LV202
     InvalidDefault,           # LV203
     UnknownIncludeArgument,   # LV204
+    UnreachableCondition,     # LV205
+    ConstantCondition,        # LV206
+    InvalidConditionValue,    # LV207
     MissingRequiredArgument,  # LV208
     IncludeCycle,             # LV301
     MissingFile,              # LV302

@@ -15,8 +15,8 @@ from pathlib import Path
 from launchverify.evaluate.values import BaseReducer, describe_value, text_of
 from launchverify.frontends import LoadedFile
 from launchverify.ir import actions as a
-from launchverify.ir.subst import Sub
-from launchverify.ir.symbolic import Guard, PathCondition, describe_path
+from launchverify.ir.subst import Sub, Text
+from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy, describe_path
 from launchverify.problems import Problem
 from launchverify.span import Span
 from launchverify.suggest import typo_of
@@ -199,16 +199,28 @@ class ConditionRecord:
     """A condition (``if``/``unless``/``LaunchConfigurationEquals``) as it was evaluated.
 
     ``origin.span`` is the condition, ``origin.path`` the path condition around it.
-    ``guard`` is what must hold for the action to run (``None`` when the condition was
-    decided during evaluation: ``verdict`` says how). ``literal`` marks a condition
-    written without any input (``if="true"``, ``$(eval '1 < 2')``).
+    ``guard`` is what must hold for the action to run; ``verdict`` is ``True``/``False``
+    when evaluation decided it (a constant, or a value the path condition fixes), else
+    ``None``. ``literal`` marks a condition written without any input (``if="true"``,
+    ``$(eval '1 < 2')``).
     """
 
     origin: Origin
     text: str
-    guard: Guard | None
+    guard: Guard
     verdict: bool | None
     literal: bool
+
+    @property
+    def symbolic(self) -> bool:
+        """Return whether the condition depends on inputs (arguments, environment...)."""
+        guard = self.guard
+        if isinstance(guard, Truthy):
+            return not isinstance(guard.expression, Text)
+        if isinstance(guard, StrEquals):
+            return not (isinstance(guard.left, Text)
+                        and (guard.right is None or isinstance(guard.right, Text)))
+        return False
 
 
 @dataclass(frozen=True, slots=True)

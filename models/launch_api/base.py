@@ -132,7 +132,12 @@ class Action(LaunchDescriptionEntity):
 
     def common(self, cv: Converter) -> dict[str, Any]:
         """Return the keyword arguments every IR action takes."""
-        return {"span": self._span, "condition": cv.condition(self.__condition)}
+        common: dict[str, Any] = {"span": self._span,
+                                  "condition": cv.condition(self.__condition)}
+        where = getattr(self.__condition, "_span", None)
+        if where is not None:  # findings about the condition point at it
+            common["attr_spans"] = {"if": where}
+        return common
 
     def execute(self, context: Any) -> None:
         """Do nothing: statically nothing executes."""

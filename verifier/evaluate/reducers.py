@@ -97,6 +97,22 @@ class ScopeReducer(_Located, Reducer):
             return Unset(name) if default is None else self.reduce(default)
         if default is not None and is_unset(value):
             return fill_unset(value, self.reduce(default))
+        return self.decided(value)
+
+    def decided(self, value: s.Sub) -> s.Sub:
+        """Pick the branch of a path-dependent value that the current path decides.
+
+        Shallow on purpose: values share structure, and reducing them whole would
+        unfold that sharing.
+        """
+        while isinstance(value, Select) and self.ctx is not None and self.ctx.path:
+            verdicts = [self.guard(g) for g in value.guards]
+            if False in verdicts:
+                value = value.otherwise
+            elif all(v is True for v in verdicts):
+                value = value.then
+            else:
+                break
         return value
 
     def environment(self, name: str, default: s.Sub | None) -> s.Sub:

@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from launchverify.ir.subst import Sub, tree_size
+from launchverify.ir.subst import Sub, Text, tree_size
 from launchverify.ir.symbolic import PathCondition, Select, Unknown, Unset
 
 ROS_NAMESPACE = "ros_namespace"
@@ -43,21 +43,38 @@ class ScopedParam:
 
 
 MAX_VALUE_SIZE = 2000
+MAX_TEXT_SIZE = 100_000  # characters
 
 
 def guarded(path: PathCondition, new: Sub, old: Sub | None, name: str) -> Sub:
     """Return the value after an assignment made under ``path``.
 
-    A value that grows past ``MAX_VALUE_SIZE`` (a file doubling a configuration under
-    conditions, say) becomes unknown instead of exponentially large.
+    A value that grows past ``MAX_VALUE_SIZE`` parts or ``MAX_TEXT_SIZE`` characters (a
+    file doubling a configuration, say) becomes unknown instead of exponentially large.
     """
     if path:
         previous = Unset(name) if old is None else old
         if previous != new:
             new = Select(path, new, previous)
-    if tree_size(new, MAX_VALUE_SIZE) > MAX_VALUE_SIZE:
+    if tree_size(new, MAX_VALUE_SIZE) > MAX_VALUE_SIZE or text_size(new) > MAX_TEXT_SIZE:
         return Unknown(f"value of {name} (too complex to follow)")
     return new
+
+
+def text_size(sub: Sub) -> int:
+    """Return how many characters of literal text a value holds (each shared part once)."""
+    seen: set[int] = set()
+    total = 0
+    stack = [sub]
+    while stack:
+        item = stack.pop()
+        if id(item) in seen:
+            continue
+        seen.add(id(item))
+        if isinstance(item, Text):
+            total += len(item.text)
+        stack.extend(item.children())
+    return total
 
 
 class Scopes:

@@ -241,8 +241,7 @@ class Walker:
         if isinstance(guard, Truthy) and verdict is None and text_of(guard.expression) is not None:
             verdict = False  # an invalid constant condition: launch raises (recorded)
         self.graph.conditions.append(ConditionRecord(
-            ctx.origin(span), condition.describe(), guard if verdict is None else None,
-            verdict, literal))
+            ctx.origin(span), condition.describe(), guard, verdict, literal))
         if verdict is True:
             return ctx
         if verdict is False:

@@ -9,9 +9,9 @@ def generate_launch_description():
     return LaunchDescription([
         DeclareLaunchArgument('camera', default_value='on'),
         DeclareLaunchArgument('headless', default_value='True'),
-        Node(package='usb_cam', executable='usb_cam_node_exe', name='camera',  # expect: LV002
-             condition=IfCondition(LaunchConfiguration('camera'))),
+        Node(package='usb_cam', executable='usb_cam_node_exe', name='camera',
+             condition=IfCondition(LaunchConfiguration('camera'))),  # expect: LV002
         # 'True' is fine: launch lowercases before comparing
-        Node(package='rviz2', executable='rviz2', name='rviz',  # expect-not: LV002
-             condition=UnlessCondition(LaunchConfiguration('headless'))),
+        Node(package='rviz2', executable='rviz2', name='rviz',
+             condition=UnlessCondition(LaunchConfiguration('headless'))),  # expect-not: LV002
     ])

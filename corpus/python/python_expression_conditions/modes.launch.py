@@ -25,6 +25,6 @@ def generate_launch_description():
             cmd=['ros2', 'bag', 'record', '-o', LaunchConfiguration('bag_nme'), '/scan'],
             condition=IfCondition(PythonExpression(["'", mode, "' == 'mapping'"]))),
         # the quotes are missing: eval("mapping == 'mapping'") raises NameError
-        Node(package='demo_nodes_cpp', executable='listener', name='map_saver',  # expect: LV002
-             condition=IfCondition(PythonExpression([mode, " == 'mapping'"]))),
+        Node(package='demo_nodes_cpp', executable='listener', name='map_saver',
+             condition=IfCondition(PythonExpression([mode, " == 'mapping'"]))),  # expect: LV002
     ])

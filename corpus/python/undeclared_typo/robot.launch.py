@@ -9,8 +9,8 @@ def generate_launch_description():
     use_sim_time = LaunchConfiguration('use_sim_time')
     return LaunchDescription([
         DeclareLaunchArgument('use_sim_time', default_value='false'),
-        Node(package='demo_nodes_cpp', executable='talker', name='talker',  # expect: LV201
-             condition=IfCondition(LaunchConfiguration('use_sim_tme'))),
+        Node(package='demo_nodes_cpp', executable='talker', name='talker',
+             condition=IfCondition(LaunchConfiguration('use_sim_tme'))),  # expect: LV201
         Node(package='demo_nodes_cpp', executable='listener', name='listener',
              parameters=[{'use_sim_time': use_sim_time}]),
     ])

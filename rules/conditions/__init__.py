@@ -1,0 +1,1 @@
+"""Rules about conditions: never true, always true, values launch rejects."""

@@ -1,0 +1,58 @@
+"""LV206 constant-condition."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launchverify.graph import LaunchGraph
+from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.smt import reasoner_for
+
+
+class ConstantCondition(Rule):
+    """A condition that is always true where it is evaluated.
+
+    ## What it does
+    Reports a condition written without any input (`if="true"`, `$(eval '1 < 2')`), and a
+    condition on launch arguments that every argument value makes true, given the
+    conditions of the groups and includes around it (a group `if="$(var sim)"` holding a
+    node `if="$(var sim)"`). Arguments range over every value `ros2 launch` accepts. A
+    condition in a file reached through several launches is reported only when it is
+    always true in all of them.
+
+    ## Why it matters
+    The condition does nothing, which is rarely what its author meant: often a copy of
+    the enclosing condition where its opposite was intended, or a leftover switch.
+
+    ## Example
+    ```xml
+    <group if="$(var use_sim)">
+      <node pkg="gazebo_ros" exec="spawn_entity.py" if="$(var use_sim)"/>
+    </group>
+    ```
+
+    ## Fix
+    Remove the condition, or write the one that was meant.
+    """
+
+    code = "LV206"
+    slug = "constant-condition"
+    severity = Severity.INFO
+    message = "`{condition}` is always true{where}"
+    every_context = True
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        for record in graph.conditions:
+            if not record.symbolic:
+                if record.verdict is True and record.literal:
+                    yield self.finding(record.origin, condition=record.text, where="")
+                continue
+            if record.verdict is False:
+                continue
+            reasoner = reasoner_for(graph)
+            if not reasoner.always(record.origin.path, record.guard):
+                continue
+            alone = reasoner.always((), record.guard)
+            where = "" if alone else (
+                " inside `" + " and ".join(g.describe() for g in record.origin.path) + "`")
+            yield self.finding(record.origin, condition=record.text, where=where)
