@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
+from launchverify.ir.symbolic import describe_placed
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.smt import reasoner_for
 
@@ -53,6 +54,6 @@ class ConstantCondition(Rule):
             if not reasoner.always(record.origin.path, record.guard):
                 continue
             alone = reasoner.always((), record.guard)
-            where = "" if alone else (
-                " inside `" + " and ".join(g.describe() for g in record.origin.path) + "`")
+            where = "" if alone else " under " + " and ".join(
+                describe_placed(g) for g in record.origin.path)
             yield self.finding(record.origin, condition=record.text, where=where)

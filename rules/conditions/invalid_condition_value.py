@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import Truthy
+from launchverify.models.booleans import InvalidBoolean, condition_truth
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.smt import reasoner_for
 
@@ -45,6 +46,9 @@ class InvalidConditionValue(Rule):
         for record in graph.conditions:
             if record.verdict is not None or not isinstance(record.guard, Truthy):
                 continue
+            base = graph.base(record.guard.expression)
+            if base is not None and not is_boolean(base) and graph.runs(record.origin):
+                continue  # invalid under the arguments as given: LV002 says so
             found = reasoner_for(graph).invalid_value(record.origin.path, record.guard)
             if found is None:
                 continue
@@ -53,3 +57,12 @@ class InvalidConditionValue(Rule):
                 continue  # under the arguments as given: LV002 says so
             yield self.finding(record.origin, witness=witness.values, condition=record.text,
                                value=value, arguments=witness.describe())
+
+
+def is_boolean(value: str) -> bool:
+    """Return whether the condition rule accepts ``value``."""
+    try:
+        condition_truth(value)
+    except InvalidBoolean:
+        return False
+    return True

@@ -139,6 +139,12 @@ class Select(Sub):
         return (self.then, self.otherwise)
 
 
+def describe_placed(guard: Guard) -> str:
+    """Return a guard in backquotes, with where it is written (``a.launch.xml:3``)."""
+    span: Span | None = getattr(guard, "where", None)
+    return f"`{guard.describe()}`" + (f" ({span.short()})" if span is not None else "")
+
+
 def describe_path(path: PathCondition) -> str | None:
     """Return the text of a path condition, or ``None`` when it always holds."""
     if not path:

@@ -57,7 +57,8 @@ class Reasoner:
             formula = z3.And(left == right, encoder.path(first_path), encoder.path(second_path))
             found = self._model(encoder, [formula])
             self._names[key] = None if found is None else (
-                self._assignment(encoder, found), _text(found.eval(left, model_completion=True)))
+                self._assignment(encoder, found, [formula]),
+                _text(found.eval(left, model_completion=True)))
         return self._names[key]
 
     def never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
@@ -89,11 +90,12 @@ class Reasoner:
             encoder = self.encoders[Mode.SWITCHES]
             value = encoder.string(guard.expression)
             found = None
+            formulas = [encoder.path(path), encoder.raises(guard)]
             if all(_is_argument(v) for v in _variables(value)):  # unknowns: cannot tell
-                found = self._model(encoder, [encoder.path(path), encoder.raises(guard)])
+                found = self._model(encoder, formulas)
             self._invalid[key] = None if found is None else (
                 _text(found.eval(value, model_completion=True)),
-                self._assignment(encoder, found))
+                self._assignment(encoder, found, formulas))
         return self._invalid[key]
 
     # ------------------------------------------------------------------ machinery
@@ -112,6 +114,9 @@ class Reasoner:
         self.queries += 1
         if solver.check() != z3.unsat:
             return None
+        if isinstance(guard, Truthy) and self._check(
+                encoder, [encoder.path(path), z3.Not(encoder.raises(guard))]) != z3.sat:
+            return None  # never a boolean at all: launch raises (LV002/LV207 say so)
         core = {str(c) for c in solver.unsat_core()}
         guards = tuple(f for i, f in enumerate(facts) if f"g{i}" in core)
         domains = tuple(d for i, (d, _) in enumerate(constraints) if f"d{i}" in core)
@@ -142,12 +147,15 @@ class Reasoner:
 
     def _witness(self, encoder: Encoder, formulas: list[z3.BoolRef]) -> Witness | None:
         model = self._model(encoder, formulas)
-        return None if model is None else self._assignment(encoder, model)
+        return None if model is None else self._assignment(encoder, model, formulas)
 
-    def _assignment(self, encoder: Encoder, model: z3.ModelRef) -> Witness:
-        """Return the given arguments of a model that differ from their default."""
+    def _assignment(self, encoder: Encoder, model: z3.ModelRef,
+                    formulas: list[z3.BoolRef]) -> Witness:
+        """Return the arguments a question depends on that the model gives a new value."""
+        names = {v.decl().name().partition(":")[2] for f in formulas for v in _variables(f)
+                 if _is_argument(v)}
         values: dict[str, str] = {}
-        for name in sorted(encoder.arguments):
+        for name in sorted(names):
             domain = self.domains.get(name)
             if domain is None or domain.pinned is not None:
                 continue

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from launchverify.ir.symbolic import Guard
+from launchverify.ir.symbolic import Guard, describe_placed
 
 
 @dataclass(frozen=True)
@@ -32,10 +32,6 @@ class Contradiction:
 
     def describe(self) -> str:
         """Return the clashing facts, each with where it is written."""
-        parts = []
-        for guard in self.guards:
-            span = getattr(guard, "where", None)
-            where = f" ({span.short()})" if span is not None else ""
-            parts.append(f"`{guard.describe()}`{where}")
+        parts = [describe_placed(guard) for guard in self.guards]
         parts.extend(self.domains)
         return " and ".join(parts)
