@@ -11,7 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from launchverify.evaluate.reducers import Ctx
+from launchverify.evaluate.reducers import Ctx, ScopeReducer
 from launchverify.evaluate.scope import GLOBAL_PARAMS, ROS_NAMESPACE, ROS_REMAPS
 from launchverify.evaluate.values import ns_prefix, text_of
 from launchverify.frontends.subst_parser import SubstitutionSyntaxError, parse_substitution
@@ -49,7 +49,7 @@ class NodeBuilder:
             self.walker.record_name("node name", name, ctx.origin(action.at("name")))
         reducer = self.walker.reducer.at(ctx, action.at("namespace"))
         own_ns = None if action.namespace is None else reducer.reduce(action.namespace)
-        namespace = ns_prefix(self.walker.scopes.get(ROS_NAMESPACE), own_ns)
+        namespace = ns_prefix(self.pushed_namespace(reducer), own_ns)
         if namespace is not None:
             self.walker.record_name("namespace", namespace, ctx.origin(action.at("namespace")))
         fqn = None
@@ -89,7 +89,7 @@ class NodeBuilder:
         if name is not None:
             self.walker.record_name("node name", name, inner.origin(node.at("name")))
         own_ns = None if node.namespace is None else reducer.reduce(node.namespace)
-        namespace = ns_prefix(self.walker.scopes.get(ROS_NAMESPACE), own_ns)
+        namespace = ns_prefix(self.pushed_namespace(reducer), own_ns)
         if namespace is not None:
             self.walker.record_name("namespace", namespace, inner.origin(node.at("namespace")))
         fqn = None
@@ -124,6 +124,11 @@ class NodeBuilder:
             self.walker.record_name("remap", dst, origin)
             out.append(RemapRecord(src, dst, origin))
         return out
+
+    def pushed_namespace(self, reducer: ScopeReducer) -> s.Sub | None:
+        """Return the namespace pushed around the node, as the current path decides it."""
+        pushed = self.walker.scopes.get(ROS_NAMESPACE)
+        return None if pushed is None else reducer.decided(pushed)
 
     def scope_params(self, ctx: Ctx) -> list[ParamRecord]:
         """Return SetParameter/SetParametersFromFile values in scope (they come first)."""

@@ -525,7 +525,7 @@ class Walker:
         reducer = self.reducer.at(ctx, action.span)
         pushed = reducer.reduce(action.namespace)
         previous = self.scopes.get(ROS_NAMESPACE)
-        combined = ns_prefix(previous, pushed)
+        combined = ns_prefix(None if previous is None else reducer.decided(previous), pushed)
         assert combined is not None
         origin = ctx.origin(action.at("namespace"))
         self.record_name("namespace", combined, origin)

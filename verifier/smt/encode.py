@@ -15,7 +15,7 @@ they match whatever that value is.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 
 import z3
 
@@ -50,6 +50,7 @@ class Encoder:
         self._memo: dict[tuple[int, bool], z3.ExprRef] = {}
         self._keep: list[object] = []  # memo keys are ids: keep their objects alive
         self._fqn = False
+        self._domains_memo: dict[str, list[tuple[str, z3.BoolRef]]] = {}
         self._dispatch: dict[type, Callable[[s.Sub], z3.SeqRef]] = {
             s.Text: self._text,
             s.Concat: self._concat,
@@ -115,18 +116,25 @@ class Encoder:
         value = self.string(guard.expression)
         return z3.Not(z3.Or(rx.condition_true(value), rx.condition_false(value)))
 
-    def domain_constraints(self) -> list[tuple[str, z3.BoolRef]]:
-        """Return (description, formula) for the arguments met so far."""
+    def domain_constraints(self, names: Iterable[str] | None = None
+                           ) -> list[tuple[str, z3.BoolRef]]:
+        """Return (description, formula) for these arguments (default: all met so far)."""
         out = []
-        for name in sorted(self.arguments):
-            domain = self.domains.get(name)
-            if domain is None:
-                continue
-            given, value = self.given(name), self.cli(name)
-            if domain.pinned is not None:
-                out.append((domain.describe(self.mode),
-                            z3.And(given, value == z3.StringVal(domain.pinned))))
-                continue
+        for name in sorted(self.arguments if names is None else names):
+            out.extend(self._domain(name))
+        return out
+
+    def _domain(self, name: str) -> list[tuple[str, z3.BoolRef]]:
+        cached = self._domains_memo.get(name)
+        if cached is not None:
+            return cached
+        out: list[tuple[str, z3.BoolRef]] = []
+        domain = self.domains.get(name)
+        given, value = self.given(name), self.cli(name)
+        if domain is not None and domain.pinned is not None:
+            out.append((domain.describe(self.mode),
+                        z3.And(given, value == z3.StringVal(domain.pinned))))
+        elif domain is not None:
             values = domain.values(self.mode)
             if values is not None:
                 out.append((domain.describe(self.mode),
@@ -135,6 +143,7 @@ class Encoder:
                 out.append((f"{name} has no default: it must be given", given))
             elif self.mode is Mode.SWITCHES and not domain.switch:
                 out.append((f"{name} keeps its default", z3.Not(given)))
+        self._domains_memo[name] = out
         return out
 
     def given(self, name: str) -> z3.BoolRef:

@@ -13,11 +13,14 @@ from collections.abc import Iterable
 
 import z3
 
+from launchverify.evaluate.values import BaseReducer
 from launchverify.graph import LaunchGraph
 from launchverify.ir.subst import Sub
 from launchverify.ir.symbolic import Guard, PathCondition, Truthy
+from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
 from launchverify.smt.domains import ArgumentDomain, Mode, argument_domains
 from launchverify.smt.encode import Encoder
+from launchverify.smt.search import Search, all_hold, holds
 from launchverify.smt.types import Contradiction, Witness
 
 TIMEOUT_MS = 2000
@@ -35,6 +38,7 @@ class Reasoner:
         self._never_cache: dict[tuple[PathCondition, Guard], Contradiction | None] = {}
         self._always: dict[tuple[PathCondition, Guard], bool] = {}
         self._invalid: dict[tuple[PathCondition, Guard], tuple[str, Witness] | None] = {}
+        self.search = Search(self.domains, graph.pinned)
         self.queries = 0
 
     # ------------------------------------------------------------------ questions
@@ -42,9 +46,14 @@ class Reasoner:
     def together(self, *paths: PathCondition) -> Witness | None:
         """Return an assignment of the switches under which every path holds, if any."""
         if paths not in self._together:
-            encoder = self.encoders[Mode.SWITCHES]
-            formula = z3.And(*[encoder.path(p) for p in paths])
-            self._together[paths] = self._witness(encoder, [formula])
+            guards = [g for p in paths for g in p]
+            tried = self.search.run(Mode.SWITCHES, guards, lambda r: all_hold(r, guards))
+            if tried.found is not None or tried.exhaustive:
+                self._together[paths] = self._tried(tried.found)
+            else:
+                encoder = self.encoders[Mode.SWITCHES]
+                formula = z3.And(*[encoder.path(p) for p in paths])
+                self._together[paths] = self._witness(encoder, [formula])
         return self._together[paths]
 
     def same_name(self, first: Sub, first_path: PathCondition, second: Sub,
@@ -52,6 +61,25 @@ class Reasoner:
         """Return (assignment, name) where two names are equal and both paths hold."""
         key = (first, first_path, second, second_path)
         if key not in self._names:
+            guards = (*first_path, *second_path)
+
+            def same(reducer: BaseReducer) -> bool | None:
+                paths = all_hold(reducer, guards)
+                if paths is False:
+                    return False
+                left, right = reducer.text(first), reducer.text(second)
+                if left is None or right is None or paths is None:
+                    return None
+                return left == right
+
+            tried = self.search.run(Mode.SWITCHES, [*guards, first, second], same)
+            if tried.found is not None and tried.reducer is not None:
+                name = tried.reducer.text(first) or first.describe()
+                self._names[key] = (self._tried(tried.found) or Witness(), name)
+                return self._names[key]
+            if tried.exhaustive:
+                self._names[key] = None
+                return None
             encoder = self.encoders[Mode.SWITCHES]
             left, right = encoder.name(first), encoder.name(second)
             formula = z3.And(left == right, encoder.path(first_path), encoder.path(second_path))
@@ -69,13 +97,27 @@ class Reasoner:
         """
         key = (path, guard)
         if key not in self._never_cache:
-            self._never_cache[key] = self._never(path, guard)
+            facts = (*path, guard)
+            tried = self.search.run(Mode.ANY, facts, lambda r: all_hold(r, facts))
+            self._never_cache[key] = None if tried.found is not None else self._never(
+                path, guard)
         return self._never_cache[key]
 
     def always(self, path: PathCondition, guard: Guard) -> bool:
         """Return whether ``guard`` holds for every argument value where ``path`` holds."""
         key = (path, guard)
         if key not in self._always:
+
+            def refutes(reducer: BaseReducer) -> bool | None:
+                inside = all_hold(reducer, path)
+                verdict = holds(reducer, guard)
+                if inside is False or verdict is True:
+                    return False
+                return None if inside is None or verdict is None else True
+
+            if self.search.run(Mode.ANY, (*path, guard), refutes).found is not None:
+                self._always[key] = False
+                return False
             encoder = self.encoders[Mode.ANY]
             possible = self._check(encoder, [encoder.path(path)]) == z3.sat
             negated = z3.Not(encoder.holds(guard))
@@ -87,6 +129,24 @@ class Reasoner:
         """Return a value the condition can take that launch rejects, with the switches."""
         key = (path, guard)
         if key not in self._invalid:
+
+            def invalid(reducer: BaseReducer) -> bool | None:
+                inside = all_hold(reducer, path)
+                if inside is False:
+                    return False
+                text = reducer.text(guard.expression)
+                if text is None or inside is None:
+                    return None
+                return text.strip().lower() not in CONDITION_TRUE + CONDITION_FALSE
+
+            tried = self.search.run(Mode.SWITCHES, (*path, guard), invalid)
+            if tried.found is not None and tried.reducer is not None:
+                value = tried.reducer.text(guard.expression) or ""
+                self._invalid[key] = (value, self._tried(tried.found) or Witness())
+                return self._invalid[key]
+            if tried.exhaustive:
+                self._invalid[key] = None
+                return None
             encoder = self.encoders[Mode.SWITCHES]
             value = encoder.string(guard.expression)
             found = None
@@ -144,6 +204,13 @@ class Reasoner:
             return None
         model: z3.ModelRef = solver.model()
         return model
+
+    def _tried(self, assignment: dict[str, str] | None) -> Witness | None:
+        """Return the witness of an assignment found by search (changed values only)."""
+        if assignment is None:
+            return None
+        return Witness({name: value for name, value in assignment.items()
+                        if self.domains[name].defaults != {value}})
 
     def _witness(self, encoder: Encoder, formulas: list[z3.BoolRef]) -> Witness | None:
         model = self._model(encoder, formulas)

@@ -1,0 +1,176 @@
+"""Try argument values with the concrete evaluator before asking z3.
+
+Most questions are settled by a handful of assignments: a condition that can be true
+usually is with its default or with the other boolean value. ``Search`` enumerates the
+values of the arguments a question depends on (their domain when it is finite, else a few
+telling candidates) and evaluates with ``BaseReducer``, exactly as the base view does. It
+answers "found", or "none exists" when the enumeration covered every value; otherwise the
+reasoner asks z3. Nothing here imports z3.
+"""
+
+from __future__ import annotations
+
+import itertools
+import re
+from collections.abc import Callable, Iterable, Iterator
+from dataclasses import dataclass
+
+from launchverify.evaluate.values import BaseReducer
+from launchverify.ir import subst as s
+from launchverify.ir.symbolic import Arg, Guard, Select, StrEquals, Truthy
+from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
+from launchverify.smt.domains import ArgumentDomain, Mode
+
+_NUMBER = re.compile(r"(?<![\w.])\d{1,9}(?![\w.])")
+MAX_ASSIGNMENTS = 256
+MAX_CANDIDATES = 8
+
+
+@dataclass(frozen=True)
+class Outcome:
+    """What a search found: an assignment, or whether it covered every value."""
+
+    found: dict[str, str] | None
+    reducer: BaseReducer | None
+    exhaustive: bool
+
+
+class Search:
+    """Enumerates small argument domains for one graph."""
+
+    def __init__(self, domains: dict[str, ArgumentDomain], pinned: dict[str, str]) -> None:
+        self.domains = domains
+        self.pinned = pinned
+        self._names: dict[int, tuple[frozenset[str], frozenset[str]]] = {}
+        self._keep: list[object] = []
+
+    def run(self, mode: Mode, items: Iterable[Guard | s.Sub],
+            predicate: Callable[[BaseReducer], bool | None]) -> Outcome:
+        """Look for an assignment where ``predicate`` is true."""
+        names: set[str] = set()
+        literals: set[str] = set()
+        for item in items:
+            found_names, found_literals = self.inputs(item)
+            names |= found_names
+            literals |= found_literals
+        choices = self.candidates(sorted(names), mode, literals)
+        if choices is None:
+            return Outcome(None, None, exhaustive=False)
+        exhaustive = all(self.finite(name, mode) for name in names)
+        for assignment in _product(choices):
+            reducer = BaseReducer({**self.pinned, **assignment})
+            verdict = predicate(reducer)
+            if verdict is True:
+                return Outcome(assignment, reducer, exhaustive)
+            if verdict is None:
+                exhaustive = False
+        return Outcome(None, None, exhaustive)
+
+    def finite(self, name: str, mode: Mode) -> bool:
+        """Return whether the enumeration covers every value of this argument."""
+        domain = self.domains.get(name)
+        if domain is None:
+            return False
+        if domain.values(mode) is not None:
+            return True
+        return mode is Mode.SWITCHES and not domain.required
+
+    def candidates(self, names: list[str], mode: Mode,
+                   literals: set[str]) -> list[tuple[str, tuple[str, ...]]] | None:
+        """Return the values to try per argument (``None``: too many combinations)."""
+        out: list[tuple[str, tuple[str, ...]]] = []
+        total = 1
+        for name in names:
+            domain = self.domains.get(name)
+            if domain is None or domain.pinned is not None:
+                continue
+            values = domain.values(mode)
+            if values is None:
+                if mode is Mode.SWITCHES:
+                    continue  # keeps its default: the reducer uses it
+                extra = sorted(literals - domain.defaults)
+                values = (*sorted(domain.defaults), "true", "false", *extra)
+                values = tuple(dict.fromkeys(values))[:MAX_CANDIDATES]
+            total *= len(values)
+            if total > MAX_ASSIGNMENTS:
+                return None
+            out.append((name, values))
+        return out
+
+    def inputs(self, item: Guard | s.Sub) -> tuple[frozenset[str], frozenset[str]]:
+        """Return the argument names and short literals an expression or guard holds."""
+        key = id(item)
+        known = self._names.get(key)
+        if known is not None:
+            return known
+        names: set[str] = set()
+        literals: set[str] = set()
+        seen: set[int] = set()
+        stack: list[object] = [item]
+        while stack:
+            current = stack.pop()
+            if id(current) in seen:
+                continue
+            seen.add(id(current))
+            if isinstance(current, Truthy):
+                stack.append(current.expression)
+            elif isinstance(current, StrEquals):
+                stack.extend(x for x in (current.left, current.right) if x is not None)
+            elif isinstance(current, s.Sub):
+                if isinstance(current, Arg):
+                    names.add(current.name)
+                elif isinstance(current, s.Text) and len(current.text) <= 20:
+                    literals.update(_words(current.text))
+                elif isinstance(current, Select):
+                    stack.extend(current.guards)
+                stack.extend(current.children())
+        result = (frozenset(names), frozenset(literals))
+        self._names[key] = result
+        self._keep.append(item)
+        return result
+
+
+def holds(reducer: BaseReducer, guard: Guard) -> bool | None:
+    """Return whether a guard holds under a reducer's assignment (``None``: unknown)."""
+    if isinstance(guard, Truthy):
+        text = reducer.text(guard.expression)
+        if text is None:
+            return None
+        value = text.strip().lower()
+        return value in (CONDITION_FALSE if guard.negate else CONDITION_TRUE)
+    if isinstance(guard, StrEquals):
+        return reducer.guard(guard)
+    return None
+
+
+def all_hold(reducer: BaseReducer, guards: Iterable[Guard]) -> bool | None:
+    """Return whether every guard holds (``False`` as soon as one surely does not)."""
+    result: bool | None = True
+    for guard in guards:
+        verdict = holds(reducer, guard)
+        if verdict is False:
+            return False
+        if verdict is None:
+            result = None
+    return result
+
+
+def _words(text: str) -> Iterator[str]:
+    """Yield a literal and the values it suggests trying.
+
+    Those are the quoted words inside it (``r2`` in ``' == 'r2'``) and its numbers with
+    their successors (``40`` and ``41`` in ``' >= 40'``).
+    """
+    yield text
+    for index, piece in enumerate(text.split("'")):
+        if index % 2 == 1:
+            yield piece
+    for number in _NUMBER.findall(text):
+        yield number
+        yield str(int(number) + 1)
+
+
+def _product(choices: list[tuple[str, tuple[str, ...]]]) -> Iterator[dict[str, str]]:
+    names = [name for name, _ in choices]
+    for values in itertools.product(*[values for _, values in choices]):
+        yield dict(zip(names, values, strict=True))
