@@ -14,14 +14,21 @@ import sys
 _PACKAGES = ("launchverify", "launchverify.models", "launchverify.rules")
 
 
+_roots: tuple[str, ...] = ()
+
+
 def own_roots() -> tuple[str, ...]:
     """Return the folders (with a trailing separator) of launchverify's imported packages."""
+    global _roots  # noqa: PLW0603 - computed once every package is imported
+    if len(_roots) == len(_PACKAGES):
+        return _roots
     roots: list[str] = []
     for name in _PACKAGES:
         filename = getattr(sys.modules.get(name), "__file__", None)
         if filename:
             roots.append(os.path.dirname(os.path.abspath(filename)) + os.sep)  # noqa: PTH100, PTH120
-    return tuple(roots)
+    _roots = tuple(roots)
+    return _roots
 
 
 def is_own_file(filename: str) -> bool:

@@ -9,6 +9,7 @@ never produces a finding.
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterable
 
 import z3
@@ -16,7 +17,7 @@ import z3
 from launchverify.evaluate.values import BaseReducer
 from launchverify.graph import LaunchGraph
 from launchverify.ir.subst import Sub
-from launchverify.ir.symbolic import Guard, PathCondition, Truthy
+from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy
 from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
 from launchverify.smt.domains import ArgumentDomain, Mode, argument_domains
 from launchverify.smt.encode import Encoder
@@ -96,6 +97,10 @@ class Reasoner:
         the path became impossible).
         """
         key = (path, guard)
+        opposite = _opposite(guard)
+        if key not in self._never_cache and opposite in path:  # no solver needed
+            self._never_cache[key] = Contradiction(
+                (path[path.index(opposite)], guard)) if _satisfiable_alone(path) else None
         if key not in self._never_cache:
             facts = (*path, guard)
             tried = self.search.run(Mode.ANY, facts, lambda r: all_hold(r, facts))
@@ -106,6 +111,8 @@ class Reasoner:
     def always(self, path: PathCondition, guard: Guard) -> bool:
         """Return whether ``guard`` holds for every argument value where ``path`` holds."""
         key = (path, guard)
+        if key not in self._always and guard in path and _satisfiable_alone(path):
+            self._always[key] = True  # the enclosing condition says the same
         if key not in self._always:
 
             def refutes(reducer: BaseReducer) -> bool | None:
@@ -259,3 +266,15 @@ def _is_argument(variable: z3.ExprRef) -> bool:
 
 def _text(value: z3.ExprRef) -> str:
     return str(value.as_string()) if z3.is_string_value(value) else str(value)
+
+
+def _opposite(guard: Guard) -> Guard | None:
+    """Return the guard that cannot hold together with ``guard`` (if/unless of one value)."""
+    if isinstance(guard, (Truthy, StrEquals)):
+        return dataclasses.replace(guard, negate=not guard.negate)
+    return None
+
+
+def _satisfiable_alone(path: PathCondition) -> bool:
+    """Return whether a path has no guard together with its opposite (a cheap check)."""
+    return all(_opposite(g) not in path for g in path)

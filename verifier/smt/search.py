@@ -23,7 +23,7 @@ from launchverify.smt.domains import ArgumentDomain, Mode
 
 _NUMBER = re.compile(r"(?<![\w.])\d{1,9}(?![\w.])")
 MAX_ASSIGNMENTS = 256
-MAX_CANDIDATES = 8
+MAX_CANDIDATES = 10
 
 
 @dataclass(frozen=True)
@@ -31,7 +31,7 @@ class Outcome:
     """What a search found: an assignment, or whether it covered every value."""
 
     found: dict[str, str] | None
-    reducer: BaseReducer | None
+    reducer: BaseReducer | None  # set to ``found`` until the next search
     exhaustive: bool
 
 
@@ -41,6 +41,7 @@ class Search:
     def __init__(self, domains: dict[str, ArgumentDomain], pinned: dict[str, str]) -> None:
         self.domains = domains
         self.pinned = pinned
+        self._reducer = BaseReducer(dict(pinned))  # reused: its pinned values change
         self._names: dict[int, tuple[frozenset[str], frozenset[str]]] = {}
         self._keep: list[object] = []
 
@@ -57,8 +58,9 @@ class Search:
         if choices is None:
             return Outcome(None, None, exhaustive=False)
         exhaustive = all(self.finite(name, mode) for name in names)
+        reducer = self._reducer
         for assignment in _product(choices):
-            reducer = BaseReducer({**self.pinned, **assignment})
+            reducer.pinned = {**self.pinned, **assignment}
             verdict = predicate(reducer)
             if verdict is True:
                 return Outcome(assignment, reducer, exhaustive)
@@ -161,13 +163,15 @@ def _words(text: str) -> Iterator[str]:
     Those are the quoted words inside it (``r2`` in ``' == 'r2'``) and its numbers with
     their successors (``40`` and ``41`` in ``' >= 40'``).
     """
-    yield text
+    if not any(c.isspace() for c in text):
+        yield text
     for index, piece in enumerate(text.split("'")):
         if index % 2 == 1:
             yield piece
     for number in _NUMBER.findall(text):
         yield number
         yield str(int(number) + 1)
+        yield str(max(int(number) - 1, 0))
 
 
 def _product(choices: list[tuple[str, tuple[str, ...]]]) -> Iterator[dict[str, str]]:
