@@ -117,25 +117,29 @@ def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
               ctx: RuleContext) -> list[Finding]:
     """Run every rule on every graph and merge the findings."""
     merged: dict[tuple[object, ...], Finding] = {}
-    votes: dict[tuple[object, ...], int] = defaultdict(int)
+    votes: dict[tuple[object, ...], set[int]] = defaultdict(set)  # graphs that agree
     reach: dict[Path, int] = defaultdict(int)
     for graph in graphs:
         for path in graph.files:
             reach[path] += 1
     unanimous: set[str] = set()
+    # Small graphs first: a file evaluated as its own root settles most questions that
+    # rules asking for every context would otherwise ask again in each includer.
+    smallest_first = sorted(graphs, key=lambda g: len(g.files))
     for rule_class in rules:
         rule = rule_class()
-        if getattr(rule_class, "every_context", False):
+        every_context = getattr(rule_class, "every_context", False)
+        if every_context:
             unanimous.add(rule_class.code)
-        for graph in graphs:
+        for graph in smallest_first if every_context else graphs:
             for finding in rule.check(graph, ctx):
                 key = finding.key()
-                votes[key] += 1
+                votes[key].add(id(graph))
                 known = merged.get(key)
                 if known is None or len(finding.chain) < len(known.chain):
                     merged[key] = finding
     kept = [
         f for key, f in merged.items()
-        if f.code not in unanimous or votes[key] >= reach[f.span.file]
+        if f.code not in unanimous or len(votes[key]) >= reach[f.span.file]
     ]
     return sorted(kept, key=Finding.sort_key)

@@ -63,10 +63,20 @@ class Finding:
 
 @dataclass
 class RuleContext:
-    """What a rule may use besides the graph (later: the SMT solver, options)."""
+    """What a rule may use besides the graph.
+
+    ``settled`` lets a rule marked ``every_context`` remember, across the graphs of one
+    check, places where some evaluation already shows the finding does not hold (it
+    would be voted out anyway), so that the other graphs need not ask again.
+    """
 
     packages: PackageIndex | None = None
     options: dict[str, object] = field(default_factory=dict)
+    settled: dict[str, set[object]] = field(default_factory=dict)
+
+    def settled_for(self, code: str) -> set[object]:
+        """Return the set of places a rule has settled (created on first use)."""
+        return self.settled.setdefault(code, set())
 
 
 class Rule:

@@ -43,15 +43,17 @@ class ConstantCondition(Rule):
     every_context = True
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        varying = ctx.settled_for(self.code)
         for record in graph.conditions:
             if not record.symbolic:
                 if record.verdict is True and record.literal:
                     yield self.finding(record.origin, condition=record.text, where="")
                 continue
-            if record.verdict is False:
+            if record.verdict is False or record.origin.span in varying:
                 continue
             reasoner = reasoner_for(graph)
             if not reasoner.always(record.origin.path, record.guard):
+                varying.add(record.origin.span)  # not constant here: cannot stand
                 continue
             alone = reasoner.always((), record.guard)
             where = "" if alone else " under " + " and ".join(

@@ -43,10 +43,15 @@ class UnreachableCondition(Rule):
     every_context = True
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        reachable = ctx.settled_for(self.code)
         for record in graph.conditions:
             if record.verdict is True or not record.symbolic:
                 continue  # constants are written on purpose (if="false")
+            if record.origin.span in reachable:
+                continue  # true in some evaluation: the finding could not stand
             why = reasoner_for(graph).never(record.origin.path, record.guard)
-            if why is not None:
+            if why is None:
+                reachable.add(record.origin.span)
+            else:
                 yield self.finding(record.origin, condition=record.text,
                                    reasons=why.describe())

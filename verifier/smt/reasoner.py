@@ -33,7 +33,7 @@ class Reasoner:
     def __init__(self, graph: LaunchGraph) -> None:
         self.graph = graph
         self.domains: dict[str, ArgumentDomain] = argument_domains(graph)
-        self.encoders = {mode: Encoder(self.domains, mode, graph.pinned) for mode in Mode}
+        self._encoders: dict[Mode, Encoder] = {}
         self._together: dict[tuple[PathCondition, ...], Witness | None] = {}
         self._names: dict[tuple[object, ...], tuple[Witness, str] | None] = {}
         self._never_cache: dict[tuple[PathCondition, Guard], Contradiction | None] = {}
@@ -41,6 +41,12 @@ class Reasoner:
         self._invalid: dict[tuple[PathCondition, Guard], tuple[str, Witness] | None] = {}
         self.search = Search(self.domains, graph.pinned)
         self.queries = 0
+
+    def encoder(self, mode: Mode) -> Encoder:
+        """Return the z3 encoder of a mode (built when a question first needs z3)."""
+        if mode not in self._encoders:
+            self._encoders[mode] = Encoder(self.domains, mode, self.graph.pinned)
+        return self._encoders[mode]
 
     # ------------------------------------------------------------------ questions
 
@@ -52,7 +58,7 @@ class Reasoner:
             if tried.found is not None or tried.exhaustive:
                 self._together[paths] = self._tried(tried.found)
             else:
-                encoder = self.encoders[Mode.SWITCHES]
+                encoder = self.encoder(Mode.SWITCHES)
                 formula = z3.And(*[encoder.path(p) for p in paths])
                 self._together[paths] = self._witness(encoder, [formula])
         return self._together[paths]
@@ -81,7 +87,7 @@ class Reasoner:
             if tried.exhaustive:
                 self._names[key] = None
                 return None
-            encoder = self.encoders[Mode.SWITCHES]
+            encoder = self.encoder(Mode.SWITCHES)
             left, right = encoder.name(first), encoder.name(second)
             formula = z3.And(left == right, encoder.path(first_path), encoder.path(second_path))
             found = self._model(encoder, [formula])
@@ -125,7 +131,7 @@ class Reasoner:
             if self.search.run(Mode.ANY, (*path, guard), refutes).found is not None:
                 self._always[key] = False
                 return False
-            encoder = self.encoders[Mode.ANY]
+            encoder = self.encoder(Mode.ANY)
             possible = self._check(encoder, [encoder.path(path)]) == z3.sat
             negated = z3.Not(encoder.holds(guard))
             self._always[key] = possible and self._check(
@@ -154,7 +160,7 @@ class Reasoner:
             if tried.exhaustive:
                 self._invalid[key] = None
                 return None
-            encoder = self.encoders[Mode.SWITCHES]
+            encoder = self.encoder(Mode.SWITCHES)
             value = encoder.string(guard.expression)
             found = None
             formulas = [encoder.path(path), encoder.raises(guard)]
@@ -168,7 +174,7 @@ class Reasoner:
     # ------------------------------------------------------------------ machinery
 
     def _never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
-        encoder = self.encoders[Mode.ANY]
+        encoder = self.encoder(Mode.ANY)
         if self._check(encoder, [encoder.path(path)]) != z3.sat:
             return None
         solver = self._solver()
