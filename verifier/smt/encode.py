@@ -172,7 +172,11 @@ class Encoder:
             return z3.StringVal(domain.pinned)
         fixed = self.mode is Mode.SWITCHES and (domain is None or not domain.switch)
         if sub.default is None:
-            return self._sentinel(f"arg {sub.name}") if fixed and self._fqn else self.cli(sub.name)
+            if not fixed:
+                return self.cli(sub.name)
+            # Unconstrained: whatever the user passes, assumed sensible (never a witness).
+            return self._sentinel(f"arg {sub.name}") if self._fqn else z3.String(
+                f"unknown:arg {sub.name}")
         default = self.string(sub.default)
         if fixed:
             return default

@@ -1,18 +1,17 @@
-"""The questions rules ask about a launch graph, answered with z3.
+"""The questions rules ask about a launch graph.
 
 Rules never build z3 terms: they ask whether path conditions can hold together (and under
 which arguments), whether a condition can never or must always hold (and why), whether a
-condition can take a value launch rejects, and whether two names can be equal. Answers
-are cached per question; a solver that gives up (timeout) counts as "cannot tell", which
-never produces a finding.
+condition can take a value launch rejects, and whether two names can be equal. Each
+question is first tried with the concrete evaluator over the arguments' values
+(``search``); z3 (``solver``) is imported and asked only when that settles nothing.
+Answers are cached per question.
 """
 
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Iterable
-
-import z3
+from typing import TYPE_CHECKING
 
 from launchverify.evaluate.values import BaseReducer
 from launchverify.graph import LaunchGraph
@@ -20,11 +19,11 @@ from launchverify.ir.subst import Sub
 from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy
 from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
 from launchverify.smt.domains import ArgumentDomain, Mode, argument_domains
-from launchverify.smt.encode import Encoder
 from launchverify.smt.search import Search, all_hold, holds
 from launchverify.smt.types import Contradiction, Witness
 
-TIMEOUT_MS = 2000
+if TYPE_CHECKING:
+    from launchverify.smt.solver import Z3Backend
 
 
 class Reasoner:
@@ -33,20 +32,27 @@ class Reasoner:
     def __init__(self, graph: LaunchGraph) -> None:
         self.graph = graph
         self.domains: dict[str, ArgumentDomain] = argument_domains(graph)
-        self._encoders: dict[Mode, Encoder] = {}
+        self.search = Search(self.domains, graph.pinned)
+        self._backend: Z3Backend | None = None
         self._together: dict[tuple[PathCondition, ...], Witness | None] = {}
         self._names: dict[tuple[object, ...], tuple[Witness, str] | None] = {}
-        self._never_cache: dict[tuple[PathCondition, Guard], Contradiction | None] = {}
+        self._never: dict[tuple[PathCondition, Guard], Contradiction | None] = {}
         self._always: dict[tuple[PathCondition, Guard], bool] = {}
         self._invalid: dict[tuple[PathCondition, Guard], tuple[str, Witness] | None] = {}
-        self.search = Search(self.domains, graph.pinned)
-        self.queries = 0
 
-    def encoder(self, mode: Mode) -> Encoder:
-        """Return the z3 encoder of a mode (built when a question first needs z3)."""
-        if mode not in self._encoders:
-            self._encoders[mode] = Encoder(self.domains, mode, self.graph.pinned)
-        return self._encoders[mode]
+    @property
+    def z3(self) -> Z3Backend:
+        """Return the z3 backend (importing z3 the first time)."""
+        if self._backend is None:
+            from launchverify.smt.solver import Z3Backend
+
+            self._backend = Z3Backend(self.domains, self.graph.pinned)
+        return self._backend
+
+    @property
+    def queries(self) -> int:
+        """Return how many times z3 was asked."""
+        return 0 if self._backend is None else self._backend.queries
 
     # ------------------------------------------------------------------ questions
 
@@ -58,42 +64,34 @@ class Reasoner:
             if tried.found is not None or tried.exhaustive:
                 self._together[paths] = self._tried(tried.found)
             else:
-                encoder = self.encoder(Mode.SWITCHES)
-                formula = z3.And(*[encoder.path(p) for p in paths])
-                self._together[paths] = self._witness(encoder, [formula])
+                self._together[paths] = self.z3.together(paths)
         return self._together[paths]
 
     def same_name(self, first: Sub, first_path: PathCondition, second: Sub,
                   second_path: PathCondition) -> tuple[Witness, str] | None:
         """Return (assignment, name) where two names are equal and both paths hold."""
         key = (first, first_path, second, second_path)
-        if key not in self._names:
-            guards = (*first_path, *second_path)
+        if key in self._names:
+            return self._names[key]
+        guards = (*first_path, *second_path)
 
-            def same(reducer: BaseReducer) -> bool | None:
-                paths = all_hold(reducer, guards)
-                if paths is False:
-                    return False
-                left, right = reducer.text(first), reducer.text(second)
-                if left is None or right is None or paths is None:
-                    return None
-                return left == right
-
-            tried = self.search.run(Mode.SWITCHES, [*guards, first, second], same)
-            if tried.found is not None and tried.reducer is not None:
-                name = tried.reducer.text(first) or first.describe()
-                self._names[key] = (self._tried(tried.found) or Witness(), name)
-                return self._names[key]
-            if tried.exhaustive:
-                self._names[key] = None
+        def same(reducer: BaseReducer) -> bool | None:
+            paths = all_hold(reducer, guards)
+            if paths is False:
+                return False
+            left, right = reducer.text(first), reducer.text(second)
+            if left is None or right is None or paths is None:
                 return None
-            encoder = self.encoder(Mode.SWITCHES)
-            left, right = encoder.name(first), encoder.name(second)
-            formula = z3.And(left == right, encoder.path(first_path), encoder.path(second_path))
-            found = self._model(encoder, [formula])
-            self._names[key] = None if found is None else (
-                self._assignment(encoder, found, [formula]),
-                _text(found.eval(left, model_completion=True)))
+            return left == right
+
+        tried = self.search.run(Mode.SWITCHES, [*guards, first, second], same)
+        if tried.found is not None and tried.reducer is not None:
+            name = tried.reducer.text(first) or first.describe()
+            self._names[key] = (self._tried(tried.found) or Witness(), name)
+        elif tried.exhaustive:
+            self._names[key] = None
+        else:
+            self._names[key] = self.z3.same_name(first, first_path, second, second_path)
         return self._names[key]
 
     def never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
@@ -103,23 +101,27 @@ class Reasoner:
         the path became impossible).
         """
         key = (path, guard)
+        if key in self._never:
+            return self._never[key]
         opposite = _opposite(guard)
-        if key not in self._never_cache and opposite in path:  # no solver needed
-            self._never_cache[key] = Contradiction(
-                (path[path.index(opposite)], guard)) if _satisfiable_alone(path) else None
-        if key not in self._never_cache:
+        if opposite in path:  # no solver needed
+            found = Contradiction((path[path.index(opposite)], guard)) if _satisfiable_alone(
+                path) else None
+        else:
             facts = (*path, guard)
             tried = self.search.run(Mode.ANY, facts, lambda r: all_hold(r, facts))
-            self._never_cache[key] = None if tried.found is not None else self._never(
-                path, guard)
-        return self._never_cache[key]
+            found = None if tried.found is not None else self.z3.never(path, guard)
+        self._never[key] = found
+        return found
 
     def always(self, path: PathCondition, guard: Guard) -> bool:
         """Return whether ``guard`` holds for every argument value where ``path`` holds."""
         key = (path, guard)
-        if key not in self._always and guard in path and _satisfiable_alone(path):
-            self._always[key] = True  # the enclosing condition says the same
-        if key not in self._always:
+        if key in self._always:
+            return self._always[key]
+        if guard in path and _satisfiable_alone(path):
+            result = True  # the enclosing condition says the same
+        else:
 
             def refutes(reducer: BaseReducer) -> bool | None:
                 inside = all_hold(reducer, path)
@@ -128,95 +130,35 @@ class Reasoner:
                     return False
                 return None if inside is None or verdict is None else True
 
-            if self.search.run(Mode.ANY, (*path, guard), refutes).found is not None:
-                self._always[key] = False
-                return False
-            encoder = self.encoder(Mode.ANY)
-            possible = self._check(encoder, [encoder.path(path)]) == z3.sat
-            negated = z3.Not(encoder.holds(guard))
-            self._always[key] = possible and self._check(
-                encoder, [encoder.path(path), negated]) == z3.unsat
-        return self._always[key]
+            refuted = self.search.run(Mode.ANY, (*path, guard), refutes).found is not None
+            result = not refuted and self.z3.always(path, guard)
+        self._always[key] = result
+        return result
 
     def invalid_value(self, path: PathCondition, guard: Truthy) -> tuple[str, Witness] | None:
         """Return a value the condition can take that launch rejects, with the switches."""
         key = (path, guard)
-        if key not in self._invalid:
+        if key in self._invalid:
+            return self._invalid[key]
 
-            def invalid(reducer: BaseReducer) -> bool | None:
-                inside = all_hold(reducer, path)
-                if inside is False:
-                    return False
-                text = reducer.text(guard.expression)
-                if text is None or inside is None:
-                    return None
-                return text.strip().lower() not in CONDITION_TRUE + CONDITION_FALSE
-
-            tried = self.search.run(Mode.SWITCHES, (*path, guard), invalid)
-            if tried.found is not None and tried.reducer is not None:
-                value = tried.reducer.text(guard.expression) or ""
-                self._invalid[key] = (value, self._tried(tried.found) or Witness())
-                return self._invalid[key]
-            if tried.exhaustive:
-                self._invalid[key] = None
+        def invalid(reducer: BaseReducer) -> bool | None:
+            inside = all_hold(reducer, path)
+            if inside is False:
+                return False
+            text = reducer.text(guard.expression)
+            if text is None or inside is None:
                 return None
-            encoder = self.encoder(Mode.SWITCHES)
-            value = encoder.string(guard.expression)
-            found = None
-            formulas = [encoder.path(path), encoder.raises(guard)]
-            if all(_is_argument(v) for v in _variables(value)):  # unknowns: cannot tell
-                found = self._model(encoder, formulas)
-            self._invalid[key] = None if found is None else (
-                _text(found.eval(value, model_completion=True)),
-                self._assignment(encoder, found, formulas))
+            return text.strip().lower() not in CONDITION_TRUE + CONDITION_FALSE
+
+        tried = self.search.run(Mode.SWITCHES, (*path, guard), invalid)
+        if tried.found is not None and tried.reducer is not None:
+            value = tried.reducer.text(guard.expression) or ""
+            self._invalid[key] = (value, self._tried(tried.found) or Witness())
+        elif tried.exhaustive:
+            self._invalid[key] = None
+        else:
+            self._invalid[key] = self.z3.invalid_value(path, guard)
         return self._invalid[key]
-
-    # ------------------------------------------------------------------ machinery
-
-    def _never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
-        encoder = self.encoder(Mode.ANY)
-        if self._check(encoder, [encoder.path(path)]) != z3.sat:
-            return None
-        solver = self._solver()
-        facts = (*path, guard)
-        for index, fact in enumerate(facts):
-            solver.assert_and_track(encoder.holds(fact), f"g{index}")
-        constraints = encoder.domain_constraints()
-        for index, (_, formula) in enumerate(constraints):
-            solver.assert_and_track(formula, f"d{index}")
-        self.queries += 1
-        if solver.check() != z3.unsat:
-            return None
-        if isinstance(guard, Truthy) and self._check(
-                encoder, [encoder.path(path), z3.Not(encoder.raises(guard))]) != z3.sat:
-            return None  # never a boolean at all: launch raises (LV002/LV207 say so)
-        core = {str(c) for c in solver.unsat_core()}
-        guards = tuple(f for i, f in enumerate(facts) if f"g{i}" in core)
-        domains = tuple(d for i, (d, _) in enumerate(constraints) if f"d{i}" in core)
-        return Contradiction(guards, domains)
-
-    def _solver(self) -> z3.Solver:
-        solver = z3.Solver()
-        solver.set("timeout", TIMEOUT_MS)
-        return solver
-
-    def _check(self, encoder: Encoder, formulas: Iterable[z3.BoolRef]) -> z3.CheckSatResult:
-        solver = self._solver()
-        formulas = list(formulas)
-        solver.add(*formulas)
-        solver.add(*[f for _, f in encoder.domain_constraints()])
-        self.queries += 1
-        return solver.check()
-
-    def _model(self, encoder: Encoder, formulas: list[z3.BoolRef]) -> z3.ModelRef | None:
-        solver = self._solver()
-        solver.add(*formulas)
-        solver.add(*[f for _, f in encoder.domain_constraints()])
-        self.queries += 1
-        if solver.check() != z3.sat:
-            return None
-        model: z3.ModelRef = solver.model()
-        return model
 
     def _tried(self, assignment: dict[str, str] | None) -> Witness | None:
         """Return the witness of an assignment found by search (changed values only)."""
@@ -224,54 +166,6 @@ class Reasoner:
             return None
         return Witness({name: value for name, value in assignment.items()
                         if self.domains[name].defaults != {value}})
-
-    def _witness(self, encoder: Encoder, formulas: list[z3.BoolRef]) -> Witness | None:
-        model = self._model(encoder, formulas)
-        return None if model is None else self._assignment(encoder, model, formulas)
-
-    def _assignment(self, encoder: Encoder, model: z3.ModelRef,
-                    formulas: list[z3.BoolRef]) -> Witness:
-        """Return the arguments a question depends on that the model gives a new value."""
-        names = {v.decl().name().partition(":")[2] for f in formulas for v in _variables(f)
-                 if _is_argument(v)}
-        values: dict[str, str] = {}
-        for name in sorted(names):
-            domain = self.domains.get(name)
-            if domain is None or domain.pinned is not None:
-                continue
-            if not z3.is_true(model.eval(encoder.given(name), model_completion=True)):
-                continue
-            value = _text(model.eval(encoder.cli(name), model_completion=True))
-            if domain.defaults != {value}:
-                values[name] = value
-        return Witness(values)
-
-
-
-def _variables(term: z3.ExprRef) -> list[z3.ExprRef]:
-    """Return the free constants of a term (shared subterms visited once)."""
-    found: dict[int, z3.ExprRef] = {}
-    visited: set[int] = set()
-    stack = [term]
-    while stack:
-        item = stack.pop()
-        if item.get_id() in visited:
-            continue
-        visited.add(item.get_id())
-        if z3.is_const(item) and item.decl().kind() == z3.Z3_OP_UNINTERPRETED:
-            found[item.get_id()] = item
-            continue
-        stack.extend(item.children())
-    return list(found.values())
-
-
-def _is_argument(variable: z3.ExprRef) -> bool:
-    name: str = variable.decl().name()
-    return name.startswith(("arg:", "given:"))
-
-
-def _text(value: z3.ExprRef) -> str:
-    return str(value.as_string()) if z3.is_string_value(value) else str(value)
 
 
 def _opposite(guard: Guard) -> Guard | None:
