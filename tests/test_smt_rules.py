@@ -61,3 +61,16 @@ def test_z3_is_imported_only_when_needed() -> None:
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           check=False)
     assert done.stdout.strip().endswith("False"), done.stdout + done.stderr
+
+
+def test_environment_can_be_pinned(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    launch = tmp_path / "env.launch.xml"
+    launch.write_text(
+        '<launch>\n'
+        '  <node pkg="demo_nodes_cpp" exec="talker" name="talker" namespace="$(env ROBOT r1)"/>\n'
+        '  <node pkg="demo_nodes_cpp" exec="talker" name="talker" namespace="r2"/>\n'
+        '</launch>\n')
+    assert findings(capsys, str(launch)) == []
+    pinned = findings(capsys, str(launch), "--env", "ROBOT=r2")
+    assert [(f["code"], f["line"]) for f in pinned] == [("LV101", 3)]
+    assert main(["check", str(launch), "--env", "ROBOT"]) == 2

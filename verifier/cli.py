@@ -20,6 +20,7 @@ from launchverify.engine import (
     build_index,
     canonical,
     parse_arguments,
+    parse_environment,
     run_check,
 )
 from launchverify.registry import RegistryError
@@ -55,6 +56,9 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--select", help="comma-separated codes, slugs or prefixes to run")
     check.add_argument("--ignore", help="comma-separated codes, slugs or prefixes to skip")
     check.add_argument("--color", choices=("auto", "always", "never"), default="auto")
+    check.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
+                       help="an environment variable of the machine that will run the "
+                       "launch (repeatable); unset ones are free values")
 
     graph = commands.add_parser(
         "graph", help="print what a launch file would start",
@@ -66,6 +70,7 @@ def build_parser() -> argparse.ArgumentParser:
     graph.add_argument("--format", choices=("json", "text"), default="json")
     graph.add_argument("--symbolic", action="store_true",
                        help="every action with its path condition, values as expressions")
+    graph.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
     return parser
 
 
@@ -108,6 +113,7 @@ def _check(args: argparse.Namespace) -> int:
     report = run_check(CheckOptions(
         paths=[Path(p) for p in paths], arguments=arguments, workspace=args.workspace,
         select=_codes(args.select), ignore=_codes(args.ignore),
+        environment=parse_environment(args.env),
     ))
     failed = any(f.severity is Severity.ERROR for f in report.findings)
     with _output_may_close():
@@ -130,7 +136,8 @@ def _graph(args: argparse.Namespace) -> int:
     if not path.is_file():
         raise UsageError(f"no such file: {paths[0]!r}")
     workspace, index = build_index([path], args.workspace)
-    graph = evaluate(canonical(path), index=index, workspace=workspace, pinned=arguments)
+    graph = evaluate(canonical(path), index=index, workspace=workspace, pinned=arguments,
+                     environment=parse_environment(args.env))
     with _output_may_close():
         if args.format == "json":
             render_graph_json(graph, sys.stdout, symbolic=args.symbolic)

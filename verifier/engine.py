@@ -37,6 +37,7 @@ class CheckOptions:
     workspace: Path | None = None
     select: list[str] | None = None
     ignore: list[str] | None = None
+    environment: dict[str, str] = field(default_factory=dict)
 
 
 @dataclass
@@ -71,6 +72,17 @@ def parse_arguments(tokens: list[str]) -> tuple[list[str], dict[str, str]]:
     return paths, arguments
 
 
+def parse_environment(pairs: list[str]) -> dict[str, str]:
+    """Read ``--env NAME=VALUE`` options."""
+    environment: dict[str, str] = {}
+    for pair in pairs:
+        name, equals, value = pair.partition("=")
+        if not name or not equals:
+            raise UsageError(f"malformed --env {pair!r}, expected NAME=VALUE")
+        environment[name] = value
+    return environment
+
+
 def canonical(path: Path) -> Path:
     """Return the identity used for a file: absolute, with symlinks resolved."""
     return Path(os.path.realpath(path))
@@ -102,7 +114,7 @@ def run_check(options: CheckOptions) -> Report:
     loader = FileCache(index, workspace)
     graphs = [
         evaluate(canonical(f), index=index, workspace=workspace, pinned=options.arguments,
-                 loader=loader)
+                 environment=options.environment, loader=loader)
         for f in files
     ]
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}

@@ -238,6 +238,7 @@ class LaunchGraph:
     root: Path
     pinned: dict[str, str]
     included_elsewhere: bool = False
+    environment: dict[str, str] = field(default_factory=dict)  # --env NAME=VALUE
     files: dict[Path, LoadedFile] = field(default_factory=dict)
     nodes: list[NodeRecord] = field(default_factory=list)
     processes: list[ProcessRecord] = field(default_factory=list)
@@ -255,7 +256,11 @@ class LaunchGraph:
     complete: bool = True  # False when part of the launch could not be seen into
 
     def __post_init__(self) -> None:
-        self._base = BaseReducer(self.pinned)
+        self._base = BaseReducer(self.inputs())
+
+    def inputs(self) -> dict[str, str]:
+        """Return the fixed inputs: arguments by name, environment variables as ``env:NAME``."""
+        return {**self.pinned, **{f"env:{k}": v for k, v in self.environment.items()}}
 
     # ------------------------------------------------------------------ base view
 

@@ -215,7 +215,7 @@ class DefaultsReducer(_Located, BaseReducer):
     prefix = "with the default arguments, "
 
     def __init__(self, walker: Walker) -> None:
-        BaseReducer.__init__(self, walker.graph.pinned)
+        BaseReducer.__init__(self, walker.graph.inputs())
         _Located.__init__(self, walker)
 
 

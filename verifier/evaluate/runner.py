@@ -16,6 +16,7 @@ def evaluate(
     index: PackageIndex,
     workspace: Path,
     pinned: dict[str, str] | None = None,
+    environment: dict[str, str] | None = None,
     loader: FileCache | None = None,
     included_elsewhere: bool = False,
 ) -> LaunchGraph:
@@ -26,6 +27,7 @@ def evaluate(
         index: packages to resolve ``pkg=`` and ``$(find-pkg-share)`` against.
         workspace: files outside it are inputs of the machine, not part of the tree.
         pinned: argument values given like ``name:=value`` on the command line.
+        environment: environment variables of the machine that will run the launch.
         loader: shared file cache (a fresh one when omitted).
         included_elsewhere: the file is also included by others in this check.
 
@@ -33,6 +35,7 @@ def evaluate(
         The launch graph of everything the evaluation found.
     """
     graph = LaunchGraph(root=root, pinned=dict(pinned or {}),
+                        environment=dict(environment or {}),
                         included_elsewhere=included_elsewhere)
     walker = Walker(graph, index, loader or FileCache(index, workspace), workspace)
     walker.run()

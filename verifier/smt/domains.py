@@ -86,7 +86,7 @@ class ArgumentDomain:
 
 def argument_domains(graph: LaunchGraph) -> dict[str, ArgumentDomain]:
     """Return the domain of every argument declared in an evaluation."""
-    base = BaseReducer(graph.pinned)
+    base = BaseReducer(graph.inputs())
     out: dict[str, ArgumentDomain] = {}
     for record in graph.arguments:
         domain = out.setdefault(record.name, ArgumentDomain(record.name))

@@ -32,7 +32,7 @@ class Reasoner:
     def __init__(self, graph: LaunchGraph) -> None:
         self.graph = graph
         self.domains: dict[str, ArgumentDomain] = argument_domains(graph)
-        self.search = Search(self.domains, graph.pinned)
+        self.search = Search(self.domains, graph.inputs())
         self._backend: Z3Backend | None = None
         self._together: dict[tuple[PathCondition, ...], Witness | None] = {}
         self._names: dict[tuple[object, ...], tuple[Witness, str] | None] = {}
@@ -46,7 +46,7 @@ class Reasoner:
         if self._backend is None:
             from launchverify.smt.solver import Z3Backend
 
-            self._backend = Z3Backend(self.domains, self.graph.pinned)
+            self._backend = Z3Backend(self.domains, self.graph.inputs())
         return self._backend
 
     @property
