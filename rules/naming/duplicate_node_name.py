@@ -10,7 +10,6 @@ from launchverify.ir import subst as s
 from launchverify.ir.symbolic import Arg, Opaque, Select
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 from launchverify.smt import Witness, reasoner_for
-from launchverify.smt.domains import argument_domains
 
 
 class DuplicateNodeName(Rule):
@@ -57,7 +56,7 @@ class DuplicateNodeName(Rule):
     message = "node name {fqn} is already used by the node at {other}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        switches = {n for n, d in argument_domains(graph).items() if d.switch}
+        switches = {n for n, d in reasoner_for(graph).domains.items() if d.switch}
         fixed_by_text: dict[str, list[NodeRecord]] = defaultdict(list)
         variable_by_name: dict[str, list[NodeRecord]] = defaultdict(list)
         all_by_name: dict[str, list[NodeRecord]] = defaultdict(list)
