@@ -6,6 +6,7 @@ rmw's messages so users recognise them.
 
 from __future__ import annotations
 
+import functools
 import re
 
 NODE_NAME_MAX = 255
@@ -141,3 +142,33 @@ def make_absolute(namespace: str | None) -> str | None:
 def node_fqn(namespace: str, name: str) -> str:
     """Return the fully qualified name of a node."""
     return "/" + name if namespace in ("", "/") else namespace + "/" + name
+
+
+def node_key_matches(key: str, fqn: str) -> bool:
+    """Return whether a parameter file's node key applies to the node ``fqn``.
+
+    As rclcpp matches them: the key gets a leading ``/``, ``/**`` stands for any number of
+    tokens (none included) and ``/*`` for exactly one, and the whole name must match, so
+    ``controller`` does not match ``/robot1/controller``.
+
+    Examples:
+        >>> node_key_matches("/**", "/robot1/amcl"), node_key_matches("amcl", "/amcl")
+        (True, True)
+        >>> node_key_matches("/*/amcl", "/robot1/amcl"), node_key_matches("amcl", "/r/amcl")
+        (True, False)
+    """
+    return _key_pattern(key).fullmatch(fqn) is not None
+
+
+@functools.cache
+def _key_pattern(key: str) -> re.Pattern[str]:
+    absolute = key if key.startswith("/") else "/" + key
+    pattern = ""
+    for token in absolute.split("/")[1:]:
+        if token == "**":
+            pattern += r"(/\w+)*"
+        elif token == "*":
+            pattern += r"/\w+"
+        else:
+            pattern += "/" + re.escape(token)
+    return re.compile(pattern or "/")

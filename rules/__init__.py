@@ -19,6 +19,8 @@ from launchverify.rules.health.parse_error import ParseError
 from launchverify.rules.health.unmodeled_construct import UnmodeledConstruct
 from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
 from launchverify.rules.naming.invalid_name import InvalidName
+from launchverify.rules.parameters.param_file_error import ParamFileError
+from launchverify.rules.parameters.unmatched_param_block import UnmatchedParamBlock
 
 BUILTIN: tuple[type[Rule], ...] = (
     ParseError,               # LV001
@@ -37,4 +39,6 @@ BUILTIN: tuple[type[Rule], ...] = (
     IncludeCycle,             # LV301
     MissingFile,              # LV302
     UnknownPackage,           # LV303
+    ParamFileError,           # LV401
+    UnmatchedParamBlock,      # LV402
 )

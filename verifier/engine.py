@@ -150,6 +150,8 @@ def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
                 known = merged.get(key)
                 if known is None or len(finding.chain) < len(known.chain):
                     merged[key] = finding
+        for finding in rule.finish(ctx):
+            merged.setdefault(finding.key(), finding)
     kept = [
         f for key, f in merged.items()
         if f.code not in unanimous or len(votes[key]) >= reach[f.span.file]

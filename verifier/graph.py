@@ -14,6 +14,7 @@ from pathlib import Path
 
 from launchverify.evaluate.values import BaseReducer, describe_value, text_of
 from launchverify.frontends import LoadedFile
+from launchverify.frontends.param_file import ParamFile
 from launchverify.ir import actions as a
 from launchverify.ir.subst import Sub, Text
 from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy, describe_path
@@ -55,6 +56,7 @@ class ParamRecord:
     value: object = None
     scope: bool = False
     value_type: str | None = None  # forced type (frontend ``type=``, ``ParameterValue``)
+    source: Path | None = None  # the parameter file read (in ``LaunchGraph.param_files``)
 
 
 @dataclass(frozen=True, slots=True)
@@ -72,6 +74,11 @@ class NodeRecord:
     parameters: tuple[ParamRecord, ...] = ()
     container: Sub | None = None
     deferred: bool = False
+
+    def executable_label(self) -> str:
+        """Return ``package/executable`` as written, for messages."""
+        parts = [p.describe() for p in (self.package, self.executable) if p is not None]
+        return "/".join(parts) or "node"
 
     @property
     def lifecycle(self) -> bool:
@@ -251,6 +258,7 @@ class LaunchGraph:
     problems: list[ProblemRecord] = field(default_factory=list)
     skipped: list[SkippedAction] = field(default_factory=list)
     conditions: list[ConditionRecord] = field(default_factory=list)
+    param_files: dict[Path, ParamFile] = field(default_factory=dict)
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into

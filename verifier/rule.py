@@ -73,10 +73,15 @@ class RuleContext:
     packages: PackageIndex | None = None
     options: dict[str, object] = field(default_factory=dict)
     settled: dict[str, set[object]] = field(default_factory=dict)
+    memo: dict[str, dict[object, object]] = field(default_factory=dict)
 
     def settled_for(self, code: str) -> set[object]:
         """Return the set of places a rule has settled (created on first use)."""
         return self.settled.setdefault(code, set())
+
+    def memo_for(self, code: str) -> dict[object, object]:
+        """Return what a rule gathers across graphs for its ``finish`` (created on first use)."""
+        return self.memo.setdefault(code, {})
 
 
 class Rule:
@@ -90,6 +95,10 @@ class Rule:
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         """Yield the findings of this rule on one launch graph."""
         raise NotImplementedError
+
+    def finish(self, ctx: RuleContext) -> Iterator[Finding]:
+        """Yield findings that need every graph of the check (after ``check`` saw them all)."""
+        return iter(())
 
     def finding(
         self,

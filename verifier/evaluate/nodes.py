@@ -133,7 +133,7 @@ class NodeBuilder:
     def scope_params(self, ctx: Ctx) -> list[ParamRecord]:
         """Return SetParameter/SetParametersFromFile values in scope (they come first)."""
         return [ParamRecord(p.origin, file=p.file, name=p.name, value=p.value, scope=True,
-                            value_type=p.value_type)
+                            value_type=p.value_type, source=p.source)
                 for p in self.walker.scopes.shared(GLOBAL_PARAMS)]
 
     def own_params(self, entries: tuple[a.ParamEntry, ...], ctx: Ctx) -> list[ParamRecord]:
@@ -144,7 +144,8 @@ class NodeBuilder:
             if isinstance(entry, a.ParamFile):
                 location = reducer.reduce(entry.path)
                 self.check_file(location, ctx.origin(entry.span), "parameter file", ctx)
-                out.append(ParamRecord(ctx.origin(entry.span), file=location))
+                out.append(ParamRecord(ctx.origin(entry.span), file=location,
+                                       source=self.read_param_file(location)))
                 if self.allows_substitutions(entry, ctx):
                     self.substitute_param_file(location, entry.span, ctx)
                 continue
@@ -196,6 +197,18 @@ class NodeBuilder:
                                     f"file loaded with allow_substs: {error}", where, ctx)
                 continue
             self.walker.reducer.at(ctx, where).reduce(expression)
+
+    def read_param_file(self, location: s.Sub) -> Path | None:
+        """Read a parameter file of the workspace into the graph; return where it is."""
+        text = text_of(location) or self.walker.graph.base(location)
+        if not text or not Path(text).is_absolute():
+            return None
+        located = self.walker.index.locate(Path(text))
+        if located is None or not located.resolve().is_relative_to(self.walker.workspace):
+            return None
+        if located not in self.walker.graph.param_files:
+            self.walker.graph.param_files[located] = self.walker.loader.param_file(located)
+        return located
 
     def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx) -> None:
         """Record whether a file the launch needs exists (when its path is known)."""

@@ -40,6 +40,7 @@ class ScopedParam:
     value: object = None
     file: Sub | None = None
     value_type: str | None = None
+    source: Any = None  # the parameter file read (a Path), when it is in the workspace
 
 
 MAX_VALUE_SIZE = 2000

@@ -553,7 +553,8 @@ class Walker:
         location = reducer.reduce(action.filename)
         self.nodes.check_file(location, ctx.origin(action.at("filename")), "parameter file", ctx)
         self.scopes.append_shared(GLOBAL_PARAMS, ScopedParam(
-            ctx.origin(action.span), ctx.path, file=location))
+            ctx.origin(action.span), ctx.path, file=location,
+            source=self.nodes.read_param_file(location)))
 
     def do_SetUseSimTime(self, action: a.SetUseSimTime, ctx: Ctx) -> None:
         """Only the launch process's own node: nothing reaches launched nodes."""

@@ -1,0 +1,49 @@
+"""LV401 param-file-error."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launchverify.graph import LaunchGraph
+from launchverify.rule import Finding, Rule, RuleContext, Severity
+
+
+class ParamFileError(Rule):
+    """A parameter file a node loads is broken or does not say what it seems to.
+
+    ## What it does
+    Reads every parameter file that nodes of the launch load (`<param from=...>`,
+    `parameters=[path]`, `ParameterFile`, `RewrittenYaml`, `SetParametersFromFile`) the way
+    rcl's parameter parser does, and reports: YAML syntax errors; values before
+    `ros__parameters` or `ros__parameters` without a node name (rcl rejects the file);
+    lists mixing types such as `[0.05, 0]` or holding lists and mappings (rcl: "Sequence
+    should be of same type"); parameters without a value; node keys with no
+    `ros__parameters` under them (ignored); duplicate keys (YAML keeps the last one
+    silently).
+
+    ## Why it matters
+    rcl refuses the whole file and the node does not start (`Couldn't parse params file`),
+    or the node silently runs with other values than the file seems to give. Python's
+    `yaml.safe_load` accepts all of these, so a quick check in a script does not catch them.
+
+    ## Example
+    ```yaml
+    ekf_filter_node:
+      ros__parameters:
+        process_noise_covariance: [0.05, 0, 0]   # 0 is an integer
+    ```
+
+    ## Fix
+    Write every number of a list the same way (`0.0`), put parameters under
+    `<node>: ros__parameters:`, remove the duplicate key.
+    """
+
+    code = "LV401"
+    slug = "param-file-error"
+    severity = Severity.ERROR
+    message = "{text}"
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        for param_file in graph.param_files.values():
+            for problem in param_file.sink.problems:
+                yield self.finding(problem.span, text=problem.message)

@@ -1,0 +1,210 @@
+"""LV402 unmatched-param-block."""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from launchverify.frontends.param_file import ParamFile
+from launchverify.graph import LaunchGraph, NodeRecord
+from launchverify.models.ros_names import node_key_matches
+from launchverify.package_contents import default_node_names, name_literals
+from launchverify.packages import PackageIndex
+from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+
+COMPONENT_KINDS = ("composable_node", "composable_lifecycle_node")
+
+
+@dataclass(frozen=True)
+class Receiver:
+    """A node that loads a parameter file: its name, or the names it may have.
+
+    A node started without ``name=`` is called what its code calls it: ``names`` holds the
+    names its package's code gives nodes (``None`` when the package is not in the
+    workspace: any name).
+    """
+
+    node: NodeRecord
+    fqn: str | None
+    namespace: str = "/"
+    names: frozenset[str] | None = None
+    inner: frozenset[str] = frozenset()  # names the package's code may give inner nodes
+
+    @property
+    def component(self) -> bool:
+        """Return whether launch_ros filters the file for it (a loaded component)."""
+        return self.node.kind in COMPONENT_KINDS
+
+    def label(self) -> str:
+        """Return how the node is named in messages."""
+        if self.fqn is not None:
+            return self.fqn
+        return f"{self.namespace.rstrip('/')}/<unnamed {self.node.executable_label()}>"
+
+    def matches(self, key: str) -> bool:
+        """Return whether a block's node key can apply to this node."""
+        if self.fqn is not None and key.rpartition("/")[2] not in self.inner:
+            if self.component:
+                return key == "/**" or key.strip("/") == self.fqn.strip("/")
+            return node_key_matches(key, self.fqn)
+        prefix, _, last = key.rpartition("/")
+        if last in self.inner and not self.component:
+            return True  # a node the process creates inside gets the process's files
+        if last == "**":
+            return node_key_matches(key, self.namespace.rstrip("/") + "/x")
+        if self.names is not None and last != "*" and last not in self.names:
+            return False
+        return node_key_matches(prefix or "/", self.namespace)
+
+
+@dataclass
+class _FileUse:
+    """What the graphs of a check say about one parameter file."""
+
+    param_file: ParamFile
+    undecided: bool = False
+    matched: set[int] = field(default_factory=set)
+    receivers: dict[str, Receiver] = field(default_factory=dict)
+
+
+class UnmatchedParamBlock(Rule):
+    """A parameter file block whose node key matches none of the nodes that load the file.
+
+    ## What it does
+    For every parameter file that nodes load, matches each block's node key against the
+    fully qualified names of those nodes, as ROS 2 does: a leading `/` is implied, `/**`
+    stands for any number of namespace tokens and `*` for one, and the whole name must
+    match (`controller:` does not match `/robot1/controller`). Components loaded into a
+    container only see `/**` and their exact name (launch_ros filters the file itself).
+    A block that matches no node in any launch of the check is reported, with the closest
+    node name. Files that reach something launchverify cannot see into (an include outside
+    the workspace, a node whose name is unknown) are not judged.
+
+    ## Why it matters
+    ROS ignores the block without a word: the node starts with its default parameters,
+    and nobody notices until the robot behaves oddly. The usual cause is a misspelt node
+    name or a namespace the block does not account for.
+
+    ## Example
+    ```yaml
+    amlc:                 # the node is called amcl
+      ros__parameters:
+        max_particles: 2000
+    ```
+
+    ## Fix
+    Use the node's name (with its namespace, or `/**/amcl`), or a wildcard block `/**:`.
+    """
+
+    code = "LV402"
+    slug = "unmatched-param-block"
+    severity = Severity.WARNING
+    message = "parameter block {key!r} matches none of the nodes that load {file}{hint}"
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        uses = ctx.memo_for(self.code)
+        for path, param_file in graph.param_files.items():
+            use = uses.get(path)
+            if not isinstance(use, _FileUse):
+                use = _FileUse(param_file)
+                uses[path] = use
+            receivers = receivers_of(graph, path, ctx.packages)
+            if receivers is None:
+                use.undecided = True
+                continue
+            for receiver in receivers:
+                use.receivers.setdefault(receiver.label(), receiver)
+                for index, block in enumerate(param_file.blocks):
+                    if receiver.matches(block.key):
+                        use.matched.add(index)
+        return iter(())
+
+    def finish(self, ctx: RuleContext) -> Iterator[Finding]:
+        for path, use in ctx.memo_for(self.code).items():
+            assert isinstance(use, _FileUse) and isinstance(path, Path)
+            if use.undecided or not use.receivers:
+                continue
+            names = {r.fqn.rpartition("/")[2]: r.fqn for r in use.receivers.values()
+                     if r.fqn is not None}
+            for index, block in enumerate(use.param_file.blocks):
+                if index in use.matched:
+                    continue
+                hint = _closest(block.key, names)
+                shown = sorted(use.receivers)
+                listed = ", ".join(shown[:6]) + (", ..." if len(shown) > 6 else "")
+                first = use.receivers[shown[0]].node
+                yield self.finding(
+                    block.span,
+                    related=(Related(first.origin.span, f"loaded by {listed}"),),
+                    key=block.key, file=path.name, hint=hint,
+                )
+
+
+def receivers_of(graph: LaunchGraph, path: Path,
+                 packages: PackageIndex | None) -> list[Receiver] | None:
+    """Return the nodes that load a parameter file; ``None`` if that cannot be known.
+
+    Unknown when a node loading it has a name or namespace launchverify does not know,
+    or when the file's path is passed to something it cannot see into (an include it
+    could not evaluate, a process command line, an opaque Python construct).
+    """
+    receivers: list[Receiver] = []
+    spellings: set[str] = {str(path)}
+    for node in graph.nodes:
+        for param in node.parameters:
+            if param.source != path:
+                continue
+            if param.file is not None and (text := graph.base(param.file)) is not None:
+                spellings.add(text)
+            receiver = _receiver(graph, node, packages)
+            if receiver is None:
+                return None
+            receivers.append(receiver)
+            break
+    if graph.opaque_files:
+        return None
+    for include in graph.includes:
+        if include.status != "loaded" and any(
+            _mentions(graph.base(value), spellings) for _, value, _ in include.arguments
+        ):
+            return None
+    for process in graph.processes:
+        if any(text is not None and _mentions(text, spellings)
+               for text in (graph.base(part) for part in process.cmd)):
+            return None
+    return receivers
+
+
+def _receiver(graph: LaunchGraph, node: NodeRecord,
+              packages: PackageIndex | None) -> Receiver | None:
+    package_name = graph.base(node.package)
+    package = packages.find(package_name) if packages and package_name else None
+    inner = (name_literals(package) if package is not None else None) or frozenset()
+    fqn = graph.base(node.fqn)
+    if fqn is not None:
+        return Receiver(node, fqn, inner=inner)
+    if node.name is not None:
+        return None  # a name we cannot compute
+    namespace = "/" if node.namespace is None else graph.base(node.namespace)
+    if namespace is None:
+        return None
+    names = default_node_names(package) if package is not None else None
+    executable = graph.base(node.executable)
+    if names is not None and executable is not None:
+        names = names | {executable}
+    return Receiver(node, None, namespace, names, inner)
+
+
+def _mentions(text: str | None, spellings: set[str]) -> bool:
+    return text is None or any(spelling in text for spelling in spellings)
+
+
+def _closest(key: str, names: dict[str, str]) -> str:
+    """Return " (did you mean '/robot1/listener'?)" for the node a block was likely for."""
+    last = key.rpartition("/")[2]
+    if last in names:
+        return f" (did you mean {names[last]!r}?)"
+    close = difflib.get_close_matches(last, sorted(names), n=1, cutoff=0.75)
+    return f" (did you mean {names[close[0]]!r}?)" if close else ""

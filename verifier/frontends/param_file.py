@@ -1,0 +1,217 @@
+"""Read a ROS 2 parameter file the way rcl's YAML parameter parser does, with lines.
+
+A parameter file maps node keys (``/ns/node``, ``node``, ``/**``, nested mappings of
+namespaces) to ``ros__parameters`` blocks whose nested mappings become dotted parameter
+names. rcl types plain scalars itself (``y``/``n`` are booleans, ``5`` an integer, ``5.0``
+a double; quoted values are strings) and rejects what it cannot represent: a value before
+``ros__parameters``, ``ros__parameters`` without a node key, sequences mixing types,
+nested sequences, empty values. We record those as problems (the file would stop the node
+from starting) together with what PyYAML would hide: duplicate keys, of which it keeps
+the last, and node keys with no ``ros__parameters`` under them, which ROS ignores.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import yaml
+
+from launchverify.frontends.yaml_reader import YamlLoadError, compose, span_of
+from launchverify.problems import ProblemSink
+from launchverify.span import Span
+
+MAX_BYTES = 2 * 1024 * 1024
+PARAMETERS_KEY = "ros__parameters"
+
+_TRUE = frozenset({"y", "Y", "yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON"})
+_FALSE = frozenset({"n", "N", "no", "No", "NO", "false", "False", "FALSE", "off", "Off",
+                    "OFF"})
+_INTEGER = re.compile(r"[+-]?\d+")
+_SPECIAL_FLOATS = {".nan": float("nan"), ".NaN": float("nan"), ".NAN": float("nan"),
+                   ".inf": float("inf"), ".Inf": float("inf"), ".INF": float("inf"),
+                   "-.inf": float("-inf"), "-.Inf": float("-inf"), "-.INF": float("-inf")}
+
+
+@dataclass(frozen=True, slots=True)
+class FileParameter:
+    """One parameter value as a node would receive it."""
+
+    value: object
+    kind: str  # bool, integer, double, string, or <kind>_array
+    span: Span
+
+
+@dataclass
+class ParamBlock:
+    """One ``ros__parameters`` block and the node key (pattern) it applies to."""
+
+    key: str  # as rcl reads it, with a leading "/": "/amcl", "/**", "/robot1/*/planner"
+    span: Span  # the node key as written
+    parameters: dict[str, FileParameter] = field(default_factory=dict)
+
+
+@dataclass
+class ParamFile:
+    """What a parameter file holds, and what is wrong with it."""
+
+    path: Path
+    blocks: list[ParamBlock] = field(default_factory=list)
+    sink: ProblemSink = field(default_factory=ProblemSink)
+    readable: bool = True
+
+
+def load_param_file(path: Path) -> ParamFile:
+    """Read a parameter file; problems are recorded, never raised."""
+    result = ParamFile(path)
+    try:
+        data = path.read_bytes()
+    except OSError as error:
+        result.readable = False
+        result.sink.parse(f"cannot read parameter file: {error.strerror or error}",
+                          Span(path, 1))
+        return result
+    if len(data) > MAX_BYTES:
+        result.readable = False
+        result.sink.parse(f"parameter file larger than {MAX_BYTES} bytes", Span(path, 1))
+        return result
+    try:
+        root = compose(data.decode("utf-8"))
+    except UnicodeDecodeError:
+        result.readable = False
+        result.sink.parse("parameter file is not UTF-8", Span(path, 1))
+        return result
+    except YamlLoadError as error:
+        result.readable = False
+        result.sink.parse(str(error), Span(path, error.line, error.column))
+        return result
+    if root is None:
+        return result
+    if not isinstance(root, yaml.MappingNode):
+        result.sink.parse("a parameter file must map node names to ros__parameters",
+                          span_of(path, root))
+        return result
+    _Reader(result).node_level(root, [])
+    return result
+
+
+class _Reader:
+    def __init__(self, result: ParamFile) -> None:
+        self.result = result
+        self.path = result.path
+
+    def problem(self, message: str, node: yaml.Node) -> None:
+        self.result.sink.parse(message, span_of(self.path, node))
+
+    def pairs(self, mapping: yaml.MappingNode) -> list[tuple[str, yaml.Node, yaml.Node]]:
+        """Return (key, key node, value node); duplicate keys are reported, last wins."""
+        seen: dict[str, yaml.Node] = {}
+        out: list[tuple[str, yaml.Node, yaml.Node]] = []
+        for key_node, value_node in mapping.value:
+            if key_node.tag == "tag:yaml.org,2002:merge" and isinstance(
+                    value_node, yaml.MappingNode):
+                out.extend(self.pairs(value_node))  # ``<<: *defaults``
+                continue
+            key = str(key_node.value) if isinstance(key_node, yaml.ScalarNode) else ""
+            if key in seen:
+                self.problem(f"duplicate key {key!r}: only the last one is used (the first "
+                             f"is at line {seen[key].start_mark.line + 1})", key_node)
+                out = [item for item in out if item[0] != key]
+            seen[key] = key_node
+            out.append((key, key_node, value_node))
+        return out
+
+    def node_level(self, mapping: yaml.MappingNode, names: list[tuple[str, yaml.Node]]) -> bool:
+        """Read node keys down to ``ros__parameters``; return whether any block was found."""
+        found = False
+        for key, key_node, value in self.pairs(mapping):
+            if key == PARAMETERS_KEY:
+                if not names:
+                    self.problem("ros__parameters without a node name above it (rcl: "
+                                 "there are no node names before ros__parameters)", key_node)
+                    continue
+                block = ParamBlock(_node_key([n for n, _ in names]),
+                                   span_of(self.path, names[-1][1]))
+                if isinstance(value, yaml.MappingNode):
+                    self.parameters(value, "", block)
+                elif not _empty(value):
+                    self.problem("ros__parameters must hold a mapping of parameters", value)
+                self.result.blocks.append(block)
+                found = True
+            elif isinstance(value, yaml.MappingNode):
+                if self.node_level(value, [*names, (key, key_node)]):
+                    found = True
+                else:
+                    self.problem(f"no ros__parameters under {key!r}: ROS ignores this "
+                                 "block", key_node)
+            else:
+                self.problem(f"{key!r} holds a value before any ros__parameters (rcl "
+                             "rejects the file)", key_node)
+        return found
+
+    def parameters(self, mapping: yaml.MappingNode, prefix: str, block: ParamBlock) -> None:
+        for key, key_node, value in self.pairs(mapping):
+            name = f"{prefix}.{key}" if prefix else key
+            if isinstance(value, yaml.MappingNode):
+                self.parameters(value, name, block)
+            elif isinstance(value, yaml.SequenceNode):
+                parameter = self.sequence(name, value)
+                if parameter is not None:
+                    block.parameters[name] = parameter
+            else:
+                assert isinstance(value, yaml.ScalarNode)
+                if _empty(value):
+                    self.problem(f"parameter {name!r} has no value", key_node)
+                    continue
+                parsed, kind = scalar(value)
+                block.parameters[name] = FileParameter(parsed, kind, span_of(self.path,
+                                                                             key_node))
+
+    def sequence(self, name: str, node: yaml.SequenceNode) -> FileParameter | None:
+        values: list[object] = []
+        kinds: set[str] = set()
+        for item in node.value:
+            if not isinstance(item, yaml.ScalarNode):
+                self.problem(f"parameter {name!r}: a list may hold only plain values",
+                             item)
+                return None
+            parsed, kind = scalar(item)
+            if kinds and kind not in kinds:
+                self.problem(f"parameter {name!r}: a list must hold values of one type; "
+                             f"this {kind} follows {next(iter(kinds))} values (rcl: "
+                             "sequence should be of same type)", item)
+                return None
+            kinds.add(kind)
+            values.append(parsed)
+        kind = f"{next(iter(kinds))}_array" if kinds else "string_array"
+        return FileParameter(values, kind, span_of(self.path, node))
+
+
+def scalar(node: yaml.ScalarNode) -> tuple[object, str]:
+    """Type a scalar as rcl does: quoted is a string, else bool, integer, double, string."""
+    text = str(node.value)
+    if node.style in ("'", '"'):
+        return text, "string"
+    if text in _TRUE:
+        return True, "bool"
+    if text in _FALSE:
+        return False, "bool"
+    if _INTEGER.fullmatch(text):
+        return int(text), "integer"
+    if text in _SPECIAL_FLOATS:
+        return _SPECIAL_FLOATS[text], "double"
+    try:
+        return float(text), "double"
+    except ValueError:
+        return text, "string"
+
+
+def _empty(node: yaml.Node) -> bool:
+    """A plain scalar with nothing written (libyaml spells the plain style ``''``)."""
+    return isinstance(node, yaml.ScalarNode) and node.value == "" and not node.style
+
+
+def _node_key(parts: list[str]) -> str:
+    joined = "/".join(part.strip("/") for part in parts if part.strip("/"))
+    return "/" + joined

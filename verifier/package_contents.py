@@ -1,0 +1,72 @@
+"""What a workspace package provides, read from its sources: the node names its code gives.
+
+A ``Node`` started without ``name=`` is called whatever its code calls it
+(``rclcpp::Node("controller_server")``, ``super().__init__('talker')``), and a process may
+create more nodes inside (nav2's ``controller_server`` creates ``local_costmap``), which
+receive the parameter files of the process too. launchverify cannot run the code, but it
+can read the string literals of a package: those passed to node constructors are the
+names its nodes may have, and any name-like literal may name an inner node. ``None`` means
+the package has no sources here (an installed or released package): nothing is known.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from functools import lru_cache
+from pathlib import Path
+
+from launchverify.packages import SKIP_DIRS, Package
+
+MAX_SOURCE_FILES = 2_000
+_TEST_DIRS = frozenset({"test", "tests"})
+MAX_SOURCE_BYTES = 512 * 1024
+_SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".hpp", ".hh", ".h", ".py")
+# Node("x"), LifecycleNode("x"), rclcpp::Node("x"), make_shared<rclcpp::Node>("x"),
+# nav2_util::LifecycleNode("x", ...), super().__init__('x'), Node('x'), node_name='x'.
+_NODE_NAME = re.compile(
+    r"""(?:Node\s*>?\s*\(|super\(\)\s*\.\s*__init__\s*\(|node_name\s*=)\s*(?:node_name\s*=\s*)?
+        ["']([A-Za-z_][A-Za-z0-9_]*)["']""",
+    re.VERBOSE,
+)
+
+
+_LITERAL = re.compile(r"""["']([A-Za-z_][A-Za-z0-9_]*)["']""")
+
+
+def default_node_names(package: Package) -> frozenset[str] | None:
+    """Return the node names a package's code may give its nodes (``None``: unknown)."""
+    if package.source is None:
+        return None
+    return _scan(package.source)[0]
+
+
+def name_literals(package: Package) -> frozenset[str] | None:
+    """Return every name-like string literal of a package's code (``None``: unknown)."""
+    if package.source is None:
+        return None
+    return _scan(package.source)[1]
+
+
+@lru_cache(maxsize=256)
+def _scan(source: Path) -> tuple[frozenset[str], frozenset[str]]:
+    names: set[str] = set()
+    literals: set[str] = set()
+    files = 0
+    for folder, dirs, filenames in os.walk(source):
+        dirs[:] = [d for d in dirs
+                   if d not in SKIP_DIRS and d not in _TEST_DIRS and not d.startswith(".")]
+        for filename in filenames:
+            if not filename.endswith(_SOURCE_SUFFIXES):
+                continue
+            files += 1
+            if files > MAX_SOURCE_FILES:
+                return frozenset(names), frozenset(literals)
+            try:
+                data = (Path(folder) / filename).read_bytes()[:MAX_SOURCE_BYTES]
+            except OSError:
+                continue
+            text = data.decode("utf-8", "replace")
+            names.update(_NODE_NAME.findall(text))
+            literals.update(_LITERAL.findall(text))
+    return frozenset(names), frozenset(literals)
