@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+from pathlib import Path
 
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Rule, RuleContext, Severity
@@ -16,10 +17,11 @@ class ParamFileError(Rule):
     `parameters=[path]`, `ParameterFile`, `RewrittenYaml`, `SetParametersFromFile`) the way
     rcl's parameter parser does, and reports: YAML syntax errors; values before
     `ros__parameters` or `ros__parameters` without a node name (rcl rejects the file);
-    lists mixing types such as `[0.05, 0]` or holding lists and mappings (rcl: "Sequence
-    should be of same type"); parameters without a value; node keys with no
-    `ros__parameters` under them (ignored); duplicate keys (YAML keeps the last one
-    silently).
+    lists mixing types such as `[0.05, 0]` (rcl: "Sequence should be of same type") and
+    lists of lists; parameters without a value; node keys with no `ros__parameters`
+    under them (ignored); duplicate keys (YAML keeps the last one silently). Files that
+    only components loaded into a container read are read by launch_ros, not rcl: for
+    them only what YAML itself gets wrong is reported.
 
     ## Why it matters
     rcl refuses the whole file and the node does not start (`Couldn't parse params file`),
@@ -44,6 +46,15 @@ class ParamFileError(Rule):
     message = "{text}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        for param_file in graph.param_files.values():
-            for problem in param_file.sink.problems:
+        for path, param_file in graph.param_files.items():
+            problems = list(param_file.sink.problems)
+            if not only_components(graph, path):
+                problems += param_file.rcl_sink.problems
+            for problem in problems:
                 yield self.finding(problem.span, text=problem.message)
+
+
+def only_components(graph: LaunchGraph, path: Path) -> bool:
+    """Return whether only loaded components read a file (launch_ros reads it, not rcl)."""
+    kinds = {node.kind for node in graph.nodes for p in node.parameters if p.source == path}
+    return bool(kinds) and kinds <= {"composable_node", "composable_lifecycle_node"}

@@ -45,13 +45,13 @@ class Receiver:
 
     def matches(self, key: str) -> bool:
         """Return whether a block's node key can apply to this node."""
-        if self.fqn is not None and key.rpartition("/")[2] not in self.inner:
-            if self.component:
-                return key == "/**" or key.strip("/") == self.fqn.strip("/")
-            return node_key_matches(key, self.fqn)
         prefix, _, last = key.rpartition("/")
         if last in self.inner and not self.component:
             return True  # a node the process creates inside gets the process's files
+        if self.fqn is not None:
+            if self.component:
+                return key == "/**" or key.strip("/") == self.fqn.strip("/")
+            return node_key_matches(key, self.fqn)
         if last == "**":
             return node_key_matches(key, self.namespace.rstrip("/") + "/x")
         if self.names is not None and last != "*" and last not in self.names:

@@ -59,6 +59,8 @@ class ParamFile:
     path: Path
     blocks: list[ParamBlock] = field(default_factory=list)
     sink: ProblemSink = field(default_factory=ProblemSink)
+    # What only rcl rejects: launch_ros reads files for loaded components itself.
+    rcl_sink: ProblemSink = field(default_factory=ProblemSink)
     readable: bool = True
 
 
@@ -104,6 +106,9 @@ class _Reader:
     def problem(self, message: str, node: yaml.Node) -> None:
         self.result.sink.parse(message, span_of(self.path, node))
 
+    def rcl_problem(self, message: str, node: yaml.Node) -> None:
+        self.result.rcl_sink.parse(message, span_of(self.path, node))
+
     def pairs(self, mapping: yaml.MappingNode) -> list[tuple[str, yaml.Node, yaml.Node]]:
         """Return (key, key node, value node); duplicate keys are reported, last wins."""
         seen: dict[str, yaml.Node] = {}
@@ -128,8 +133,9 @@ class _Reader:
         for key, key_node, value in self.pairs(mapping):
             if key == PARAMETERS_KEY:
                 if not names:
-                    self.problem("ros__parameters without a node name above it (rcl: "
-                                 "there are no node names before ros__parameters)", key_node)
+                    self.rcl_problem("ros__parameters without a node name above it (rcl: "
+                                     "there are no node names before ros__parameters)",
+                                     key_node)
                     continue
                 block = ParamBlock(_node_key([n for n, _ in names]),
                                    span_of(self.path, names[-1][1]))
@@ -146,8 +152,8 @@ class _Reader:
                     self.problem(f"no ros__parameters under {key!r}: ROS ignores this "
                                  "block", key_node)
             else:
-                self.problem(f"{key!r} holds a value before any ros__parameters (rcl "
-                             "rejects the file)", key_node)
+                self.rcl_problem(f"{key!r} holds a value before any ros__parameters (rcl "
+                                 "rejects the file)", key_node)
         return found
 
     def parameters(self, mapping: yaml.MappingNode, prefix: str, block: ParamBlock) -> None:
@@ -162,7 +168,7 @@ class _Reader:
             else:
                 assert isinstance(value, yaml.ScalarNode)
                 if _empty(value):
-                    self.problem(f"parameter {name!r} has no value", key_node)
+                    self.rcl_problem(f"parameter {name!r} has no value", key_node)
                     continue
                 parsed, kind = scalar(value)
                 block.parameters[name] = FileParameter(parsed, kind, span_of(self.path,
@@ -171,19 +177,27 @@ class _Reader:
     def sequence(self, name: str, node: yaml.SequenceNode) -> FileParameter | None:
         values: list[object] = []
         kinds: set[str] = set()
+        inner_lists = 0
         for item in node.value:
+            if isinstance(item, yaml.SequenceNode):
+                inner_lists += 1
+                if inner_lists == 2:
+                    self.rcl_problem(f"parameter {name!r}: a list of lists (rcl: sequences "
+                                     "cannot be key)", item)
+                    return None
+                continue
             if not isinstance(item, yaml.ScalarNode):
-                self.problem(f"parameter {name!r}: a list may hold only plain values",
-                             item)
-                return None
+                return None  # what rcl makes of mappings in lists is not modelled
             parsed, kind = scalar(item)
             if kinds and kind not in kinds:
-                self.problem(f"parameter {name!r}: a list must hold values of one type; "
-                             f"this {kind} follows {next(iter(kinds))} values (rcl: "
-                             "sequence should be of same type)", item)
+                self.rcl_problem(f"parameter {name!r}: a list must hold values of one type; "
+                                 f"this {kind} follows {next(iter(kinds))} values (rcl: "
+                                 "sequence should be of same type)", item)
                 return None
             kinds.add(kind)
             values.append(parsed)
+        if inner_lists:
+            return None
         kind = f"{next(iter(kinds))}_array" if kinds else "string_array"
         return FileParameter(values, kind, span_of(self.path, node))
 
