@@ -20,6 +20,7 @@ from launchverify.rules.health.unmodeled_construct import UnmodeledConstruct
 from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
 from launchverify.rules.naming.invalid_name import InvalidName
 from launchverify.rules.parameters.param_file_error import ParamFileError
+from launchverify.rules.parameters.param_type_conflict import ParamTypeConflict
 from launchverify.rules.parameters.unmatched_param_block import UnmatchedParamBlock
 
 BUILTIN: tuple[type[Rule], ...] = (
@@ -41,4 +42,5 @@ BUILTIN: tuple[type[Rule], ...] = (
     UnknownPackage,           # LV303
     ParamFileError,           # LV401
     UnmatchedParamBlock,      # LV402
+    ParamTypeConflict,        # LV403
 )

@@ -1,0 +1,138 @@
+"""The parameters a node ends up with, and where each value comes from.
+
+launch_ros turns a node's parameter sources into command-line rules, in this order:
+``SetParameter`` (``-p name:=value``, for every node: key ``/**``) and
+``SetParametersFromFile`` in scope, then the node's own ``parameters`` (files as
+``--params-file``; dicts as a file keyed by the node's name, or ``/**`` when that is not
+known). rcl merges all of them into one table keyed by node pattern, each key placed where
+it first appears; a node takes the parameters of every key that matches its name, in that
+order, later ones winning. So a node-specific block wins over ``/**`` only when its key
+appears after the first ``/**`` (docs/launch-semantics §8.2).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from launchverify.graph import LaunchGraph, NodeRecord, ParamRecord
+from launchverify.ir.subst import Sub
+from launchverify.models.parameter_values import typed_parameter
+from launchverify.models.ros_names import node_key_matches
+from launchverify.span import Span
+
+COMPONENT_KINDS = ("composable_node", "composable_lifecycle_node")
+EVERY_NODE = "/**"
+
+
+@dataclass(frozen=True, slots=True)
+class Contribution:
+    """One value a parameter source gives a parameter."""
+
+    value: object
+    kind: str  # bool, integer, double, string, <kind>_array, or "unknown"
+    span: Span  # where the value is written
+    layer: str  # what kind of source: set_parameter, file, inline
+
+
+@dataclass
+class EffectiveParameters:
+    """Every parameter of one node, each with its contributions in precedence order."""
+
+    node: NodeRecord
+    fqn: str | None
+    values: dict[str, list[Contribution]] = field(default_factory=dict)
+    complete: bool = True  # False when a source could not be read or matched
+
+    def winner(self, name: str) -> Contribution | None:
+        """Return the contribution the node receives for ``name`` (the last one)."""
+        found = self.values.get(name)
+        return found[-1] if found else None
+
+
+def kind_of(value: object) -> str:
+    """Return the ROS parameter type of a Python value."""
+    if isinstance(value, bool):
+        return "bool"
+    if isinstance(value, int):
+        return "integer"
+    if isinstance(value, float):
+        return "double"
+    if isinstance(value, str):
+        return "string"
+    if isinstance(value, (list, tuple)):
+        kinds = {kind_of(item) for item in value}
+        return f"{kinds.pop()}_array" if len(kinds) == 1 else "unknown"
+    return "unknown"
+
+
+def effective_parameters(graph: LaunchGraph, node: NodeRecord) -> EffectiveParameters:
+    """Return what a node receives, under the arguments as given."""
+    fqn = graph.base(node.fqn)
+    result = EffectiveParameters(node, fqn)
+    component = node.kind in COMPONENT_KINDS
+    table: dict[str, list[tuple[str, Contribution]]] = {}  # key -> [(name, value)] in order
+    own_key = fqn if fqn is not None else EVERY_NODE
+    for param in node.parameters:
+        if param.file is not None:
+            _add_file(graph, param, table, result)
+        else:
+            name = graph.base(param.name) if param.name is not None else None
+            if name is None:
+                result.complete = False
+                continue
+            value = _inline_value(graph, param)
+            layer = "set_parameter" if param.scope else "inline"
+            key = EVERY_NODE if param.scope else own_key
+            table.setdefault(key, []).append((name, Contribution(
+                value, kind_of(value) if value is not None else "unknown",
+                param.origin.span, layer)))
+    for key, entries in table.items():
+        if not _applies(key, fqn, component):
+            continue
+        for name, contribution in entries:
+            result.values.setdefault(name, []).append(contribution)
+    return result
+
+
+def _applies(key: str, fqn: str | None, component: bool) -> bool:
+    if key == EVERY_NODE:
+        return True
+    if fqn is None:
+        return False
+    if component:
+        return key.strip("/") == fqn.strip("/")
+    return node_key_matches(key, fqn)
+
+
+def _add_file(graph: LaunchGraph, param: ParamRecord,
+              table: dict[str, list[tuple[str, Contribution]]],
+              result: EffectiveParameters) -> None:
+    source = param.source
+    loaded = graph.param_files.get(source) if source is not None else None
+    if loaded is None or not loaded.readable:
+        result.complete = False
+        return
+    for block in loaded.blocks:
+        entries = table.setdefault(block.key, [])
+        for name, parameter in block.parameters.items():
+            entries.append((name, Contribution(parameter.value, parameter.kind,
+                                               parameter.span, "file")))
+
+
+def _inline_value(graph: LaunchGraph, param: ParamRecord) -> object:
+    """Return an inline value as the node receives it (``None`` when not known)."""
+    value = param.value
+    if isinstance(value, Sub):
+        text = graph.base(value)
+        return None if text is None else typed_parameter(text, param.value_type)
+    if isinstance(value, tuple):
+        items = [_inline_item(graph, item, param.value_type) for item in value]
+        return None if any(item is None for item in items) else items
+    return value
+
+
+def _inline_item(graph: LaunchGraph, item: object, value_type: str | None) -> object:
+    if isinstance(item, Sub):
+        text = graph.base(item)
+        return None if text is None else typed_parameter(text, value_type)
+    return item
