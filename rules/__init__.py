@@ -19,6 +19,7 @@ from launchverify.rules.health.parse_error import ParseError
 from launchverify.rules.health.unmodeled_construct import UnmodeledConstruct
 from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
 from launchverify.rules.naming.invalid_name import InvalidName
+from launchverify.rules.parameters.inconsistent_sim_time import InconsistentSimTime
 from launchverify.rules.parameters.param_file_error import ParamFileError
 from launchverify.rules.parameters.param_type_conflict import ParamTypeConflict
 from launchverify.rules.parameters.unmatched_param_block import UnmatchedParamBlock
@@ -43,4 +44,5 @@ BUILTIN: tuple[type[Rule], ...] = (
     ParamFileError,           # LV401
     UnmatchedParamBlock,      # LV402
     ParamTypeConflict,        # LV403
+    InconsistentSimTime,      # LV404
 )

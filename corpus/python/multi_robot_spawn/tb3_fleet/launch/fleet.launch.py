@@ -31,5 +31,6 @@ def generate_launch_description():
         ])
         # spawn one robot after the other
         ld.add_action(TimerAction(period=2.0 * index, actions=[group]))
-    ld.add_action(Node(package='rviz2', executable='rviz2', name='rviz2'))
+    # rviz keeps wall-clock time while the simulated robots use sim time
+    ld.add_action(Node(package='rviz2', executable='rviz2', name='rviz2'))  # expect: LV404
     return ld
