@@ -14,6 +14,7 @@ from launchverify.graph import LaunchGraph, NodeRecord, Origin, ParamRecord
 from launchverify.ir.subst import Sub
 from launchverify.models.parameter_values import typed_parameter
 from launchverify.models.ros_names import node_fqn
+from launchverify.parameters import Contribution, effective_parameters
 from launchverify.paths import display_path
 
 
@@ -63,8 +64,32 @@ class GraphView:
             "container": self.value(node.container),
             "remappings": [[self.value(r.src), self.value(r.dst)] for r in node.remappings],
             "parameters": [self.parameter(p) for p in node.parameters],
+            "effective_parameters": self.effective(node),
             **self.where(node.origin),
         }
+
+    def effective(self, node: NodeRecord) -> dict[str, Any] | None:
+        """Return what the node receives per parameter, where from, and what it overrides.
+
+        Under the arguments as given; ``None`` in the symbolic view.
+        """
+        if self.symbolic:
+            return None
+        resolved = effective_parameters(self.graph, node)
+        out: dict[str, Any] = {}
+        for name, contributions in sorted(resolved.values.items()):
+            *overridden, winner = contributions
+            out[name] = {
+                **self.contribution(winner),
+                "overrides": [self.contribution(c) for c in reversed(overridden)],
+            }
+        return out
+
+    def contribution(self, contribution: Contribution) -> dict[str, Any]:
+        """Return one value of a parameter with its source."""
+        return {"value": contribution.value, "type": contribution.kind,
+                "from": f"{display_path(contribution.span.file)}:{contribution.span.line}",
+                "layer": contribution.layer}
 
     def parameter(self, param: ParamRecord) -> dict[str, Any]:
         """Return one parameter source."""
@@ -144,8 +169,15 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
         for param in node["parameters"]:
             if "file" in param:
                 out.write(f"    params {param['file']}\n")
-            else:
-                out.write(f"    param {param['name']} = {param['value']}\n")
+        for name, value in (node["effective_parameters"] or {}).items():
+            overrides = "".join(f"; overrides {o['value']!r} from {o['from']}"
+                                for o in value["overrides"])
+            out.write(f"    param {name} = {value['value']!r}  ({value['from']}, "
+                      f"{value['layer']}{overrides})\n")
+        if node["effective_parameters"] is None:
+            for param in node["parameters"]:
+                if "file" not in param:
+                    out.write(f"    param {param['name']} = {param['value']}\n")
     for process in doc["processes"]:
         out.write(f"process: {' '.join(str(c) for c in process['cmd'])}  "
                   f"({process['file']}:{process['line']})\n")
