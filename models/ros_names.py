@@ -96,11 +96,22 @@ def validate_topic_name(name: str) -> str | None:
 
 
 def validate_remap_name(name: str) -> str | None:
-    """Return why one side of a remap rule is invalid (``rostopic://`` prefixes allowed)."""
+    """Return why one side of a remap rule is invalid.
+
+    ``rostopic://`` prefixes are allowed, and a ``node_name:`` prefix that limits the rule
+    to one node of the process (``talker:chatter:=news``).
+    """
     for prefix in ("rostopic://", "rosservice://"):
         if name.startswith(prefix):
             name = name[len(prefix):]
             break
+    else:
+        node, colon, rest = name.partition(":")
+        if colon:
+            problem = validate_node_name(node)
+            if problem is not None:
+                return f"node name before ':' is invalid: {problem}"
+            name = rest
     if name in ("__node", "__name", "__ns"):
         return None
     if "*" in name:
@@ -142,6 +153,23 @@ def make_absolute(namespace: str | None) -> str | None:
 def node_fqn(namespace: str, name: str) -> str:
     """Return the fully qualified name of a node."""
     return "/" + name if namespace in ("", "/") else namespace + "/" + name
+
+
+def expand_topic_name(name: str, namespace: str, node_name: str) -> str:
+    """Expand a topic or service name as rcl does before matching remap rules.
+
+    Examples:
+        >>> expand_topic_name("chatter", "/robot1", "talker")
+        '/robot1/chatter'
+        >>> expand_topic_name("~/status", "/", "talker"), expand_topic_name("/tf", "/ns", "x")
+        ('/talker/status', '/tf')
+    """
+    base = "" if namespace in ("", "/") else namespace.rstrip("/")
+    if name.startswith("/"):
+        return name
+    if name == "~" or name.startswith("~/"):
+        return f"{base}/{node_name}{name[1:]}"
+    return f"{base}/{name}"
 
 
 def node_key_matches(key: str, fqn: str) -> bool:

@@ -19,6 +19,7 @@ from launchverify.rules.health.parse_error import ParseError
 from launchverify.rules.health.unmodeled_construct import UnmodeledConstruct
 from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
 from launchverify.rules.naming.invalid_name import InvalidName
+from launchverify.rules.naming.remap_collision import RemapCollision
 from launchverify.rules.parameters.inconsistent_sim_time import InconsistentSimTime
 from launchverify.rules.parameters.param_file_error import ParamFileError
 from launchverify.rules.parameters.param_type_conflict import ParamTypeConflict
@@ -30,6 +31,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     UnmodeledConstruct,       # LV003
     DuplicateNodeName,        # LV101
     InvalidName,              # LV102
+    RemapCollision,           # LV103
     UndeclaredArgument,       # LV201
     UnusedArgument,           # LV202
     InvalidDefault,           # LV203
