@@ -13,6 +13,7 @@ from launchverify.rules.conditions.invalid_condition_value import InvalidConditi
 from launchverify.rules.conditions.unreachable_condition import UnreachableCondition
 from launchverify.rules.files.include_cycle import IncludeCycle
 from launchverify.rules.files.missing_file import MissingFile
+from launchverify.rules.files.unknown_executable import UnknownExecutable
 from launchverify.rules.files.unknown_package import UnknownPackage
 from launchverify.rules.health.evaluation_error import EvaluationError
 from launchverify.rules.health.parse_error import ParseError
@@ -43,6 +44,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     IncludeCycle,             # LV301
     MissingFile,              # LV302
     UnknownPackage,           # LV303
+    UnknownExecutable,        # LV304
     ParamFileError,           # LV401
     UnmatchedParamBlock,      # LV402
     ParamTypeConflict,        # LV403

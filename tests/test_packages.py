@@ -94,3 +94,40 @@ def test_symlinked_repositories_are_followed_once(tmp_path: Path) -> None:
     package = PackageIndex([tmp_path / "ws"]).find("fast_driver")
     assert package is not None and package.source is not None
     assert (package.source / "package.xml").is_file()
+
+
+def test_installed_executables_are_listed(tmp_path: Path) -> None:
+    from launchverify.package_executables import executables
+    from launchverify.packages import Package
+
+    lib = tmp_path / "install" / "lib" / "fast_driver"
+    lib.mkdir(parents=True)
+    (lib / "driver_node").write_text("#!/bin/sh\n")
+    (lib / "driver_node").chmod(0o755)
+    (lib / "notes.txt").write_text("not executable\n")
+    found = executables(Package("fast_driver", prefix=tmp_path / "install"))
+    assert found is not None and found.complete
+    assert found.names == {"driver_node"}
+
+
+def test_cmake_variables_lists_and_branches(tmp_path: Path) -> None:
+    from launchverify.package_executables import executables
+    from launchverify.packages import Package
+
+    source = make_package(tmp_path, "tools")
+    (source / "CMakeLists.txt").write_text(
+        "project(tools)\n"
+        "set(NODES a_node b_node)\n"
+        "list(APPEND NODES c_node)\n"
+        "foreach(n IN LISTS NODES)\n"
+        "  add_executable(${n} src/${n}.cpp)\n"
+        "endforeach()\n"
+        "if(WITH_EXTRA)\n"
+        "  install(TARGETS a_node b_node DESTINATION lib/${PROJECT_NAME})\n"
+        "else()\n"
+        "  install(TARGETS c_node RUNTIME DESTINATION lib/${PROJECT_NAME})\n"
+        "endif()\n"
+        "install(TARGETS b_node DESTINATION bin)\n")
+    found = executables(Package("tools", source=source))
+    assert found is not None and found.complete
+    assert found.names == {"a_node", "b_node", "c_node"}
