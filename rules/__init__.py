@@ -11,6 +11,8 @@ from launchverify.rules.arguments.unused_argument import UnusedArgument
 from launchverify.rules.conditions.constant_condition import ConstantCondition
 from launchverify.rules.conditions.invalid_condition_value import InvalidConditionValue
 from launchverify.rules.conditions.unreachable_condition import UnreachableCondition
+from launchverify.rules.events.dangling_event_target import DanglingEventTarget
+from launchverify.rules.events.event_cycle import EventCycle
 from launchverify.rules.files.include_cycle import IncludeCycle
 from launchverify.rules.files.missing_file import MissingFile
 from launchverify.rules.files.unknown_executable import UnknownExecutable
@@ -49,4 +51,6 @@ BUILTIN: tuple[type[Rule], ...] = (
     UnmatchedParamBlock,      # LV402
     ParamTypeConflict,        # LV403
     InconsistentSimTime,      # LV404
+    EventCycle,               # LV501
+    DanglingEventTarget,      # LV502
 )

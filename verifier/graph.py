@@ -231,6 +231,36 @@ class ConditionRecord:
 
 
 @dataclass(frozen=True, slots=True)
+class HandlerRecord:
+    """An event handler as registered: what it waits for and where.
+
+    ``target`` is the IR action it listens to (``None``: any action); ``within`` the
+    index of the handler whose entities registered it (``None``: registered at launch).
+    A process's ``on_exit`` is recorded as a ``process_exit`` handler on the process.
+    """
+
+    origin: Origin
+    event: str
+    target: object | None
+    once: bool
+    within: int | None
+
+
+@dataclass(frozen=True, slots=True)
+class ExecutedRecord:
+    """An action that executes: at launch, or when the handler ``within`` fires.
+
+    ``instance`` tells evaluations of one file apart (each include runs the file anew,
+    with new action objects, while launchverify reuses what it read).
+    """
+
+    origin: Origin
+    action: object
+    within: int | None
+    instance: int = 0
+
+
+@dataclass(frozen=True, slots=True)
 class SkippedAction:
     """An action whose condition is constant false: it never runs."""
 
@@ -259,6 +289,8 @@ class LaunchGraph:
     skipped: list[SkippedAction] = field(default_factory=list)
     conditions: list[ConditionRecord] = field(default_factory=list)
     param_files: dict[Path, ParamFile] = field(default_factory=dict)
+    handlers: list[HandlerRecord] = field(default_factory=list)
+    executed: list[ExecutedRecord] = field(default_factory=list)
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into

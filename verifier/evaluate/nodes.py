@@ -63,7 +63,7 @@ class NodeBuilder:
             reducer.reduce(exec_name)
         remaps = (*self.scope_remaps(ctx), *self.own_remaps(action.remappings, ctx))
         params = (*self.scope_params(ctx), *self.own_params(action.parameters, ctx))
-        self.walker.visit_process_options(action.process, action.span, ctx)
+        self.walker.visit_process_options(action.process, action.span, ctx, action)
         record = NodeRecord(
             kind=action.kind, origin=ctx.origin(action.span), package=package,
             executable=executable, name=name, namespace=namespace, fqn=fqn,

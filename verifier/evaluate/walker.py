@@ -38,7 +38,9 @@ from launchverify.graph import (
     ArgumentRecord,
     ConditionRecord,
     ConfigRead,
+    ExecutedRecord,
     FileRef,
+    HandlerRecord,
     IncludeRecord,
     LaunchGraph,
     NameRecord,
@@ -87,6 +89,8 @@ class Walker:
         self.current_file = graph.root
         self.anon_counter = itertools.count(1)
         self.include_stack: list[IncludeRecord] = []
+        self.handler_stack: list[int] = []  # the handlers whose entities are being run
+        self.executed_processes: set[tuple[object, ...]] = set()  # (action, file, loop)
         self.file_stack: list[tuple[Path, tuple[tuple[str | None, str], ...]]] = []
         self.incomplete = False  # something before this point was not understood
 
@@ -211,7 +215,8 @@ class Walker:
             self.problem(ProblemKind.UNMODELED,
                          f"action {type(action).__name__} is not modelled", action.span, inner)
             return
-        handler(action, inner)
+        if self.record_execution(action, inner):
+            handler(action, inner)
 
     def apply_condition(self, condition: c.Condition | None, span: Span, ctx: Ctx) -> Ctx | None:
         """Return the context inside a condition, or ``None`` when it is surely false."""
@@ -569,10 +574,52 @@ class Walker:
         """Ends the launch at run time; statically nothing to record."""
 
     def do_RegisterEventHandler(self, action: a.RegisterEventHandler, ctx: Ctx) -> None:
-        if action.handler.event == "shutdown":
+        handler = action.handler
+        index = self.record_handler(ctx.origin(action.span), handler.event, handler.target,
+                                    handler.handle_once)
+        if handler.event == "shutdown":
             return  # what runs at shutdown is not part of the running system
-        with self.scope():
-            self.visit_all(action.handler.entities, dataclasses.replace(ctx, deferred=True))
+        self.run_handler(index, handler.entities, ctx)
+
+    def record_execution(self, action: a.Action, ctx: Ctx) -> bool:
+        """Record that an action executes; return ``False`` when launch refuses to.
+
+        launch refuses to execute an ``ExecuteProcess``/``Node`` object a second time
+        (``executed more than once``): in Python one object added twice, or run again by
+        an event handler. Each include and each loop iteration makes new objects.
+        """
+        within = self.handler_stack[-1] if self.handler_stack else None
+        instance = id(self.include_stack[-1]) if self.include_stack else 0
+        if isinstance(action, (a.ExecuteProcess, a.Node)):
+            key = (id(action), instance, ctx.loop)
+            if key in self.executed_processes:
+                when = "" if within is None else (
+                    f" when the {self.graph.handlers[within].event.replace('_', ' ')} "
+                    f"handler at {self.graph.handlers[within].origin.span.short()} runs it")
+                self.problem(ProblemKind.EVALUATION, "this process is executed a second "
+                             f"time{when}: ros2 launch raises ('executed more than once')",
+                             action.span, ctx)
+                return False
+            self.executed_processes.add(key)
+        self.graph.executed.append(ExecutedRecord(ctx.origin(action.span), action, within,
+                                                  instance))
+        return True
+
+    def record_handler(self, origin: Origin, event: str, target: object | None,
+                       once: bool) -> int:
+        """Record an event handler; return its index in ``graph.handlers``."""
+        self.graph.handlers.append(HandlerRecord(
+            origin, event, target, once, self.handler_stack[-1] if self.handler_stack else None))
+        return len(self.graph.handlers) - 1
+
+    def run_handler(self, index: int, entities: tuple[a.Action, ...], ctx: Ctx) -> None:
+        """Visit what a handler runs when its event happens (later, in its own scope)."""
+        self.handler_stack.append(index)
+        try:
+            with self.scope():
+                self.visit_all(entities, dataclasses.replace(ctx, deferred=True))
+        finally:
+            self.handler_stack.pop()
 
     def do_EmitEvent(self, action: a.EmitEvent, ctx: Ctx) -> None:
         """Events are handled by the event and lifecycle analyses."""
@@ -639,9 +686,10 @@ class Walker:
         cmd = tuple(reducer.reduce(part) for part in action.cmd)
         name = None if action.process.name is None else reducer.reduce(action.process.name)
         self.graph.processes.append(ProcessRecord(ctx.origin(action.span), cmd, name))
-        self.visit_process_options(action.process, action.span, ctx)
+        self.visit_process_options(action.process, action.span, ctx, action)
 
-    def visit_process_options(self, options: a.ProcessOptions, span: Span, ctx: Ctx) -> None:
+    def visit_process_options(self, options: a.ProcessOptions, span: Span, ctx: Ctx,
+                              process: a.Action | None = None) -> None:
         """Evaluate what every process takes (reads of configurations count as uses)."""
         reducer = self.reducer.at(ctx, span)
         for value in (options.cwd, options.prefix, options.output):
@@ -652,9 +700,9 @@ class Walker:
         for name, value in options.additional_env:
             reducer.reduce(name)
             reducer.reduce(value)
-        if options.on_exit:
-            with self.scope():
-                self.visit_all(options.on_exit, dataclasses.replace(ctx, deferred=True))
+        if options.on_exit:  # an OnProcessExit handler on this very process
+            index = self.record_handler(ctx.origin(span), "process_exit", process, False)
+            self.run_handler(index, options.on_exit, ctx)
 
     def do_Node(self, action: a.Node, ctx: Ctx) -> None:
         self.nodes.run_node(action, ctx)

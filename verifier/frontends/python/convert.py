@@ -54,7 +54,6 @@ class PythonConverter:
         self._unmodeled = unmodeled
         self._fail = fail or unmodeled
         self._fallback = fallback  # where to point when an object knows no line
-        self._executed: set[int] = set()  # processes already placed in a description
         self._claimed: set[int] = set()  # description sources already used by an include
         self._opaque_function = opaque_function
         self._memo: dict[int, a.Action | None] = {}
@@ -121,12 +120,6 @@ class PythonConverter:
             if entity is None:
                 continue
             result = self.action(entity)
-            if isinstance(result, (a.ExecuteProcess, a.Node)):
-                if id(result) in self._executed:
-                    self._fail("this action object is added twice: ros2 launch executes it "
-                               "twice and fails ('executed more than once')", result.span)
-                    continue
-                self._executed.add(id(result))
             if result is not None:
                 out.append(result)
         return tuple(out)

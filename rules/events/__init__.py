@@ -1,0 +1,1 @@
+"""Rules about event handlers: loops without end, targets that never run."""
