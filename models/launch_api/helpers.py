@@ -34,12 +34,11 @@ class RewrittenYaml(Substitution):
         self.source_file = source_file
         self.inputs = [*_values(param_rewrites), *_values(key_rewrites),
                        *_values(value_rewrites)]
-        if root_key is not None:
-            self.inputs.append(root_key)
+        self.root_key = root_key
 
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.Rewritten(cv.sub(self.source_file), tuple(cv.sub(x) for x in self.inputs),
-                           "RewrittenYaml")
+                           "RewrittenYaml", cv.opt_sub(self.root_key))
 
 
 class ReplaceString(Substitution):

@@ -358,10 +358,20 @@ class Reducer:
         return s.Text(joined)
 
     def _rewritten(self, sub: s.Sub) -> s.Sub:
+        """A rewritten file stands for its source, unless its keys move under a root key.
+
+        With a ``root_key`` that is not empty, the file nodes receive differs from the
+        source: it stays an expression (its path and content are not known statically).
+        """
         assert isinstance(sub, s.Rewritten)
         for item in sub.inputs:
             self.reduce(item)
-        return self.reduce(sub.source)
+        source = self.reduce(sub.source)
+        if sub.root_key is not None:
+            root = self.reduce(sub.root_key)
+            if text_of(root) != "":
+                return s.Rewritten(source, (), sub.description, root)
+        return source
 
     def _as_bool(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.AsBool)

@@ -436,12 +436,14 @@ class Rewritten(Sub):
     source: Sub
     inputs: tuple[Sub, ...]
     description: str
+    root_key: Sub | None = None  # RewrittenYaml's root_key: the keys move under it
 
     def describe(self) -> str:
         return f"{self.description}({self.source.describe()})"
 
     def children(self) -> tuple[Sub, ...]:
-        return (self.source, *self.inputs)
+        root = () if self.root_key is None else (self.root_key,)
+        return (self.source, *self.inputs, *root)
 
 
 @dataclass(frozen=True, slots=True)
