@@ -9,17 +9,26 @@ forces the type. A plain Python ``str`` is never parsed; the frontends keep it a
 
 from __future__ import annotations
 
+import functools
+
 import yaml
 
 _SCALARS = (bool, int, float, str)
 
 
+@functools.lru_cache(maxsize=8192)
 def typed_parameter(text: str, value_type: str | None = None) -> object:
     """Return the value a node receives for ``text`` (the text itself when it cannot tell).
 
     Values launch_ros would reject (a YAML mapping or null, a mixed list) are returned as
-    text: reporting them is a rule's job, not the graph's.
+    text: reporting them is a rule's job, not the graph's. Lists come back as tuples
+    (values are shared between callers).
     """
+    value = _typed(text, value_type)
+    return tuple(value) if isinstance(value, list) else value
+
+
+def _typed(text: str, value_type: str | None) -> object:
     if value_type == "str":
         return text
     if value_type in ("int", "float", "bool"):

@@ -19,8 +19,8 @@ from launchverify.models.parameter_values import typed_parameter
     ("yes", None, True),  # PyYAML 1.1 booleans, as launch_ros reads them
     ("", None, ""),
     ("base_link", None, "base_link"),
-    ("[1, 2]", None, [1, 2]),
-    ("['a', 'b']", None, ["a", "b"]),
+    ("[1, 2]", None, (1, 2)),
+    ("['a', 'b']", None, ("a", "b")),
     ("[1, 'a']", None, "[1, 'a']"),  # mixed list: launch_ros refuses, the text is kept
     ("{a: 1}", None, "{a: 1}"),  # a mapping is refused too
     ("~", None, "~"),  # null

@@ -294,6 +294,8 @@ class LaunchGraph:
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into
+    # What is computed from the records once and asked for again (effective parameters).
+    derived: dict[str, dict[int, object]] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         self._base = BaseReducer(self.inputs())

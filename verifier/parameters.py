@@ -13,6 +13,7 @@ appears after the first ``/**`` (docs/launch-semantics §8.2).
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from pathlib import Path
 
 from launchverify.graph import LaunchGraph, NodeRecord, ParamRecord
 from launchverify.ir.subst import Sub
@@ -66,7 +67,16 @@ def kind_of(value: object) -> str:
 
 
 def effective_parameters(graph: LaunchGraph, node: NodeRecord) -> EffectiveParameters:
-    """Return what a node receives, under the arguments as given."""
+    """Return what a node receives, under the arguments as given (computed once)."""
+    cache = graph.derived.setdefault("effective_parameters", {})
+    found = cache.get(id(node))
+    if not isinstance(found, EffectiveParameters):
+        found = _resolve(graph, node)
+        cache[id(node)] = found
+    return found
+
+
+def _resolve(graph: LaunchGraph, node: NodeRecord) -> EffectiveParameters:
     fqn = graph.base(node.fqn)
     result = EffectiveParameters(node, fqn)
     component = node.kind in COMPONENT_KINDS
@@ -92,6 +102,21 @@ def effective_parameters(graph: LaunchGraph, node: NodeRecord) -> EffectiveParam
         for name, contribution in entries:
             result.values.setdefault(name, []).append(contribution)
     return result
+
+
+def file_readers(graph: LaunchGraph) -> dict[Path, list[tuple[NodeRecord, ParamRecord]]]:
+    """Return, per parameter file, the nodes that load it and how (computed once)."""
+    cache = graph.derived.setdefault("file_readers", {})
+    cached = cache.get(0)
+    if isinstance(cached, dict):
+        return cached
+    found: dict[Path, list[tuple[NodeRecord, ParamRecord]]] = {}
+    for node in graph.nodes:
+        for param in node.parameters:
+            if param.source is not None:
+                found.setdefault(param.source, []).append((node, param))
+    cache[0] = found
+    return found
 
 
 def _applies(key: str, fqn: str | None, component: bool) -> bool:

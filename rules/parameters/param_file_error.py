@@ -6,6 +6,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from launchverify.graph import LaunchGraph
+from launchverify.parameters import file_readers
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 
 
@@ -56,5 +57,5 @@ class ParamFileError(Rule):
 
 def only_components(graph: LaunchGraph, path: Path) -> bool:
     """Return whether only loaded components read a file (launch_ros reads it, not rcl)."""
-    kinds = {node.kind for node in graph.nodes for p in node.parameters if p.source == path}
+    kinds = {node.kind for node, _ in file_readers(graph).get(path, [])}
     return bool(kinds) and kinds <= {"composable_node", "composable_lifecycle_node"}

@@ -12,6 +12,7 @@ from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.models.ros_names import node_key_matches
 from launchverify.package_contents import default_node_names, name_literals
 from launchverify.packages import PackageIndex
+from launchverify.parameters import file_readers
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 
 COMPONENT_KINDS = ("composable_node", "composable_lifecycle_node")
@@ -152,17 +153,17 @@ def receivers_of(graph: LaunchGraph, path: Path,
     """
     receivers: list[Receiver] = []
     spellings: set[str] = {str(path)}
-    for node in graph.nodes:
-        for param in node.parameters:
-            if param.source != path:
-                continue
-            if param.file is not None and (text := graph.base(param.file)) is not None:
-                spellings.add(text)
-            receiver = _receiver(graph, node, packages)
-            if receiver is None:
-                return None
-            receivers.append(receiver)
-            break
+    seen: set[int] = set()
+    for node, param in file_readers(graph).get(path, []):
+        if param.file is not None and (text := graph.base(param.file)) is not None:
+            spellings.add(text)
+        if id(node) in seen:
+            continue
+        seen.add(id(node))
+        receiver = _receiver(graph, node, packages)
+        if receiver is None:
+            return None
+        receivers.append(receiver)
     if graph.opaque_files:
         return None
     for include in graph.includes:
