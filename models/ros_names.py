@@ -185,6 +185,8 @@ def node_key_matches(key: str, fqn: str) -> bool:
         >>> node_key_matches("/*/amcl", "/robot1/amcl"), node_key_matches("amcl", "/r/amcl")
         (True, False)
     """
+    if "*" not in key:  # the common case, and keys are many in a fleet
+        return (key if key.startswith("/") else "/" + key) == fqn
     return _key_pattern(key).fullmatch(fqn) is not None
 
 

@@ -299,6 +299,7 @@ class LaunchGraph:
 
     def __post_init__(self) -> None:
         self._base = BaseReducer(self.inputs())
+        self._verdicts: dict[Guard, bool | None] = {}
 
     def inputs(self) -> dict[str, str]:
         """Return the fixed inputs: arguments by name, environment variables as ``env:NAME``."""
@@ -323,7 +324,9 @@ class LaunchGraph:
         """Return whether a record runs under the given arguments (``None``: unknown)."""
         result: bool | None = True
         for guard in origin.path:
-            verdict = self._base.guard(guard)
+            if guard not in self._verdicts:  # many records share guards
+                self._verdicts[guard] = self._base.guard(guard)
+            verdict = self._verdicts[guard]
             if verdict is False:
                 return False
             if verdict is None:
