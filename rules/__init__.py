@@ -20,6 +20,11 @@ from launchverify.rules.files.unknown_package import UnknownPackage
 from launchverify.rules.health.evaluation_error import EvaluationError
 from launchverify.rules.health.parse_error import ParseError
 from launchverify.rules.health.unmodeled_construct import UnmodeledConstruct
+from launchverify.rules.lifecycle.invalid_lifecycle_transition import (
+    InvalidLifecycleTransition,
+)
+from launchverify.rules.lifecycle.lifecycle_deadlock import LifecycleDeadlock
+from launchverify.rules.lifecycle.manager_unknown_node import ManagerUnknownNode
 from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
 from launchverify.rules.naming.invalid_name import InvalidName
 from launchverify.rules.naming.remap_collision import RemapCollision
@@ -53,4 +58,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     InconsistentSimTime,      # LV404
     EventCycle,               # LV501
     DanglingEventTarget,      # LV502
+    LifecycleDeadlock,        # LV503
+    InvalidLifecycleTransition,  # LV504
+    ManagerUnknownNode,       # LV505
 )

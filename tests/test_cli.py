@@ -40,7 +40,8 @@ def test_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
     assert set(document["summary"]) == {"files", "errors", "warnings", "infos", "seconds"}
     finding = document["findings"][0]
     assert set(finding) == {"code", "slug", "severity", "message", "file", "line", "column",
-                            "end_line", "end_column", "related", "include_chain", "witness"}
+                            "end_line", "end_column", "related", "include_chain", "witness",
+                            "trace"}
     assert finding["code"] == "LV101" and finding["slug"] == "duplicate-node-name"
     assert finding["file"] == str(DUPLICATE)
     assert finding["line"] == 4 and finding["column"] == 3

@@ -56,6 +56,9 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--select", help="comma-separated codes, slugs or prefixes to run")
     check.add_argument("--ignore", help="comma-separated codes, slugs or prefixes to skip")
     check.add_argument("--color", choices=("auto", "always", "never"), default="auto")
+    check.add_argument("--explain", action="store_true",
+                       help="under each finding, the steps that lead to it (lifecycle "
+                       "traces)")
     check.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
                        help="an environment variable of the machine that will run the "
                        "launch (repeatable); unset ones are free values")
@@ -121,7 +124,7 @@ def _check(args: argparse.Namespace) -> int:
             render_json(report, sys.stdout)
         else:
             color = {"auto": None, "always": True, "never": False}[args.color]
-            render_text(report, sys.stdout, color=color)
+            render_text(report, sys.stdout, color=color, explain=args.explain)
     return EXIT_FINDINGS if failed else EXIT_OK
 
 

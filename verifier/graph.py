@@ -18,7 +18,7 @@ from launchverify.frontends.param_file import ParamFile
 from launchverify.ir import actions as a
 from launchverify.ir.subst import Sub, Text
 from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy, describe_path
-from launchverify.problems import Problem
+from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
 from launchverify.suggest import typo_of
 
@@ -74,6 +74,8 @@ class NodeRecord:
     parameters: tuple[ParamRecord, ...] = ()
     container: Sub | None = None
     deferred: bool = False
+    execution: int | None = None  # index in ``LaunchGraph.executed`` of what started it
+    autostart: Sub | None = None  # lifecycle nodes: configure and activate at start
 
     def executable_label(self) -> str:
         """Return ``package/executable`` as written, for messages."""
@@ -93,6 +95,7 @@ class ProcessRecord:
     origin: Origin
     cmd: tuple[Sub, ...]
     name: Sub | None
+    execution: int | None = None  # index in ``LaunchGraph.executed``
 
 
 @dataclass(frozen=True, slots=True)
@@ -194,11 +197,12 @@ class ProblemRecord:
 
     problem: Problem
     chain: tuple[Span, ...] = ()
+    path: PathCondition = ()
 
     @property
     def origin(self) -> Origin:
         """Return where the problem is, with the include chain that reached it."""
-        return Origin(self.problem.span, self.chain)
+        return Origin(self.problem.span, self.chain, self.path)
 
 
 @dataclass(frozen=True, slots=True)
@@ -237,6 +241,9 @@ class HandlerRecord:
     ``target`` is the IR action it listens to (``None``: any action); ``within`` the
     index of the handler whose entities registered it (``None``: registered at launch).
     A process's ``on_exit`` is recorded as a ``process_exit`` handler on the process.
+    ``execution`` is the action that registered it (index in ``LaunchGraph.executed``);
+    ``filters`` the labels an ``OnStateTransition`` compares; ``custom`` marks a matcher
+    function launchverify cannot read.
     """
 
     origin: Origin
@@ -244,20 +251,51 @@ class HandlerRecord:
     target: object | None
     once: bool
     within: int | None
+    execution: int | None = None
+    filters: tuple[tuple[str, str], ...] = ()
+    custom: bool = False
 
 
 @dataclass(frozen=True, slots=True)
 class ExecutedRecord:
     """An action that executes: at launch, or when the handler ``within`` fires.
 
-    ``instance`` tells evaluations of one file apart (each include runs the file anew,
-    with new action objects, while launchverify reuses what it read).
+    ``instance`` and ``loop`` tell evaluations of one file apart (each include and each
+    loop iteration runs the actions anew, with new action objects, while launchverify
+    reuses what it read). ``delay`` is the period of the timers around the action
+    (seconds from the launch or from the handler; ``None``: no timer; unknown periods
+    count as 0).
     """
 
     origin: Origin
     action: object
     within: int | None
     instance: int = 0
+    loop: tuple[object, ...] = ()
+    delay: float | None = None
+
+    def same_run(self, other: ExecutedRecord) -> bool:
+        """Return whether two executions come from one evaluation of their file."""
+        return self.instance == other.instance and self.loop == other.loop
+
+
+@dataclass(frozen=True, slots=True)
+class TransitionRequest:
+    """A request that lifecycle nodes change state, as the launch makes it.
+
+    ``via``: ``change_state`` (``EmitEvent(ChangeState)``), ``lifecycle_transition``
+    (``LifecycleTransition``, one transition after the other) or ``autostart``.
+    ``matcher`` says whom it addresses: ``action`` (``target``, by identity), ``name``
+    (``names``, node FQNs as written) or ``custom`` (a function).
+    """
+
+    origin: Origin
+    via: str
+    transitions: tuple[Sub, ...]
+    matcher: str
+    execution: int | None
+    target: object | None = None
+    names: tuple[Sub, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -291,6 +329,7 @@ class LaunchGraph:
     param_files: dict[Path, ParamFile] = field(default_factory=dict)
     handlers: list[HandlerRecord] = field(default_factory=list)
     executed: list[ExecutedRecord] = field(default_factory=list)
+    requests: list[TransitionRequest] = field(default_factory=list)
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into
@@ -332,6 +371,19 @@ class LaunchGraph:
             if verdict is None:
                 result = None
         return result
+
+    def complete_as_given(self) -> bool:
+        """Return whether everything that runs under the given arguments was understood.
+
+        ``complete`` is false as soon as anything was not, even in a branch that these
+        arguments never take (an include of a package that is not there, behind
+        ``slam:=true``); this asks only about what runs.
+        """
+        if self.complete:
+            return True
+        unseen = [i.origin for i in self.includes if i.status not in ("loaded", "cycle")]
+        unseen += [r.origin for r in self.problems if r.problem.kind is ProblemKind.UNMODELED]
+        return all(self.runs(origin) is False for origin in unseen)
 
     def display(self, sub: Sub | None) -> str | None:
         """Return the base value if known, else the expression."""

@@ -9,13 +9,14 @@ yields findings built with ``self.finding(...)``: a rule cannot mislabel itself.
 from __future__ import annotations
 
 import enum
-from collections.abc import Iterator, Mapping
+from collections.abc import Hashable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import ClassVar
 
 from launchverify.graph import LaunchGraph, Origin
 from launchverify.packages import PackageIndex
 from launchverify.span import Span
+from launchverify.trace import Step
 
 
 class Severity(enum.Enum):
@@ -51,6 +52,7 @@ class Finding:
     related: tuple[Related, ...] = ()
     chain: tuple[Span, ...] = ()
     witness: Mapping[str, str] | None = None
+    trace: tuple[Step, ...] = ()  # how the launch gets there (lifecycle rules)
 
     def key(self) -> tuple[object, ...]:
         """Return what makes two findings the same (for de-duplication across roots)."""
@@ -84,6 +86,33 @@ class RuleContext:
         return self.memo.setdefault(code, {})
 
 
+class Poll:
+    """Claims of absence put to every evaluation that can judge them.
+
+    A file evaluated alone may lack what an includer supplies (a manager's node started by
+    a sibling include), and an includer may be too incomplete to say anything. A rule asks
+    each complete evaluation a question (a place, in words that do not depend on the
+    context) and records its answer: a finding, or ``None`` when all is well there. A claim
+    is kept when every answer to its question makes it; the shortest include chain wins.
+    """
+
+    def __init__(self, ctx: RuleContext, code: str) -> None:
+        self.answers = ctx.memo_for(code)
+
+    def answer(self, question: Hashable, finding: Finding | None) -> None:
+        """Record one evaluation's answer to a question."""
+        answers = self.answers.setdefault(question, [])
+        assert isinstance(answers, list)
+        answers.append(finding)
+
+    def outcome(self) -> Iterator[Finding]:
+        """Yield the claims every evaluation that was asked agrees on."""
+        for answers in self.answers.values():
+            assert isinstance(answers, list)
+            if answers and all(isinstance(a, Finding) for a in answers):
+                yield min(answers, key=lambda f: len(f.chain))
+
+
 class Rule:
     """Base class of every rule module's rule."""
 
@@ -106,6 +135,7 @@ class Rule:
         *,
         related: tuple[Related, ...] = (),
         witness: Mapping[str, str] | None = None,
+        trace: tuple[Step, ...] = (),
         **values: object,
     ) -> Finding:
         """Build a finding from the message template at a record's origin (or a span)."""
@@ -119,6 +149,7 @@ class Rule:
             related=related,
             chain=chain,
             witness=witness,
+            trace=trace,
         )
 
     @classmethod

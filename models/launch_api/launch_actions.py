@@ -12,6 +12,7 @@ from collections.abc import Callable, Iterable
 from typing import Any
 
 from launchverify.ir import actions as a
+from launchverify.ir import subst as s
 from launchverify.models.launch_api.base import (
     Action,
     Converter,
@@ -514,8 +515,29 @@ class EmitEvent(Action):
         self.event = event
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.EmitEvent(**cv_common(self, cv), event=type(self.event).__name__,
-                           details=dict(getattr(self.event, "details", {})))
+        from launchverify.models.launch_api.launch_events import (
+            ActionMatcher,
+            ChangeState,
+            NodeNameMatcher,
+        )
+
+        event = self.event
+        fields: dict[str, Any] = {}
+        if isinstance(event, ChangeState):
+            matcher = event.lifecycle_node_matcher
+            fields["transition_ids"] = (s.Text(str(event.transition_id)),)
+            if isinstance(matcher, ActionMatcher):
+                fields["matcher"] = "action"
+                fields["target"] = (cv.action(matcher.target)
+                                    if isinstance(matcher.target, LaunchDescriptionEntity)
+                                    else None)
+            elif isinstance(matcher, NodeNameMatcher):
+                fields["matcher"] = "name"
+                fields["target_names"] = (cv.sub(matcher.node_name),)
+            else:
+                fields["matcher"] = "custom"
+        return a.EmitEvent(**cv_common(self, cv), event=type(event).__name__,
+                           details=dict(getattr(event, "details", {})), **fields)
 
 
 class RegisterEventHandler(Action):
@@ -539,6 +561,10 @@ class RegisterEventHandler(Action):
                                 [entities] if entities is not None else []),
             span=self._span, target=ir_target,
             handle_once=bool(getattr(handler, "handle_once", False)),
+            # a label given as a substitution is compared as an object: it never matches
+            filters=tuple((field, value if isinstance(value, str) else "<substitution>")
+                          for field, value in getattr(handler, "filters", ())),
+            custom_matcher=getattr(handler, "matcher", None) is not None,
         ))
 
 

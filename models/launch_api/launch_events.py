@@ -95,9 +95,16 @@ class OnStateTransition(EventHandler):
     def __init__(self, *, entities: Any, target_lifecycle_node: Any = None,
                  transition: str | None = None, start_state: str | None = None,
                  goal_state: str | None = None, matcher: Any = None, **kwargs: Any) -> None:
+        from launchverify.models.launch_api.launch_ros import LifecycleNode
+
+        if not isinstance(target_lifecycle_node, (LifecycleNode, type(None))):
+            raise RuntimeError("OnStateTransition requires a 'LifecycleNode' action as the "
+                               "target")
         super().__init__(entities=entities, matcher=matcher, **kwargs)
         self.target_action = target_lifecycle_node
-        self.transition, self.start_state, self.goal_state = transition, start_state, goal_state
+        self.filters = tuple((field, value) for field, value in (
+            ("transition", transition), ("start_state", start_state),
+            ("goal_state", goal_state)) if value is not None)
 
 
 # ----------------------------------------------------------------------------- events
@@ -148,11 +155,33 @@ class StateTransition(Event):
     """launch_ros ``StateTransition``."""
 
 
-def matches_action(target_action: Any) -> Any:
+class ActionMatcher:
+    """What ``matches_action`` returns: true for one action object (identity)."""
+
+    def __init__(self, target: Any) -> None:
+        self.target = target
+
+    def __call__(self, action: Any) -> bool:
+        return action is self.target
+
+
+class NodeNameMatcher:
+    """What ``matches_node_name`` returns: true for the node with that name (``/`` added)."""
+
+    def __init__(self, node_name: Any) -> None:
+        self.node_name = node_name
+
+    def __call__(self, action: Any) -> bool:
+        return bool(getattr(action, "node_name", None) == self.node_name)
+
+
+def matches_action(target_action: Any) -> ActionMatcher:
     """``launch.events.matches_action``: a matcher on one action object."""
-    return lambda action: action is target_action
+    return ActionMatcher(target_action)
 
 
-def matches_node_name(node_name: str) -> Any:
+def matches_node_name(node_name: Any) -> NodeNameMatcher:
     """launch_ros ``matches_node_name``."""
-    return lambda action: getattr(action, "node_name", None) == node_name
+    if isinstance(node_name, str) and not node_name.startswith("/"):
+        node_name = "/" + node_name
+    return NodeNameMatcher(node_name)

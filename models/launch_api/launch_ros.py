@@ -273,7 +273,9 @@ class LifecycleTransition(Action):
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.EmitEvent(**cv_common(self, cv), event="LifecycleTransition",
-                           details={"transition_ids": tuple(self.transition_ids)})
+                           transition_ids=tuple(cv.sub(str(t) if isinstance(t, int) else t)
+                                                for t in self.transition_ids),
+                           matcher="name", target_names=tuple(cv.sub(n) for n in self.names))
 
 
 # ----------------------------------------------------------------------------- substitutions

@@ -64,10 +64,14 @@ class NodeBuilder:
         remaps = (*self.scope_remaps(ctx), *self.own_remaps(action.remappings, ctx))
         params = (*self.scope_params(ctx), *self.own_params(action.parameters, ctx))
         self.walker.visit_process_options(action.process, action.span, ctx, action)
+        autostart = None
+        if isinstance(action, a.LifecycleNode):
+            autostart = self.autostart(action.autostart, reducer)
         record = NodeRecord(
             kind=action.kind, origin=ctx.origin(action.span), package=package,
             executable=executable, name=name, namespace=namespace, fqn=fqn,
             remappings=remaps, parameters=params, deferred=ctx.deferred,
+            execution=self.walker.execution, autostart=autostart,
         )
         self.walker.graph.nodes.append(record)
         return record
@@ -105,8 +109,16 @@ class NodeBuilder:
             namespace=namespace, fqn=fqn,
             remappings=(*self.scope_remaps(inner), *self.own_remaps(node.remappings, inner)),
             parameters=(*self.scope_params(inner), *self.own_params(node.parameters, inner)),
-            container=container, deferred=inner.deferred,
+            container=container, deferred=inner.deferred, execution=self.walker.execution,
+            autostart=self.autostart(node.autostart, reducer) if node.lifecycle else None,
         ))
+
+    @staticmethod
+    def autostart(value: s.Sub | bool, reducer: ScopeReducer) -> s.Sub | None:
+        """Return a lifecycle node's ``autostart`` (``None`` when it is plainly off)."""
+        if isinstance(value, bool):
+            return s.Text("true") if value else None
+        return reducer.reduce(value)
 
     def scope_remaps(self, ctx: Ctx) -> list[RemapRecord]:
         """Return the SetRemap rules in scope (they come before the node's own)."""

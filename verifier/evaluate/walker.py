@@ -50,6 +50,7 @@ from launchverify.graph import (
     ProcessRecord,
     SkippedAction,
     StaticArgument,
+    TransitionRequest,
 )
 from launchverify.ir import actions as a
 from launchverify.ir import conditions as c
@@ -90,6 +91,8 @@ class Walker:
         self.anon_counter = itertools.count(1)
         self.include_stack: list[IncludeRecord] = []
         self.handler_stack: list[int] = []  # the handlers whose entities are being run
+        self.executing: list[int] = []  # graph.executed indices of the actions being run
+        self.delays: list[float] = []  # periods of the timers around (since launch/handler)
         self.executed_processes: set[tuple[object, ...]] = set()  # (action, file, loop)
         self.file_stack: list[tuple[Path, tuple[tuple[str | None, str], ...]]] = []
         self.incomplete = False  # something before this point was not understood
@@ -100,8 +103,8 @@ class Walker:
                 *, contextual: bool = False) -> None:
         """Record an evaluation problem (``contextual``: an includer might prevent it)."""
         chain = ctx.chain if ctx else ()
-        self.graph.problems.append(
-            ProblemRecord(Problem(kind, message, span, contextual), chain))
+        self.graph.problems.append(ProblemRecord(Problem(kind, message, span, contextual),
+                                                 chain, ctx.path if ctx else ()))
         if kind is ProblemKind.UNMODELED:
             self.mark_incomplete()
 
@@ -172,7 +175,7 @@ class Walker:
         if path not in self.graph.files:
             self.graph.files[path] = loaded
             for problem in loaded.problems:
-                self.graph.problems.append(ProblemRecord(problem, ctx.chain))
+                self.graph.problems.append(ProblemRecord(problem, ctx.chain, ctx.path))
             if loaded.launch is None:
                 self.mark_incomplete()
         return loaded
@@ -216,7 +219,16 @@ class Walker:
                          f"action {type(action).__name__} is not modelled", action.span, inner)
             return
         if self.record_execution(action, inner):
-            handler(action, inner)
+            self.executing.append(len(self.graph.executed) - 1)
+            try:
+                handler(action, inner)
+            finally:
+                self.executing.pop()
+
+    @property
+    def execution(self) -> int | None:
+        """Return the index in ``graph.executed`` of the action being executed."""
+        return self.executing[-1] if self.executing else None
 
     def apply_condition(self, condition: c.Condition | None, span: Span, ctx: Ctx) -> Ctx | None:
         """Return the context inside a condition, or ``None`` when it is surely false."""
@@ -441,8 +453,17 @@ class Walker:
         return self.index.locate(path), note
 
     def do_Timer(self, action: a.Timer, ctx: Ctx) -> None:
-        with self.scope():
-            self.visit_all(action.actions, dataclasses.replace(ctx, deferred=True))
+        period = self.reducer.at(ctx, action.span).text(action.period)
+        try:
+            seconds = max(float(period), 0.0) if period is not None else 0.0
+        except ValueError:
+            seconds = 0.0
+        self.delays.append(seconds)
+        try:
+            with self.scope():
+                self.visit_all(action.actions, dataclasses.replace(ctx, deferred=True))
+        finally:
+            self.delays.pop()
 
     def do_ForLoop(self, action: a.ForLoop, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
@@ -576,7 +597,8 @@ class Walker:
     def do_RegisterEventHandler(self, action: a.RegisterEventHandler, ctx: Ctx) -> None:
         handler = action.handler
         index = self.record_handler(ctx.origin(action.span), handler.event, handler.target,
-                                    handler.handle_once)
+                                    handler.handle_once, handler.filters,
+                                    handler.custom_matcher)
         if handler.event == "shutdown":
             return  # what runs at shutdown is not part of the running system
         self.run_handler(index, handler.entities, ctx)
@@ -601,28 +623,42 @@ class Walker:
                              action.span, ctx)
                 return False
             self.executed_processes.add(key)
-        self.graph.executed.append(ExecutedRecord(ctx.origin(action.span), action, within,
-                                                  instance))
+        self.graph.executed.append(ExecutedRecord(
+            ctx.origin(action.span), action, within, instance, ctx.loop,
+            sum(self.delays) if self.delays else None))
         return True
 
     def record_handler(self, origin: Origin, event: str, target: object | None,
-                       once: bool) -> int:
+                       once: bool, filters: tuple[tuple[str, str], ...] = (),
+                       custom: bool = False) -> int:
         """Record an event handler; return its index in ``graph.handlers``."""
         self.graph.handlers.append(HandlerRecord(
-            origin, event, target, once, self.handler_stack[-1] if self.handler_stack else None))
+            origin, event, target, once, self.handler_stack[-1] if self.handler_stack else None,
+            self.execution, filters, custom))
         return len(self.graph.handlers) - 1
 
     def run_handler(self, index: int, entities: tuple[a.Action, ...], ctx: Ctx) -> None:
         """Visit what a handler runs when its event happens (later, in its own scope)."""
         self.handler_stack.append(index)
+        delays, self.delays = self.delays, []  # timers in the handler start when it fires
         try:
             with self.scope():
                 self.visit_all(entities, dataclasses.replace(ctx, deferred=True))
         finally:
             self.handler_stack.pop()
+            self.delays = delays
 
     def do_EmitEvent(self, action: a.EmitEvent, ctx: Ctx) -> None:
-        """Events are handled by the event and lifecycle analyses."""
+        """Record lifecycle requests; other events are left to the event analysis."""
+        if action.event not in ("ChangeState", "LifecycleTransition"):
+            return
+        reducer = self.reducer.at(ctx, action.span)
+        self.graph.requests.append(TransitionRequest(
+            ctx.origin(action.span),
+            "change_state" if action.event == "ChangeState" else "lifecycle_transition",
+            tuple(reducer.reduce(t) for t in action.transition_ids), action.matcher,
+            self.execution, action.target, tuple(reducer.reduce(n) for n in action.target_names),
+        ))
 
     def do_OpaqueFunction(self, action: a.OpaqueFunction, ctx: Ctx) -> None:
         """Run the function's body with the configurations as they are here."""
@@ -685,7 +721,8 @@ class Walker:
         reducer = self.reducer.at(ctx, action.span)
         cmd = tuple(reducer.reduce(part) for part in action.cmd)
         name = None if action.process.name is None else reducer.reduce(action.process.name)
-        self.graph.processes.append(ProcessRecord(ctx.origin(action.span), cmd, name))
+        self.graph.processes.append(ProcessRecord(ctx.origin(action.span), cmd, name,
+                                                  self.execution))
         self.visit_process_options(action.process, action.span, ctx, action)
 
     def visit_process_options(self, options: a.ProcessOptions, span: Span, ctx: Ctx,

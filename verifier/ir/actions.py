@@ -456,6 +456,9 @@ class EventHandler:
     span: Span
     target: Action | None = None
     handle_once: bool = False
+    # OnStateTransition: the labels it compares (transition, start_state, goal_state)
+    filters: tuple[tuple[str, str], ...] = ()
+    custom_matcher: bool = False  # a matcher function launchverify cannot read
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)
@@ -471,10 +474,19 @@ class RegisterEventHandler(Action):
 
 @dataclass(frozen=True, eq=False, kw_only=True)
 class EmitEvent(Action):
-    """``EmitEvent``: queues an event (``Shutdown``, ``ChangeState``, ...)."""
+    """``EmitEvent``: queues an event (``Shutdown``, ``ChangeState``, ...).
+
+    Lifecycle requests (``ChangeState``, and ``LifecycleTransition``, which emits them)
+    say whom they address: ``matcher`` is ``action`` (``matches_action``: ``target``),
+    ``name`` (``matches_node_name`` or node names: ``target_names``) or ``custom``.
+    """
 
     event: str
     details: dict[str, object] = field(default_factory=dict)
+    transition_ids: tuple[Sub, ...] = ()
+    matcher: str = ""
+    target: Action | None = None
+    target_names: tuple[Sub, ...] = ()
     kind = "emit_event"
 
 

@@ -31,6 +31,12 @@ def finding_dict(finding: Finding, report: Report) -> dict[str, Any]:
             {"file": report.display_path(s.file), "line": s.line} for s in finding.chain
         ],
         "witness": dict(finding.witness) if finding.witness else None,
+        "trace": [
+            {"step": step.text,
+             "file": report.display_path(step.span.file) if step.span else None,
+             "line": step.span.line if step.span else None}
+            for step in finding.trace
+        ],
     }
 
 

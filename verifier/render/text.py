@@ -38,8 +38,9 @@ def _frame(finding: Finding) -> list[str]:
     return [f" {span.line} | {source}", f" {' ' * width} | {marker}"]
 
 
-def render_text(report: Report, out: TextIO, *, color: bool | None = None) -> None:
-    """Write findings with code frames and a summary line."""
+def render_text(report: Report, out: TextIO, *, color: bool | None = None,
+                explain: bool = False) -> None:
+    """Write findings with code frames and a summary line (``explain``: with traces)."""
     console = Console(file=out, highlight=False, soft_wrap=True,
                       force_terminal=color, no_color=color is False)
     for finding in report.findings:
@@ -62,6 +63,15 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None) -> No
         if finding.witness:
             values = " ".join(f"{k}:={v}" for k, v in sorted(finding.witness.items()))
             console.print(f"    when: {escape(values)}", style="dim")
+        if finding.trace and explain:
+            console.print("    trace:", style="dim")
+            for number, step in enumerate(finding.trace, 1):
+                where = (f" ({report.display_path(step.span.file)}:{step.span.line})"
+                         if step.span is not None else "")
+                console.print(f"      {number}. {escape(step.text)}{escape(where)}",
+                              style="dim")
+        elif finding.trace:
+            console.print("    (--explain prints the trace)", style="dim")
     console.print(summary_line(report))
 
 

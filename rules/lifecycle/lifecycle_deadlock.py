@@ -1,0 +1,70 @@
+"""LV503 lifecycle-deadlock."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from launchverify.graph import LaunchGraph
+from launchverify.lifecycle import analyse
+from launchverify.lifecycle.verdicts import deadlocks, report
+from launchverify.rule import Finding, Poll, Rule, RuleContext, Severity
+
+
+class LifecycleDeadlock(Rule):
+    """A lifecycle bring-up that can never complete.
+
+    ## What it does
+    Follows the bring-up the launch drives (`ChangeState` events, `LifecycleTransition`,
+    `autostart`, `ros2 lifecycle set` commands, nav2 lifecycle managers, and the
+    `OnStateTransition`, `OnProcessStart`/`OnProcessExit` handlers and timers that chain
+    them) through every order in which its events can happen, with every transition
+    callback succeeding, and reports:
+
+    - handlers that wait for each other in a cycle (the handler that activates `/b` waits
+      for `/a` to become active, and the one that activates `/a` waits for `/b`);
+    - a handler waiting for a bring-up state (configuring, inactive, activating, active)
+      that its node never reaches, because nothing in the launch moves it on;
+    - a nav2 lifecycle manager that never gets to configure its nodes, because one of
+      them is started only by something that never happens.
+
+    Nodes that nothing in the launch moves (driven from outside) are not judged, nor
+    handlers that wait for a shutdown or an error. `--explain` prints the trace to the
+    furthest state the node reaches.
+
+    ## Why it matters
+    Nothing fails: the launch sits there, nodes stay unconfigured, and the robot never
+    starts driving. On the robot this looks like a hang, found only after a timeout.
+
+    ## Example
+    ```python
+    RegisterEventHandler(OnStateTransition(target_lifecycle_node=a, goal_state='active',
+        entities=[EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(b),
+                                              transition_id=Transition.TRANSITION_ACTIVATE))])),
+    RegisterEventHandler(OnStateTransition(target_lifecycle_node=b, goal_state='active',
+        entities=[EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(a),
+                                              transition_id=Transition.TRANSITION_ACTIVATE))])),
+    ```
+
+    ## Fix
+    Break the cycle: activate one node unconditionally (when it reaches `inactive`), or
+    let one lifecycle manager bring the nodes up in order.
+    """
+
+    code = "LV503"
+    slug = "lifecycle-deadlock"
+    severity = Severity.ERROR
+    message = "{text}"
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        if not graph.nodes:
+            return
+        analysis = analyse(graph)
+        if analysis.system.empty:
+            return
+        poll = Poll(ctx, self.code)
+        for asked, verdict in deadlocks(graph, analysis):
+            poll.answer(asked, None if verdict is None else report(self, verdict))
+        yield from ()
+
+    def finish(self, ctx: RuleContext) -> Iterator[Finding]:
+        return Poll(ctx, self.code).outcome()

@@ -1,0 +1,36 @@
+"""The lifecycle bring-up of a launch: its transition system and what a search finds.
+
+``analyse(graph)`` builds the system (``system.py``; nav2 managers in ``managers.py``),
+searches it (``explore.py``) and keeps the result on the graph, so that the lifecycle
+rules and ``launchverify graph`` share one search.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from launchverify.graph import LaunchGraph
+from launchverify.lifecycle.explore import Exploration, Where, explore
+from launchverify.lifecycle.system import System, build_system
+
+__all__ = ["Analysis", "Where", "analyse"]
+
+
+@dataclass
+class Analysis:
+    """A graph's lifecycle system and the search of it."""
+
+    system: System
+    exploration: Exploration
+
+
+def analyse(graph: LaunchGraph) -> Analysis:
+    """Return the lifecycle analysis of a graph (computed once)."""
+    cache = graph.derived.setdefault("lifecycle", {})
+    found = cache.get(0)
+    if isinstance(found, Analysis):
+        return found
+    system = build_system(graph)
+    analysis = Analysis(system, explore(system) if not system.empty else Exploration())
+    cache[0] = analysis
+    return analysis

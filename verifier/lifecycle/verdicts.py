@@ -1,0 +1,399 @@
+"""What the lifecycle search means: deadlocks, refused transitions, unknown managed nodes.
+
+Each function turns one analysis into verdicts that the lifecycle rules print. Claims of
+absence ("never fires", "no such node") are made only when the system is complete: every
+trigger followed, every name known, the search not cut short. They come as answers to
+questions (a place and what is asked of it) that the rules put to every evaluation of a
+file (``rule.Poll``): a file evaluated alone may lack what an includer supplies.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import NamedTuple
+
+from launchverify.graph import LaunchGraph, Origin
+from launchverify.lifecycle import Analysis
+from launchverify.lifecycle.explore import Source, Where, verb
+from launchverify.lifecycle.system import Block, Reaction
+from launchverify.models import lifecycle as lc
+from launchverify.models.ros_names import node_fqn
+from launchverify.rule import Finding, Related, Rule
+from launchverify.span import Span
+from launchverify.suggest import typo_of
+from launchverify.trace import Step
+
+# The events of a bring-up that succeeds: configure, then activate.
+BRINGUP_EVENTS = (
+    lc.TransitionEvent("configure", "unconfigured", "configuring"),
+    lc.TransitionEvent("transition_success", "configuring", "inactive"),
+    lc.TransitionEvent("activate", "inactive", "activating"),
+    lc.TransitionEvent("transition_success", "activating", "active"),
+)
+ORDER = ("unconfigured", "configuring", "inactive", "activating", "active")
+
+
+Question = tuple[str, int, int, str]  # file, line, column, what is asked there
+
+
+def question(origin: Origin | Span, words: str = "") -> Question:
+    """Return a question about a place, the same in every evaluation of its file."""
+    span = origin.span if isinstance(origin, Origin) else origin
+    return (str(span.file), span.line, span.column, words)
+
+
+@dataclass(frozen=True)
+class Verdict:
+    """One thing to report: where, what, the places that explain it, how to get there."""
+
+    origin: Origin | Span
+    message: str
+    related: tuple[tuple[Span, str], ...] = ()
+    trace: tuple[Step, ...] = ()
+
+
+def report(rule: Rule, verdict: Verdict) -> Finding:
+    """Return the finding a lifecycle rule makes of a verdict (message template ``{text}``)."""
+    return rule.finding(verdict.origin, text=verdict.message, trace=verdict.trace,
+                        related=tuple(Related(span, words) for span, words in verdict.related))
+
+
+def judged(graph: LaunchGraph, analysis: Analysis) -> bool:
+    """Return whether absence claims can be made on this graph."""
+    return analysis.system.complete and analysis.exploration.complete
+
+
+# ----------------------------------------------------------------------------- LV504
+
+
+def unanswerable_requests(graph: LaunchGraph,
+                          analysis: Analysis) -> list[tuple[Question, Verdict | None]]:
+    """Ask of every request whether it has a lifecycle node to go to (absence claims)."""
+    if not judged(graph, analysis):
+        return []
+    system = analysis.system
+    answers: list[tuple[Question, Verdict | None]] = [
+        (question(r.origin, r.label), None) for r in system.requests]
+    answers += [(question(refusal.origin, refusal.label),
+                 Verdict(refusal.origin, f"{refusal.label}: {refusal.reason}"))
+                for refusal in system.refusals]
+    return answers
+
+
+class _Case(NamedTuple):
+    """One refusal the search found: who asked, of which node, in which state, and why."""
+
+    source: Source
+    node: int
+    state: str
+    where: Where
+    cause: tuple[str, int] | None  # the asker that last moved the node (None: its start)
+
+
+def refused_transitions(graph: LaunchGraph, analysis: Analysis) -> list[Verdict]:
+    """Requests that can reach a node in a state where rcl refuses them (or too early).
+
+    A refusal caused by another asker that is refused on its own is left to that one (an
+    ``activate`` sent at launch makes the handler's later ``activate`` fail too). Askers
+    that fail only because of each other (autostart and a manager both driving a node)
+    are one finding: whichever comes second is refused.
+    """
+    cases_of: dict[tuple[str, int], list[_Case]] = {}
+    for (source, node, state), where in analysis.exploration.refused.items():
+        cause = _cause(analysis, where, node)
+        cases_of.setdefault((source.kind, source.ref), []).append(_Case(
+            source, node, state, where, None if cause is None else (cause.kind, cause.ref)))
+    for cases in cases_of.values():
+        cases.sort(key=lambda case: (case.cause is not None, case.where.state))
+    alone = {asker for asker, cases in cases_of.items()
+             if any(case.cause is None or case.cause not in cases_of for case in cases)}
+    out = [_refusal_verdict(analysis, cases_of[asker][0]) for asker in sorted(alone)]
+    rivals = {asker: {c.cause for c in cases if c.cause is not None}
+              for asker, cases in cases_of.items() if asker not in alone}
+    for group in _rival_groups({a: causes for a, causes in rivals.items()
+                                if not causes & alone}):
+        out.append(_rivals_verdict(analysis, [cases_of[asker][0] for asker in group]))
+    return out
+
+
+def _rival_groups(rivals: dict[tuple[str, int], set[tuple[str, int]]]
+                  ) -> list[list[tuple[str, int]]]:
+    """Return the askers that fail only because of each other, in groups."""
+    import networkx as nx
+
+    graph = nx.Graph()
+    graph.add_nodes_from(rivals)
+    graph.add_edges_from((a, b) for a, causes in rivals.items() for b in causes if b in rivals)
+    return sorted(sorted(group) for group in nx.connected_components(graph))
+
+
+def _cause(analysis: Analysis, where: Where, node: int) -> Source | None:
+    """Return what last moved a node on the way to a refusal (``None``: its start)."""
+    search = analysis.exploration.searches[where.part]
+    state_id = where.state
+    while state_id > 0:
+        parent, _move, effects = search.parents[state_id]
+        for effect in reversed(effects):
+            if (effect.kind == "state" and effect.key == node
+                    and effect.label in lc.PRIMARY_STATES):
+                return effect.source
+        state_id = parent
+    return None
+
+
+def _refusal_verdict(analysis: Analysis, case: _Case) -> Verdict:
+    system = analysis.system
+    source, node, state, where = case.source, case.node, case.state, case.where
+    fqn = system.nodes[node].fqn
+    related: list[tuple[Span, str]] = []
+    if case.cause is not None:
+        label, origin = _source_label(analysis, Source(*case.cause, 0))
+        related.append((origin.span, f"{fqn} was made {state} by {label}"))
+    trace = analysis.exploration.trace(where)
+    if source.kind == "manager":
+        manager = system.managers[source.ref]
+        name = manager.spec.fqn or "the lifecycle manager"
+        wanted = where.move.action if where.move is not None else "configure"
+        return Verdict(manager.spec.record.origin,
+                       f"{name} asks {fqn} to {wanted} while it is {state}: rcl refuses the "
+                       "transition and the manager aborts the whole bring-up",
+                       tuple(related), trace)
+    request = system.requests[source.ref]
+    transition = request.transitions[source.step]
+    if not state:
+        message = (f"{request.label} can reach launch before {fqn} is started: launch "
+                   f"drops it and {fqn} is never asked to {verb(transition)}")
+    else:
+        message = (f"{request.label} can reach {fqn} while it is {state}: rcl refuses to "
+                   f"{verb(transition)} from {state} and the node stays {state}")
+    return Verdict(request.origin, message, tuple(related), trace)
+
+
+def _rivals_verdict(analysis: Analysis, cases: list[_Case]) -> Verdict:
+    """One finding for askers that each drive a node the others have already moved."""
+    labelled = sorted((_source_label(analysis, case.source), case) for case in cases)
+    (label, origin), first = labelled[0]
+    others = [other for (other, _), _ in labelled[1:]]
+    fqns = sorted({analysis.system.nodes[case.node].fqn for case in cases})
+    wanted = (first.where.move.action if first.source.kind == "manager"
+              and first.where.move is not None else
+              verb(analysis.system.requests[first.source.ref].transitions[first.source.step])
+              if first.source.kind == "request" else "configure")
+    message = (f"{label} and {' and '.join(others)} both drive {', '.join(fqns)}: whichever "
+               f"comes second finds it {first.state}, and rcl refuses to {wanted} from "
+               f"{first.state}")
+    if any(case.source.kind == "manager" for case in cases):
+        message += " (a refused manager aborts its whole bring-up)"
+    related = tuple((o.span, f"{other} also drives {', '.join(fqns)}")
+                    for (other, o), _ in labelled[1:])
+    return Verdict(origin, message + "; let one of them drive it", related,
+                   analysis.exploration.trace(first.where))
+
+
+def _source_label(analysis: Analysis, source: Source) -> tuple[str, Origin]:
+    system = analysis.system
+    if source.kind == "manager":
+        manager = system.managers[source.ref]
+        return manager.spec.fqn or "the lifecycle manager", manager.spec.record.origin
+    request = system.requests[source.ref]
+    return request.label, request.origin
+
+
+# ----------------------------------------------------------------------------- LV503
+
+
+def deadlocks(graph: LaunchGraph, analysis: Analysis) -> list[tuple[Question, Verdict | None]]:
+    """Ask of every bring-up handler and manager whether it can wait forever."""
+    if not judged(graph, analysis):
+        return []
+    system, exploration = analysis.system, analysis.exploration
+    refused_nodes = {node for (_, node, _) in exploration.refused}
+    driven = _driven_nodes(analysis)
+    waiting: dict[int, int] = {}  # never-firing bring-up handler -> the node it waits for
+    asked: dict[int, Question] = {}
+    for key, reaction in system.reactions.items():
+        if (reaction.event != "state_transition"
+                or reaction.registered not in exploration.happened
+                or reaction.nodes is None or len(reaction.nodes) != 1
+                or not any(reaction.matches(e) for e in BRINGUP_EVENTS)):
+            continue
+        asked[key] = question(reaction.origin, "handler")
+        if key in exploration.fired:
+            continue
+        node = next(iter(reaction.nodes))
+        if (node in exploration.incomplete_nodes or node not in driven
+                or node in refused_nodes):
+            continue
+        waiting[key] = node
+    needs = {key: _needs(analysis, node, waiting) for key, node in waiting.items()}
+    verdicts: dict[int, Verdict] = {}
+    in_cycle: set[int] = set()
+    for cycle in _cycles(needs):
+        in_cycle.update(cycle)
+        verdicts[cycle[0]] = _cycle_verdict(analysis, cycle, waiting)
+    for key, node in waiting.items():
+        if key in in_cycle or needs[key]:
+            continue  # part of a cycle, or waiting on another handler that never fires
+        verdicts[key] = _waiting_verdict(analysis, system.reactions[key], node)
+    out = [(words, verdicts.get(key)) for key, words in asked.items()
+           if key in verdicts or key not in waiting]  # the rest of a cycle is not asked
+    stuck = _stuck_managers(analysis)
+    out += [(question(m.spec.record.origin, "manager"), stuck.get(index))
+            for index, m in enumerate(system.managers)]
+    return out
+
+
+def _driven_nodes(analysis: Analysis) -> set[int]:
+    """Return the nodes the launch itself moves (requests, managers that start up)."""
+    system = analysis.system
+    driven = {request.node for request in system.requests}
+    for manager in system.managers:
+        if manager.spec.autostart:
+            driven.update(n for n in manager.nodes if n is not None)
+    return driven
+
+
+def _needs(analysis: Analysis, node: int, waiting: dict[int, int]) -> set[int]:
+    """Return the never-firing handlers whose blocks hold what would move ``node`` on."""
+    system, exploration = analysis.system, analysis.exploration
+    found: set[int] = set()
+    blocks: list[Block] = [r.block for r in system.requests if r.node == node]
+    if node not in exploration.reached:
+        blocks.append(system.nodes[node].block)
+    for block in blocks:
+        if block not in exploration.happened and block[0] in waiting:
+            found.add(block[0])
+    return found
+
+
+def _cycles(needs: dict[int, set[int]]) -> list[list[int]]:
+    import networkx as nx
+
+    graph = nx.DiGraph()
+    for key, targets in needs.items():
+        for target in targets:
+            graph.add_edge(key, target)
+    out = []
+    for component in nx.strongly_connected_components(graph):
+        if len(component) > 1 or any(graph.has_edge(n, n) for n in component):
+            cycle = next(iter(nx.simple_cycles(graph.subgraph(component))))
+            start = cycle.index(min(cycle))
+            out.append(cycle[start:] + cycle[:start])
+    return sorted(out)
+
+
+def _wanted(reaction: Reaction) -> str:
+    """Return what a handler waits for, in words."""
+    words = {"goal_state": "reach '{}'", "start_state": "leave '{}'",
+             "transition": "go through '{}'"}
+    return " and ".join(words[name].format(label) for name, label in reaction.filters) or \
+        "change state"
+
+
+def _cycle_verdict(analysis: Analysis, cycle: list[int], waiting: dict[int, int]) -> Verdict:
+    system = analysis.system
+    parts = []
+    for position, key in enumerate(cycle):
+        reaction = system.reactions[key]
+        following = cycle[(position + 1) % len(cycle)]
+        target = system.nodes[waiting[following]].fqn
+        moves = sorted({verb(r.transitions[0]) for r in system.requests
+                        if r.block == (key, None) and r.node == waiting[following]})
+        action = f"ask {target} to {'/'.join(moves)}" if moves else f"start {target}"
+        parts.append(f"the handler at line {reaction.origin.span.line} waits for "
+                     f"{system.nodes[waiting[key]].fqn} to {_wanted(reaction)} before it "
+                     f"would {action}")
+    first = system.reactions[cycle[0]]
+    related = tuple((system.reactions[k].origin.span, "waits in the cycle") for k in cycle[1:])
+    return Verdict(first.origin, "bring-up deadlock: " + "; ".join(parts) +
+                   ": none of them ever fires", related)
+
+
+def _waiting_verdict(analysis: Analysis, reaction: Reaction, node: int) -> Verdict:
+    system, exploration = analysis.system, analysis.exploration
+    fqn = system.nodes[node].fqn
+    reached = exploration.reached.get(node, {})
+    furthest = max((s for s in reached if s in ORDER), key=ORDER.index, default=None)
+    if furthest is None:
+        message = (f"the handler waits for {fqn} to {_wanted(reaction)}, but {fqn} is never "
+                   "started: it never fires")
+        trace: tuple[Step, ...] = ()
+    else:
+        message = (f"the handler waits for {fqn} to {_wanted(reaction)}, which never "
+                   f"happens: {fqn} gets no further than {furthest} and nothing in the "
+                   "launch moves it on, so the handler never fires")
+        trace = exploration.trace(reached[furthest])
+    return Verdict(reaction.origin, message, (), trace)
+
+
+def _stuck_managers(analysis: Analysis) -> dict[int, Verdict]:
+    system, exploration = analysis.system, analysis.exploration
+    out = {}
+    for index, where in sorted(exploration.manager_stuck.items()):
+        manager = system.managers[index]
+        if index in exploration.managers_done or any(n is None for n in manager.nodes):
+            continue  # completes in some order (a race), or a node is missing (LV505)
+        if any(n in exploration.incomplete_nodes for n in manager.nodes if n is not None):
+            continue
+        missing = [n for n in manager.nodes if n is not None and n not in exploration.reached]
+        name = manager.spec.fqn or "the lifecycle manager"
+        if missing:
+            node = system.nodes[missing[0]]
+            starter = node.block[0]
+            why = (f"{node.fqn} is started only by the handler at "
+                   f"{system.reactions[starter].origin.span.short()}, which never fires"
+                   if starter is not None and starter in system.reactions else
+                   f"{node.fqn} never starts")
+        else:
+            why = "its nodes never all become available"
+        out[index] = Verdict(manager.spec.record.origin,
+                             f"{name} never completes its bring-up: it waits for the services "
+                             f"of every node it manages, and {why}", (),
+                             exploration.trace(where))
+    return out
+
+
+# ----------------------------------------------------------------------------- LV505
+
+
+@dataclass(frozen=True)
+class UnknownManagedNode:
+    """A ``node_names`` entry no launched node answers to."""
+
+    manager: Origin
+    manager_name: str
+    name: str
+    resolved: str
+    names_span: Span | None
+    elsewhere: str | None  # a node with that name in another namespace
+    suggestion: str | None
+
+
+def unknown_managed_nodes(graph: LaunchGraph, analysis: Analysis
+                          ) -> list[tuple[Question, UnknownManagedNode | None]]:
+    """Ask of every name a lifecycle manager waits for whether a node has it."""
+    if not graph.complete_as_given():
+        return []
+    fqns = {graph.base(n.fqn) for n in graph.nodes if graph.runs(n.origin) is not False}
+    if None in fqns:
+        return []  # a node whose name is not known could be the one
+    known = {f for f in fqns if f is not None}
+    out: list[tuple[Question, UnknownManagedNode | None]] = []
+    for manager in analysis.system.managers:
+        spec = manager.spec
+        if spec.resolved is None or spec.names is None:
+            continue
+        for name, resolved, node in zip(spec.names, spec.resolved, manager.nodes, strict=True):
+            asked = question(spec.record.origin, name)
+            if node is not None or resolved in known:
+                out.append((asked, None))
+                continue
+            base = resolved.rsplit("/", 1)[-1]
+            elsewhere = sorted(f for f in known if f.rsplit("/", 1)[-1] == base)
+            siblings = [f for f in known if f.rsplit("/", 1)[0] == resolved.rsplit("/", 1)[0]]
+            suggestion = None if elsewhere else typo_of(resolved, siblings)
+            out.append((asked, UnknownManagedNode(
+                spec.record.origin, spec.fqn or node_fqn(spec.namespace, "lifecycle_manager"),
+                name, resolved, spec.names_span, elsewhere[0] if elsewhere else None,
+                suggestion)))
+    return out
