@@ -12,10 +12,14 @@ from typing import Any, TextIO
 
 from launchverify.graph import LaunchGraph, NodeRecord, Origin, ParamRecord
 from launchverify.ir.subst import Sub
+from launchverify.lifecycle.explore import Where
+from launchverify.models import lifecycle as lc
 from launchverify.models.parameter_values import typed_parameter
 from launchverify.models.ros_names import node_fqn
 from launchverify.parameters import Contribution, effective_parameters
 from launchverify.paths import display_path
+
+BRINGUP_ORDER = ("unconfigured", "configuring", "inactive", "activating", "active")
 
 
 class GraphView:
@@ -131,6 +135,7 @@ class GraphView:
                  **self.where(i.origin)}
                 for i in graph.includes if self.shown(i.origin)
             ],
+            "lifecycle": self.lifecycle(),
             "arguments": [
                 {"name": a.name, "default": self.value(a.default), "value": self.value(a.value),
                  "description": a.description,
@@ -139,6 +144,39 @@ class GraphView:
                 for a in graph.arguments if self.shown(a.origin)
             ],
         }
+
+
+    def lifecycle(self) -> dict[str, Any] | None:
+        """Return each managed node's reachable states (with a shortest trace to each)."""
+        from launchverify.lifecycle import analyse
+
+        analysis = analyse(self.graph)
+        system, exploration = analysis.system, analysis.exploration
+        if system.empty:
+            return None
+        order = {s: i for i, s in enumerate(dict.fromkeys(BRINGUP_ORDER + tuple(lc.STATE_IDS)))}
+
+        def steps(where: Where) -> list[dict[str, Any]]:
+            return [{"step": step.text,
+                     "file": display_path(step.span.file) if step.span else None,
+                     "line": step.span.line if step.span else None}
+                    for step in exploration.trace(where)]
+
+        nodes = []
+        for index, node in enumerate(system.nodes):
+            reached = exploration.reached.get(index, {})
+            nodes.append({
+                "fqn": node.fqn,
+                "states": {state: steps(reached[state])
+                           for state in sorted(reached, key=lambda s: order.get(s, 99))},
+                "followed": index not in exploration.incomplete_nodes,
+                **self.where(node.record.origin)})
+        managers = [{"fqn": m.spec.fqn, "node_names": list(m.spec.resolved or ()),
+                     "autostart": m.spec.autostart, "completes": i in exploration.managers_done,
+                     **self.where(m.spec.record.origin)}
+                    for i, m in enumerate(system.managers)]
+        return {"complete": system.complete and exploration.complete,
+                "states_explored": exploration.states, "nodes": nodes, "managers": managers}
 
 
 def _has_inputs(sub: Sub) -> bool:
@@ -178,6 +216,7 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
             for param in node["parameters"]:
                 if "file" not in param:
                     out.write(f"    param {param['name']} = {param['value']}\n")
+    _lifecycle_text(doc["lifecycle"], out)
     for process in doc["processes"]:
         out.write(f"process: {' '.join(str(c) for c in process['cmd'])}  "
                   f"({process['file']}:{process['line']})\n")
@@ -186,3 +225,20 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
         for argument in doc["arguments"]:
             out.write(f"    {argument['name']} = {argument['value']}"
                       f"  (default {argument['default']})\n")
+
+
+def _lifecycle_text(lifecycle: dict[str, Any] | None, out: TextIO) -> None:
+    if lifecycle is None:
+        return
+    out.write("lifecycle:" + ("" if lifecycle["complete"] else
+                              "  (incomplete: some triggers are not followed)") + "\n")
+    for node in lifecycle["nodes"]:
+        out.write(f"    {node['fqn']}  reaches {', '.join(node['states']) or 'nothing'}\n")
+        primary = [state for state in node["states"] if state in lc.PRIMARY_STATES]
+        if primary and primary[-1] != "unconfigured":
+            steps = node["states"][primary[-1]]
+            out.write(f"        to {primary[-1]}: " + "; ".join(s["step"] for s in steps) + "\n")
+    for manager in lifecycle["managers"]:
+        verdict = "completes" if manager["completes"] else "does not complete"
+        names = ", ".join(manager["node_names"])
+        out.write(f"    manager {manager['fqn']} [{names}] {verdict}\n")

@@ -1,0 +1,223 @@
+"""The lifecycle bring-up: the state machine, the search, and what the rules promise."""
+
+from __future__ import annotations
+
+import doctest
+import json
+from pathlib import Path
+
+import pytest
+
+from launchverify.cli import main
+from launchverify.engine import CheckOptions, run_check
+from launchverify.graph import LaunchGraph
+from launchverify.lifecycle import analyse
+from launchverify.models import lifecycle as lc
+
+CORPUS = Path(__file__).resolve().parent.parent / "corpus" / "lifecycle"
+
+HEADER = """\
+from launch import LaunchDescription
+from launch.actions import EmitEvent, RegisterEventHandler
+from launch.events import matches_action
+from launch_ros.actions import LifecycleNode, Node
+from launch_ros.event_handlers import OnStateTransition
+from launch_ros.events.lifecycle import ChangeState
+from lifecycle_msgs.msg import Transition
+
+
+def change(node, transition):
+    return EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(node),
+                                       transition_id=transition))
+
+"""
+
+
+def write(tmp_path: Path, body: str, name: str = "bringup.launch.py") -> Path:
+    path = tmp_path / name
+    path.write_text(HEADER + body, encoding="utf-8")
+    return path
+
+
+def graph_of(path: Path) -> LaunchGraph:
+    return run_check(CheckOptions(paths=[path], workspace=path.parent)).graphs[0]
+
+
+def reached(path: Path) -> dict[str, list[str]]:
+    analysis = analyse(graph_of(path))
+    return {node.fqn: sorted(analysis.exploration.reached.get(i, {}))
+            for i, node in enumerate(analysis.system.nodes)}
+
+
+def test_state_machine_doctests() -> None:
+    assert doctest.testmod(lc).failed == 0
+
+
+@pytest.mark.parametrize(("state", "transition", "goal"), [
+    ("unconfigured", 1, "inactive"),
+    ("inactive", 3, "active"),
+    ("active", 4, "inactive"),
+    ("inactive", 2, "unconfigured"),
+    ("active", 7, "finalized"),
+])
+def test_successful_transitions_end_where_rcl_says(state: str, transition: int,
+                                                   goal: str) -> None:
+    result = lc.request(state, transition, "success")
+    assert result is not None
+    after, events = result
+    assert after == goal and events[-1].goal == goal
+    assert [e.transition for e in events] == [lc.TRANSITIONS[transition].label,
+                                         "transition_success"]
+
+
+def test_an_error_in_a_callback_goes_through_errorprocessing() -> None:
+    result = lc.request("inactive", 3, outcome="error")
+    assert result is not None
+    assert [e.goal for e in result[1]] == ["activating", "errorprocessing", "unconfigured"]
+
+
+@pytest.mark.parametrize(("state", "transition"), [
+    ("unconfigured", 3), ("active", 1), ("inactive", 4), ("finalized", 1)])
+def test_transitions_refused_from_the_wrong_state(state: str, transition: int) -> None:
+    assert lc.request(state, transition, "success") is None
+
+
+def test_chain_reaches_active_and_a_shortest_trace_leads_there(tmp_path: Path) -> None:
+    path = write(tmp_path, """
+def generate_launch_description():
+    a = LifecycleNode(package='p', executable='a', name='a', namespace='')
+    return LaunchDescription([
+        a, change(a, Transition.TRANSITION_CONFIGURE),
+        RegisterEventHandler(OnStateTransition(
+            target_lifecycle_node=a, goal_state='inactive',
+            entities=[change(a, Transition.TRANSITION_ACTIVATE)])),
+    ])
+""")
+    assert reached(path) == {"/a": ["activating", "active", "configuring", "inactive",
+                                    "unconfigured"]}
+    analysis = analyse(graph_of(path))
+    steps = [step.text for step in analysis.exploration.trace(
+        analysis.exploration.reached[0]["active"])]
+    assert steps[0] == "the launch starts"
+    assert any("configure: it becomes inactive" in s for s in steps)
+    assert steps[-1].endswith("it becomes active") or "handler" in steps[-1]
+
+
+def test_unrelated_nodes_are_searched_as_independent_parts(tmp_path: Path) -> None:
+    body = "\n".join(
+        f"    n{i} = LifecycleNode(package='p', executable='x', name='n{i}', namespace='')"
+        for i in range(12))
+    actions = ", ".join(f"n{i}, change(n{i}, Transition.TRANSITION_CONFIGURE)"
+                        for i in range(12))
+    path = write(tmp_path, f"""
+def generate_launch_description():
+{body}
+    return LaunchDescription([{actions}])
+""")
+    analysis = analyse(graph_of(path))
+    assert len(analysis.exploration.searches) == 12
+    # twelve nodes interleaved would be 2**12 states; searched apart, a handful each
+    assert analysis.exploration.states < 100
+    assert all("inactive" in states for states in reached(path).values())
+
+
+def fleet(tmp_path: Path, nodes: int, managers: int) -> Path:
+    """Write ``nodes`` lifecycle nodes brought up by ``managers`` nav2 managers."""
+    lines = ["def generate_launch_description():", "    actions = []"]
+    for m in range(managers):
+        names = [f"node_{m}_{i}" for i in range(m, nodes, managers)]
+        lines += [f"    for name in {names!r}:",
+                  "        actions.append(Node(package='nav2_amcl', executable='amcl', "
+                  "name=name))",
+                  "    actions.append(Node(package='nav2_lifecycle_manager', "
+                  f"executable='lifecycle_manager', name='manager_{m}', "
+                  f"parameters=[{{'autostart': True, 'node_names': {names!r}}}]))"]
+    lines.append("    return LaunchDescription(actions)")
+    return write(tmp_path, "\n".join(lines) + "\n")
+
+
+def test_fifty_nodes_under_three_managers_all_become_active(tmp_path: Path) -> None:
+    path = fleet(tmp_path, 50, 3)
+    analysis = analyse(graph_of(path))
+    assert len(analysis.system.nodes) == 50 and len(analysis.system.managers) == 3
+    assert analysis.exploration.complete
+    assert analysis.exploration.managers_done == {0, 1, 2}
+    assert all("active" in states for states in reached(path).values())
+
+
+def test_json_findings_carry_the_trace(capsys: pytest.CaptureFixture[str]) -> None:
+    main(["check", str(CORPUS / "activate_at_start" / "activate.launch.py"),
+          "--format", "json"])
+    finding = next(f for f in json.loads(capsys.readouterr().out)["findings"]
+                   if f["code"] == "LV504")
+    assert finding["trace"][0] == {"step": "the launch starts", "file": None, "line": None}
+    last = finding["trace"][-1]
+    assert "refused" in last["step"] and last["line"] == 18
+
+
+def test_explain_prints_the_trace_in_text(capsys: pytest.CaptureFixture[str]) -> None:
+    path = str(CORPUS / "activation_cycle" / "never_activated.launch.py")
+    main(["check", path])
+    assert "(--explain prints the trace)" in capsys.readouterr().out
+    main(["check", path, "--explain"])
+    out = capsys.readouterr().out
+    assert "trace:" in out and "1. the launch starts" in out
+    assert "asks /map_server to configure: it becomes inactive" in out
+
+
+def test_graph_lists_reachable_states(capsys: pytest.CaptureFixture[str]) -> None:
+    path = CORPUS / "nav2_localization_clean" / "nav_bringup" / "launch"
+    main(["graph", str(path / "localization.launch.yaml")])
+    lifecycle = json.loads(capsys.readouterr().out)["lifecycle"]
+    assert lifecycle["complete"] is True
+    assert [m["completes"] for m in lifecycle["managers"]] == [True]
+    states = {n["fqn"]: list(n["states"]) for n in lifecycle["nodes"]}
+    assert states["/robot1/amcl"] == ["unconfigured", "configuring", "inactive",
+                                      "activating", "active"]
+
+
+INCLUDER = """\
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    here = __file__.rsplit('/', 1)[0]
+    return LaunchDescription([
+        {extra}
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(here + '/manager.launch.py')),
+    ])
+"""
+
+MANAGER = """\
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='nav2_lifecycle_manager', executable='lifecycle_manager',
+             name='lifecycle_manager', parameters=[{'node_names': ['amcl'], 'autostart': True}]),
+    ])
+"""
+
+
+def lv505(tmp_path: Path) -> list[int]:
+    report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+    return [f.span.line for f in report.findings if f.code == "LV505"]
+
+
+def test_an_includer_that_launches_the_node_settles_the_question(tmp_path: Path) -> None:
+    (tmp_path / "manager.launch.py").write_text(MANAGER)
+    (tmp_path / "bringup.launch.py").write_text(INCLUDER.format(
+        extra="Node(package='nav2_amcl', executable='amcl', name='amcl'),"))
+    assert lv505(tmp_path) == []  # alone, manager.launch.py lacks amcl; its includer has it
+
+
+def test_a_file_included_elsewhere_is_still_judged(tmp_path: Path) -> None:
+    (tmp_path / "manager.launch.py").write_text(MANAGER)
+    (tmp_path / "bringup.launch.py").write_text(INCLUDER.format(
+        extra="Node(package='nav2_amcl', executable='amlc', name='amlc'),"))
+    assert lv505(tmp_path) == [7]
