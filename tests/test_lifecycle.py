@@ -3,10 +3,13 @@
 from __future__ import annotations
 
 import doctest
+import importlib
 import json
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from launchverify.cli import main
 from launchverify.engine import CheckOptions, run_check
@@ -40,7 +43,8 @@ def write(tmp_path: Path, body: str, name: str = "bringup.launch.py") -> Path:
 
 
 def graph_of(path: Path) -> LaunchGraph:
-    return run_check(CheckOptions(paths=[path], workspace=path.parent)).graphs[0]
+    return run_check(CheckOptions(paths=[path], workspace=path.parent,
+                                  select=["LV503", "LV504", "LV505"])).graphs[0]
 
 
 def reached(path: Path) -> dict[str, list[str]]:
@@ -221,3 +225,91 @@ def test_a_file_included_elsewhere_is_still_judged(tmp_path: Path) -> None:
     (tmp_path / "bringup.launch.py").write_text(INCLUDER.format(
         extra="Node(package='nav2_amcl', executable='amlc', name='amlc'),"))
     assert lv505(tmp_path) == [7]
+
+
+WIDE = """
+def generate_launch_description():
+    hub = Node(package='demo_nodes_cpp', executable='talker', name='hub')
+    nodes = [LifecycleNode(package='p', executable='x', name=f's{k}', namespace='')
+             for k in range(16)]
+    actions = [hub, *nodes, RegisterEventHandler(OnProcessStart(
+        target_action=hub,
+        on_start=[change(n, Transition.TRANSITION_CONFIGURE) for n in nodes]))]
+    for n in nodes:
+        actions.append(RegisterEventHandler(OnStateTransition(
+            target_lifecycle_node=n, goal_state='inactive',
+            entities=[change(n, Transition.TRANSITION_ACTIVATE)])))
+    return LaunchDescription(actions)
+"""
+
+
+def test_one_handler_bringing_up_many_nodes_stays_small(tmp_path: Path) -> None:
+    path = write(tmp_path, "from launch.event_handlers import OnProcessStart\n" + WIDE)
+    analysis = analyse(graph_of(path))
+    assert analysis.exploration.complete
+    assert analysis.exploration.states < 500  # 3**16 interleavings without the reduction
+    assert all("active" in states for states in reached(path).values())
+
+
+def summary(path: Path) -> tuple[object, ...]:
+    exploration = analyse(graph_of(path)).exploration
+    return ({n: set(states) for n, states in exploration.reached.items()},
+            set(exploration.refused), set(exploration.fired), exploration.managers_done,
+            set(exploration.manager_stuck))
+
+
+@pytest.mark.parametrize("path", sorted(CORPUS.rglob("*.launch.*")),
+                         ids=lambda p: f"{p.parent.name}/{p.name}")
+def test_the_reduction_finds_what_the_full_search_finds(
+        path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    reduced = summary(path)
+    monkeypatch.setattr(importlib.import_module("launchverify.lifecycle.explore"), "REDUCE",
+                        False)
+    assert summary(path) == reduced
+
+
+TRANSITIONS = ["CONFIGURE", "ACTIVATE", "DEACTIVATE", "CLEANUP"]
+STATES = ["inactive", "active", "unconfigured", "finalized"]
+
+
+@st.composite
+def bringups(draw: st.DrawFn) -> str:
+    """A random bring-up: lifecycle nodes, requests at launch and in handlers, a manager."""
+    count = draw(st.integers(1, 4))
+    lines = ["def generate_launch_description():", "    actions = []"]
+    for k in range(count):
+        autostart = draw(st.booleans())
+        lines.append(f"    n{k} = LifecycleNode(package='p', executable='x', name='n{k}', "
+                     f"namespace='', autostart={autostart})")
+        lines.append(f"    actions.append(n{k})")
+    for _ in range(draw(st.integers(0, 3))):
+        node, transition = draw(st.integers(0, count - 1)), draw(st.sampled_from(TRANSITIONS))
+        lines.append(f"    actions.append(change(n{node}, Transition.TRANSITION_{transition}))")
+    for _ in range(draw(st.integers(0, 4))):
+        watched, goal = draw(st.integers(0, count - 1)), draw(st.sampled_from(STATES))
+        node, transition = draw(st.integers(0, count - 1)), draw(st.sampled_from(TRANSITIONS))
+        lines.append(f"    actions.append(RegisterEventHandler(OnStateTransition("
+                     f"target_lifecycle_node=n{watched}, goal_state='{goal}', "
+                     f"entities=[change(n{node}, Transition.TRANSITION_{transition})])))")
+    managed = draw(st.lists(st.integers(0, count - 1), max_size=count, unique=True))
+    if managed:
+        names = [f"n{k}" for k in managed]
+        lines.append("    actions.append(Node(package='nav2_lifecycle_manager', "
+                     "executable='lifecycle_manager', name='manager', "
+                     f"parameters=[{{'autostart': True, 'node_names': {names!r}}}]))")
+    lines.append("    return LaunchDescription(actions)")
+    return "\n".join(lines) + "\n"
+
+
+@settings(max_examples=25, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(bringups())
+def test_the_reduction_agrees_on_random_bringups(tmp_path: Path, body: str) -> None:
+    path = write(tmp_path, body)
+    reduced = summary(path)
+    module = importlib.import_module("launchverify.lifecycle.explore")
+    module.REDUCE = False
+    try:
+        assert summary(path) == reduced
+    finally:
+        module.REDUCE = True

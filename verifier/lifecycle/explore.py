@@ -27,6 +27,7 @@ from launchverify.models import lifecycle as lc
 from launchverify.trace import Step
 
 MAX_STATES = 50_000
+REDUCE = True  # partial-order reduction (tests compare against the full search)
 EMITTING = ("lifecycle_node", "composable_lifecycle_node")  # publish StateTransition events
 EVENT_HANDLERS = {"start": ("process_start",), "exit": ("process_exit", "execution_complete"),
                   "done": ("execution_complete",)}
@@ -228,6 +229,7 @@ class _Search:
             if request.command is not None:
                 self.commands.add(request.command)
         self.timer_blocks = {b for b in system.blocks if b[1] is not None and self.touches(b)}
+        self.reaches: dict[tuple[str, int], frozenset[tuple[str, int]]] = {}
 
     def touches(self, block: Block) -> bool:
         """Return whether a block holds anything of this part."""
@@ -254,7 +256,7 @@ class _Search:
             state = queue.popleft()
             here = seen[state]
             self.note(state, result)
-            successors = list(self.successors(state))
+            successors = self.reduce(list(self.successors(state)), seen)
             if not successors:
                 self.terminal(state, here, result)
             for move, after, done in successors:
@@ -297,6 +299,92 @@ class _Search:
 
     def manager_end(self, index: int) -> int:
         return 2 * len(self.system.managers[index].nodes) + 1
+
+    # ------------------------------------------------------------------ reduction
+
+    def reduce(self, successors: list[tuple[Move, State, list[Effect]]],
+               seen: dict[State, int]) -> list[tuple[Move, State, list[Effect]]]:
+        """Keep one move when it cannot interact with any other (partial-order reduction).
+
+        A move whose reach (every node, handler, manager and process it can ever
+        influence) is disjoint from every other enabled move's reach commutes with all
+        that they and their consequences do, so exploring it alone loses no node state,
+        refusal or firing. Timers wait for quiescence, so none fires in between. A move
+        back to a state already seen is not taken alone (a cycle could defer the others
+        for ever).
+        """
+        if (not REDUCE or len(successors) < 2
+                or any(m.kind == "timer" for m, _, _ in successors)):
+            return successors
+        reaches = [self.reach(self.atom(move)) for move, _, _ in successors]
+        for position, (reach, successor) in enumerate(zip(reaches, successors, strict=True)):
+            if successor[1] in seen:
+                continue
+            if all(reach.isdisjoint(other) for i, other in enumerate(reaches)
+                   if i != position):
+                return [successor]
+        return successors
+
+    def atom(self, move: Move) -> tuple[str, int]:
+        """Return what a move acts on first."""
+        if move.kind == "manager":
+            return ("m", move.manager)
+        assert move.item is not None
+        return ("q" if move.item.kind == "request" else "e", move.item.ref)
+
+    def reach(self, atom: tuple[str, int]) -> frozenset[tuple[str, int]]:
+        """Return everything a move on ``atom`` can influence, directly or through others."""
+        found = self.reaches.get(atom)
+        if found is None:
+            seen = {atom}
+            stack = [atom]
+            while stack:
+                for successor in self.influences(stack.pop()):
+                    if successor not in seen:
+                        seen.add(successor)
+                        stack.append(successor)
+            found = self.reaches[atom] = frozenset(seen)
+        return found
+
+    def influences(self, atom: tuple[str, int]) -> Iterator[tuple[str, int]]:
+        """Return what one element acts on directly."""
+        kind, ref = atom
+        system = self.system
+        if kind == "q":
+            request = system.requests[ref]
+            yield ("n", request.node)
+            if request.command is not None:
+                yield ("e", request.command)
+        elif kind == "n":
+            for key, reaction in self.reactions.items():
+                if reaction.event == "state_transition" and (
+                        reaction.nodes is None or ref in reaction.nodes):
+                    yield ("r", key)
+            for request in self.sequences.get(ref, ()):
+                yield ("q", request.index)
+            for index in self.managers:
+                if ref in system.managers[index].nodes:
+                    yield ("m", index)
+        elif kind == "m":
+            for node in system.managers[ref].nodes:
+                if node is not None:
+                    yield ("n", node)
+        elif kind == "e":
+            for key, reaction in self.reactions.items():
+                if reaction.event != "state_transition" and (
+                        reaction.targets is None or ref in reaction.targets):
+                    yield ("r", key)
+        elif kind == "r":
+            for block, content in system.blocks.items():
+                if block[0] != ref:
+                    continue
+                yield from (("n", n) for n in content.starts if n in self.local)
+                yield from (("q", q) for q in content.requests if q in self.part.requests)
+                yield from (("m", m) for m in content.managers if m in self.managers)
+                yield from (("e", e) for e in content.actions)
+                for key, reaction in self.reactions.items():
+                    if reaction.registered == block:
+                        yield ("r", key)
 
     # ------------------------------------------------------------------ moves
 

@@ -9,6 +9,7 @@ file (``rule.Poll``): a file evaluated alone may lack what an includer supplies.
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass
 from typing import NamedTuple
 
@@ -42,6 +43,22 @@ def question(origin: Origin | Span, words: str = "") -> Question:
     return (str(span.file), span.line, span.column, words)
 
 
+class Questions:
+    """Asks questions in one evaluation, numbering those asked at one place.
+
+    A helper function in a launch file makes many handlers at one line; the k-th of them
+    is the same handler in every evaluation of the file.
+    """
+
+    def __init__(self) -> None:
+        self.asked: Counter[Question] = Counter()
+
+    def __call__(self, origin: Origin | Span, words: str = "") -> Question:
+        base = question(origin, words)
+        self.asked[base] += 1
+        return (*base[:3], f"{words}#{self.asked[base]}")
+
+
 @dataclass(frozen=True)
 class Verdict:
     """One thing to report: where, what, the places that explain it, how to get there."""
@@ -71,10 +88,10 @@ def unanswerable_requests(graph: LaunchGraph,
     """Ask of every request whether it has a lifecycle node to go to (absence claims)."""
     if not judged(graph, analysis):
         return []
-    system = analysis.system
+    system, ask = analysis.system, Questions()
     answers: list[tuple[Question, Verdict | None]] = [
-        (question(r.origin, r.label), None) for r in system.requests]
-    answers += [(question(refusal.origin, refusal.label),
+        (ask(r.origin, r.label), None) for r in system.requests]
+    answers += [(ask(refusal.origin, refusal.label),
                  Verdict(refusal.origin, f"{refusal.label}: {refusal.reason}"))
                 for refusal in system.refusals]
     return answers
@@ -106,13 +123,15 @@ def refused_transitions(graph: LaunchGraph, analysis: Analysis) -> list[Verdict]
     for cases in cases_of.values():
         cases.sort(key=lambda case: (case.cause is not None, case.where.state))
     alone = {asker for asker, cases in cases_of.items()
-             if any(case.cause is None or case.cause not in cases_of for case in cases)}
+             if any(case.cause is None or case.cause not in cases_of for case in cases)
+             or all(case.cause == asker for case in cases)}  # refused after its own move
     out = [_refusal_verdict(analysis, cases_of[asker][0]) for asker in sorted(alone)]
-    rivals = {asker: {c.cause for c in cases if c.cause is not None}
+    rivals = {asker: {c.cause for c in cases if c.cause not in (None, asker)}
               for asker, cases in cases_of.items() if asker not in alone}
     for group in _rival_groups({a: causes for a, causes in rivals.items()
                                 if not causes & alone}):
-        out.append(_rivals_verdict(analysis, [cases_of[asker][0] for asker in group]))
+        out.append(_rivals_verdict(analysis, [
+            next(c for c in cases_of[asker] if c.cause not in (None, asker)) for asker in group]))
     return out
 
 
@@ -171,7 +190,8 @@ def _refusal_verdict(analysis: Analysis, case: _Case) -> Verdict:
 
 def _rivals_verdict(analysis: Analysis, cases: list[_Case]) -> Verdict:
     """One finding for askers that each drive a node the others have already moved."""
-    labelled = sorted((_source_label(analysis, case.source), case) for case in cases)
+    labelled = sorted(((_source_label(analysis, case.source), case) for case in cases),
+                      key=lambda item: (item[0][0], item[0][1].span.line))
     (label, origin), first = labelled[0]
     others = [other for (other, _), _ in labelled[1:]]
     fqns = sorted({analysis.system.nodes[case.node].fqn for case in cases})
@@ -211,13 +231,14 @@ def deadlocks(graph: LaunchGraph, analysis: Analysis) -> list[tuple[Question, Ve
     driven = _driven_nodes(analysis)
     waiting: dict[int, int] = {}  # never-firing bring-up handler -> the node it waits for
     asked: dict[int, Question] = {}
+    ask = Questions()
     for key, reaction in system.reactions.items():
         if (reaction.event != "state_transition"
                 or reaction.registered not in exploration.happened
                 or reaction.nodes is None or len(reaction.nodes) != 1
                 or not any(reaction.matches(e) for e in BRINGUP_EVENTS)):
             continue
-        asked[key] = question(reaction.origin, "handler")
+        asked[key] = ask(reaction.origin, "handler")
         if key in exploration.fired:
             continue
         node = next(iter(reaction.nodes))
@@ -225,7 +246,7 @@ def deadlocks(graph: LaunchGraph, analysis: Analysis) -> list[tuple[Question, Ve
                 or node in refused_nodes):
             continue
         waiting[key] = node
-    needs = {key: _needs(analysis, node, waiting) for key, node in waiting.items()}
+    needs = {key: _needs(analysis, key, node, waiting) for key, node in waiting.items()}
     verdicts: dict[int, Verdict] = {}
     in_cycle: set[int] = set()
     for cycle in _cycles(needs):
@@ -238,7 +259,7 @@ def deadlocks(graph: LaunchGraph, analysis: Analysis) -> list[tuple[Question, Ve
     out = [(words, verdicts.get(key)) for key, words in asked.items()
            if key in verdicts or key not in waiting]  # the rest of a cycle is not asked
     stuck = _stuck_managers(analysis)
-    out += [(question(m.spec.record.origin, "manager"), stuck.get(index))
+    out += [(ask(m.spec.record.origin, "manager"), stuck.get(index))
             for index, m in enumerate(system.managers)]
     return out
 
@@ -253,15 +274,23 @@ def _driven_nodes(analysis: Analysis) -> set[int]:
     return driven
 
 
-def _needs(analysis: Analysis, node: int, waiting: dict[int, int]) -> set[int]:
-    """Return the never-firing handlers whose blocks hold what would move ``node`` on."""
+def _needs(analysis: Analysis, key: int, node: int, waiting: dict[int, int]) -> set[int]:
+    """Return the never-firing handlers whose blocks hold what would move ``node`` on.
+
+    Only requests rcl would accept where the node stops count (an ``activate`` does not
+    help a node that was never configured), and a handler never waits for itself.
+    """
     system, exploration = analysis.system, analysis.exploration
+    reached = exploration.reached.get(node, {})
+    furthest = max((s for s in reached if s in ORDER), key=ORDER.index,
+                   default="unconfigured")
     found: set[int] = set()
-    blocks: list[Block] = [r.block for r in system.requests if r.node == node]
+    blocks: list[Block] = [r.block for r in system.requests if r.node == node
+                           and lc.resolve(furthest, r.transitions[0]) is not None]
     if node not in exploration.reached:
         blocks.append(system.nodes[node].block)
     for block in blocks:
-        if block not in exploration.happened and block[0] in waiting:
+        if block not in exploration.happened and block[0] in waiting and block[0] != key:
             found.add(block[0])
     return found
 
@@ -295,10 +324,10 @@ def _cycle_verdict(analysis: Analysis, cycle: list[int], waiting: dict[int, int]
     parts = []
     for position, key in enumerate(cycle):
         reaction = system.reactions[key]
-        following = cycle[(position + 1) % len(cycle)]
-        target = system.nodes[waiting[following]].fqn
+        previous = cycle[position - 1]  # this handler's block moves what it waits for
+        target = system.nodes[waiting[previous]].fqn
         moves = sorted({verb(r.transitions[0]) for r in system.requests
-                        if r.block == (key, None) and r.node == waiting[following]})
+                        if r.block == (key, None) and r.node == waiting[previous]})
         action = f"ask {target} to {'/'.join(moves)}" if moves else f"start {target}"
         parts.append(f"the handler at line {reaction.origin.span.line} waits for "
                      f"{system.nodes[waiting[key]].fqn} to {_wanted(reaction)} before it "
@@ -379,12 +408,13 @@ def unknown_managed_nodes(graph: LaunchGraph, analysis: Analysis
         return []  # a node whose name is not known could be the one
     known = {f for f in fqns if f is not None}
     out: list[tuple[Question, UnknownManagedNode | None]] = []
+    ask = Questions()
     for manager in analysis.system.managers:
         spec = manager.spec
         if spec.resolved is None or spec.names is None:
             continue
         for name, resolved, node in zip(spec.names, spec.resolved, manager.nodes, strict=True):
-            asked = question(spec.record.origin, name)
+            asked = ask(spec.record.origin, name)
             if node is not None or resolved in known:
                 out.append((asked, None))
                 continue
