@@ -158,3 +158,29 @@ class Rule:
         import inspect
 
         return inspect.cleandoc(cls.__doc__ or "")
+
+
+class PollingRule(Rule):
+    """A rule whose claims of absence are polled across every evaluation (see ``Poll``).
+
+    Subclasses yield ``(question, finding or None)`` from ``answers`` and may still yield
+    findings that need no poll from ``direct``.
+    """
+
+    def answers(self, graph: LaunchGraph, ctx: RuleContext
+                ) -> Iterator[tuple[Hashable, Finding | None]]:
+        """Yield this evaluation's answer to each question it can judge."""
+        raise NotImplementedError
+
+    def direct(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        """Yield findings that hold in this evaluation whatever the others say."""
+        return iter(())
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        poll = Poll(ctx, self.code)
+        for question, finding in self.answers(graph, ctx):
+            poll.answer(question, finding)
+        yield from self.direct(graph, ctx)
+
+    def finish(self, ctx: RuleContext) -> Iterator[Finding]:
+        return Poll(ctx, self.code).outcome()

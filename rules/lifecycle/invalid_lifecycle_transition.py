@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Hashable, Iterator
 
 from launchverify.graph import LaunchGraph
-from launchverify.lifecycle import analyse
+from launchverify.lifecycle import bringup
 from launchverify.lifecycle.verdicts import refused_transitions, report, unanswerable_requests
-from launchverify.rule import Finding, Poll, Rule, RuleContext, Severity
+from launchverify.rule import Finding, PollingRule, RuleContext, Severity
 
 
-class InvalidLifecycleTransition(Rule):
+class InvalidLifecycleTransition(PollingRule):
     """A lifecycle transition requested where the node cannot take it.
 
     ## What it does
@@ -48,17 +48,13 @@ class InvalidLifecycleTransition(Rule):
     severity = Severity.ERROR
     message = "{text}"
 
-    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        if not graph.nodes:
-            return
-        analysis = analyse(graph)
-        if analysis.system.empty:
-            return
-        poll = Poll(ctx, self.code)
-        for asked, verdict in unanswerable_requests(graph, analysis):
-            poll.answer(asked, None if verdict is None else report(self, verdict))
-        for verdict in refused_transitions(graph, analysis):
-            yield report(self, verdict)
+    def answers(self, graph: LaunchGraph, ctx: RuleContext
+                ) -> Iterator[tuple[Hashable, Finding | None]]:
+        analysis = bringup(graph)
+        for asked, verdict in unanswerable_requests(graph, analysis) if analysis else ():
+            yield asked, None if verdict is None else report(self, verdict)
 
-    def finish(self, ctx: RuleContext) -> Iterator[Finding]:
-        return Poll(ctx, self.code).outcome()
+    def direct(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        analysis = bringup(graph)
+        for verdict in refused_transitions(graph, analysis) if analysis else ():
+            yield report(self, verdict)

@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Hashable, Iterator
 
 from launchverify.graph import LaunchGraph
-from launchverify.lifecycle import analyse
+from launchverify.lifecycle import bringup
 from launchverify.lifecycle.verdicts import deadlocks, report
-from launchverify.rule import Finding, Poll, Rule, RuleContext, Severity
+from launchverify.rule import Finding, PollingRule, RuleContext, Severity
 
 
-class LifecycleDeadlock(Rule):
+class LifecycleDeadlock(PollingRule):
     """A lifecycle bring-up that can never complete.
 
     ## What it does
@@ -55,16 +55,8 @@ class LifecycleDeadlock(Rule):
     severity = Severity.ERROR
     message = "{text}"
 
-    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        if not graph.nodes:
-            return
-        analysis = analyse(graph)
-        if analysis.system.empty:
-            return
-        poll = Poll(ctx, self.code)
-        for asked, verdict in deadlocks(graph, analysis):
-            poll.answer(asked, None if verdict is None else report(self, verdict))
-        yield from ()
-
-    def finish(self, ctx: RuleContext) -> Iterator[Finding]:
-        return Poll(ctx, self.code).outcome()
+    def answers(self, graph: LaunchGraph, ctx: RuleContext
+                ) -> Iterator[tuple[Hashable, Finding | None]]:
+        analysis = bringup(graph)
+        for asked, verdict in deadlocks(graph, analysis) if analysis else ():
+            yield asked, None if verdict is None else report(self, verdict)

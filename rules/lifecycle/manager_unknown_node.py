@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Hashable, Iterator
 
 from launchverify.graph import LaunchGraph
-from launchverify.lifecycle import analyse
-from launchverify.lifecycle.verdicts import unknown_managed_nodes
-from launchverify.rule import Finding, Poll, Related, Rule, RuleContext, Severity
+from launchverify.lifecycle import bringup
+from launchverify.lifecycle.verdicts import UnknownManagedNode, unknown_managed_nodes
+from launchverify.rule import Finding, PollingRule, Related, RuleContext, Severity
 
 
-class ManagerUnknownNode(Rule):
+class ManagerUnknownNode(PollingRule):
     """A nav2 lifecycle manager waits for a node the launch never starts.
 
     ## What it does
@@ -43,27 +43,22 @@ class ManagerUnknownNode(Rule):
     message = ("{manager} waits for {resolved} ('{name}' in node_names), which is never "
                "launched{hint}: the manager blocks and brings up none of its nodes")
 
-    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        if not graph.nodes:
-            return
-        poll = Poll(ctx, self.code)
-        for asked, unknown in unknown_managed_nodes(graph, analyse(graph)):
-            if unknown is None:
-                poll.answer(asked, None)
-                continue
-            hint = ""
-            if unknown.elsewhere:
-                hint = f"; {unknown.elsewhere} runs in another namespace"
-            elif unknown.suggestion:
-                hint = f" (did you mean {unknown.suggestion}?)"
-            names = unknown.names_span
-            related = ((Related(names, "node_names is set here"),)
-                       if names is not None and (names.file, names.line) != (
-                           unknown.manager.span.file, unknown.manager.span.line) else ())
-            poll.answer(asked, self.finding(
-                unknown.manager, related=related, manager=unknown.manager_name,
-                resolved=unknown.resolved, name=unknown.name, hint=hint))
-        yield from ()
+    def answers(self, graph: LaunchGraph, ctx: RuleContext
+                ) -> Iterator[tuple[Hashable, Finding | None]]:
+        analysis = bringup(graph)
+        for asked, unknown in unknown_managed_nodes(graph, analysis) if analysis else ():
+            yield asked, None if unknown is None else self.describe(unknown)
 
-    def finish(self, ctx: RuleContext) -> Iterator[Finding]:
-        return Poll(ctx, self.code).outcome()
+    def describe(self, unknown: UnknownManagedNode) -> Finding:
+        """Return the finding for one name no launched node has."""
+        hint = ""
+        if unknown.elsewhere:
+            hint = f"; {unknown.elsewhere} runs in another namespace"
+        elif unknown.suggestion:
+            hint = f" (did you mean {unknown.suggestion}?)"
+        names, manager = unknown.names_span, unknown.manager.span
+        related = ((Related(names, "node_names is set here"),)
+                   if names is not None and (names.file, names.line) != (
+                       manager.file, manager.line) else ())
+        return self.finding(unknown.manager, related=related, manager=unknown.manager_name,
+                            resolved=unknown.resolved, name=unknown.name, hint=hint)

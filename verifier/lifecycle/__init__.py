@@ -13,7 +13,7 @@ from launchverify.graph import LaunchGraph
 from launchverify.lifecycle.explore import Exploration, Where, explore
 from launchverify.lifecycle.system import System, build_system
 
-__all__ = ["Analysis", "Where", "analyse"]
+__all__ = ["Analysis", "Where", "analyse", "bringup"]
 
 
 @dataclass
@@ -34,3 +34,11 @@ def analyse(graph: LaunchGraph) -> Analysis:
     analysis = Analysis(system, explore(system) if not system.empty else Exploration())
     cache[0] = analysis
     return analysis
+
+
+def bringup(graph: LaunchGraph) -> Analysis | None:
+    """Return the lifecycle analysis of a graph, or ``None`` when it has no bring-up."""
+    if not graph.nodes:
+        return None
+    analysis = analyse(graph)
+    return None if analysis.system.empty else analysis
