@@ -16,7 +16,8 @@ import re
 from functools import lru_cache
 from pathlib import Path
 
-from launchverify.packages import SKIP_DIRS, Package
+from launchverify.graph import LaunchGraph, NodeRecord
+from launchverify.packages import SKIP_DIRS, Package, PackageIndex
 
 MAX_SOURCE_FILES = 2_000
 _TEST_DIRS = frozenset({"test", "tests"})
@@ -39,6 +40,27 @@ def default_node_names(package: Package) -> frozenset[str] | None:
     if package.source is None:
         return None
     return _scan(package.source)[0]
+
+
+def unnamed_node_names(graph: LaunchGraph, node: NodeRecord, packages: PackageIndex | None
+                       ) -> tuple[str, frozenset[str] | None] | None:
+    """Return the namespace of a node its code names, and the names it may have.
+
+    The names are ``None`` when its package's sources are not here; the whole answer is
+    ``None`` when the namespace is unknown or the launch sets a name that is not known.
+    """
+    if node.name is not None:
+        return None
+    namespace = "/" if node.namespace is None else graph.base(node.namespace)
+    if namespace is None:
+        return None
+    package_name = graph.base(node.package)
+    package = packages.find(package_name) if packages and package_name else None
+    names = default_node_names(package) if package is not None else None
+    executable = graph.base(node.executable)
+    if names is not None and executable is not None:
+        names = names | {executable}
+    return namespace, names
 
 
 def name_literals(package: Package) -> frozenset[str] | None:

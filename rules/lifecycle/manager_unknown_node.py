@@ -46,7 +46,9 @@ class ManagerUnknownNode(PollingRule):
     def answers(self, graph: LaunchGraph, ctx: RuleContext
                 ) -> Iterator[tuple[Hashable, Finding | None]]:
         analysis = bringup(graph)
-        for asked, unknown in unknown_managed_nodes(graph, analysis) if analysis else ():
+        if analysis is None:
+            return
+        for asked, unknown in unknown_managed_nodes(graph, analysis, ctx.packages):
             yield asked, None if unknown is None else self.describe(unknown)
 
     def describe(self, unknown: UnknownManagedNode) -> Finding:

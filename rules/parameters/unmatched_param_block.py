@@ -10,7 +10,7 @@ from pathlib import Path
 from launchverify.frontends.param_file import ParamFile
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.models.ros_names import node_key_matches
-from launchverify.package_contents import default_node_names, name_literals
+from launchverify.package_contents import name_literals, unnamed_node_names
 from launchverify.packages import PackageIndex
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
@@ -186,16 +186,10 @@ def _receiver(graph: LaunchGraph, node: NodeRecord,
     fqn = graph.base(node.fqn)
     if fqn is not None:
         return Receiver(node, fqn, inner=inner)
-    if node.name is not None:
-        return None  # a name we cannot compute
-    namespace = "/" if node.namespace is None else graph.base(node.namespace)
-    if namespace is None:
-        return None
-    names = default_node_names(package) if package is not None else None
-    executable = graph.base(node.executable)
-    if names is not None and executable is not None:
-        names = names | {executable}
-    return Receiver(node, None, namespace, names, inner)
+    unnamed = unnamed_node_names(graph, node, packages)
+    if unnamed is None:
+        return None  # a name or namespace we cannot compute
+    return Receiver(node, None, unnamed[0], unnamed[1], inner)
 
 
 def _mentions(text: str | None, spellings: set[str]) -> bool:

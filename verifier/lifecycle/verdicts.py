@@ -19,6 +19,8 @@ from launchverify.lifecycle.explore import Source, Where, verb
 from launchverify.lifecycle.system import Block, Reaction
 from launchverify.models import lifecycle as lc
 from launchverify.models.ros_names import node_fqn
+from launchverify.package_contents import unnamed_node_names
+from launchverify.packages import PackageIndex
 from launchverify.rule import Finding, Related, Rule
 from launchverify.span import Span
 from launchverify.suggest import typo_of
@@ -398,15 +400,26 @@ class UnknownManagedNode:
     suggestion: str | None
 
 
-def unknown_managed_nodes(graph: LaunchGraph, analysis: Analysis
+def unknown_managed_nodes(graph: LaunchGraph, analysis: Analysis,
+                          packages: PackageIndex | None = None,
                           ) -> list[tuple[Question, UnknownManagedNode | None]]:
-    """Ask of every name a lifecycle manager waits for whether a node has it."""
+    """Ask of every name a lifecycle manager waits for whether a node has it.
+
+    A node named by its own code may be the one when its namespace matches and its
+    package's sources give that name (or are not here): then the question is not answered.
+    """
     if not graph.complete_as_given():
         return []
-    fqns = {graph.base(n.fqn) for n in graph.nodes if graph.runs(n.origin) is not False}
-    if None in fqns:
-        return []  # a node whose name is not known could be the one
-    known = {f for f in fqns if f is not None}
+    running = [n for n in graph.nodes if graph.runs(n.origin) is not False]
+    known = {f for f in (graph.base(n.fqn) for n in running) if f is not None}
+    unnamed = [unnamed_node_names(graph, n, packages) for n in running
+               if graph.base(n.fqn) is None]
+
+    def may_be(resolved: str) -> bool:
+        namespace, _, base = resolved.rpartition("/")
+        return any(u is None or (u[0] == (namespace or "/") and (u[1] is None or base in u[1]))
+                   for u in unnamed)
+
     out: list[tuple[Question, UnknownManagedNode | None]] = []
     ask = Questions()
     for manager in analysis.system.managers:
@@ -417,6 +430,8 @@ def unknown_managed_nodes(graph: LaunchGraph, analysis: Analysis
             asked = ask(spec.record.origin, name)
             if node is not None or resolved in known:
                 out.append((asked, None))
+                continue
+            if may_be(resolved):
                 continue
             base = resolved.rsplit("/", 1)[-1]
             elsewhere = sorted(f for f in known if f.rsplit("/", 1)[-1] == base)
