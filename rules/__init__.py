@@ -20,6 +20,7 @@ from launchverify.rules.files.unknown_package import UnknownPackage
 from launchverify.rules.health.evaluation_error import EvaluationError
 from launchverify.rules.health.parse_error import ParseError
 from launchverify.rules.health.unmodeled_construct import UnmodeledConstruct
+from launchverify.rules.health.unused_suppression import UnusedSuppression
 from launchverify.rules.lifecycle.invalid_lifecycle_transition import (
     InvalidLifecycleTransition,
 )
@@ -37,6 +38,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     ParseError,               # LV001
     EvaluationError,          # LV002
     UnmodeledConstruct,       # LV003
+    UnusedSuppression,        # LV004
     DuplicateNodeName,        # LV101
     InvalidName,              # LV102
     RemapCollision,           # LV103

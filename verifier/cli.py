@@ -1,21 +1,28 @@
 """The ``launchverify`` command line.
 
-Exit status: 0 when no error-level finding, 1 when there is one, 2 for a usage error or an
-internal failure (never a traceback on the user's screen).
+Exit status: 0 when no finding at or above ``--fail-on`` (default: error), 1 when there is
+one, 2 for a usage error or an internal failure (never a traceback on the user's screen).
 """
 
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import sys
-from collections.abc import Iterator, Sequence
+from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
+from typing import Any, TextIO
+
+from rich.console import Console
 
 from launchverify import __version__
+from launchverify.baseline import BaselineError, write_baseline
+from launchverify.config import Config, ConfigError, find_config, load_config
 from launchverify.engine import (
     CheckOptions,
+    Report,
     UsageError,
     build_index,
     canonical,
@@ -29,10 +36,37 @@ from launchverify.rule import Severity
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 
 
+FORMATS = ("text", "json", "sarif", "junit", "github")
+
+
 def _codes(text: str | None) -> list[str] | None:
     if text is None:
         return None
     return [part.strip() for part in text.split(",") if part.strip()]
+
+
+def _add_check_options(command: argparse.ArgumentParser) -> None:
+    """Options shared by ``check`` and ``report``: what to check and how."""
+    command.add_argument("targets", nargs="+", metavar="PATH|name:=value")
+    command.add_argument("--workspace", type=Path, help="folder to search for packages "
+                         "(default: the nearest colcon workspace or git root)")
+    command.add_argument("--select", help="comma-separated codes, slugs or prefixes to run")
+    command.add_argument("--ignore", help="comma-separated codes, slugs or prefixes to skip")
+    command.add_argument("--exclude", action="append", default=[], metavar="GLOB",
+                         help="leave out discovered files matching GLOB (repeatable)")
+    command.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
+                         help="an environment variable of the machine that will run the "
+                         "launch (repeatable); unset ones are free values")
+    command.add_argument("--config", type=Path, metavar="FILE",
+                         help="configuration file (default: the nearest launchverify.toml "
+                         "or pyproject.toml with [tool.launchverify])")
+    command.add_argument("--isolated", action="store_true",
+                         help="ignore configuration files")
+    command.add_argument("--baseline", type=Path, metavar="FILE",
+                         help="report only findings not recorded in FILE")
+    command.add_argument("--launch-files-only", action="store_true",
+                         help="skip given files that do not look like launch files (as in "
+                         "folders); for pre-commit, which passes every matching file")
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -49,24 +83,41 @@ def build_parser() -> argparse.ArgumentParser:
         description="Check launch files (files, or folders searched for launch files). "
         "Arguments written name:=value are passed to the launch as on ros2 launch.",
     )
-    check.add_argument("targets", nargs="+", metavar="PATH|name:=value")
-    check.add_argument("--workspace", type=Path, help="folder to search for packages "
-                       "(default: the nearest colcon workspace or git root)")
-    check.add_argument("--format", choices=("text", "json"), default="text")
-    check.add_argument("--select", help="comma-separated codes, slugs or prefixes to run")
-    check.add_argument("--ignore", help="comma-separated codes, slugs or prefixes to skip")
+    _add_check_options(check)
+    check.add_argument("--format", choices=FORMATS, default="text")
+    check.add_argument("-o", "--output", type=Path, metavar="FILE",
+                       help="write the report to FILE instead of standard output")
     check.add_argument("--color", choices=("auto", "always", "never"), default="auto")
     check.add_argument("--explain", action="store_true",
-                       help="under each finding, the steps that lead to it (lifecycle "
-                       "traces)")
-    check.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
-                       help="an environment variable of the machine that will run the "
-                       "launch (repeatable); unset ones are free values")
+                       help="under each finding: related lines, the trace, why it matters "
+                       "and how to fix it")
+    check.add_argument("--exit-zero", action="store_true",
+                       help="exit 0 even when there are findings")
+    check.add_argument("--fail-on", choices=("error", "warning", "info"),
+                       help="lowest severity that fails the check (default: error)")
+    check.add_argument("-q", "--quiet", action="store_true",
+                       help="print findings only: no summary, no progress")
+    check.add_argument("--statistics", action="store_true",
+                       help="print how many findings each rule has, instead of them")
+    check.add_argument("--write-baseline", type=Path, metavar="FILE",
+                       help="record the findings in FILE (then use --baseline FILE)")
+    check.add_argument("--xunit-file", type=Path, metavar="FILE",
+                       help="also write JUnit XML to FILE (what colcon test-result reads)")
+
+    report = commands.add_parser(
+        "report", help="write a self-contained HTML report",
+        description="Check launch files and write one HTML file (works offline): summary, "
+        "findings with code frames, include trees and a picture of the launched system.",
+    )
+    _add_check_options(report)
+    report.add_argument("-o", "--output", type=Path, default=Path("launchverify-report.html"),
+                        metavar="FILE", help="where to write it "
+                        "(default: launchverify-report.html)")
 
     graph = commands.add_parser(
         "graph", help="print what a launch file would start",
-        description="Evaluate one launch file and print its nodes, processes, includes and "
-        "arguments under the given arguments.",
+        description="Evaluate one launch file and print its nodes, processes, includes, "
+        "arguments and lifecycle bring-up under the given arguments.",
     )
     graph.add_argument("targets", nargs="+", metavar="FILE|name:=value")
     graph.add_argument("--workspace", type=Path)
@@ -74,6 +125,12 @@ def build_parser() -> argparse.ArgumentParser:
     graph.add_argument("--symbolic", action="store_true",
                        help="every action with its path condition, values as expressions")
     graph.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
+
+    rules = commands.add_parser("rules", help="list every rule")
+    rules.add_argument("--format", choices=("text", "json"), default="text")
+
+    explain = commands.add_parser("explain", help="print a rule's documentation")
+    explain.add_argument("rule", metavar="CODE|SLUG")
     return parser
 
 
@@ -84,18 +141,18 @@ def main(argv: Sequence[str] | None = None) -> int:
     # name:=value may follow options (`check f.xml --format json x:=1`); argparse leaves
     # those as unknown tokens.
     unknown = [token for token in extra if ":=" not in token or token.startswith("-")]
-    if unknown:
-        parser.error(f"unrecognized arguments: {' '.join(unknown)}")
+    if unknown or (extra and not hasattr(args, "targets")):
+        parser.error(f"unrecognized arguments: {' '.join(unknown or extra)}")
     if extra:
         args.targets = [*args.targets, *extra]
     if args.command is None:
         parser.print_help()
         return EXIT_ERROR
+    handlers = {"check": _check, "report": _report, "graph": _graph, "rules": _rules,
+                "explain": _explain}
     try:
-        if args.command == "check":
-            return _check(args)
-        return _graph(args)
-    except (UsageError, RegistryError) as error:
+        return handlers[args.command](args)
+    except (UsageError, RegistryError, ConfigError, BaselineError) as error:
         print(f"launchverify: error: {error}", file=sys.stderr)
         return EXIT_ERROR
     except KeyboardInterrupt:
@@ -106,26 +163,153 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_ERROR
 
 
-def _check(args: argparse.Namespace) -> int:
-    from launchverify.render.json_out import render_json
-    from launchverify.render.text import render_text
+def check_options(args: argparse.Namespace, *, progress: bool = False
+                  ) -> tuple[CheckOptions, Config]:
+    """Merge the command line with the configuration file into what to check.
 
+    The command line wins: ``--select`` replaces the file's select, ``--ignore`` adds to
+    its ignore, ``name:=value`` and ``--env`` override its arguments and environment.
+    """
     paths, arguments = parse_arguments(args.targets)
     if not paths:
         raise UsageError("no PATH given")
-    report = run_check(CheckOptions(
-        paths=[Path(p) for p in paths], arguments=arguments, workspace=args.workspace,
-        select=_codes(args.select), ignore=_codes(args.ignore),
-        environment=parse_environment(args.env),
-    ))
-    failed = any(f.severity is Severity.ERROR for f in report.findings)
+    config = Config()
+    if not args.isolated:
+        found = args.config or find_config(Path(paths[0]))
+        if args.config is not None and not args.config.is_file():
+            raise UsageError(f"no such configuration file: {str(args.config)!r}")
+        if found is not None:
+            config = load_config(found)
+    options = CheckOptions(
+        paths=[Path(p) for p in paths],
+        arguments={**config.arguments, **arguments},
+        workspace=args.workspace or config.workspace,
+        select=_codes(args.select) if args.select is not None else config.select,
+        ignore=[*config.ignore, *(_codes(args.ignore) or [])],
+        environment={**config.environment, **parse_environment(args.env)},
+        config=config,
+        exclude=list(args.exclude),
+        baseline=args.baseline,
+        launch_files_only=args.launch_files_only,
+        progress=_progress_bar() if progress else None,
+    )
+    return options, config
+
+
+def _check(args: argparse.Namespace) -> int:
+    options, config = check_options(args, progress=not args.quiet and sys.stderr.isatty())
+    report = run_check(options)
+    if args.write_baseline is not None:
+        write_baseline(args.write_baseline, report.findings)
+    if args.xunit_file is not None:
+        from launchverify.render.junit import render_junit
+
+        with args.xunit_file.open("w", encoding="utf-8") as handle:
+            render_junit(report, handle, checked=report.checked)
+    if args.output is not None:
+        with args.output.open("w", encoding="utf-8") as handle:
+            _render(args, report, handle, color=False)
+    else:
+        with _output_may_close():
+            color = {"auto": None, "always": True, "never": False}[args.color]
+            _render(args, report, sys.stdout, color=color)
+    if args.exit_zero:
+        return EXIT_OK
+    threshold = Severity(args.fail_on or config.fail_on or "error").rank
+    failed = any(f.severity.rank >= threshold for f in report.findings)
+    return EXIT_FINDINGS if failed else EXIT_OK
+
+
+def _render(args: argparse.Namespace, report: Report, out: TextIO,
+            color: bool | None) -> None:
+    """Write the report in the format asked for."""
+    if args.statistics and args.format == "text":
+        from launchverify.render.text import render_statistics
+
+        render_statistics(report, out, quiet=args.quiet)
+    elif args.format == "text":
+        from launchverify.render.text import render_text
+
+        render_text(report, out, color=color, explain=args.explain, quiet=args.quiet)
+    elif args.format == "json":
+        from launchverify.render.json_out import render_json
+
+        render_json(report, out)
+    elif args.format == "sarif":
+        from launchverify.render.sarif import render_sarif
+
+        render_sarif(report, out)
+    elif args.format == "junit":
+        from launchverify.render.junit import render_junit
+
+        render_junit(report, out, checked=report.checked)
+    else:
+        from launchverify.render.github import render_github
+
+        render_github(report, out)
+
+
+def _report(args: argparse.Namespace) -> int:
+    from launchverify.render.html_report import render_html
+
+    options, _ = check_options(args, progress=sys.stderr.isatty())
+    report = run_check(options)
+    with args.output.open("w", encoding="utf-8") as handle:
+        render_html(report, handle)
+    print(f"wrote {args.output} ({len(report.findings)} findings in {report.files} files)",
+          file=sys.stderr)
+    return EXIT_OK
+
+
+def _rules(args: argparse.Namespace) -> int:
+    from launchverify.registry import all_rules
+
+    rules = all_rules()
     with _output_may_close():
         if args.format == "json":
-            render_json(report, sys.stdout)
+            json.dump([{"code": r.code, "slug": r.slug, "severity": r.severity.value,
+                        "summary": r.summary()} for r in rules], sys.stdout, indent=2)
+            sys.stdout.write("\n")
         else:
-            color = {"auto": None, "always": True, "never": False}[args.color]
-            render_text(report, sys.stdout, color=color, explain=args.explain)
-    return EXIT_FINDINGS if failed else EXIT_OK
+            for rule in rules:
+                print(f"{rule.code}  {rule.slug:<32} {rule.severity.value:<8} "
+                      f"{rule.summary()}")
+    return EXIT_OK
+
+
+def _explain(args: argparse.Namespace) -> int:
+    from launchverify.registry import resolve
+
+    found = [r for r in resolve(args.rule) if args.rule.strip() in (r.code, r.slug)] or \
+        resolve(args.rule)
+    with _output_may_close():
+        for index, rule in enumerate(found):
+            if index:
+                print()
+            print(f"# {rule.code} {rule.slug} ({rule.severity.value})\n")
+            print(rule.documentation())
+    return EXIT_OK
+
+
+def _progress_bar() -> Callable[[int, int], None]:
+    """Return a callback drawing a progress bar on stderr once a check is large."""
+    from rich.progress import Progress
+
+    state: dict[str, Any] = {}
+
+    def update(done: int, total: int) -> None:
+        if total < 20:
+            return
+        if "bar" not in state:
+            bar = Progress(transient=True, console=Console(stderr=True))
+            bar.start()
+            state["bar"], state["task"] = bar, bar.add_task("checking launch files",
+                                                            total=total)
+        state["bar"].update(state["task"], completed=done)
+        if done >= total:
+            state["bar"].stop()
+
+    return update
 
 
 def _graph(args: argparse.Namespace) -> int:

@@ -50,8 +50,12 @@ def _head(path: Path, size: int) -> bytes:
 
 
 
-def discover(paths: list[Path]) -> list[Path]:
-    """Return the launch files named by ``paths``: files as given, folders searched."""
+def discover(paths: list[Path], *, filter_files: bool = False) -> list[Path]:
+    """Return the launch files named by ``paths``: files as given, folders searched.
+
+    ``filter_files`` applies the folder test to given files too (pre-commit passes every
+    changed file whose name matches, launch tests included).
+    """
     found: list[Path] = []
     for path in paths:
         if path.is_dir():
@@ -61,7 +65,7 @@ def discover(paths: list[Path]) -> list[Path]:
                     candidate = Path(current) / name
                     if is_launch_file(candidate):
                         found.append(candidate)
-        else:
+        elif not filter_files or is_launch_file(path):
             found.append(path)
     unique: dict[Path, Path] = {}
     for path in found:

@@ -8,20 +8,26 @@ reached its file agrees (an argument unused standalone may be read by an include
 
 from __future__ import annotations
 
+import dataclasses
 import os
 import time
 from collections import defaultdict
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from launchverify.baseline import apply_baseline
+from launchverify.config import Config, matches
 from launchverify.discover import discover
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
+from launchverify.fingerprint import relative_file
 from launchverify.graph import LaunchGraph
 from launchverify.packages import PackageIndex, find_workspace
 from launchverify.paths import display_path
 from launchverify.registry import select as select_rules
-from launchverify.rule import Finding, Rule, RuleContext
+from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.suppressions import apply_suppressions
 
 
 class UsageError(Exception):
@@ -30,7 +36,7 @@ class UsageError(Exception):
 
 @dataclass
 class CheckOptions:
-    """What ``launchverify check`` was asked to do."""
+    """What ``launchverify check`` was asked to do (the configuration file already merged)."""
 
     paths: list[Path]
     arguments: dict[str, str] = field(default_factory=dict)
@@ -38,6 +44,11 @@ class CheckOptions:
     select: list[str] | None = None
     ignore: list[str] | None = None
     environment: dict[str, str] = field(default_factory=dict)
+    config: Config = field(default_factory=Config)
+    exclude: list[str] = field(default_factory=list)  # globs, relative to the working dir
+    baseline: Path | None = None
+    launch_files_only: bool = False  # given files must look like launch files too
+    progress: Callable[[int, int], None] | None = None  # (files evaluated, files in all)
 
 
 @dataclass
@@ -49,6 +60,9 @@ class Report:
     seconds: float
     display: dict[Path, str]
     graphs: list[LaunchGraph] = field(default_factory=list)
+    checked: list[Path] = field(default_factory=list)  # the launch files checked as roots
+    suppressed: int = 0  # findings silenced by inline comments
+    baselined: int = 0  # findings dropped because the baseline records them
 
     def display_path(self, path: Path) -> str:
         """Return a path as the user gave it, else relative to the working directory."""
@@ -88,15 +102,28 @@ def canonical(path: Path) -> Path:
     return Path(os.path.realpath(path))
 
 
-def build_index(paths: list[Path], workspace: Path | None) -> tuple[Path, PackageIndex]:
-    """Return the workspace and the package index for a check."""
+def build_index(paths: list[Path], workspace: Path | None,
+                extra: list[Path] | None = None) -> tuple[Path, PackageIndex]:
+    """Return the workspace and the package index for a check.
+
+    ``extra`` folders are searched for packages too: an install prefix (with
+    ``share/ament_index``) as installed packages, any other folder as sources.
+    """
     if workspace is not None:
         if not workspace.is_dir():
             raise UsageError(f"workspace {str(workspace)!r} is not a folder")
         root = canonical(workspace)
     else:
         root = find_workspace(paths[0])
-    return root, PackageIndex.from_environment([root])
+    sources, prefixes = [root], []
+    for folder in extra or ():
+        if not folder.is_dir():
+            raise UsageError(f"package path {str(folder)!r} is not a folder")
+        if (folder / "share" / "ament_index").is_dir():
+            prefixes.append(canonical(folder))
+        else:
+            sources.append(canonical(folder))
+    return root, PackageIndex.from_environment(sources, prefixes)
 
 
 def run_check(options: CheckOptions) -> Report:
@@ -106,23 +133,85 @@ def run_check(options: CheckOptions) -> Report:
         if not path.exists():
             raise UsageError(f"no such file or folder: {str(path)!r}")
     rules = select_rules(options.select, options.ignore)
-    files = discover(options.paths)
+    config = options.config
+    files = [f for f in discover(options.paths, filter_files=options.launch_files_only)
+             if not config.excludes(f) and not _excluded(f, options.exclude)]
     display = {canonical(f): str(f) for f in files}
     if not files:
         return Report([], 0, time.perf_counter() - started, display)
-    workspace, index = build_index(options.paths, options.workspace)
+    workspace, index = build_index(options.paths, options.workspace, config.package_paths)
     loader = FileCache(index, workspace)
-    graphs = [
-        evaluate(canonical(f), index=index, workspace=workspace, pinned=options.arguments,
-                 environment=options.environment, loader=loader)
-        for f in files
-    ]
+    graphs = []
+    for done, file in enumerate(files):
+        graphs.append(evaluate(canonical(file), index=index, workspace=workspace,
+                               pinned=options.arguments, environment=options.environment,
+                               loader=loader))
+        if options.progress is not None:
+            options.progress(done + 1, len(files))
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
     for graph in graphs:
         graph.included_elsewhere = graph.root in included
     findings = run_rules(graphs, rules, RuleContext(packages=index))
     loaded = {path for g in graphs for path in g.files}
-    return Report(findings, len(loaded), time.perf_counter() - started, display, graphs)
+    findings, suppressed = _suppress(findings, loaded, rules)
+    findings = _configured(findings, config)
+    baselined = 0
+    if options.baseline is not None:
+        findings, baselined = apply_baseline(options.baseline, findings)
+    return Report(sorted(findings, key=Finding.sort_key), len(loaded),
+                  time.perf_counter() - started, display, graphs,
+                  checked=[canonical(f) for f in files], suppressed=suppressed,
+                  baselined=baselined)
+
+
+def _excluded(file: Path, patterns: list[str]) -> bool:
+    """Return whether a command-line (or ament) exclude pattern names a file."""
+    if not patterns:
+        return False
+    relative = relative_file(file, Path.cwd())
+    absolute = file.absolute().as_posix()
+    return any(matches(absolute if pattern.startswith("/") else relative, pattern)
+               for pattern in patterns)
+
+
+def _suppress(findings: list[Finding], files: set[Path],
+              rules: list[type[Rule]]) -> tuple[list[Finding], int]:
+    """Apply inline suppressions; judge the comments that silenced nothing (LV004)."""
+    from launchverify.registry import all_rules
+    from launchverify.rules.health.unused_suppression import UnusedSuppression
+
+    kept, comments = apply_suppressions(findings, files)
+    suppressed = len(findings) - len(kept)
+    if UnusedSuppression in rules:
+        ran = frozenset(rule.code for rule in rules)
+        every_rule_ran = ran == frozenset(rule.code for rule in all_rules())
+        judge = UnusedSuppression()
+        for comment in comments:
+            finding = judge.judge(comment, ran, every_rule_ran)
+            if finding is not None:
+                kept.append(finding)
+    return kept, suppressed
+
+
+def _configured(findings: list[Finding], config: Config) -> list[Finding]:
+    """Apply the configuration's severity overrides and per-file ignores."""
+    levels = {code: Severity(level) for selector, level in config.severity.items()
+              for code in _codes_of(selector)}
+    out = []
+    for finding in findings:
+        ignored = {code for selector in config.ignored_in(finding.span.file)
+                   for code in _codes_of(selector)}
+        if finding.code in ignored:
+            continue
+        level = levels.get(finding.code)
+        out.append(finding if level is None else dataclasses.replace(finding, severity=level))
+    return out
+
+
+def _codes_of(selector: str) -> list[str]:
+    from launchverify.registry import resolve
+
+    return [rule.code for rule in resolve(selector)]
 
 
 def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],

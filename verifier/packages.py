@@ -134,11 +134,12 @@ class PackageIndex:
                 self._add(Package(name, source=folder))
 
     @classmethod
-    def from_environment(cls, workspaces: Iterable[Path]) -> PackageIndex:
-        """Build the index for these workspaces plus ``AMENT_PREFIX_PATH``."""
+    def from_environment(cls, workspaces: Iterable[Path],
+                         prefixes: Iterable[Path] = ()) -> PackageIndex:
+        """Build the index for these workspaces and prefixes plus ``AMENT_PREFIX_PATH``."""
         raw = os.environ.get("AMENT_PREFIX_PATH", "")
-        prefixes = [Path(p) for p in raw.split(os.pathsep) if p]
-        return cls(workspaces, prefixes)
+        found = [*prefixes, *(Path(p) for p in raw.split(os.pathsep) if p)]
+        return cls(workspaces, found)
 
     def _add(self, package: Package) -> None:
         known = self._packages.get(package.name)

@@ -159,6 +159,23 @@ class Rule:
 
         return inspect.cleandoc(cls.__doc__ or "")
 
+    @classmethod
+    def summary(cls) -> str:
+        """Return the first line of the documentation."""
+        return cls.documentation().split("\n", 1)[0].strip()
+
+    @classmethod
+    def section(cls, heading: str) -> str:
+        """Return one ``## heading`` section of the documentation ('' when absent)."""
+        text = cls.documentation()
+        marker = f"## {heading}"
+        start = text.find(marker)
+        if start < 0:
+            return ""
+        body = text[start + len(marker):]
+        end = body.find("\n## ")
+        return (body if end < 0 else body[:end]).strip()
+
 
 class PollingRule(Rule):
     """A rule whose claims of absence are polled across every evaluation (see ``Poll``).

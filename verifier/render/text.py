@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from functools import cache
 from pathlib import Path
 from typing import TextIO
 
@@ -11,21 +10,14 @@ from rich.markup import escape
 
 from launchverify.engine import Report
 from launchverify.rule import Finding, Severity
+from launchverify.sources import source_lines
 
 STYLES = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "cyan"}
 
 
-@cache
-def _lines(path: Path) -> list[str]:
-    try:
-        return path.read_text(encoding="utf-8", errors="replace").splitlines()
-    except OSError:
-        return []
-
-
 def _frame(finding: Finding) -> list[str]:
     span = finding.span
-    lines = _lines(span.file)
+    lines = source_lines(span.file)
     if not 0 < span.line <= len(lines):
         return []
     source = lines[span.line - 1].expandtabs(1)
@@ -39,8 +31,12 @@ def _frame(finding: Finding) -> list[str]:
 
 
 def render_text(report: Report, out: TextIO, *, color: bool | None = None,
-                explain: bool = False) -> None:
-    """Write findings with code frames and a summary line (``explain``: with traces)."""
+                explain: bool = False, quiet: bool = False) -> None:
+    """Write findings with code frames and a summary line.
+
+    ``explain`` adds, under each finding, the related source lines, the trace, why the
+    rule matters and how to fix it; ``quiet`` leaves out the summary.
+    """
     console = Console(file=out, highlight=False, soft_wrap=True,
                       force_terminal=color, no_color=color is False)
     for finding in report.findings:
@@ -60,6 +56,10 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
             console.print(f"    note: {escape(related.message)} at "
                           f"{escape(report.display_path(related.span.file))}:{related.span.line}",
                           style="dim")
+            if explain:
+                text = _line(related.span.file, related.span.line)
+                if text:
+                    console.print(f"      {related.span.line} | {escape(text)}", style="dim")
         if finding.witness:
             values = " ".join(f"{k}:={v}" for k, v in sorted(finding.witness.items()))
             console.print(f"    when: {escape(values)}", style="dim")
@@ -72,7 +72,31 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
                               style="dim")
         elif finding.trace:
             console.print("    (--explain prints the trace)", style="dim")
-    console.print(summary_line(report))
+        if explain:
+            _explanation(console, finding)
+    if not quiet:
+        console.print(summary_line(report))
+
+
+def _line(path: Path, number: int) -> str:
+    lines = source_lines(path)
+    return lines[number - 1].strip()[:200] if 0 < number <= len(lines) else ""
+
+
+def _explanation(console: Console, finding: Finding) -> None:
+    """Print why the rule matters and how to fix it (first paragraphs of its docs)."""
+    from launchverify.registry import RegistryError, resolve
+
+    try:
+        rule = resolve(finding.code)[0]
+    except RegistryError:
+        return
+    for label, heading in (("why", "Why it matters"), ("fix", "Fix")):
+        text = " ".join(rule.section(heading).split("\n\n", 1)[0].split())
+        if text:
+            console.print(f"    {label}: {escape(text)}", style="dim")
+    console.print(f"    (launchverify explain {finding.code} prints the whole rule)",
+                  style="dim")
 
 
 def summary_line(report: Report) -> str:
@@ -86,3 +110,16 @@ def summary_line(report: Report) -> str:
     total = len(report.findings)
     return (f"Found {total} finding{'s' if total != 1 else ''} ({', '.join(parts)}) in "
             f"{files} ({report.seconds:.2f}s).")
+
+
+def render_statistics(report: Report, out: TextIO, *, quiet: bool = False) -> None:
+    """Write how many findings each rule has, most first (``--statistics``)."""
+    counts: dict[tuple[str, str, str], int] = {}
+    for finding in report.findings:
+        key = (finding.code, finding.slug, finding.severity.value)
+        counts[key] = counts.get(key, 0) + 1
+    for (code, slug, severity), count in sorted(counts.items(),
+                                                key=lambda item: (-item[1], item[0])):
+        out.write(f"{count:>5}  {code}  {slug:<32} {severity}\n")
+    if not quiet:
+        out.write(summary_line(report) + "\n")

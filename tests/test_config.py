@@ -1,0 +1,212 @@
+"""Configuration files, baselines, exit codes and the rule documentation commands."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from launchverify.cli import main
+from launchverify.config import find_config, load_config, matches
+
+CORPUS = Path(__file__).resolve().parent.parent / "corpus"
+DUPLICATE = CORPUS / "naming" / "duplicate_same_scope"
+
+ROBOT = """\
+<launch>
+  <arg name="unused" default="x"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>
+</launch>
+"""
+
+
+@pytest.fixture(autouse=True)
+def _no_ros(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+
+
+def codes(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, list[str]]:
+    status = main(["check", *argv, "--format", "json"])
+    findings = json.loads(capsys.readouterr().out)["findings"]
+    return status, sorted(f"{Path(f['file']).name}:{f['line']}:{f['code']}:{f['severity']}"
+                          for f in findings)
+
+
+@pytest.fixture
+def project(tmp_path: Path) -> Path:
+    (tmp_path / "launch").mkdir()
+    (tmp_path / "launch" / "robot.launch.xml").write_text(ROBOT)
+    (tmp_path / "test").mkdir()
+    (tmp_path / "test" / "dup.launch.xml").write_text(ROBOT)
+    return tmp_path
+
+
+def test_without_configuration_everything_is_reported(
+        project: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    status, found = codes(capsys, str(project))
+    assert status == 1
+    assert found == ["dup.launch.xml:2:LV202:warning", "dup.launch.xml:4:LV101:error",
+                     "robot.launch.xml:2:LV202:warning", "robot.launch.xml:4:LV101:error"]
+
+
+def test_pyproject_table_is_found_walking_up(project: Path,
+                                             capsys: pytest.CaptureFixture[str]) -> None:
+    (project / "pyproject.toml").write_text("""
+[project]
+name = "robot"
+
+[tool.launchverify]
+ignore = ["unused-argument"]
+per-file-ignores = {"test/**" = ["LV101"]}
+severity = {LV101 = "warning"}
+""")
+    status, found = codes(capsys, str(project / "launch"))
+    assert found == ["robot.launch.xml:4:LV101:warning"]
+    assert status == 0  # a warning does not fail by default
+    _, found = codes(capsys, str(project))
+    assert found == ["robot.launch.xml:4:LV101:warning"]
+
+
+def test_launchverify_toml_wins_over_pyproject_and_sets_fail_on(
+        project: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (project / "pyproject.toml").write_text("[tool.launchverify]\nselect = ['LV101']\n")
+    (project / "launchverify.toml").write_text(
+        "select = ['LV2']\nfail-on = 'warning'\nexclude = ['test/']\n")
+    status, found = codes(capsys, str(project))
+    assert found == ["robot.launch.xml:2:LV202:warning"]
+    assert status == 1
+    assert main(["check", str(project), "--isolated", "-q", "--exit-zero"]) == 0
+    capsys.readouterr()
+
+
+def test_command_line_overrides_the_file(project: Path,
+                                         capsys: pytest.CaptureFixture[str]) -> None:
+    (project / "launchverify.toml").write_text("select = ['LV2']\n")
+    _, found = codes(capsys, str(project / "launch"), "--select", "LV101")
+    assert found == ["robot.launch.xml:4:LV101:error"]
+    status, _ = codes(capsys, str(project / "launch"), "--select", "LV101",
+                      "--fail-on", "info", "--ignore", "LV101")
+    assert status == 0
+
+
+def test_configured_arguments_are_pinned(tmp_path: Path,
+                                         capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "sim.launch.xml").write_text("""<launch>
+  <arg name="use_sim" default="false"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker" if="$(var use_sim)"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>
+</launch>
+""")
+    (tmp_path / "launchverify.toml").write_text("arguments = {use_sim = true}\n")
+    main(["graph", str(tmp_path / "sim.launch.xml")])
+    capsys.readouterr()
+    _, found = codes(capsys, str(tmp_path))
+    assert found == ["sim.launch.xml:4:LV101:error"]
+    assert codes(capsys, str(tmp_path), "--isolated")[1] == ["sim.launch.xml:4:LV101:error"]
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ("select = [", "invalid TOML"),
+    ("selcet = ['LV1']", "unknown key(s) selcet"),
+    ("severity = {LV101 = 'fatal'}", "severity of LV101 must be one of"),
+    ("ignore = 3", "ignore must be a list of strings"),
+])
+def test_bad_configuration_is_a_clear_error(project: Path, text: str, message: str,
+                                            capsys: pytest.CaptureFixture[str]) -> None:
+    (project / "launchverify.toml").write_text(text)
+    assert main(["check", str(project)]) == 2
+    err = capsys.readouterr().err
+    assert message in err and "Traceback" not in err
+
+
+def test_unknown_rule_in_configuration_is_a_clear_error(
+        project: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (project / "launchverify.toml").write_text("select = ['LV999']\n")
+    assert main(["check", str(project)]) == 2
+    assert "no rule is called 'LV999'" in capsys.readouterr().err
+
+
+def test_find_config_ignores_pyproject_without_the_table(tmp_path: Path) -> None:
+    (tmp_path / "pyproject.toml").write_text("[project]\nname = 'x'\n")
+    (tmp_path / "sub").mkdir()
+    assert find_config(tmp_path / "sub") is None
+    (tmp_path / "launchverify.toml").write_text("")
+    found = find_config(tmp_path / "sub")
+    assert found == (tmp_path / "launchverify.toml").resolve()
+    assert load_config(found).select is None
+
+
+@pytest.mark.parametrize(("path", "pattern", "expected"), [
+    ("test/a/dup.launch.xml", "test/**", True),
+    ("test/a/dup.launch.xml", "test/", True),
+    ("src/test/dup.launch.xml", "test/**", False),
+    ("src/dup.launch.xml", "dup.launch.xml", True),
+    ("src/dup.launch.xml", "*.launch.xml", True),
+    ("src/dup.launch.py", "src/*.xml", False),
+])
+def test_patterns(path: str, pattern: str, expected: bool) -> None:
+    assert matches(path, pattern) is expected
+
+
+def test_baseline_survives_moved_lines_and_catches_new_findings(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    shutil.copytree(DUPLICATE, tmp_path / "tree")
+    launch = tmp_path / "tree" / "dup.launch.xml"
+    baseline = tmp_path / "baseline.json"
+    assert main(["check", str(tmp_path / "tree"), "--write-baseline", str(baseline),
+                 "-q"]) == 1
+    capsys.readouterr()
+    launch.write_text(launch.read_text().replace("<launch>", "<launch>\n\n  <!-- moved -->"))
+    status, found = codes(capsys, str(tmp_path / "tree"), "--baseline", str(baseline))
+    assert (status, found) == (0, [])
+    launch.write_text(launch.read_text().replace(
+        "</launch>", '  <node pkg="demo_nodes_cpp" exec="listener" name="talker"/>\n</launch>'))
+    status, found = codes(capsys, str(tmp_path / "tree"), "--baseline", str(baseline))
+    assert status == 1 and len(found) == 1
+
+
+def test_a_broken_baseline_is_a_clear_error(tmp_path: Path,
+                                            capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "b.json").write_text("[]")
+    assert main(["check", str(DUPLICATE), "--baseline", str(tmp_path / "b.json")]) == 2
+    assert "is not a launchverify baseline" in capsys.readouterr().err
+
+
+def test_statistics_quiet_and_output(tmp_path: Path,
+                                     capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["check", str(CORPUS / "naming"), "--statistics"]) == 1
+    out = capsys.readouterr().out
+    first = out.splitlines()[0].split()
+    assert first[1:3] == ["LV101", "duplicate-node-name"] and int(first[0]) > 1
+    assert main(["check", str(DUPLICATE), "-q"]) == 1
+    assert "Found" not in capsys.readouterr().out
+    target = tmp_path / "out.json"
+    assert main(["check", str(DUPLICATE), "--format", "json", "-o", str(target)]) == 1
+    assert capsys.readouterr().out == ""
+    assert json.loads(target.read_text())["findings"]
+
+
+def test_explain_prints_why_and_fix(capsys: pytest.CaptureFixture[str]) -> None:
+    main(["check", str(DUPLICATE), "--explain"])
+    out = capsys.readouterr().out
+    assert "    why: " in out and "    fix: " in out
+    assert '3 | <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>' in out
+
+
+def test_rules_and_explain_commands(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["rules"]) == 0
+    listing = capsys.readouterr().out.splitlines()
+    assert any(line.startswith("LV505  lifecycle-manager-unknown-node") for line in listing)
+    assert main(["rules", "--format", "json"]) == 0
+    rules = json.loads(capsys.readouterr().out)
+    assert {"code": "LV004", "slug": "unused-suppression", "severity": "warning",
+            "summary": "A `launchverify: ignore` comment that silences nothing."} in rules
+    assert main(["explain", "duplicate-node-name"]) == 0
+    text = capsys.readouterr().out
+    assert text.startswith("# LV101 duplicate-node-name (error)")
+    assert "## Fix" in text
+    assert main(["explain", "LV999"]) == 2
+    assert "no rule is called" in capsys.readouterr().err

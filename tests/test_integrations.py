@@ -1,0 +1,150 @@
+"""Where launchverify runs besides the terminal: ament/colcon tests and pre-commit."""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from launchverify.ament import main_with_errors
+
+ROOT = Path(__file__).resolve().parent.parent
+PACKAGE_XML = """<?xml version="1.0"?>
+<package format="3">
+  <name>robot_bringup</name>
+  <version>0.1.0</version>
+  <description>Bring-up</description>
+  <maintainer email="dev@example.com">dev</maintainer>
+  <license>Apache-2.0</license>
+  <export><build_type>ament_python</build_type></export>
+</package>
+"""
+DUPLICATE = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="talker"/>
+</launch>
+"""
+CLEAN = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>
+</launch>
+"""
+
+
+@pytest.fixture
+def package(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    root = tmp_path / "robot_bringup"
+    (root / "launch").mkdir(parents=True)
+    (root / "test").mkdir()
+    (root / "package.xml").write_text(PACKAGE_XML)
+    (root / "launch" / "bad.launch.xml").write_text(DUPLICATE)
+    (root / "launch" / "good.launch.xml").write_text(CLEAN)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    monkeypatch.delenv("AMENT_LINT_AUTO_FILE_EXCLUDE", raising=False)
+    monkeypatch.chdir(root / "test")  # where a package's linter tests run
+    return root
+
+
+def test_main_with_errors_checks_the_package_it_runs_in(package: Path) -> None:
+    rc, errors = main_with_errors(argv=[])
+    assert rc == 1
+    assert len(errors) == 1 and "LV101 [duplicate-node-name]" in errors[0]
+    assert "bad.launch.xml:3:3" in errors[0]
+
+
+def test_ament_exclude_list_is_honoured(package: Path,
+                                        monkeypatch: pytest.MonkeyPatch) -> None:
+    excluded = package / "launch" / "bad.launch.xml"
+    monkeypatch.setenv("AMENT_LINT_AUTO_FILE_EXCLUDE", f"{excluded};/nonexistent/x.xml")
+    assert main_with_errors(argv=[]) == (0, [])
+
+
+def test_xunit_file_is_what_colcon_test_result_reads(package: Path, tmp_path: Path) -> None:
+    result = tmp_path / "launchverify.xunit.xml"
+    rc, _ = main_with_errors(argv=[str(package / "launch"), "--xunit-file", str(result)])
+    assert rc == 1
+    root = ET.parse(result).getroot()
+    suites = [root] if root.tag == "testsuite" else list(root.iter("testsuite"))
+    # colcon test-result sums these attributes over every testsuite
+    assert sum(int(s.get("tests", 0)) for s in suites) == 2
+    assert sum(int(s.get("failures", 0)) for s in suites) == 1
+    cases = {c.get("name", ""): c for c in root.iter("testcase")}
+    bad = next(c for name, c in cases.items() if name.endswith("bad.launch.xml"))
+    assert bad.find("failure") is not None
+
+
+def test_the_cli_writes_the_xunit_file_too(package: Path, tmp_path: Path) -> None:
+    from launchverify.cli import main
+
+    result = tmp_path / "x.xml"
+    assert main(["check", str(package), "-q", "--xunit-file", str(result)]) == 1
+    assert ET.parse(result).getroot().iter("testcase")
+
+
+def test_pytest_marker_is_registered_for_strict_runs(package: Path) -> None:
+    (package / "test" / "test_launchverify.py").write_text("""
+import pytest
+from launchverify.ament import main_with_errors
+
+
+@pytest.mark.launchverify
+def test_launchverify():
+    rc, errors = main_with_errors(argv=[])
+    assert rc == 1, errors
+""")
+    done = subprocess.run(
+        [sys.executable, "-m", "pytest", "--strict-markers", "-q", "-p", "no:cacheprovider",
+         "-m", "launchverify", "test_launchverify.py"],
+        cwd=package / "test", capture_output=True, text=True, timeout=120, check=False)
+    assert done.returncode == 0, done.stdout + done.stderr
+    assert "1 passed" in done.stdout
+
+
+def _git(cwd: Path, *argv: str) -> None:
+    subprocess.run(["git", *argv], cwd=cwd, check=True, capture_output=True, timeout=60,
+                   env={**os.environ, "GIT_AUTHOR_NAME": "t", "GIT_AUTHOR_EMAIL": "t@x",
+                        "GIT_COMMITTER_NAME": "t", "GIT_COMMITTER_EMAIL": "t@x"})
+
+
+def test_pre_commit_hook_end_to_end(tmp_path: Path) -> None:
+    """``pre-commit try-repo`` installs launchverify from this tree and runs the hook."""
+    pre_commit = shutil.which("pre-commit", path=str(Path(sys.executable).parent))
+    if pre_commit is None:
+        pytest.skip("pre-commit is not installed (pip install -e '.[test]')")
+    hooks = tmp_path / "hooks"
+    for name in ("pyproject.toml", "README.md", "LICENSE", ".pre-commit-hooks.yaml"):
+        if (ROOT / name).exists():
+            shutil.copy(ROOT / name, hooks / name) if hooks.exists() else (
+                hooks.mkdir(), shutil.copy(ROOT / name, hooks / name))
+    for folder in ("verifier", "rules", "models"):
+        shutil.copytree(ROOT / folder, hooks / folder,
+                        ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+    _git(hooks, "init", "-q")
+    _git(hooks, "add", ".")
+    _git(hooks, "commit", "-q", "-m", "hooks")
+    work = tmp_path / "work"
+    (work / "launch").mkdir(parents=True)
+    (work / "launch" / "bad.launch.xml").write_text(DUPLICATE)
+    (work / "launch" / "good.launch.xml").write_text(CLEAN)
+    (work / "notes.xml").write_text("<notes/>")
+    _git(work, "init", "-q")
+    _git(work, "add", ".")
+    env = {**os.environ, "PRE_COMMIT_HOME": str(tmp_path / "cache"),
+           "PIP_DISABLE_PIP_VERSION_CHECK": "1"}
+    env.pop("AMENT_PREFIX_PATH", None)
+    done = subprocess.run([pre_commit, "try-repo", str(hooks), "launchverify", "--all-files"],
+                          cwd=work, capture_output=True, text=True, timeout=600, env=env,
+                          check=False)
+    output = done.stdout + done.stderr
+    assert done.returncode == 1, output
+    assert "LV101 [duplicate-node-name]" in output and "bad.launch.xml:3:3" in output
+    (work / "launch" / "bad.launch.xml").write_text(CLEAN.replace("talker\"/>",
+                                                                  "other\"/>"))
+    done = subprocess.run([pre_commit, "try-repo", str(hooks), "launchverify", "--all-files"],
+                          cwd=work, capture_output=True, text=True, timeout=600, env=env,
+                          check=False)
+    assert done.returncode == 0, done.stdout + done.stderr

@@ -1,0 +1,52 @@
+"""Baselines: adopt launchverify on a large workspace and fail only on new findings.
+
+``--write-baseline FILE`` records the fingerprints of today's findings (see
+``fingerprint.py``: robust to lines moving); ``--baseline FILE`` drops findings whose
+fingerprint is recorded, as many times as it is recorded. Paths are relative to the
+baseline file's folder, so the file can be committed.
+"""
+
+from __future__ import annotations
+
+import json
+from collections import Counter
+from pathlib import Path
+
+from launchverify import __version__
+from launchverify.fingerprint import fingerprints, relative_file
+from launchverify.rule import Finding
+
+
+class BaselineError(ValueError):
+    """A baseline file that cannot be read (exit status 2)."""
+
+
+def write_baseline(path: Path, findings: list[Finding]) -> None:
+    """Record every finding's fingerprint in ``path``."""
+    base = path.resolve().parent
+    entries = [
+        {"fingerprint": print_, "code": f.code, "file": relative_file(f.span.file, base),
+         "message": f.message}
+        for f, print_ in zip(findings, fingerprints(findings, base), strict=True)
+    ]
+    document = {"tool": "launchverify", "version": __version__, "findings": entries}
+    path.write_text(json.dumps(document, indent=1) + "\n", encoding="utf-8")
+
+
+def apply_baseline(path: Path, findings: list[Finding]) -> tuple[list[Finding], int]:
+    """Return the findings not recorded in the baseline, and how many were dropped."""
+    try:
+        document = json.loads(path.read_text(encoding="utf-8"))
+        recorded = Counter(str(e["fingerprint"]) for e in document["findings"])
+    except OSError as error:
+        raise BaselineError(f"cannot read baseline {str(path)!r}: {error.strerror}") from error
+    except (ValueError, KeyError, TypeError) as error:
+        raise BaselineError(f"{str(path)!r} is not a launchverify baseline") from error
+    kept = []
+    for finding, print_ in zip(findings, fingerprints(findings, path.resolve().parent),
+                               strict=True):
+        if recorded[print_] > 0:
+            recorded[print_] -= 1
+        else:
+            kept.append(finding)
+    return kept, len(findings) - len(kept)

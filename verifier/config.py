@@ -1,0 +1,217 @@
+"""Project configuration: ``launchverify.toml`` or ``[tool.launchverify]`` in pyproject.toml.
+
+Found by walking up from the first checked path (the nearest file wins; in one folder
+``launchverify.toml`` before ``pyproject.toml``, and a pyproject without the table does
+not count), as ruff and mypy find theirs. Relative paths in it are relative to its folder.
+
+    select = ["LV1", "LV5"]                  # codes, slugs or prefixes
+    ignore = ["LV404"]
+    per-file-ignores = {"test/**" = ["LV101"]}
+    exclude = ["build/**", "legacy/*.launch.xml"]
+    arguments = {use_sim_time = "true"}      # like name:=value on the command line
+    environment = {ROBOT_NAME = "alpha"}     # like --env
+    workspace = "../.."
+    package-paths = ["/opt/ros/jazzy", "../vendor_ws/src"]
+    severity = {LV404 = "error", LV202 = "info"}
+    fail-on = "warning"
+"""
+
+from __future__ import annotations
+
+import fnmatch
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+if sys.version_info >= (3, 11):
+    import tomllib
+else:  # pragma: no cover - Python 3.10
+    import tomli as tomllib
+
+CONFIG_NAMES = ("launchverify.toml", "pyproject.toml")
+SEVERITIES = ("error", "warning", "info")
+KNOWN_KEYS = frozenset({
+    "select", "ignore", "per-file-ignores", "exclude", "arguments", "environment",
+    "workspace", "package-paths", "severity", "fail-on",
+})
+
+
+class ConfigError(ValueError):
+    """A configuration file launchverify cannot use (exit status 2)."""
+
+
+@dataclass
+class Config:
+    """What a configuration file says; empty when there is none."""
+
+    path: Path | None = None
+    select: list[str] | None = None
+    ignore: list[str] = field(default_factory=list)
+    per_file_ignores: dict[str, list[str]] = field(default_factory=dict)
+    exclude: list[str] = field(default_factory=list)
+    arguments: dict[str, str] = field(default_factory=dict)
+    environment: dict[str, str] = field(default_factory=dict)
+    workspace: Path | None = None
+    package_paths: list[Path] = field(default_factory=list)
+    severity: dict[str, str] = field(default_factory=dict)
+    fail_on: str | None = None
+
+    @property
+    def root(self) -> Path:
+        """Return the folder relative paths and patterns are read from."""
+        return self.path.parent if self.path is not None else Path.cwd()
+
+    def ignored_in(self, file: Path) -> list[str]:
+        """Return the selectors ``per-file-ignores`` applies to a file."""
+        relative = _relative(file, self.root)
+        return [code for pattern, codes in self.per_file_ignores.items()
+                if matches(relative, pattern) for code in codes]
+
+    def excludes(self, file: Path) -> bool:
+        """Return whether a discovered file is excluded from the check."""
+        relative = _relative(file, self.root)
+        return any(matches(relative, pattern) for pattern in self.exclude)
+
+
+def matches(relative: str, pattern: str) -> bool:
+    """Match a path (posix, relative) against a glob; a pattern without ``/`` matches names.
+
+    ``*`` crosses folders, as in ruff's per-file-ignores; ``dir/`` or ``dir/**`` matches
+    everything below ``dir``.
+    """
+    pattern = pattern.strip().removeprefix("./")
+    if pattern.endswith("/"):
+        pattern += "**"
+    if "/" not in pattern:
+        return fnmatch.fnmatchcase(relative.rsplit("/", 1)[-1], pattern) or \
+            fnmatch.fnmatchcase(relative, pattern)
+    if pattern.endswith("/**") and relative.startswith(pattern[:-2]):
+        return True
+    return fnmatch.fnmatchcase(relative, pattern)
+
+
+def _relative(file: Path, root: Path) -> str:
+    try:
+        return file.resolve().relative_to(root.resolve()).as_posix()
+    except ValueError:
+        return file.resolve().as_posix()
+
+
+def find_config(start: Path) -> Path | None:
+    """Return the nearest configuration file above ``start`` (itself included)."""
+    folder = start.resolve()
+    if not folder.is_dir():
+        folder = folder.parent
+    for candidate in (folder, *folder.parents):
+        for name in CONFIG_NAMES:
+            path = candidate / name
+            if path.is_file() and (name != "pyproject.toml" or _has_table(path)):
+                return path
+    return None
+
+
+def _has_table(pyproject: Path) -> bool:
+    try:
+        return "launchverify" in _read(pyproject).get("tool", {})
+    except ConfigError:
+        return False
+
+
+def _read(path: Path) -> dict[str, Any]:
+    try:
+        with path.open("rb") as handle:
+            return tomllib.load(handle)
+    except OSError as error:
+        raise ConfigError(f"cannot read {path}: {error.strerror}") from error
+    except tomllib.TOMLDecodeError as error:
+        raise ConfigError(f"{path}: invalid TOML: {error}") from error
+
+
+def load_config(path: Path) -> Config:
+    """Read one configuration file."""
+    data = _read(path)
+    if path.name == "pyproject.toml":
+        data = data.get("tool", {}).get("launchverify", {})
+    if not isinstance(data, dict):
+        raise ConfigError(f"{path}: [tool.launchverify] must be a table")
+    unknown = sorted(set(data) - KNOWN_KEYS)
+    if unknown:
+        raise ConfigError(f"{path}: unknown key(s) {', '.join(unknown)}; known: "
+                          f"{', '.join(sorted(KNOWN_KEYS))}")
+    reader = _Reader(path, data)
+    base = path.parent
+    workspace = reader.text("workspace")
+    config = Config(
+        path=path,
+        select=reader.texts("select") if "select" in data else None,
+        ignore=reader.texts("ignore") or [],
+        per_file_ignores=reader.table_of_texts("per-file-ignores"),
+        exclude=reader.texts("exclude") or [],
+        arguments=reader.table("arguments"),
+        environment=reader.table("environment"),
+        workspace=(base / workspace) if workspace else None,
+        package_paths=[base / p for p in reader.texts("package-paths") or []],
+        severity=reader.table("severity"),
+        fail_on=reader.text("fail-on"),
+    )
+    for code, level in config.severity.items():
+        if level not in SEVERITIES:
+            raise ConfigError(f"{path}: severity of {code} must be one of "
+                              f"{', '.join(SEVERITIES)}, not {level!r}")
+    if config.fail_on is not None and config.fail_on not in SEVERITIES:
+        raise ConfigError(f"{path}: fail-on must be one of {', '.join(SEVERITIES)}")
+    return config
+
+
+class _Reader:
+    """Typed access to a configuration table, with errors that name the key."""
+
+    def __init__(self, path: Path, data: dict[str, Any]) -> None:
+        self.path = path
+        self.data = data
+
+    def fail(self, key: str, wanted: str) -> ConfigError:
+        return ConfigError(f"{self.path}: {key} must be {wanted}")
+
+    def text(self, key: str) -> str | None:
+        value = self.data.get(key)
+        if value is not None and not isinstance(value, str):
+            raise self.fail(key, "a string")
+        return value
+
+    def texts(self, key: str) -> list[str] | None:
+        value = self.data.get(key)
+        if value is None:
+            return None
+        if isinstance(value, str):
+            return [value]
+        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+            raise self.fail(key, "a list of strings")
+        return list(value)
+
+    def table(self, key: str) -> dict[str, str]:
+        value = self.data.get(key, {})
+        if not isinstance(value, dict):
+            raise self.fail(key, "a table")
+        out = {}
+        for name, item in value.items():
+            if isinstance(item, bool):
+                item = "true" if item else "false"
+            if not isinstance(item, (str, int, float)):
+                raise self.fail(f"{key}.{name}", "a string")
+            out[str(name)] = str(item)
+        return out
+
+    def table_of_texts(self, key: str) -> dict[str, list[str]]:
+        value = self.data.get(key, {})
+        if not isinstance(value, dict):
+            raise self.fail(key, "a table of lists of codes")
+        out = {}
+        for pattern, codes in value.items():
+            if isinstance(codes, str):
+                codes = [codes]
+            if not isinstance(codes, list) or not all(isinstance(c, str) for c in codes):
+                raise self.fail(f"{key}.{pattern!r}", "a list of codes")
+            out[str(pattern)] = list(codes)
+        return out

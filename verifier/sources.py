@@ -1,0 +1,27 @@
+"""Source text of checked files for reporters: code frames, fingerprints, suppressions.
+
+Cached per file version (path, size, modification time), so a long-lived process (a
+pytest session running ``main_with_errors``) never shows a stale line.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from pathlib import Path
+
+
+def source_lines(path: Path) -> tuple[str, ...]:
+    """Return a file's lines (undecodable bytes replaced; empty when unreadable)."""
+    try:
+        stat = path.stat()
+    except OSError:
+        return ()
+    return _read(path, stat.st_size, stat.st_mtime_ns)
+
+
+@lru_cache(maxsize=512)
+def _read(path: Path, size: int, modified: int) -> tuple[str, ...]:
+    try:
+        return tuple(path.read_text(encoding="utf-8", errors="replace").splitlines())
+    except OSError:
+        return ()
