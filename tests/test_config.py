@@ -210,3 +210,10 @@ def test_rules_and_explain_commands(capsys: pytest.CaptureFixture[str]) -> None:
     assert "## Fix" in text
     assert main(["explain", "LV999"]) == 2
     assert "no rule is called" in capsys.readouterr().err
+
+
+def test_docs_rules_md_is_up_to_date(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["rules", "--format", "markdown"]) == 0
+    expected = (CORPUS.parent / "docs" / "rules.md").read_text(encoding="utf-8")
+    assert capsys.readouterr().out == expected, \
+        "docs/rules.md is stale: launchverify rules --format markdown > docs/rules.md"

@@ -57,7 +57,6 @@ def main_with_errors(argv: Sequence[str] | None = None) -> tuple[int, list[str]]
     except SystemExit:  # argparse has printed what is wrong
         return 2, ["launchverify: error: invalid arguments"]
     args.targets = [*args.targets, *extra]
-    args.exclude = [*args.exclude, *excluded_by_ament()]
     try:
         options, config = check_options(args)
         report = run_check(options)
