@@ -1,0 +1,163 @@
+"""The HTML report in a real browser: headless Chromium loads it, runs it, draws it.
+
+Skipped when Chromium is not installed, unless the CI environment variable is set (CI
+installs it, so its absence there is a failure). Chromium is driven from the command line
+(``--dump-dom``, ``--screenshot``) with its network features off: it must not try to
+reach anything, and the report needs nothing.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+import shutil
+import struct
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from launchverify.engine import CheckOptions, run_check
+from launchverify.render.html_report import render_html
+
+CORPUS = Path(__file__).resolve().parent.parent / "corpus"
+FLEET = CORPUS / "realistic" / "fleet_report"
+ESCAPING = CORPUS / "realistic" / "report_escaping"
+TIMEOUT = 60  # seconds for one Chromium run (a run takes about one)
+QUIET_FLAGS = ("--headless", "--no-sandbox", "--disable-gpu", "--disable-quic",
+               "--no-first-run", "--disable-background-networking",
+               "--disable-component-update", "--disable-sync", "--hide-scrollbars",
+               "--disable-extensions", "--mute-audio")
+
+
+@pytest.fixture(scope="module")
+def chromium() -> str:
+    found = shutil.which("chromium") or shutil.which("chromium-browser")
+    if found is None and Path("/usr/bin/chromium").exists():
+        found = "/usr/bin/chromium"
+    if found is None:
+        if os.environ.get("CI"):
+            pytest.fail("CI is set but chromium is not installed (.ci/run installs it)")
+        pytest.skip("chromium is not installed (apt-get install chromium); set CI to require it")
+    return found
+
+
+@pytest.fixture(scope="module")
+def pages(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
+    folder = tmp_path_factory.mktemp("report")
+    saved = os.environ.pop("AMENT_PREFIX_PATH", None)
+    try:
+        out = {}
+        for name, tree in (("fleet", FLEET), ("escaping", ESCAPING)):
+            report = run_check(CheckOptions(paths=[tree], workspace=tree))
+            path = folder / f"{name}.html"
+            with path.open("w", encoding="utf-8") as handle:
+                render_html(report, handle)
+            out[name] = path
+        return out
+    finally:
+        if saved is not None:
+            os.environ["AMENT_PREFIX_PATH"] = saved
+
+
+def browse(chromium: str, profile: Path, *arguments: str) -> str:
+    """Run Chromium once with a fresh profile; return what it prints on stdout."""
+    profile.mkdir(parents=True, exist_ok=True)
+    done = subprocess.run(
+        [chromium, *QUIET_FLAGS, f"--user-data-dir={profile}", *arguments],
+        capture_output=True, text=True, timeout=TIMEOUT, check=False)
+    assert done.returncode == 0, done.stderr[-2000:]
+    return done.stdout
+
+
+def dump_dom(chromium: str, profile: Path, url: str, *extra: str) -> str:
+    dom = browse(chromium, profile, *extra, "--dump-dom", url)
+    assert "</html>" in dom, dom[:500]
+    return dom
+
+
+def png_size(path: Path) -> tuple[int, int]:
+    header = path.read_bytes()[:24]
+    assert header[:8] == b"\x89PNG\r\n\x1a\n" and header[12:16] == b"IHDR"
+    width, height = struct.unpack(">II", header[16:24])
+    return width, height
+
+
+def test_fleet_report_in_the_browser(chromium: str, pages: dict[str, Path],
+                                     tmp_path: Path) -> None:
+    dom = dump_dom(chromium, tmp_path / "profile", pages["fleet"].as_uri())
+    # the summary: findings by severity, files, nodes
+    assert '<span class="value">4</span><span class="label">findings' in dom
+    assert '<span class="value">2</span><span class="label">errors' in dom
+    assert '<span class="value">2</span><span class="label">warnings' in dom
+    assert re.search(r"<b>20\d</b> nodes", dom)
+    for code in ("LV101", "LV204", "LV402", "LV505"):
+        assert f'id="rule-{code}"' in dom
+        assert f'<code class="code">{code}</code>' in dom
+    # the picture: nodes by namespace, lifecycle states, managers, containers
+    assert dom.count("<svg") == 1
+    for fqn in ("/robot3/amcl", "/robot1/sensors/front_lidar", "/fleet/map_server",
+                "/robot6/lifecycle_manager_navigation", "/robot2/perception/perception_container",
+                "/robot5/perception/camera/front_camera"):
+        assert f'data-fqn="{fqn}"' in dom
+    for state in ("active", "inactive", "unconfigured"):
+        assert f'<span class="chip st-{state}">{state}</span>' in dom
+    assert 'class="bad">does not complete' in dom
+    # without a fragment the node table stays collapsed
+    assert '<details class="nodes">' in dom
+
+
+def test_link_into_node_table_opens_it(chromium: str, pages: dict[str, Path],
+                                       tmp_path: Path) -> None:
+    dom = dump_dom(chromium, tmp_path / "profile", pages["fleet"].as_uri() + "#sys1-node-40")
+    assert '<details class="nodes" open="">' in dom
+
+
+def test_policy_lets_only_the_report_script_run(chromium: str, pages: dict[str, Path],
+                                                tmp_path: Path) -> None:
+    # a script slipped into the page (as if escaping had failed) is refused
+    page = pages["fleet"].read_text(encoding="utf-8").replace(
+        "</body>", "<script>document.title='PWNED'</script></body>")
+    copy = tmp_path / "injected.html"
+    copy.write_text(page, encoding="utf-8")
+    dom = dump_dom(chromium, tmp_path / "profile", copy.as_uri())
+    assert "<title>launchverify report</title>" in dom
+
+
+def test_reads_without_javascript(chromium: str, pages: dict[str, Path],
+                                  tmp_path: Path) -> None:
+    # --dump-dom needs JavaScript itself; a policy forbidding every script of the page
+    # leaves the browser's own reading working. The probe proves the page's scripts stop.
+    page = pages["fleet"].read_text(encoding="utf-8").replace(
+        "<head>", "<head><meta http-equiv=\"Content-Security-Policy\" "
+        "content=\"script-src 'none'\">", 1).replace(
+        "</body>", "<script>document.title='SCRIPTS RAN'</script></body>")
+    copy = tmp_path / "no-script.html"
+    copy.write_text(page, encoding="utf-8")
+    dom = dump_dom(chromium, tmp_path / "profile", copy.as_uri() + "#sys1-node-40")
+    assert "<title>launchverify report</title>" in dom
+    assert 'data-fqn="/robot3/amcl"' in dom and 'id="finding-4"' in dom
+    assert 'id="sys1-node-40"' in dom and "max_particles" in dom
+
+
+def test_escaped_payloads_never_run(chromium: str, pages: dict[str, Path],
+                                    tmp_path: Path) -> None:
+    source = pages["escaping"].read_text(encoding="utf-8")
+    assert "<script>document.title" not in source and "<img" not in source
+    dom = dump_dom(chromium, tmp_path / "profile", pages["escaping"].as_uri())
+    title = re.search(r"<title>(.*?)</title>", dom, re.S)
+    assert title is not None and title.group(1) == "launchverify report"
+    scripts = re.findall(r"<script\b[^>]*>(.*?)</script>", dom, re.S)
+    assert len(scripts) == 1 and "PWNED" not in scripts[0] and "alert" not in scripts[0]
+    assert "<img" not in dom
+    # the text is there, shown as text
+    assert "&lt;script&gt;document.title='PWNED'&lt;/script&gt;" in dom
+
+
+def test_screenshot(chromium: str, pages: dict[str, Path], tmp_path: Path) -> None:
+    shot = tmp_path / "fleet.png"
+    browse(chromium, tmp_path / "profile", f"--screenshot={shot}", "--window-size=1400,2000",
+           pages["fleet"].as_uri())
+    assert shot.is_file()
+    assert png_size(shot) == (1400, 2000)
+    assert shot.stat().st_size > 60_000  # a drawn page, not a blank one

@@ -1,0 +1,153 @@
+"""The report's inline stylesheet and its one optional script (no external resources)."""
+
+from __future__ import annotations
+
+import base64
+import hashlib
+
+STYLE = """
+:root{--fg:#1f2328;--muted:#59636e;--line:#d1d9e0;--bg:#ffffff;--soft:#f6f8fa;
+--err:#cf222e;--warn:#9a6700;--info:#0969da;--ok:#1a7f37;--lc:#8250df;
+--mono:ui-monospace,"SFMono-Regular","DejaVu Sans Mono",Menlo,Consolas,monospace;
+--sans:system-ui,-apple-system,"Segoe UI",Roboto,"Noto Sans","DejaVu Sans",sans-serif}
+*{box-sizing:border-box}
+body{margin:0;font:14px/1.45 var(--sans);color:var(--fg);background:var(--bg)}
+header.top{display:flex;align-items:baseline;gap:24px;padding:10px 20px;
+border-bottom:1px solid var(--line);background:var(--soft);position:sticky;top:0;z-index:2}
+header.top h1{font-size:18px;margin:0}
+nav a{margin-right:14px;color:var(--info);text-decoration:none}
+main{padding:6px 20px 30px;max-width:1420px}
+footer{padding:10px 20px;color:var(--muted);font-size:12px}
+h2{font-size:17px;margin:20px 0 8px;padding-bottom:4px;border-bottom:1px solid var(--line)}
+h3{font-size:14px;margin:14px 0 6px}
+code,pre{font-family:var(--mono);font-size:12px}
+a{color:var(--info)}
+.cards{display:flex;flex-wrap:wrap;gap:10px;margin:12px 0}
+.card{border:1px solid var(--line);border-radius:6px;padding:6px 14px;min-width:92px;
+background:var(--bg)}
+.card .value{display:block;font-size:22px;font-weight:600}
+.card .label{color:var(--muted);font-size:12px}
+.card.ok .value{color:var(--ok)}.card.bad .value{color:var(--err)}
+.card.sev-card-error .value{color:var(--err)}.card.sev-card-warning .value{color:var(--warn)}
+.card.sev-card-info .value{color:var(--info)}
+ul.rules{list-style:none;padding:0;margin:4px 0;display:flex;flex-wrap:wrap;gap:6px 16px}
+ul.rules a{text-decoration:none;color:var(--fg)}
+p.roots,details.roots summary{margin:6px 0 2px;color:var(--muted);font-weight:400}
+ul.roots{margin:2px 0;padding-left:20px;columns:2}
+.sev{display:inline-block;font-size:11px;font-weight:600;border-radius:10px;padding:0 7px;
+color:#fff;text-decoration:none;vertical-align:1px}
+.sev-error{background:var(--err)}.sev-warning{background:var(--warn)}.sev-info{background:var(--info)}
+.slug{color:var(--muted)}
+.count{display:inline-block;background:var(--soft);border:1px solid var(--line);
+border-radius:10px;padding:0 7px;font-size:11px;font-weight:400}
+table{border-collapse:collapse;width:100%;margin:4px 0 10px;font-size:13px}
+th,td{border-bottom:1px solid var(--line);padding:3px 8px;text-align:left;vertical-align:top}
+th{background:var(--soft);font-weight:600}
+table.index td.where,table.index td.rule{white-space:nowrap;width:1%}
+table.index tbody{border-top:2px solid var(--line)}
+.loc{font-family:var(--mono);font-size:12px;color:var(--muted)}
+a .loc{color:var(--info)}
+article.finding{border:1px solid var(--line);border-left:4px solid var(--line);
+border-radius:6px;padding:8px 12px;margin:8px 0;background:var(--bg)}
+article.sev-error{border-left-color:var(--err)}article.sev-warning{border-left-color:var(--warn)}
+article.sev-info{border-left-color:var(--info)}
+article:target{box-shadow:0 0 0 3px #54aeff66}
+article header .code{font-weight:700;font-size:13px}
+p.msg{margin:4px 0 6px;font-weight:500}
+pre.frame{background:var(--soft);border:1px solid var(--line);border-radius:4px;margin:4px 0;
+padding:6px 0;overflow-x:auto;tab-size:4}
+pre.frame .row{display:inline-block;min-width:100%;padding:0 10px;white-space:pre}
+pre.frame .row.hit{background:#fff8c5}
+pre.frame .ln{display:inline-block;color:var(--muted);margin-right:12px;user-select:none}
+pre.frame mark{background:#ffd33d99;color:inherit;border-bottom:2px solid var(--err);
+border-radius:2px}
+.part h4{margin:6px 0 2px;font-size:12px;color:var(--muted);text-transform:uppercase;
+letter-spacing:.04em}
+.part ol,.part ul{margin:2px 0;padding-left:22px}
+code.snippet{color:var(--muted)}
+ul.witness{list-style:none;padding:0;display:flex;gap:8px}
+ul.witness code{background:var(--soft);border:1px solid var(--line);border-radius:4px;
+padding:0 5px}
+.stats{margin:4px 0 6px}
+.note{color:var(--warn)}
+.clean{color:var(--ok);font-weight:600}
+ul.legend{list-style:none;padding:0;margin:6px 0;display:flex;flex-wrap:wrap;gap:4px 18px;
+font-size:12px;color:var(--muted)}
+.sw{display:inline-block;width:22px;height:12px;border-radius:3px;border:1px solid #8c959f;
+background:#fff;vertical-align:-1px;margin-right:5px}
+.sw-managed{background:#f3efff;border-color:var(--lc)}
+.sw-manager{background:#ddf4ff;border:2px solid var(--info)}
+.sw-container{background:#fff1cc;border-color:#bf8700}
+.sw-error{border:2px solid var(--err)}
+.dot{display:inline-block;width:10px;height:10px;border-radius:50%;vertical-align:-1px;
+margin:0 3px 0 6px}
+.dia{display:inline-block;width:9px;height:9px;transform:rotate(45deg);margin:0 4px 0 6px}
+.dot.st-active,.dia-done{background:var(--ok)}.dot.st-inactive{background:#d4a72c}
+.dot.st-unconfigured{background:#afb8c1}.dot.st-finalized{background:#424a53}
+.dia-blocked{background:var(--err)}
+.picture{overflow-x:auto;margin:6px 0 10px}
+svg.system{display:block;font-family:var(--sans)}
+svg .ns rect{stroke:#b6c2cf;stroke-width:1}
+svg .ns.d0>rect{fill:#f6f8fa}svg .ns.d1>rect{fill:#eaeef2}svg .ns.d2>rect{fill:#dfe5eb}
+svg .ns.d3>rect{fill:#d3dbe3}
+svg .ns.procs>rect{fill:#fff;stroke-dasharray:4 3}
+svg .nsl{font:600 12px var(--sans);fill:#24292f}
+svg .nsc{font:11px var(--sans);fill:var(--muted);text-anchor:end}
+svg .node rect{fill:#fff;stroke:#8c959f;stroke-width:1}
+svg .node.managed rect{fill:#f3efff;stroke:var(--lc)}
+svg .node.manager rect{fill:#ddf4ff;stroke:var(--info);stroke-width:2}
+svg .node.container>rect{fill:#fff1cc;stroke:#bf8700}
+svg rect.ct{fill:#fffaeb;stroke:#d4a72c;stroke-width:1;stroke-dasharray:3 2}
+svg .node.has-error>rect{stroke:var(--err);stroke-width:2.5}
+svg .node.has-warning>rect{stroke:var(--warn);stroke-width:2}
+svg .node:hover rect{filter:brightness(.95)}
+svg .nl{font:11px var(--mono);fill:#1f2328}
+svg .extra{font:10px var(--sans);fill:var(--muted);text-anchor:end}
+svg rect.badge{stroke:none}
+svg .node rect.b-error{fill:var(--err);stroke:none}
+svg .node rect.b-warning{fill:#bf8700;stroke:none}
+svg .node rect.b-info{fill:var(--info);stroke:none}
+svg .bt{font:700 9px var(--sans);fill:#fff;text-anchor:middle}
+svg .st-active{fill:var(--ok)}svg .st-inactive{fill:#d4a72c}svg .st-unconfigured{fill:#afb8c1}
+svg .st-finalized{fill:#424a53}
+svg .mgr-done{fill:var(--ok)}svg .mgr-blocked{fill:var(--err)}
+details{margin:6px 0}
+summary{cursor:pointer;font-weight:600}
+ul.plain{list-style:none;margin:0;padding:0}
+table.nodes{table-layout:fixed}
+table.nodes td{overflow-wrap:anywhere}
+table.nodes th:nth-child(1){width:19%}table.nodes th:nth-child(2){width:7%}
+table.nodes th:nth-child(3){width:14%}table.nodes th:nth-child(4){width:12%}
+table.nodes th:nth-child(5){width:14%}table.nodes th:nth-child(6){width:23%}
+table.nodes th:nth-child(7){width:11%}
+.chip{display:inline-block;font-size:11px;border-radius:8px;padding:0 6px;margin:1px;
+background:var(--soft);border:1px solid var(--line)}
+.chip.st-active{background:#dafbe1;border-color:#4ac26b}
+.chip.st-inactive{background:#fff8c5;border-color:#d4a72c}
+.ok{color:var(--ok);font-weight:600}.bad{color:var(--err);font-weight:600}
+tr:target{background:#ddf4ff}
+ul.tree,ul.tree ul{list-style:none;padding-left:18px;margin:2px 0}
+ul.tree li{border-left:1px solid var(--line);padding-left:8px;margin:2px 0}
+.status{font-size:11px;border-radius:8px;padding:0 6px;border:1px solid var(--line)}
+.status.bad{color:#fff;background:var(--err);border-color:var(--err)}
+.status.off{color:var(--muted)}
+.args code{font-size:11px;color:var(--muted);margin-right:8px}
+@media print{header.top{position:static}}
+"""
+
+# Optional: follow a link into a collapsed <details> (a node's row) by opening it.
+SCRIPT = (
+    "(function(){function show(){var id=decodeURIComponent(location.hash.slice(1));"
+    "var t=id&&document.getElementById(id);if(!t)return;"
+    "for(var e=t.parentElement;e;e=e.parentElement){if(e.tagName==='DETAILS')e.open=true;}"
+    "t.scrollIntoView();}window.addEventListener('hashchange',show);show();})();"
+)
+
+# What the page may load and run: its own style and the script above, nothing else. Should
+# a launch file's text ever get through unescaped, the browser still refuses to run it.
+CONTENT_SECURITY_POLICY = (
+    "default-src 'none'; style-src 'unsafe-inline'; img-src data:; "
+    "script-src 'sha256-"
+    + base64.b64encode(hashlib.sha256(SCRIPT.encode("utf-8")).digest()).decode("ascii")
+    + "'"
+)

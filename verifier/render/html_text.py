@@ -1,0 +1,43 @@
+"""Small HTML helpers shared by the report's sections.
+
+Everything the report shows that comes from a launch file, a parameter file or a path goes
+through ``esc``: names, values and messages are attacker-controlled text as far as the
+browser is concerned.
+"""
+
+from __future__ import annotations
+
+import html
+from pathlib import Path
+
+from launchverify.engine import Report
+from launchverify.span import Span
+
+
+def esc(value: object) -> str:
+    """Return ``value`` as text safe in HTML and SVG content and quoted attributes."""
+    return html.escape(str(value), quote=True)
+
+
+def clip(text: str, limit: int) -> str:
+    """Return ``text`` cut to ``limit`` characters, marked with an ellipsis when cut."""
+    return text if len(text) <= limit else text[: max(limit - 1, 0)] + "\u2026"
+
+
+def where(report: Report, span: Span | None) -> str:
+    """Return ``file:line`` as the user knows the file (plain text, not escaped)."""
+    if span is None:
+        return ""
+    return f"{report.display_path(span.file)}:{span.line}"
+
+
+def place(report: Report, file: Path, line: int | None) -> str:
+    """Return an escaped ``file:line`` element for a location."""
+    text = report.display_path(file) + (f":{line}" if line is not None else "")
+    return f'<span class="loc">{esc(text)}</span>'
+
+
+def short_place(text: str) -> str:
+    """Return an escaped ``name:line`` for a ``path:line`` text, the full path on hover."""
+    short = text.replace("\\", "/").rsplit("/", 1)[-1]
+    return f'<span class="loc" title="{esc(text)}">{esc(short)}</span>'

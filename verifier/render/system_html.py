@@ -1,0 +1,202 @@
+"""One root's part of the HTML report: picture, legend, node table, bring-up, includes.
+
+Kept apart from the page skeleton so that a report with several roots simply repeats it.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from typing import Any
+
+from launchverify.engine import Report
+from launchverify.graph import IncludeRecord, LaunchGraph
+from launchverify.render.html_text import clip, esc, short_place, where
+from launchverify.render.system_model import SystemModel, SystemNode, build_model
+from launchverify.render.system_svg import render_system_svg
+from launchverify.span import Span
+
+ARGUMENT_LIMIT = 60  # characters of an include argument's value shown in the tree
+
+LEGEND = (
+    '<ul class="legend">'
+    '<li><span class="sw sw-node"></span>node</li>'
+    '<li><span class="sw sw-managed"></span>lifecycle node</li>'
+    '<li><span class="sw sw-manager"></span>lifecycle manager '
+    '(<span class="dia dia-done"></span>brings up all its nodes, '
+    '<span class="dia dia-blocked"></span>never completes)</li>'
+    '<li><span class="sw sw-container"></span>container with its components</li>'
+    '<li>best state reached: <span class="dot st-active"></span>active '
+    '<span class="dot st-inactive"></span>inactive '
+    '<span class="dot st-unconfigured"></span>unconfigured '
+    '<span class="dot st-finalized"></span>finalized</li>'
+    '<li><span class="sw sw-error"></span>node with a finding (code shown)</li>'
+    "</ul>"
+)
+
+
+def roots_to_show(report: Report) -> list[LaunchGraph]:
+    """Return the graphs that get a section: the roots no other checked file includes.
+
+    When every file is included by another (an include cycle), all of them are shown.
+    """
+    tops = [g for g in report.graphs if not g.included_elsewhere]
+    return tops or list(report.graphs)
+
+
+def render_system_section(report: Report, graph: LaunchGraph, number: int,
+                          anchors: dict[int, str]) -> str:
+    """Return the section of one root: summary line, picture, tables, include tree."""
+    model = build_model(report, graph, anchors)
+    anchor = f"sys{number}-node"
+    root_name = report.display_path(graph.root)
+    parts = [f'<section class="system-section" id="system-{number}">'
+             f"<h2>System of <code>{esc(root_name)}</code></h2>",
+             f'<p class="stats">{_stats(model)}</p>']
+    if not graph.complete_as_given():
+        parts.append('<p class="note">Part of this launch could not be seen into (a missing '
+                     "file or package, or a construct launchverify does not model): the "
+                     "picture may lack nodes.</p>")
+    parts.append(LEGEND)
+    parts.append(f'<div class="picture">{render_system_svg(model, anchor)}</div>')
+    parts.append(_lifecycle(model.lifecycle))
+    parts.append(_node_table(model, anchor))
+    parts.append(render_include_tree(report, graph))
+    parts.append("</section>")
+    return "".join(parts)
+
+
+def _stats(model: SystemModel) -> str:
+    nodes = model.nodes
+    components = sum(1 for n in nodes if n.kind.startswith("composable"))
+    managed = len({n.fqn for n in nodes if n.managed and n.manager is None})
+    managers = [n for n in nodes if n.manager is not None]
+    done = sum(1 for n in managers if n.manager and n.manager["completes"])
+    containers = sum(1 for n in nodes if n.kind == "node_container")
+    facts = [_count(len(nodes), "node")
+             + (f" ({_count(components, 'component', bold=False)})" if components else ""),
+             _count(model.namespaces(), "namespace")]
+    if managed:
+        facts.append(_count(managed, "lifecycle node"))
+    if managers:
+        facts.append(f"<b>{done}</b> of {_count(len(managers), 'lifecycle manager', False)}"
+                     " complete")
+    if containers:
+        facts.append(_count(containers, "container"))
+    if model.processes:
+        facts.append(_count(len(model.processes), "process", plural="processes"))
+    return " \u00b7 ".join(facts)
+
+
+def _count(number: int, noun: str, bold: bool = True, plural: str = "") -> str:
+    word = noun if number == 1 else plural or noun + "s"
+    return f"<b>{number}</b> {word}" if bold else f"{number} {word}"
+
+
+def _lifecycle(lifecycle: dict[str, Any] | None) -> str:
+    if not lifecycle or (not lifecycle["managers"] and not lifecycle["nodes"]):
+        return ""
+    rows = []
+    for manager in lifecycle["managers"]:
+        verdict = ('<span class="ok">completes</span>' if manager["completes"]
+                   else '<span class="bad">does not complete</span>')
+        names = ", ".join(manager["node_names"])
+        defined = short_place(f"{manager['file']}:{manager['line']}")
+        autostart = manager["autostart"]
+        autostart = "" if autostart is None else esc(
+            str(autostart).lower() if isinstance(autostart, bool) else autostart)
+        rows.append(f"<tr><td><code>{esc(manager['fqn'])}</code></td><td>{verdict}</td>"
+                    f"<td>{autostart}</td><td>{esc(names)}</td>"
+                    f"<td>{defined}</td></tr>")
+    note = "" if lifecycle["complete"] else (
+        '<p class="note">The search did not follow every trigger: some states may be '
+        "missing.</p>")
+    table = ("<table><thead><tr><th>Manager</th><th>Bring-up</th><th>autostart</th>"
+             "<th>node_names</th><th>Defined at</th></tr></thead><tbody>"
+             + "".join(rows) + "</tbody></table>") if rows else ""
+    managed = len(lifecycle["nodes"])
+    explored = _count(lifecycle["states_explored"], "state", False)
+    return (f'<details class="lifecycle" open><summary>Lifecycle bring-up: '
+            f"{_count(managed, 'managed node', False)}, {explored} explored</summary>"
+            f"{note}{table}</details>")
+
+
+def _node_table(model: SystemModel, anchor: str) -> str:
+    rows = [_node_row(node, anchor) for node in model.nodes]
+    return (f'<details class="nodes"><summary>All {len(model.nodes)} nodes: parameters, '
+            'remaps, lifecycle states</summary><table class="nodes"><thead><tr><th>Node</th>'
+            "<th>Kind</th>"
+            "<th>Executable</th><th>Lifecycle</th><th>Remaps</th><th>Parameters</th>"
+            "<th>Defined at</th></tr></thead><tbody>" + "".join(rows)
+            + "</tbody></table></details>")
+
+
+def _node_row(node: SystemNode, anchor: str) -> str:
+    kind = node.kind.replace("_", " ")
+    if node.container:
+        kind += f"<br><small>in {esc(node.container)}</small>"
+    if node.manager is not None:
+        state = ('<span class="ok">manager, completes</span>' if node.manager["completes"]
+                 else '<span class="bad">manager, does not complete</span>')
+    elif node.managed:
+        state = " ".join(f'<span class="chip st-{esc(s)}">{esc(s)}</span>'
+                         for s in node.states) or "never started"
+    else:
+        state = ""
+    remaps = "".join(f"<li><code>{esc(s)}</code> \u2192 <code>{esc(d)}</code></li>"
+                     for s, d in node.remappings)
+    params = "".join(f'<li><code>{esc(n)}</code> = <code>{esc(v)}</code>'
+                     + (f" <small>{short_place(w)}</small>" if w else "") + "</li>"
+                     for n, v, w in node.parameters)
+    marks = "".join(f' <a class="sev sev-{m.severity.value}" href="#{esc(m.anchor)}">'
+                    f"{esc(m.code)}</a>" for m in node.marks)
+    condition = f"<br><small>when {esc(node.condition)}</small>" if node.condition else ""
+    return (f'<tr id="{esc(anchor)}-{node.index}"><td><code>{esc(node.fqn)}</code>{marks}'
+            f"{condition}</td><td>{kind}</td><td>{esc(node.executable)}</td><td>{state}</td>"
+            f'<td><ul class="plain">{remaps}</ul></td><td><ul class="plain">{params}</ul></td>'
+            f"<td>{short_place(node.where)}</td></tr>")
+
+
+# ------------------------------------------------------------------ include tree
+
+
+def render_include_tree(report: Report, graph: LaunchGraph) -> str:
+    """Return the includes of one root as a nested list, in the order they run."""
+    children: dict[tuple[Span, ...], list[IncludeRecord]] = defaultdict(list)
+    for record in graph.includes:
+        children[record.origin.chain].append(record)
+    root = report.display_path(graph.root)
+    body = _include_items(report, graph, children, ())
+    count = len(graph.includes)
+    return (f'<details class="includes" open><summary>Include tree '
+            f'({count or "no"} include{"" if count == 1 else "s"})</summary>'
+            f'<ul class="tree"><li><code>{esc(root)}</code>{body}</li>'
+            "</ul></details>")
+
+
+def _include_items(report: Report, graph: LaunchGraph,
+                   children: dict[tuple[Span, ...], list[IncludeRecord]],
+                   chain: tuple[Span, ...]) -> str:
+    records = children.get(chain, [])
+    if not records:
+        return ""
+    items = []
+    for record in records:
+        target = (report.display_path(record.target) if record.target is not None
+                  else graph.display(record.location) or "?")
+        status = "" if record.status == "loaded" else \
+            f' <span class="status bad">{esc(record.status)}</span>'
+        runs = graph.runs(record.origin)
+        skipped = ' <span class="status off">not under these arguments</span>' \
+            if runs is False else ""
+        condition = record.origin.condition_text()
+        when = f' <small>when {esc(condition)}</small>' if condition else ""
+        arguments = " ".join(
+            f"<code>{esc(name)}:={esc(clip(graph.display(value) or '', ARGUMENT_LIMIT))}</code>"
+            for name, value, _span in record.arguments if name is not None)
+        nested = _include_items(report, graph, children, (*chain, record.origin.span))
+        at = short_place(where(report, record.origin.span))
+        items.append(f"<li><code>{esc(target)}</code>{status}{skipped} <small>at {at}"
+                     f"</small>{when}"
+                     + (f'<div class="args">{arguments}</div>' if arguments else "")
+                     + f"{nested}</li>")
+    return "<ul>" + "".join(items) + "</ul>"
