@@ -127,6 +127,25 @@ def build_parser() -> argparse.ArgumentParser:
                        help="every action with its path condition, values as expressions")
     graph.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
 
+    run = commands.add_parser(
+        "run", help="verify a launch file, then start it",
+        description="Verify a launch file and, when it has no error, start it with ros2 "
+        "launch's run-time semantics (processes, event handlers, timers, respawn, "
+        "shutdown). Arguments written name:=value are passed as on ros2 launch.",
+    )
+    run.add_argument("targets", nargs="+", metavar="FILE|name:=value")
+    run.add_argument("--workspace", type=Path)
+    run.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
+                     help="environment given to the check (the processes get the real one)")
+    run.add_argument("--dry-run", action="store_true",
+                     help="print every command that would run, and start nothing")
+    run.add_argument("--force", action="store_true",
+                     help="start even when the check finds errors")
+    run.add_argument("--engine", choices=("embedded", "ros2"), default="embedded",
+                     help="ros2: hand the verified file to the real ros2 launch")
+    run.add_argument("--log-dir", type=Path, metavar="DIR",
+                     help="where the run folder goes (default: ROS_LOG_DIR or ~/.ros/log)")
+
     rules = commands.add_parser("rules", help="list every rule")
     rules.add_argument("--format", choices=("text", "json", "markdown"), default="text",
                        help="markdown: every rule's documentation (docs/rules.md)")
@@ -151,7 +170,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.print_help()
         return EXIT_ERROR
     handlers = {"check": _check, "report": _report, "graph": _graph, "rules": _rules,
-                "explain": _explain}
+                "explain": _explain, "run": _run}
     try:
         return handlers[args.command](args)
     except (UsageError, RegistryError, ConfigError, BaselineError) as error:
@@ -261,6 +280,28 @@ def _report(args: argparse.Namespace) -> int:
     print(f"wrote {args.output} ({len(report.findings)} findings in {report.files} files)",
           file=sys.stderr)
     return EXIT_OK
+
+
+def _run(args: argparse.Namespace) -> int:
+    from launchverify.executor.runner import RunOptions, run
+    from launchverify.render.text import render_text
+
+    paths, arguments = parse_arguments(args.targets)
+    if len(paths) != 1 or not Path(paths[0]).is_file():
+        raise UsageError("run takes exactly one launch file")
+    options = RunOptions(
+        check=CheckOptions(paths=[Path(paths[0])], arguments=arguments,
+                           workspace=args.workspace, environment=parse_environment(args.env)),
+        dry_run=args.dry_run, force=args.force, engine=args.engine, log_dir=args.log_dir,
+        arguments=arguments)
+    status, report = run(options, sys.stdout, sys.stderr)
+    if report.findings and (status == 1 or args.dry_run):
+        render_text(report, sys.stderr, color=None, quiet=True)
+    if status == 1 and any(f.severity is Severity.ERROR for f in report.findings) \
+            and not args.force:
+        print("launchverify: not started: the check found errors (--force starts anyway)",
+              file=sys.stderr)
+    return status
 
 
 def _rules(args: argparse.Namespace) -> int:

@@ -299,6 +299,48 @@ class TransitionRequest:
 
 
 @dataclass(frozen=True, slots=True)
+class ProcessSettings:
+    """What every process takes besides its command, reduced where it executes.
+
+    ``env`` holds the launch's environment changes in scope (``None``: unset) followed by
+    the process's ``additional_env``; ``replace_env`` is ``ExecuteProcess(env=...)``,
+    which replaces the whole environment.
+    """
+
+    name: Sub | None = None
+    cwd: Sub | None = None
+    prefix: Sub | None = None
+    output: Sub | None = None
+    env: tuple[tuple[str, Sub | None], ...] = ()
+    replace_env: tuple[tuple[Sub, Sub], ...] | None = None
+    shell: bool = False
+    emulate_tty: bool | None = None
+    respawn: Sub | bool = False
+    respawn_delay: float | None = None
+    respawn_max_retries: int | None = None
+    sigterm_timeout: Sub | float | None = None
+    sigkill_timeout: Sub | float | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class LaunchRecord:
+    """A process the launch starts, with everything needed to start it for real.
+
+    For a node (``node`` set) the command is built as launch_ros builds it from the node's
+    record, ``arguments`` and ``ros_arguments``; for ``ExecuteProcess`` it is ``cmd``.
+    ``execution`` is the action's index in ``LaunchGraph.executed``.
+    """
+
+    origin: Origin
+    execution: int | None
+    settings: ProcessSettings
+    cmd: tuple[Sub, ...] = ()
+    node: NodeRecord | None = None
+    arguments: tuple[Sub, ...] = ()
+    ros_arguments: tuple[Sub, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
 class SkippedAction:
     """An action whose condition is constant false: it never runs."""
 
@@ -330,6 +372,8 @@ class LaunchGraph:
     handlers: list[HandlerRecord] = field(default_factory=list)
     executed: list[ExecutedRecord] = field(default_factory=list)
     requests: list[TransitionRequest] = field(default_factory=list)
+    launches: list[LaunchRecord] = field(default_factory=list)  # what ``run`` starts
+    logs: dict[int, tuple[str, Sub]] = field(default_factory=dict)  # execution: level, text
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into

@@ -15,7 +15,14 @@ from launchverify.evaluate.reducers import Ctx, ScopeReducer
 from launchverify.evaluate.scope import GLOBAL_PARAMS, ROS_NAMESPACE, ROS_REMAPS
 from launchverify.evaluate.values import ns_prefix, text_of
 from launchverify.frontends.subst_parser import SubstitutionSyntaxError, parse_substitution
-from launchverify.graph import FileRef, NodeRecord, Origin, ParamRecord, RemapRecord
+from launchverify.graph import (
+    FileRef,
+    LaunchRecord,
+    NodeRecord,
+    Origin,
+    ParamRecord,
+    RemapRecord,
+)
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.models import booleans
@@ -56,14 +63,14 @@ class NodeBuilder:
         if name is not None:  # without any namespace, a node is in "/"
             fqn = ns_prefix(namespace if namespace is not None else s.Text("/"), name)
         reducer = self.walker.reducer.at(ctx, action.span)
-        for argument in (*action.arguments, *action.ros_arguments):
-            reducer.reduce(argument)
+        arguments = tuple(reducer.reduce(argument) for argument in action.arguments)
+        ros_arguments = tuple(reducer.reduce(argument) for argument in action.ros_arguments)
         exec_name = action.exec_name
         if exec_name is not None:
             reducer.reduce(exec_name)
         remaps = (*self.scope_remaps(ctx), *self.own_remaps(action.remappings, ctx))
         params = (*self.scope_params(ctx), *self.own_params(action.parameters, ctx))
-        self.walker.visit_process_options(action.process, action.span, ctx, action)
+        settings = self.walker.visit_process_options(action.process, action.span, ctx, action)
         autostart = None
         if isinstance(action, a.LifecycleNode):
             autostart = self.autostart(action.autostart, reducer)
@@ -74,6 +81,9 @@ class NodeBuilder:
             execution=self.walker.execution, autostart=autostart,
         )
         self.walker.graph.nodes.append(record)
+        self.walker.graph.launches.append(LaunchRecord(
+            record.origin, self.walker.execution, settings, node=record, arguments=arguments,
+            ros_arguments=ros_arguments))
         return record
 
     def run_composable(self, node: a.ComposableNode, container: s.Sub | None, ctx: Ctx) -> None:

@@ -43,11 +43,13 @@ from launchverify.graph import (
     HandlerRecord,
     IncludeRecord,
     LaunchGraph,
+    LaunchRecord,
     NameRecord,
     Origin,
     PackageRef,
     ProblemRecord,
     ProcessRecord,
+    ProcessSettings,
     SkippedAction,
     StaticArgument,
     TransitionRequest,
@@ -589,7 +591,9 @@ class Walker:
         """Changes where logs go; nothing the graph models."""
 
     def do_Log(self, action: a.Log, ctx: Ctx) -> None:
-        self.reducer.at(ctx, action.span).reduce(action.message)
+        message = self.reducer.at(ctx, action.span).reduce(action.message)
+        if self.execution is not None:
+            self.graph.logs[self.execution] = (action.level, message)
 
     def do_Shutdown(self, action: a.Shutdown, ctx: Ctx) -> None:
         """Ends the launch at run time; statically nothing to record."""
@@ -721,25 +725,46 @@ class Walker:
         reducer = self.reducer.at(ctx, action.span)
         cmd = tuple(reducer.reduce(part) for part in action.cmd)
         name = None if action.process.name is None else reducer.reduce(action.process.name)
-        self.graph.processes.append(ProcessRecord(ctx.origin(action.span), cmd, name,
-                                                  self.execution))
-        self.visit_process_options(action.process, action.span, ctx, action)
+        origin = ctx.origin(action.span)
+        self.graph.processes.append(ProcessRecord(origin, cmd, name, self.execution))
+        settings = self.visit_process_options(action.process, action.span, ctx, action)
+        self.graph.launches.append(LaunchRecord(origin, self.execution, settings, cmd=cmd))
 
     def visit_process_options(self, options: a.ProcessOptions, span: Span, ctx: Ctx,
-                              process: a.Action | None = None) -> None:
+                              process: a.Action | None = None) -> ProcessSettings:
         """Evaluate what every process takes (reads of configurations count as uses)."""
         reducer = self.reducer.at(ctx, span)
-        for value in (options.cwd, options.prefix, options.output):
-            if value is not None:
-                reducer.reduce(value)
-        if isinstance(options.respawn, s.Sub):
-            reducer.reduce(options.respawn)
+
+        def reduce(value: s.Sub | None) -> s.Sub | None:
+            return None if value is None else reducer.reduce(value)
+
+        env: list[tuple[str, s.Sub | None]] = list(self.scopes.env.items())
         for name, value in options.additional_env:
-            reducer.reduce(name)
-            reducer.reduce(value)
+            key = text_of(reducer.reduce(name))
+            reduced = reducer.reduce(value)
+            if key is not None:
+                env.append((key, reduced))
+
+        def timeout(value: s.Sub | float | None) -> s.Sub | float | None:
+            return reducer.reduce(value) if isinstance(value, s.Sub) else value
+
+        settings = ProcessSettings(
+            name=reduce(options.name), cwd=reduce(options.cwd), prefix=reduce(options.prefix),
+            output=reduce(options.output), env=tuple(env),
+            replace_env=None if options.env is None else tuple(
+                (reducer.reduce(k), reducer.reduce(v)) for k, v in options.env),
+            shell=options.shell, emulate_tty=options.emulate_tty,
+            respawn=(reducer.reduce(options.respawn) if isinstance(options.respawn, s.Sub)
+                     else options.respawn),
+            respawn_delay=options.respawn_delay,
+            respawn_max_retries=options.respawn_max_retries,
+            sigterm_timeout=timeout(options.sigterm_timeout),
+            sigkill_timeout=timeout(options.sigkill_timeout),
+        )
         if options.on_exit:  # an OnProcessExit handler on this very process
             index = self.record_handler(ctx.origin(span), "process_exit", process, False)
             self.run_handler(index, options.on_exit, ctx)
+        return settings
 
     def do_Node(self, action: a.Node, ctx: Ctx) -> None:
         self.nodes.run_node(action, ctx)

@@ -129,7 +129,7 @@ class GraphView:
                 for p in graph.processes if self.shown(p.origin)
             ],
             "includes": [
-                {"file": display_path(i.target) if i.target else self.value(i.location),
+                {"target": display_path(i.target) if i.target else self.value(i.location),
                  "status": i.status,
                  "arguments": {n: self.value(v) for n, v, _ in i.arguments if n is not None},
                  **self.where(i.origin)}

@@ -1,0 +1,260 @@
+"""``launchverify run``: real processes through start-up, events, timers, respawn, shutdown.
+
+The processes are corpus/executor/nodes/worker.py, a stand-in for a node that prints,
+crashes, finishes or ignores signals on cue. Every test checks the order of events the
+supervisor recorded and that no process (nor a child of one) survives the run.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+from launchverify.cli import main
+
+CORPUS = Path(__file__).resolve().parent.parent / "corpus" / "executor"
+WORKER = CORPUS / "nodes" / "worker.py"
+
+
+@pytest.fixture(autouse=True)
+def _no_ros(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    monkeypatch.setattr(shutil, "which", _which_without_ros2)
+
+
+_real_which = shutil.which
+
+
+def _which_without_ros2(name: str, *args: object, **kwargs: object) -> str | None:
+    return None if name == "ros2" else _real_which(name)  # type: ignore[arg-type]
+
+
+def events_of(log_dir: Path) -> list[str]:
+    """Return the events of the only run under ``log_dir`` (without their times)."""
+    (run,) = log_dir.glob("launchverify-*")
+    return [line.split(maxsplit=1)[1] for line in
+            (run / "events.log").read_text().splitlines()]
+
+
+def pids(events: list[str]) -> list[int]:
+    return [int(e.split()[2]) for e in events if e.startswith("start ")]
+
+
+def alive(pid: int) -> bool:
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    # a zombie is dead for our purpose; /proc tells
+    status = Path(f"/proc/{pid}/status")
+    return not status.exists() or "zombie" not in status.read_text()
+
+
+def run(capsys: pytest.CaptureFixture[str], tmp_path: Path, launch: Path,
+        *argv: str) -> tuple[int, list[str], str]:
+    code = main(["run", str(launch), "--log-dir", str(tmp_path), *argv])
+    out = capsys.readouterr().out
+    events = events_of(tmp_path) if any(tmp_path.glob("launchverify-*")) else []
+    return code, events, out
+
+
+def test_start_up_handlers_timers_and_shutdown_in_order(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    code, events, out = run(capsys, tmp_path, CORPUS / "events" / "events.launch.py")
+    assert code == 0
+    starts = [e.split()[1] for e in events if e.startswith("start ")]
+    assert starts == ["python3-1", "python3-2", "python3-3"]
+    # the second worker starts from the first one's start handler, after it
+    assert events.index("handler process_start events.launch.py:19") < events.index(
+        next(e for e in events if e.startswith("start python3-3")))
+    # 'short' finishes on its own, its exit handler logs; the timer shuts down after
+    exit_short = events.index("exit python3-2 0")
+    shutdown = events.index("shutdown timer")
+    assert exit_short < shutdown
+    assert "[INFO] [launch.user]: short finished" in out
+    assert out.index("short finished") < out.index("timer fired")
+    after = events[shutdown:]
+    assert {"signal python3-1 SIGINT", "signal python3-3 SIGINT"} <= set(after)
+    assert not any(alive(pid) for pid in pids(events))
+    assert "[python3-1] ready first" in out
+
+
+def test_respawn_until_the_retries_run_out(capsys: pytest.CaptureFixture[str],
+                                           tmp_path: Path) -> None:
+    launch = tmp_path / "respawn.launch.xml"
+    launch.write_text((CORPUS / "respawn" / "respawn.launch.xml").read_text()
+                      .replace("$(dirname)", str(CORPUS / "respawn"))
+                      .replace("<log message=\"stopping\"/>",
+                               "<log message=\"stopping\"/><shutdown reason=\"enough\"/>"))
+    code, events, _ = run(capsys, tmp_path / "logs", launch)
+    flaky = [e for e in events if "flaky" in e]
+    assert flaky == ["start flaky-1 " + flaky[0].split()[2], "exit flaky-1 3", "respawn flaky-1",
+                     flaky[3], "exit flaky-1 3", "respawn flaky-1", flaky[6], "exit flaky-1 3"]
+    assert code == 1  # the crashes are failures, respawned or not
+    assert "shutdown enough" in events
+    assert not any(e.startswith("start late") for e in events)  # the timer's process: cancelled
+    assert not any(alive(pid) for pid in pids(events))
+
+
+def test_a_process_ignoring_signals_is_killed_on_time_with_its_children(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    started = time.monotonic()
+    code, events, out = run(capsys, tmp_path, CORPUS / "stubborn" / "stubborn.launch.xml")
+    elapsed = time.monotonic() - started
+    stubborn = [e for e in events if "stubborn-1" in e and not e.startswith("start")]
+    assert stubborn == ["signal stubborn-1 SIGINT", "signal stubborn-1 SIGTERM",
+                        "signal stubborn-1 SIGKILL", "exit stubborn-1 -9"]
+    assert events.index("exit quitter-1 0") < events.index("shutdown Shutdown action")
+    assert elapsed < 0.3 + 0.5 + 0.5 + 3.0  # quitter's life + sigterm + sigkill + start-up
+    child = int(next(line.split()[3] for line in out.splitlines()
+                     if line.startswith("[stubborn-1] child")))
+    assert not alive(child)  # the whole process group went
+    assert not any(alive(pid) for pid in pids(events))
+    assert code == 0  # stopped by the shutdown: not a failure
+    assert "[polite-1] ready" not in out  # output="log": stdout only in the log file
+    assert "[polite-1] to stderr polite" in out  # ...stderr on the screen too
+    (folder,) = tmp_path.glob("launchverify-*")
+    assert "ready polite" in (folder / "polite-1.log").read_text()
+
+
+def test_fifty_processes_survive_a_crash_and_stop_within_sigterm_timeout(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    started = time.monotonic()
+    code, events, _ = run(capsys, tmp_path, CORPUS / "fleet" / "fleet.launch.py")
+    elapsed = time.monotonic() - started
+    starts = [e for e in events if e.startswith("start ")]
+    assert len(starts) == 51  # fifty, and worker7 once more
+    assert "respawn worker7-1" in events
+    shutdown = events.index("shutdown done")
+    exits = [e for e in events[shutdown:] if e.startswith("exit ")]
+    assert len(exits) == 50 and all(e.endswith(" 0") for e in exits)
+    assert not any(e.startswith("signal") and "SIGTERM" in e for e in events)
+    assert elapsed < 3.0 + 2.0 + 3.0  # the timer, sigterm_timeout, start-up
+    assert not any(alive(pid) for pid in pids(events))
+    assert code == 1  # worker7 crashed once
+
+
+def install_prefix(tmp_path: Path) -> Path:
+    """Write an install prefix with package fake_robot whose 'worker' is worker.py."""
+    prefix = tmp_path / "install"
+    lib = prefix / "lib" / "fake_robot"
+    lib.mkdir(parents=True)
+    (lib / "worker").symlink_to(WORKER)
+    marker = prefix / "share" / "ament_index" / "resource_index" / "packages"
+    marker.mkdir(parents=True)
+    (marker / "fake_robot").write_text("")
+    share = prefix / "share" / "fake_robot"
+    share.mkdir(parents=True)
+    (share / "package.xml").write_text(
+        "<package format='3'><name>fake_robot</name><version>0.0.0</version>"
+        "<description>x</description><maintainer email='a@b.c'>a</maintainer>"
+        "<license>MIT</license></package>")
+    return prefix
+
+
+def test_node_command_lines_are_built_as_launch_ros_builds_them(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    prefix = install_prefix(tmp_path)
+    monkeypatch.setenv("AMENT_PREFIX_PATH", str(prefix))
+    launch = CORPUS / "nodes_cmdline" / "robot.launch.xml"
+    assert main(["run", str(launch), "--dry-run", "--log-dir", str(tmp_path / "logs")]) == 0
+    plan = capsys.readouterr().out
+    assert not (tmp_path / "logs").exists()  # a dry run starts and writes nothing
+    expected = (f"start worker: {prefix}/lib/fake_robot/worker talker --finish-after 0.2 "
+                "--ros-args --log-level debug --ros-args -r __node:=talker "
+                "-r __ns:=/robot1 -p use_sim_time:=false --params-file ")
+    assert expected in plan
+    assert "-r /tf:=tf -r chatter:=chat" in plan
+    assert "env ROBOT_ID=7" in plan
+    assert "rate: 10" in plan and "frame: base_link" in plan and "/**:" in plan
+    code, _, out = run(capsys, tmp_path / "logs", launch)
+    assert code == 0
+    line = next(x for x in out.splitlines() if x.startswith("[worker-1] ready talker"))
+    assert "--ros-args -r __node:=talker -r __ns:=/robot1" in line
+    params = Path(line.split("--params-file ")[1].split()[0])
+    assert params.read_text().startswith("/**:\n  ros__parameters:\n    rate: 10")
+
+
+def test_lifecycle_without_ros2_says_so(capsys: pytest.CaptureFixture[str],
+                                        tmp_path: Path) -> None:
+    launch = tmp_path / "lc.launch.py"
+    launch.write_text(f"""
+from launch import LaunchDescription
+from launch.actions import EmitEvent, ExecuteProcess, TimerAction
+from launch.events import Shutdown, matches_action
+from launch_ros.actions import LifecycleNode
+from launch_ros.events.lifecycle import ChangeState
+from lifecycle_msgs.msg import Transition
+
+
+def generate_launch_description():
+    node = LifecycleNode(executable='{sys.executable}', name='talker', namespace='',
+                         arguments=['{WORKER}', 'talker'])
+    return LaunchDescription([
+        node,
+        EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(node),
+                                    transition_id=Transition.TRANSITION_CONFIGURE)),
+        TimerAction(period=0.5, actions=[EmitEvent(event=Shutdown())]),
+    ])
+""")
+    code, events, out = run(capsys, tmp_path / "logs", launch)
+    assert code == 0
+    assert "lifecycle transitions are not performed: the ROS 2 command line" in out
+    assert "lifecycle /talker configure not performed" in events
+
+
+def test_errors_found_by_the_check_refuse_the_start(capsys: pytest.CaptureFixture[str],
+                                                    tmp_path: Path) -> None:
+    launch = tmp_path / "dup.launch.xml"
+    launch.write_text(f"""<launch>
+  <executable cmd="python3 {WORKER} a --finish-after 0.1" name="a"/>
+  <node exec="{sys.executable}" name="twin" args="{WORKER} b --finish-after 0.1"/>
+  <node exec="{sys.executable}" name="twin" args="{WORKER} c --finish-after 0.1"/>
+</launch>
+""")
+    assert main(["run", str(launch), "--log-dir", str(tmp_path / "logs")]) == 1
+    err = capsys.readouterr().err
+    assert "LV101" in err and "not started" in err
+    assert not (tmp_path / "logs").exists()
+    code, events, _ = run(capsys, tmp_path / "logs", launch, "--force")
+    assert code == 0 and len(pids(events)) == 3
+
+
+def test_ctrl_c_stops_everything(tmp_path: Path) -> None:
+    """SIGINT to ``launchverify run`` (as Ctrl-C sends it) stops every process group."""
+    launch = CORPUS / "stubborn" / "stubborn.launch.xml"
+    text = launch.read_text().replace("$(dirname)", str(launch.parent)).replace(
+        ' on_exit="shutdown"', "").replace("--finish-after 0.3", "")
+    copy = tmp_path / "stubborn.launch.xml"
+    copy.write_text(text)
+    command = [str(Path(sys.executable).parent / "launchverify"), "run", str(copy),
+               "--log-dir", str(tmp_path / "logs")]
+    child = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                             text=True)
+    deadline = time.monotonic() + 20
+    events: list[str] = []
+    while time.monotonic() < deadline:
+        runs = list((tmp_path / "logs").glob("launchverify-*/events.log"))
+        if runs:
+            events = [line.split(maxsplit=1)[1] for line in runs[0].read_text().splitlines()]
+            if sum(e.startswith("start ") for e in events) == 3:
+                break
+        time.sleep(0.05)
+    time.sleep(0.3)  # let the workers install their signal handlers
+    child.send_signal(signal.SIGINT)
+    out, _ = child.communicate(timeout=20)
+    events = events_of(tmp_path / "logs")
+    assert "shutdown SIGINT received" in events
+    assert "signal stubborn-1 SIGKILL" in events
+    grandchild = int(next(line.split()[3] for line in out.splitlines()
+                          if line.startswith("[stubborn-1] child")))
+    assert not alive(grandchild)
+    assert not any(alive(pid) for pid in pids(events))

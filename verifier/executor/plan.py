@@ -1,0 +1,176 @@
+"""What a run does, read off an evaluated graph: blocks of actions, handlers, processes.
+
+The evaluator recorded every action that executes with the handler it runs in
+(``within``; ``None``: at launch) and the timers around it (``delay``). A *block* is what
+one firing of a handler (or the launch itself) executes, in order, each action after its
+delay. Actions whose condition is false under the arguments are left out; a condition
+that cannot be decided before run time stops the plan (nothing is guessed).
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from launchverify.executor.command import Command, CommandBuilder, CommandError
+from launchverify.graph import HandlerRecord, LaunchGraph, LaunchRecord, TransitionRequest
+from launchverify.ir import actions as a
+from launchverify.models import lifecycle as lc
+
+OUTPUTS = ("screen", "log", "both")
+
+
+class PlanError(Exception):
+    """A launch that cannot be run as evaluated."""
+
+
+@dataclass
+class Process:
+    """A process the plan starts: its command and how launch supervises it."""
+
+    execution: int
+    launch: LaunchRecord
+    command: Command
+    name: str  # launch's process name before the ``-N`` suffix
+    output: str = "log"
+    respawn: bool = False
+    respawn_delay: float = 0.0
+    respawn_max_retries: int = -1  # -1: for ever
+    sigterm_timeout: float = 5.0
+    sigkill_timeout: float = 5.0
+    lifecycle_fqn: str | None = None  # a lifecycle node's name (autostart, transitions)
+    autostart: bool = False
+
+
+@dataclass
+class Plan:
+    """Everything ``run`` executes, keyed by execution index (``graph.executed``)."""
+
+    graph: LaunchGraph
+    blocks: dict[int | None, list[tuple[float | None, int]]]
+    processes: dict[int, Process]
+    registers: dict[int, list[int]]  # execution of a RegisterEventHandler: handler indices
+    requests: dict[int, list[TransitionRequest]]
+    notes: list[str] = field(default_factory=list)  # what will not be done, said up front
+
+    @property
+    def handlers(self) -> list[HandlerRecord]:
+        """Return the graph's handlers (indices are what ``within`` refers to)."""
+        return self.graph.handlers
+
+    def action(self, execution: int) -> object:
+        """Return the IR action of an execution."""
+        return self.graph.executed[execution].action
+
+
+def build_plan(graph: LaunchGraph, prefixes: list[Path], params_dir: Path) -> Plan:
+    """Return the plan of a graph under its arguments."""
+    blocks: dict[int | None, list[tuple[float | None, int]]] = defaultdict(list)
+    undecided = []
+    for index, record in enumerate(graph.executed):
+        runs = graph.runs(record.origin)
+        if runs is False:
+            continue
+        if runs is None:
+            undecided.append(record.origin.span.short())
+            continue
+        blocks[record.within].append((record.delay, index))
+    if undecided:
+        raise PlanError("conditions not known before run time (pin the arguments they "
+                        f"read with name:=value): {', '.join(undecided[:5])}")
+    builder = CommandBuilder(graph, prefixes, params_dir)
+    processes: dict[int, Process] = {}
+    errors = []
+    for launch in graph.launches:
+        if launch.execution is None or not graph.runs(launch.origin):
+            continue
+        try:
+            processes[launch.execution] = _process(graph, builder, launch)
+        except CommandError as error:
+            errors.append(f"{launch.origin.span.short()}: {error}")
+    if errors:
+        raise PlanError("cannot start:\n  " + "\n  ".join(errors))
+    registers: dict[int, list[int]] = defaultdict(list)
+    for number, handler in enumerate(graph.handlers):
+        if handler.execution is not None:
+            registers[handler.execution].append(number)
+    requests: dict[int, list[TransitionRequest]] = defaultdict(list)
+    for request in graph.requests:
+        if request.execution is not None and graph.runs(request.origin):
+            requests[request.execution].append(request)
+    plan = Plan(graph, dict(blocks), processes, dict(registers), dict(requests))
+    plan.notes.extend(_notes(plan))
+    return plan
+
+
+def _process(graph: LaunchGraph, builder: CommandBuilder, launch: LaunchRecord) -> Process:
+    settings = launch.settings
+    command = builder.build(launch)
+    output = graph.base(settings.output) if settings.output is not None else "log"
+    if output not in OUTPUTS:
+        output = "log"  # launch also accepts a dict of per-stream settings; logged
+    name = graph.base(settings.name) if settings.name is not None else None
+    if not name:
+        node = launch.node
+        executable = graph.base(node.executable) if node is not None else None
+        name = Path(executable or command.argv[0]).name
+    respawn = settings.respawn
+    if not isinstance(respawn, bool):
+        respawn = (graph.base(respawn) or "").strip().lower() in ("true", "1")
+    node = launch.node
+    fqn = graph.base(node.fqn) if node is not None and node.lifecycle else None
+    return Process(
+        execution=launch.execution or 0, launch=launch, command=command, name=name,
+        output=output, respawn=respawn, respawn_delay=settings.respawn_delay or 0.0,
+        respawn_max_retries=(-1 if settings.respawn_max_retries is None
+                             else settings.respawn_max_retries),
+        sigterm_timeout=_seconds(graph, settings.sigterm_timeout, "sigterm_timeout"),
+        sigkill_timeout=_seconds(graph, settings.sigkill_timeout, "sigkill_timeout"),
+        lifecycle_fqn=fqn,
+        autostart=node is not None and node.autostart is not None
+        and (graph.base(node.autostart) or "").lower() == "true",
+    )
+
+
+def _seconds(graph: LaunchGraph, value: object, configuration: str) -> float:
+    """Return a timeout: the process's own, else the launch configuration, else 5 s."""
+    text: str | None
+    if isinstance(value, (int, float)):
+        return float(value)
+    if value is not None:
+        text = graph.base(value)  # type: ignore[arg-type]
+    else:  # launch reads LaunchConfiguration(configuration, default=5)
+        text = graph.pinned.get(configuration) or next(
+            (graph.base(arg.value) for arg in graph.arguments if arg.name == configuration),
+            None)
+    try:
+        return float(text) if text else 5.0
+    except ValueError:
+        return 5.0
+
+
+def _notes(plan: Plan) -> list[str]:
+    """Return what the embedded executor will not do, so it is said before starting."""
+    notes = []
+    for execution in (i for block in plan.blocks.values() for _, i in block):
+        action = plan.action(execution)
+        if isinstance(action, (a.LoadComposableNodes, a.ComposableNodeContainer)) and (
+                isinstance(action, a.LoadComposableNodes) or action.composable_nodes):
+            notes.append(f"{plan.graph.executed[execution].origin.span.short()}: composable "
+                         "nodes are loaded through the container's ROS service; the "
+                         "embedded executor starts the container only (use --engine ros2)")
+        if isinstance(action, (a.OpaqueAction,)):
+            notes.append(f"{plan.graph.executed[execution].origin.span.short()}: "
+                         f"{action.description} is not run")
+    return notes
+
+
+def transition_label(transition: object) -> str:
+    """Return ``ros2 lifecycle set``'s word for a transition id (``configure``)."""
+    text = str(transition)
+    try:
+        known = lc.TRANSITIONS.get(int(text))
+    except ValueError:
+        known = None
+    return known.label if known is not None else text.lower()
