@@ -95,6 +95,7 @@ class Walker:
         self.handler_stack: list[int] = []  # the handlers whose entities are being run
         self.executing: list[int] = []  # graph.executed indices of the actions being run
         self.delays: list[float] = []  # periods of the timers around (since launch/handler)
+        self.at_shutdown = False  # walking an OnShutdown handler: no process starts
         self.executed_processes: set[tuple[object, ...]] = set()  # (action, file, loop)
         self.file_stack: list[tuple[Path, tuple[tuple[str | None, str], ...]]] = []
         self.incomplete = False  # something before this point was not understood
@@ -215,6 +216,8 @@ class Walker:
         if inner is None:
             self.graph.skipped.append(SkippedAction(action, ctx.origin(action.span)))
             return
+        if self.at_shutdown and isinstance(action, (a.ExecuteProcess, a.Node)):
+            return  # launch starts no process once shutdown has begun
         handler = getattr(self, "do_" + type(action).__name__, None)
         if handler is None:
             self.problem(ProblemKind.UNMODELED,
@@ -603,8 +606,13 @@ class Walker:
         index = self.record_handler(ctx.origin(action.span), handler.event, handler.target,
                                     handler.handle_once, handler.filters,
                                     handler.custom_matcher)
-        if handler.event == "shutdown":
-            return  # what runs at shutdown is not part of the running system
+        if handler.event == "shutdown":  # runs when the launch ends: logs, cleanup
+            at_shutdown, self.at_shutdown = self.at_shutdown, True
+            try:
+                self.run_handler(index, handler.entities, ctx)
+            finally:
+                self.at_shutdown = at_shutdown
+            return
         self.run_handler(index, handler.entities, ctx)
 
     def record_execution(self, action: a.Action, ctx: Ctx) -> bool:

@@ -152,7 +152,9 @@ def _seconds(graph: LaunchGraph, value: object, configuration: str) -> float:
 
 def _notes(plan: Plan) -> list[str]:
     """Return what the embedded executor will not do, so it is said before starting."""
-    notes = []
+    notes = [f"{h.origin.span.short()}: OnProcessIO callbacks are Python functions the "
+             "embedded executor does not call" for h in plan.handlers
+             if h.event == "process_io"]
     for execution in (i for block in plan.blocks.values() for _, i in block):
         action = plan.action(execution)
         if isinstance(action, (a.LoadComposableNodes, a.ComposableNodeContainer)) and (

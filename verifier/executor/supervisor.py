@@ -356,6 +356,13 @@ class Supervisor:
         for timer in list(self.timers):
             timer.cancel()
         self.timers.clear()
+        for number in sorted(self.active - self.spent):
+            handler = self.plan.handlers[number]
+            if handler.event == "shutdown":
+                if handler.once:
+                    self.spent.add(number)
+                self.event(f"handler shutdown {handler.origin.span.short()}")
+                self.execute_block(number)
         for running in list(self.running.values()):
             self.stop(running)
             if escalate:

@@ -21,7 +21,7 @@ def generate_launch_description():
             LogInfo(msg='short finished')])),
         first,
         short,
-        TimerAction(period=1.0, actions=[
+        TimerAction(period=2.0, actions=[
             LogInfo(msg='timer fired'),
             EmitEvent(event=Shutdown(reason='timer'))]),
     ])
