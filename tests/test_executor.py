@@ -308,3 +308,31 @@ def test_engine_ros2_needs_ros2(capsys: pytest.CaptureFixture[str], tmp_path: Pa
     launch.write_text(f'<launch><executable cmd="python3 {WORKER} a"/></launch>')
     assert main(["run", str(launch), "--engine", "ros2"]) == 2
     assert "--engine ros2 needs the ROS 2 command line" in capsys.readouterr().err
+
+
+def test_nothing_survives_launchverify_being_killed(tmp_path: Path) -> None:
+    """SIGKILL to launchverify itself: its guard kills every process group it started."""
+    launch = tmp_path / "two.launch.xml"
+    launch.write_text(f"""<launch>
+  <executable cmd="python3 {WORKER} a --spawn-child" name="a" output="screen"/>
+  <executable cmd="python3 {WORKER} b --ignore-signals" name="b" output="screen"/>
+</launch>
+""")
+    command = [str(Path(sys.executable).parent / "launchverify"), "run", str(launch),
+               "--log-dir", str(tmp_path / "logs")]
+    child = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                             text=True)
+    assert child.stdout is not None
+    lines = []
+    for line in child.stdout:
+        lines.append(line)
+        if sum("] ready " in x for x in lines) == 2 and any("] child " in x for x in lines):
+            break
+    child.kill()
+    child.wait(timeout=10)
+    events = events_of(tmp_path / "logs")
+    grandchild = int(next(x.split()[3] for x in lines if "] child " in x))
+    deadline = time.monotonic() + 5
+    while time.monotonic() < deadline and any(alive(p) for p in [*pids(events), grandchild]):
+        time.sleep(0.05)
+    assert not any(alive(p) for p in [*pids(events), grandchild])

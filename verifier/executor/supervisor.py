@@ -1,7 +1,8 @@
 """Run a plan: processes, handlers, timers, respawn, output and shutdown, as ros2 launch does.
 
 Every process starts in its own session (its own process group, so signals reach its
-children too) and, on Linux, dies with launchverify (``PR_SET_PDEATHSIG``). Shutdown
+children too); a guard process kills the groups if launchverify itself is killed
+(``guard.py``). Shutdown
 follows ``launch``: SIGINT to each process, SIGTERM ``sigterm_timeout`` seconds later,
 SIGKILL ``sigkill_timeout`` seconds after that; a second Ctrl-C (or SIGTERM to
 launchverify) escalates to SIGTERM at once, a third to SIGKILL. Whatever happens, no
@@ -16,16 +17,15 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
-import ctypes
 import os
 import signal
-import sys
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TextIO
 
+from launchverify.executor.guard import Guard
 from launchverify.executor.plan import Plan, Process, transition_label
 from launchverify.graph import TransitionRequest
 from launchverify.ir import actions as a
@@ -44,13 +44,6 @@ class Running:
     started: float
     shutdown_timers: list[asyncio.TimerHandle] = field(default_factory=list)
     signalled: bool = False  # we asked it to stop
-
-
-def _die_with_parent() -> None:  # pragma: no cover - runs in the child
-    """Ask Linux to SIGKILL the child when launchverify dies (best effort)."""
-    if sys.platform.startswith("linux"):
-        with contextlib.suppress(OSError, AttributeError):
-            ctypes.CDLL(None, use_errno=True).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
 
 
 class Supervisor:
@@ -82,6 +75,7 @@ class Supervisor:
         self.event_log = (run_dir / "events.log").open("a", encoding="utf-8")
         self.launch_log = (run_dir / "launch.log").open("a", encoding="utf-8")
         self.lifecycle_warned = False
+        self.guard = Guard()
 
     # ------------------------------------------------------------------ reporting
 
@@ -106,6 +100,7 @@ class Supervisor:
         loop = asyncio.get_running_loop()
         for number in (signal.SIGINT, signal.SIGTERM):
             loop.add_signal_handler(number, self.on_signal, number)
+        await self.guard.start()
         try:
             for note in self.plan.notes:
                 self.say("launch", note, level="WARNING")
@@ -118,6 +113,7 @@ class Supervisor:
             self.kill_everything()
             for task in list(self.tasks):
                 task.cancel()
+            await self.guard.close()
             self.event_log.close()
             self.launch_log.close()
         return 1 if self.failures else 0
@@ -262,13 +258,13 @@ class Supervisor:
                     " ".join(command.argv), cwd=command.cwd, env=self.environment(process),
                     stdin=asyncio.subprocess.DEVNULL, stdout=asyncio.subprocess.PIPE,
                     stderr=asyncio.subprocess.PIPE, start_new_session=True,
-                    preexec_fn=_die_with_parent, limit=LINE_LIMIT)
+                    limit=LINE_LIMIT)
             else:
                 child = await asyncio.create_subprocess_exec(
                     *command.argv, cwd=command.cwd, env=self.environment(process),
                     stdin=asyncio.subprocess.DEVNULL, stdout=asyncio.subprocess.PIPE,
                     stderr=asyncio.subprocess.PIPE, start_new_session=True,
-                    preexec_fn=_die_with_parent, limit=LINE_LIMIT)
+                    limit=LINE_LIMIT)
         except OSError as error:
             log.close()
             self.failures.append(f"{label}: {error}")
@@ -277,6 +273,7 @@ class Supervisor:
             return
         running = Running(process, label, child, log, self.now())
         self.running[child.pid] = running
+        self.guard.add(child.pid)
         self.event(f"start {label} {child.pid}")
         self.say(label, f"process started with pid [{child.pid}]")
         self.fire("process_start", execution)
@@ -291,6 +288,7 @@ class Supervisor:
         for timer in running.shutdown_timers:
             timer.cancel()
         del self.running[child.pid]
+        self.guard.remove(child.pid)
         log.close()
         self.exited(running, execution, code)
 
