@@ -336,3 +336,13 @@ def test_nothing_survives_launchverify_being_killed(tmp_path: Path) -> None:
     while time.monotonic() < deadline and any(alive(p) for p in [*pids(events), grandchild]):
         time.sleep(0.05)
     assert not any(alive(p) for p in [*pids(events), grandchild])
+
+
+def test_dry_run_shows_missing_executables_instead_of_failing(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    launch = tmp_path / "missing.launch.xml"
+    launch.write_text('<launch><node pkg="demo_nodes_cpp" exec="talker" name="t"/></launch>')
+    assert main(["run", str(launch), "--dry-run"]) == 0
+    out = capsys.readouterr().out
+    assert "start talker: '<lib/demo_nodes_cpp/talker: not found>' --ros-args" in out
+    assert "note: executable 'talker' of package 'demo_nodes_cpp' not found" in out

@@ -65,8 +65,11 @@ def find_executable(package: str, executable: str, prefixes: Iterable[Path]) -> 
 class CommandBuilder:
     """Builds the commands of one graph's processes under its arguments."""
 
-    def __init__(self, graph: LaunchGraph, prefixes: list[Path], params_dir: Path) -> None:
+    def __init__(self, graph: LaunchGraph, prefixes: list[Path], params_dir: Path, *,
+                 strict: bool = True) -> None:
         self.graph = graph
+        self.strict = strict  # False (dry runs): a missing executable is shown, not fatal
+        self.missing: list[str] = []
         self.prefixes = prefixes
         self.params_dir = params_dir
         self.counter = 0
@@ -120,7 +123,13 @@ class CommandBuilder:
         executable = self.text(node.executable, "the executable")
         if node.package is not None:
             package = self.text(node.package, "the package")
-            program = str(find_executable(package, executable, self.prefixes))
+            try:
+                program = str(find_executable(package, executable, self.prefixes))
+            except CommandError as error:
+                if self.strict:
+                    raise
+                self.missing.append(str(error))
+                program = f"<lib/{package}/{executable}: not found>"
         else:
             program = self.program(executable)
         argv = [program, *(self.text(a, "an argument") for a in launch.arguments)]

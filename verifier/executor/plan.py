@@ -64,8 +64,9 @@ class Plan:
         return self.graph.executed[execution].action
 
 
-def build_plan(graph: LaunchGraph, prefixes: list[Path], params_dir: Path) -> Plan:
-    """Return the plan of a graph under its arguments."""
+def build_plan(graph: LaunchGraph, prefixes: list[Path], params_dir: Path, *,
+               strict: bool = True) -> Plan:
+    """Return the plan of a graph under its arguments (``strict``: every executable found)."""
     blocks: dict[int | None, list[tuple[float | None, int]]] = defaultdict(list)
     undecided = []
     for index, record in enumerate(graph.executed):
@@ -79,7 +80,7 @@ def build_plan(graph: LaunchGraph, prefixes: list[Path], params_dir: Path) -> Pl
     if undecided:
         raise PlanError("conditions not known before run time (pin the arguments they "
                         f"read with name:=value): {', '.join(undecided[:5])}")
-    builder = CommandBuilder(graph, prefixes, params_dir)
+    builder = CommandBuilder(graph, prefixes, params_dir, strict=strict)
     processes: dict[int, Process] = {}
     errors = []
     for launch in graph.launches:
@@ -101,6 +102,7 @@ def build_plan(graph: LaunchGraph, prefixes: list[Path], params_dir: Path) -> Pl
             requests[request.execution].append(request)
     plan = Plan(graph, dict(blocks), processes, dict(registers), dict(requests))
     plan.notes.extend(_notes(plan))
+    plan.notes.extend(builder.missing)
     return plan
 
 

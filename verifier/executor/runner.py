@@ -54,7 +54,8 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
     run_dir = (options.log_dir or log_root()) / f"launchverify-{stamp}-{os.getpid()}"
     workspace = options.check.workspace or _workspace_of(report)
     try:
-        plan = build_plan(root, install_prefixes(workspace), run_dir / "params")
+        plan = build_plan(root, install_prefixes(workspace), run_dir / "params",
+                          strict=not options.dry_run)
     except PlanError as error:
         raise UsageError(str(error)) from error
     if options.dry_run:
