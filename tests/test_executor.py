@@ -79,7 +79,7 @@ def test_start_up_handlers_timers_and_shutdown_in_order(
     shutdown = events.index("shutdown timer")
     assert exit_short < shutdown
     assert "[INFO] [launch.user]: short finished" in out
-    assert out.index("short finished") < out.index("timer fired")
+    assert out.index("short finished") < out.index("short complete") < out.index("timer fired")
     after = events[shutdown:]
     assert {"signal python3-1 SIGINT", "signal python3-3 SIGINT"} <= set(after)
     assert not any(alive(pid) for pid in pids(events))

@@ -4,7 +4,7 @@ import os
 from launch import LaunchDescription
 from launch.actions import (EmitEvent, ExecuteProcess, LogInfo, RegisterEventHandler,
                             TimerAction)
-from launch.event_handlers import OnProcessExit, OnProcessStart
+from launch.event_handlers import OnExecutionComplete, OnProcessExit, OnProcessStart
 from launch.events import Shutdown
 
 WORKER = os.path.join(os.path.dirname(__file__), '..', 'nodes', 'worker.py')
@@ -19,6 +19,8 @@ def generate_launch_description():
         RegisterEventHandler(OnProcessStart(target_action=first, on_start=[second])),
         RegisterEventHandler(OnProcessExit(target_action=short, on_exit=[
             LogInfo(msg='short finished')])),
+        RegisterEventHandler(OnExecutionComplete(target_action=short, on_completion=[
+            LogInfo(msg='short complete')])),
         first,
         short,
         TimerAction(period=2.0, actions=[
