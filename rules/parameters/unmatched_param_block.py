@@ -198,8 +198,11 @@ def _mentions(text: str | None, spellings: set[str]) -> bool:
 
 def _closest(key: str, names: dict[str, str]) -> str:
     """Return " (did you mean '/robot1/listener'?)" for the node a block was likely for."""
-    last = key.rpartition("/")[2]
-    if last in names:
-        return f" (did you mean {names[last]!r}?)"
-    close = difflib.get_close_matches(last, sorted(names), n=1, cutoff=0.75)
-    return f" (did you mean {names[close[0]]!r}?)" if close else ""
+    prefix, _, last = key.rpartition("/")
+    found = last if last in names else next(
+        iter(difflib.get_close_matches(last, sorted(names), n=1, cutoff=0.75)), None)
+    if found is None:
+        return ""
+    # a wildcard key keeps its wildcard: '/**/colision_monitor' -> '/**/collision_monitor'
+    suggestion = f"{prefix}/{found}" if "*" in prefix else names[found]
+    return f" (did you mean {suggestion!r}?)"

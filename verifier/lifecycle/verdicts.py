@@ -434,7 +434,10 @@ def unknown_managed_nodes(graph: LaunchGraph, analysis: Analysis,
             if may_be(resolved):
                 continue
             base = resolved.rsplit("/", 1)[-1]
+            # a node of that name in one other namespace is likely the one meant; in a
+            # fleet, where every robot has one, naming another robot's would mislead
             elsewhere = sorted(f for f in known if f.rsplit("/", 1)[-1] == base)
+            elsewhere = elsewhere if len(elsewhere) == 1 else []
             siblings = [f for f in known if f.rsplit("/", 1)[0] == resolved.rsplit("/", 1)[0]]
             suggestion = None if elsewhere else typo_of(resolved, siblings)
             out.append((asked, UnknownManagedNode(
