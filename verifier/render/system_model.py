@@ -187,7 +187,10 @@ def _mark(finding: Finding, anchor: str) -> Mark:
 
 def _group(nodes: list[SystemNode]) -> Namespace:
     """Return the namespace tree; components go inside their container when it runs."""
-    by_fqn = {n.fqn: n for n in nodes if n.kind == "node_container"}
+    # a container is a node_container, or any node components are loaded into (nav2
+    # starts component_container_isolated as a plain Node)
+    hosts = {n.container for n in nodes if n.container}
+    by_fqn = {n.fqn: n for n in nodes if n.kind == "node_container" or n.fqn in hosts}
     root = Namespace("/", "/")
     for node in nodes:
         host = by_fqn.get(node.container or "") if node.kind.startswith("composable") else None
