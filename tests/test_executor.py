@@ -346,3 +346,29 @@ def test_dry_run_shows_missing_executables_instead_of_failing(
     out = capsys.readouterr().out
     assert "start talker: '<lib/demo_nodes_cpp/talker: not found>' --ros-args" in out
     assert "note: executable 'talker' of package 'demo_nodes_cpp' not found" in out
+
+
+def test_commands_and_the_environment_are_resolved_when_the_launch_runs(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("WORKER_NAME", "from-env")
+    launch = tmp_path / "cmd.launch.xml"
+    launch.write_text(f"""<launch>
+  <executable cmd="python3 {WORKER} $(env WORKER_NAME) --finish-after 0.1" name="w"
+              output="screen"/>
+  <node exec="{sys.executable}" name="described" output="screen"
+        args="{WORKER} described --finish-after 0.1">
+    <param name="robot_description"
+           value="$(command '{sys.executable} -c &quot;print(42)&quot;')"/>
+  </node>
+</launch>
+""")
+    assert main(["run", str(launch), "--dry-run"]) == 0
+    plan = capsys.readouterr().out
+    assert "robot_description: <output of $(command" in plan  # a dry run runs nothing
+    code, _, out = run(capsys, tmp_path / "logs", launch)
+    assert code == 0
+    assert "[w-1] ready from-env" in out
+    line = next(x for x in out.splitlines() if "] ready described" in x)
+    params = Path(line.split("--params-file ")[1].split()[0])
+    assert "robot_description: 42" in params.read_text()

@@ -403,6 +403,10 @@ class LaunchGraph:
             return None
         return text_of(self._base.reduce(sub))
 
+    def reduced(self, sub: Sub) -> Sub:
+        """Return a value reduced under the given arguments, as far as it goes."""
+        return self._base.reduce(sub)
+
     def runs(self, origin: Origin) -> bool | None:
         """Return whether a record runs under the given arguments (``None``: unknown)."""
         result: bool | None = True

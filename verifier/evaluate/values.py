@@ -15,6 +15,7 @@ from collections.abc import Callable
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import (
     Arg,
+    CommandOutput,
     EnvInput,
     Guard,
     NsPrefix,
@@ -54,7 +55,7 @@ class Reducer:
             s.LaunchConfig: self._config,
             s.EnvVar: self._env,
             s.PythonExpr: self._eval,
-            s.Command: lambda x: Unknown(f"output of {x.describe()}"),
+            s.Command: self._command,
             s.FindExecutable: lambda x: Unknown(f"{x.describe()} on the PATH"),
             s.FindPackageShare: self._pkg_share,
             s.FindPackagePrefix: self._pkg_prefix,
@@ -84,6 +85,7 @@ class Reducer:
             Arg: lambda x: self.arg(x) if isinstance(x, Arg) else x,
             EnvInput: lambda x: self.env_input(x) if isinstance(x, EnvInput) else x,
             Unknown: lambda x: x,
+            CommandOutput: lambda x: x,
             Unset: lambda x: x,
             Select: self._select,
             NsPrefix: self._ns_prefix,
@@ -229,6 +231,12 @@ class Reducer:
         except Unsupported as error:
             self.unmodeled(f"{error}: {text!r}")
         return Unknown(f"value of $(eval {text!r})")
+
+    def _command(self, sub: s.Sub) -> s.Sub:
+        """A command's output: never run statically, but kept runnable for ``run``."""
+        assert isinstance(sub, s.Command)
+        on_stderr = None if sub.on_stderr is None else self.reduce(sub.on_stderr)
+        return CommandOutput(f"output of {sub.describe()}", self.reduce(sub.command), on_stderr)
 
     def _pkg_share(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.FindPackageShare)

@@ -20,7 +20,8 @@ from pathlib import Path
 import yaml
 
 from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, ParamRecord
-from launchverify.ir.subst import Sub
+from launchverify.ir.subst import Concat, Sub, Text
+from launchverify.ir.symbolic import CommandOutput
 from launchverify.models.parameter_values import typed_parameter
 
 
@@ -76,13 +77,40 @@ class CommandBuilder:
         self.pending_files: dict[Path, str] = {}
 
     def text(self, sub: Sub | None, what: str) -> str:
-        """Return a value, or fail when it depends on something unknown before run time."""
+        """Return a value, or fail when it depends on something unknown before run time.
+
+        ``$(command ...)`` parts are run now, as launch runs them when the action
+        executes (in a dry run they are shown instead).
+        """
         if sub is None:
             return ""
         value = self.graph.base(sub)
+        if value is not None:
+            return value
+        value = self.materialize(self.graph.reduced(sub))
         if value is None:
+            if not self.strict:
+                return sub.describe()
             raise CommandError(f"{what} is not known before run time ({sub.describe()})")
         return value
+
+    def materialize(self, sub: Sub) -> str | None:
+        """Return a reduced value's text, running the commands it holds (``None``: no)."""
+        if isinstance(sub, Text):
+            return sub.text
+        if isinstance(sub, Concat):
+            texts = []
+            for part in sub.parts:
+                text = self.materialize(part)
+                if text is None:
+                    return None
+                texts.append(text)
+            return "".join(texts)
+        if isinstance(sub, CommandOutput) and self.strict:
+            command = self.materialize(sub.command)
+            on_stderr = "fail" if sub.on_stderr is None else self.materialize(sub.on_stderr)
+            return None if command is None else run_command(command, on_stderr or "fail")
+        return None
 
     def build(self, launch: LaunchRecord) -> Command:
         """Return the command of one process."""
@@ -208,3 +236,21 @@ def _yaml_value(value: object) -> str:
     """Return a value as one line of YAML (``-p name:=VALUE``)."""
     text = yaml.safe_dump(value, default_flow_style=True, width=1 << 20).strip()
     return text.removesuffix("...").strip()
+
+
+def run_command(command: str, on_stderr: str) -> str:
+    """Run a ``$(command ...)`` as launch does: its stdout, unstripped; failures raise."""
+    import shlex
+    import subprocess
+
+    try:
+        done = subprocess.run(shlex.split(command), capture_output=True, text=True,
+                              timeout=120, check=False)
+    except (OSError, ValueError, subprocess.TimeoutExpired) as error:
+        raise CommandError(f"$(command {command}) failed: {error}") from error
+    if done.returncode != 0:
+        raise CommandError(f"$(command {command}) exited with {done.returncode}: "
+                           f"{done.stderr.strip()[:500]}")
+    if done.stderr and on_stderr == "fail":
+        raise CommandError(f"$(command {command}) wrote to stderr: {done.stderr.strip()[:500]}")
+    return done.stdout

@@ -40,7 +40,12 @@ def log_root() -> Path:
 
 
 def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
-    """Verify the launch file; unless refused, run it. Return the exit code and the check."""
+    """Verify the launch file; unless refused, run it. Return the exit code and the check.
+
+    The check sees the real environment (plus ``--env``): ``$(env ...)`` takes the values
+    the processes will see, as ros2 launch does.
+    """
+    options.check.environment = {**os.environ, **options.check.environment}
     report = run_check(options.check)
     errors = [f for f in report.findings if f.severity is Severity.ERROR]
     if errors and not options.force:

@@ -59,6 +59,20 @@ class Unknown(Sub):
 
 
 @dataclass(frozen=True, slots=True)
+class CommandOutput(Unknown):
+    """What ``$(command ...)`` prints: unknown statically; ``launchverify run`` runs it.
+
+    ``command`` is the command line as far as it could be reduced.
+    """
+
+    command: Sub = field(default=None)  # type: ignore[assignment]
+    on_stderr: Sub | None = None
+
+    def children(self) -> tuple[Sub, ...]:
+        return tuple(s for s in (self.command, self.on_stderr) if s is not None)
+
+
+@dataclass(frozen=True, slots=True)
 class Unset(Sub):
     """No value: a configuration not set on some path (reading it fails at run time)."""
 
