@@ -207,3 +207,35 @@ def test_syntax_error_and_missing_entry_point(tmp_path: Path) -> None:
     empty = write(tmp_path, "empty.launch.py", "\nVALUE = 1\n")
     [(code, _, message)] = findings(empty)
     assert code == "LV001" and "generate_launch_description" in message
+
+
+@pytest.mark.parametrize(("key", "runs"), [("slam_toolbox", [True, False]),
+                                           ("amcl", [False, True])])
+def test_nav2_has_node_params_reads_the_parameter_file(tmp_path: Path, key: str,
+                                                       runs: list[bool]) -> None:
+    (tmp_path / "params.yaml").write_text(f"{key}:\n  ros__parameters:\n    x: 1\n")
+    path = tmp_path / "slam.launch.py"
+    path.write_text("""
+import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition, UnlessCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from nav2_common.launch import HasNodeParams
+
+
+def generate_launch_description():
+    params = LaunchConfiguration('params_file')
+    has = HasNodeParams(source_file=params, node_name='slam_toolbox')
+    return LaunchDescription([
+        DeclareLaunchArgument('params_file', default_value=os.path.join(
+            os.path.dirname(__file__), 'params.yaml')),
+        Node(package='slam_toolbox', executable='a', name='with_params',
+             condition=IfCondition(has)),
+        Node(package='slam_toolbox', executable='b', name='without_params',
+             condition=UnlessCondition(has)),
+    ])
+""")
+    graph = run_check(CheckOptions(paths=[path], workspace=tmp_path)).graphs[0]
+    assert [graph.runs(node.origin) for node in graph.nodes] == runs

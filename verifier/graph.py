@@ -8,7 +8,7 @@ the arguments as given (command line, then defaults): what ``ros2 launch`` would
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -377,12 +377,18 @@ class LaunchGraph:
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into
+    # Reads a workspace file for values that depend on file content (set by the evaluator).
+    file_reader: Callable[[str], str | None] | None = field(default=None, repr=False)
     # What is computed from the records once and asked for again (effective parameters).
     derived: dict[str, dict[int, object]] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
-        self._base = BaseReducer(self.inputs())
+        self._base = BaseReducer(self.inputs(), read=self.read_file)
         self._verdicts: dict[Guard, bool | None] = {}
+
+    def read_file(self, path: str) -> str | None:
+        """Return a workspace file's text for the base view (``None``: not readable)."""
+        return self.file_reader(path) if self.file_reader is not None else None
 
     def inputs(self) -> dict[str, str]:
         """Return the fixed inputs: arguments by name, environment variables as ``env:NAME``."""

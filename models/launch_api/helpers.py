@@ -74,8 +74,10 @@ class HasNodeParams(Substitution):
         self.source_file, self.node_name = source_file, node_name
 
     def to_sub(self, cv: Converter) -> s.Sub:
+        # 'True' when the file's top-level keys include the node name (read when known)
         return s.Rewritten(s.Opaque(f"HasNodeParams {self.node_name}"),
-                           (cv.sub(self.source_file),), "HasNodeParams")
+                           (cv.sub(self.source_file), s.Text(str(self.node_name))),
+                           "HasNodeParams")
 
 
 class ParseMultiRobotPose(Substitution):

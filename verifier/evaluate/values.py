@@ -12,6 +12,8 @@ from __future__ import annotations
 import os
 from collections.abc import Callable
 
+import yaml
+
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import (
     Arg,
@@ -372,14 +374,29 @@ class Reducer:
         source: it stays an expression (its path and content are not known statically).
         """
         assert isinstance(sub, s.Rewritten)
-        for item in sub.inputs:
-            self.reduce(item)
+        inputs = [self.reduce(item) for item in sub.inputs]
+        if sub.description == "HasNodeParams" and len(inputs) == 2:
+            return self._has_node_params(sub, inputs[0], text_of(inputs[1]))
         source = self.reduce(sub.source)
         if sub.root_key is not None:
             root = self.reduce(sub.root_key)
             if text_of(root) != "":
                 return s.Rewritten(source, (), sub.description, root)
         return source
+
+    def _has_node_params(self, sub: s.Rewritten, path: s.Sub, node: str | None) -> s.Sub:
+        """nav2's HasNodeParams: 'True' when the YAML file has a top-level key ``node``."""
+        name = text_of(path)
+        content = self.file_content(name) if name is not None else None
+        text = text_of(content) if content is not None else None
+        unknown = s.Rewritten(sub.source, (path, s.Text(node or "")), sub.description)
+        if text is None or node is None:
+            return unknown  # the base view may read the file later
+        try:
+            data = yaml.safe_load(text)
+        except yaml.YAMLError:
+            return unknown
+        return s.Text("True" if isinstance(data, dict) and node in data else "False")
 
     def _as_bool(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.AsBool)
@@ -445,9 +462,15 @@ class BaseReducer(Reducer):
     environment variables. Inputs with neither a pinned value nor a default stay symbolic.
     """
 
-    def __init__(self, pinned: dict[str, str] | None = None) -> None:
+    def __init__(self, pinned: dict[str, str] | None = None,
+                 read: Callable[[str], str | None] | None = None) -> None:
         super().__init__()
         self.pinned = pinned or {}
+        self.read = read
+
+    def file_content(self, path: str) -> s.Sub:
+        text = self.read(path) if self.read is not None else None
+        return Unknown(f"content of {path}") if text is None else s.Text(text)
 
     def config(self, name: str, default: s.Sub | None) -> s.Sub:
         return Unknown(f"configuration {name}")

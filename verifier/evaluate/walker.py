@@ -82,6 +82,7 @@ class Walker:
     def __init__(self, graph: LaunchGraph, index: PackageIndex,
                  loader: FileCache, workspace: Path) -> None:
         self.graph = graph
+        graph.file_reader = self.workspace_text
         self.index = index
         self.loader = loader
         self.workspace = workspace
@@ -134,6 +135,18 @@ class Walker:
             found = self.index.find(name) is not None
             self.record_package(name, Origin(span, ctx.chain, ctx.path), found, "lookup")
 
+    def workspace_text(self, path: str) -> str | None:
+        """Return a workspace file's text (``None`` outside it, missing or too large)."""
+        located = self.index.locate(Path(path))
+        if located is None or not located.resolve().is_relative_to(self.workspace):
+            return None
+        try:
+            with located.open("rb") as handle:
+                data = handle.read(MAX_FILE_CONTENT + 1)
+        except OSError:
+            return None
+        return None if len(data) > MAX_FILE_CONTENT else data.decode("utf-8", "replace")
+
     def read_file_content(self, path: str, origin: Origin) -> s.Sub:
         """Return ``$(file-content)`` of a workspace file, never reading outside it."""
         located = self.index.locate(Path(path))
@@ -146,14 +159,8 @@ class Walker:
         if not located.resolve().is_relative_to(self.workspace):
             return Unknown(f"content of {path}")
         self.graph.file_refs.append(FileRef(path, origin, True, "file-content"))
-        try:
-            with located.open("rb") as handle:
-                data = handle.read(MAX_FILE_CONTENT + 1)
-        except OSError:
-            return Unknown(f"content of {path}")
-        if len(data) > MAX_FILE_CONTENT:
-            return Unknown(f"content of {path}")
-        return s.Text(data.decode("utf-8", "replace"))
+        text = self.workspace_text(path)
+        return Unknown(f"content of {path}") if text is None else s.Text(text)
 
     # ------------------------------------------------------------------ entry
 

@@ -143,7 +143,11 @@ class CommandBuilder:
             return word
         found = shutil.which(word)
         if found is None:
-            raise CommandError(f"program '{word}' not found on PATH")
+            error = f"program '{word}' not found on PATH"
+            if self.strict:
+                raise CommandError(error)
+            self.missing.append(error)
+            return word
         return found
 
     def node_argv(self, launch: LaunchRecord, node: NodeRecord) -> list[str]:
