@@ -289,18 +289,19 @@ def _run(args: argparse.Namespace) -> int:
     paths, arguments = parse_arguments(args.targets)
     if len(paths) != 1 or not Path(paths[0]).is_file():
         raise UsageError("run takes exactly one launch file")
+    def checked(report: Report, refused: bool) -> None:
+        if report.findings:
+            render_text(report, sys.stderr, color=None, quiet=True)
+        if refused:
+            print("launchverify: not started: the check found errors (--force starts "
+                  "anyway)", file=sys.stderr)
+
     options = RunOptions(
         check=CheckOptions(paths=[Path(paths[0])], arguments=arguments,
                            workspace=args.workspace, environment=parse_environment(args.env)),
         dry_run=args.dry_run, force=args.force, engine=args.engine, log_dir=args.log_dir,
-        arguments=arguments)
-    status, report = run(options, sys.stdout, sys.stderr)
-    if report.findings and (status == 1 or args.dry_run):
-        render_text(report, sys.stderr, color=None, quiet=True)
-    if status == 1 and any(f.severity is Severity.ERROR for f in report.findings) \
-            and not args.force:
-        print("launchverify: not started: the check found errors (--force starts anyway)",
-              file=sys.stderr)
+        arguments=arguments, on_checked=checked)
+    status, _ = run(options, sys.stdout, sys.stderr)
     return status
 
 

@@ -7,6 +7,7 @@ import os
 import shutil
 import subprocess
 import time
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TextIO
@@ -29,6 +30,8 @@ class RunOptions:
     engine: str = "embedded"
     log_dir: Path | None = None
     arguments: dict[str, str] = field(default_factory=dict)
+    # told the check's outcome before anything starts (and whether the start is refused)
+    on_checked: Callable[[Report, bool], None] | None = None
 
 
 def log_root() -> Path:
@@ -47,8 +50,10 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
     """
     options.check.environment = {**os.environ, **options.check.environment}
     report = run_check(options.check)
-    errors = [f for f in report.findings if f.severity is Severity.ERROR]
-    if errors and not options.force:
+    refused = any(f.severity is Severity.ERROR for f in report.findings) and not options.force
+    if options.on_checked is not None:
+        options.on_checked(report, refused)
+    if refused:
         return 1, report
     if not report.graphs:
         raise UsageError("nothing to run")
