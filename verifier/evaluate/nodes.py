@@ -57,7 +57,7 @@ class NodeBuilder:
         reducer = self.walker.reducer.at(ctx, action.at("namespace"))
         own_ns = None if action.namespace is None else reducer.reduce(action.namespace)
         namespace = ns_prefix(self.pushed_namespace(reducer), own_ns)
-        if namespace is not None:
+        if namespace is not None and own_ns is not None:  # a pushed one is checked at its push
             self.walker.record_name("namespace", namespace, ctx.origin(action.at("namespace")))
         fqn = None
         if name is not None:  # without any namespace, a node is in "/"
@@ -104,7 +104,7 @@ class NodeBuilder:
             self.walker.record_name("node name", name, inner.origin(node.at("name")))
         own_ns = None if node.namespace is None else reducer.reduce(node.namespace)
         namespace = ns_prefix(self.pushed_namespace(reducer), own_ns)
-        if namespace is not None:
+        if namespace is not None and own_ns is not None:
             self.walker.record_name("namespace", namespace, inner.origin(node.at("namespace")))
         fqn = None
         if name is not None:
