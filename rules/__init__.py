@@ -13,6 +13,7 @@ from launchverify.rules.conditions.invalid_condition_value import InvalidConditi
 from launchverify.rules.conditions.unreachable_condition import UnreachableCondition
 from launchverify.rules.events.dangling_event_target import DanglingEventTarget
 from launchverify.rules.events.event_cycle import EventCycle
+from launchverify.rules.files.duplicate_package import DuplicatePackage
 from launchverify.rules.files.include_cycle import IncludeCycle
 from launchverify.rules.files.missing_file import MissingFile
 from launchverify.rules.files.unknown_executable import UnknownExecutable
@@ -54,6 +55,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     MissingFile,              # LV302
     UnknownPackage,           # LV303
     UnknownExecutable,        # LV304
+    DuplicatePackage,         # LV305
     ParamFileError,           # LV401
     UnmatchedParamBlock,      # LV402
     ParamTypeConflict,        # LV403

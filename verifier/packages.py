@@ -119,6 +119,7 @@ class PackageIndex:
 
     def __init__(self, workspaces: Iterable[Path] = (), prefixes: Iterable[Path] = ()) -> None:
         self._packages: dict[str, Package] = {}
+        self.sources: dict[str, list[Path]] = {}  # every source folder of each name
         self.workspaces = [w.resolve() for w in workspaces]
         self.prefixes = [p.resolve() for p in prefixes]
         self.has_install = bool(self.prefixes)
@@ -131,6 +132,9 @@ class PackageIndex:
                 for name in scan_prefix(prefix):
                     self._add(Package(name, prefix=prefix))
             for name, folder in scan_sources(workspace):
+                folders = self.sources.setdefault(name, [])
+                if folder not in folders:
+                    folders.append(folder)
                 self._add(Package(name, source=folder))
 
     @classmethod
@@ -151,6 +155,11 @@ class PackageIndex:
             source=known.source or package.source,
             prefix=package.prefix or known.prefix,
         )
+
+    def duplicates(self, name: str) -> list[Path]:
+        """Return the source folders of a name defined more than once (else empty)."""
+        folders = self.sources.get(name, [])
+        return folders if len(folders) > 1 else []
 
     def find(self, name: str) -> Package | None:
         """Return the package called ``name``, if any."""
