@@ -15,6 +15,7 @@ from launchverify.cli import main
 from launchverify.engine import CheckOptions, run_check
 from launchverify.graph import LaunchGraph
 from launchverify.lifecycle import analyse
+from launchverify.models import distros
 from launchverify.models import lifecycle as lc
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus" / "lifecycle"
@@ -55,6 +56,7 @@ def reached(path: Path) -> dict[str, list[str]]:
 
 def test_state_machine_doctests() -> None:
     assert doctest.testmod(lc).failed == 0
+    assert doctest.testmod(distros).failed == 0
 
 
 @pytest.mark.parametrize(("state", "transition", "goal"), [
@@ -313,3 +315,31 @@ def test_the_reduction_agrees_on_random_bringups(tmp_path: Path, body: str) -> N
         assert summary(path) == reduced
     finally:
         module.REDUCE = True
+
+
+@pytest.mark.parametrize(("distro", "codes"), [
+    (None, []),
+    ("rolling", []),
+    ("jazzy", ["LV001"]),  # <lifecycle_node> is a rolling tag; autostart exists in jazzy
+    ("humble", ["LV001", "LV002"]),  # and humble has no autostart at all
+])
+def test_lifecycle_features_follow_the_distribution(
+        distro: str | None, codes: list[str], capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    tree = CORPUS / "configure_activate_chain"
+    autostart = CORPUS / "double_management" / "double.launch.py"
+    argv = ["check", str(tree / "chain.launch.xml"), str(autostart), "--format", "json",
+            "--select", "LV001,LV002"]
+    main([*argv, *(["--distro", distro] if distro else [])])
+    found = sorted({f["code"] for f in json.loads(capsys.readouterr().out)["findings"]})
+    assert found == codes
+
+
+def test_ros_distro_of_a_sourced_installation_is_the_default(
+        capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("ROS_DISTRO", "humble")
+    main(["check", str(CORPUS / "double_management" / "double.launch.py"), "--format",
+          "json", "--select", "LV002"])
+    messages = [f["message"] for f in json.loads(capsys.readouterr().out)["findings"]]
+    assert messages and "is not in humble (since jazzy)" in messages[0]

@@ -31,6 +31,7 @@ from launchverify.engine import (
     parse_environment,
     run_check,
 )
+from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.rule import Rule, Severity
 
@@ -65,6 +66,9 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
                          help="ignore configuration files")
     command.add_argument("--baseline", type=Path, metavar="FILE",
                          help="report only findings not recorded in FILE")
+    command.add_argument("--distro", choices=DISTROS,
+                         help="the ROS 2 distribution to check for (default: $ROS_DISTRO, "
+                         "else features of every distribution are accepted)")
     command.add_argument("--launch-files-only", action="store_true",
                          help="skip given files that do not look like launch files (as in "
                          "folders); for pre-commit, which passes every matching file")
@@ -212,9 +216,16 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         exclude=[*args.exclude, *excluded_by_ament()],
         baseline=args.baseline,
         launch_files_only=args.launch_files_only,
+        distro=args.distro or config.distro or _ros_distro(),
         progress=_progress_bar() if progress else None,
     )
     return options, config
+
+
+def _ros_distro() -> str | None:
+    """Return the sourced installation's distribution (``ROS_DISTRO``) when it is known."""
+    distro = os.environ.get("ROS_DISTRO", "").strip().lower()
+    return distro if distro in DISTROS else None
 
 
 def _check(args: argparse.Namespace) -> int:
@@ -298,7 +309,8 @@ def _run(args: argparse.Namespace) -> int:
 
     options = RunOptions(
         check=CheckOptions(paths=[Path(paths[0])], arguments=arguments,
-                           workspace=args.workspace, environment=parse_environment(args.env)),
+                           workspace=args.workspace, environment=parse_environment(args.env),
+                           distro=_ros_distro()),
         dry_run=args.dry_run, force=args.force, engine=args.engine, log_dir=args.log_dir,
         arguments=arguments, on_checked=checked)
     status, _ = run(options, sys.stdout, sys.stderr)

@@ -14,6 +14,7 @@ not count), as ruff and mypy find theirs. Relative paths in it are relative to i
     package-paths = ["/opt/ros/jazzy", "../vendor_ws/src"]
     severity = {LV404 = "error", LV202 = "info"}
     fail-on = "warning"
+    distro = "humble"                        # default: $ROS_DISTRO, else any
 """
 
 from __future__ import annotations
@@ -24,6 +25,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from launchverify.models.distros import DISTROS
+
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover - Python 3.10
@@ -33,7 +36,7 @@ CONFIG_NAMES = ("launchverify.toml", "pyproject.toml")
 SEVERITIES = ("error", "warning", "info")
 KNOWN_KEYS = frozenset({
     "select", "ignore", "per-file-ignores", "exclude", "arguments", "environment",
-    "workspace", "package-paths", "severity", "fail-on",
+    "workspace", "package-paths", "severity", "fail-on", "distro",
 })
 
 
@@ -56,6 +59,7 @@ class Config:
     package_paths: list[Path] = field(default_factory=list)
     severity: dict[str, str] = field(default_factory=dict)
     fail_on: str | None = None
+    distro: str | None = None
 
     @property
     def root(self) -> Path:
@@ -154,11 +158,14 @@ def load_config(path: Path) -> Config:
         package_paths=[base / p for p in reader.texts("package-paths") or []],
         severity=reader.table("severity"),
         fail_on=reader.text("fail-on"),
+        distro=reader.text("distro"),
     )
     for code, level in config.severity.items():
         if level not in SEVERITIES:
             raise ConfigError(f"{path}: severity of {code} must be one of "
                               f"{', '.join(SEVERITIES)}, not {level!r}")
+    if config.distro is not None and config.distro not in DISTROS:
+        raise ConfigError(f"{path}: distro must be one of {', '.join(DISTROS)}")
     if config.fail_on is not None and config.fail_on not in SEVERITIES:
         raise ConfigError(f"{path}: fail-on must be one of {', '.join(SEVERITIES)}")
     return config

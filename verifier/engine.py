@@ -23,6 +23,7 @@ from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
 from launchverify.fingerprint import relative_file
 from launchverify.graph import LaunchGraph
+from launchverify.models import distros
 from launchverify.packages import PackageIndex, find_workspace
 from launchverify.paths import display_path
 from launchverify.registry import select as select_rules
@@ -48,6 +49,7 @@ class CheckOptions:
     exclude: list[str] = field(default_factory=list)  # globs, relative to the working dir
     baseline: Path | None = None
     launch_files_only: bool = False  # given files must look like launch files too
+    distro: str | None = None  # the ROS 2 distribution to check for (None: any)
     progress: Callable[[int, int], None] | None = None  # (files evaluated, files in all)
 
 
@@ -142,12 +144,13 @@ def run_check(options: CheckOptions) -> Report:
     workspace, index = build_index(options.paths, options.workspace, config.package_paths)
     loader = FileCache(index, workspace)
     graphs = []
-    for done, file in enumerate(files):
-        graphs.append(evaluate(canonical(file), index=index, workspace=workspace,
-                               pinned=options.arguments, environment=options.environment,
-                               loader=loader))
-        if options.progress is not None:
-            options.progress(done + 1, len(files))
+    with distros.checking(options.distro):
+        for done, file in enumerate(files):
+            graphs.append(evaluate(canonical(file), index=index, workspace=workspace,
+                                   pinned=options.arguments, environment=options.environment,
+                                   loader=loader))
+            if options.progress is not None:
+                options.progress(done + 1, len(files))
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
     for graph in graphs:
         graph.included_elsewhere = graph.root in included

@@ -12,6 +12,7 @@ from typing import Any
 
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
+from launchverify.models import distros
 from launchverify.models.launch_api.base import Action, Converter, Substitution, caller_span
 from launchverify.models.launch_api.launch_actions import ExecuteProcess, TimerAction, cv_common
 from launchverify.models.launch_api.launch_substitutions import PathJoinSubstitution
@@ -124,13 +125,20 @@ class Node(ExecuteProcess):
         return a.Node(**self.node_fields(cv))
 
 
+_NOT_GIVEN: Any = object()
+
+
 class LifecycleNode(Node):
     """``LifecycleNode(*, name, namespace, autostart=False, **Node)``."""
 
-    def __init__(self, *, name: Any, namespace: Any, autostart: Any = False,
+    def __init__(self, *, name: Any, namespace: Any, autostart: Any = _NOT_GIVEN,
                  **kwargs: Any) -> None:
+        if autostart is not _NOT_GIVEN and (why := distros.missing(
+                "LifecycleNode(autostart=...)")):
+            raise TypeError(f"LifecycleNode.__init__() got an unexpected keyword argument "
+                            f"'autostart' ({why})")
         super().__init__(name=name, namespace=namespace, **kwargs)
-        self.autostart = autostart
+        self.autostart = False if autostart is _NOT_GIVEN else autostart
 
     def to_ir(self, cv: Converter) -> a.Action:
         autostart = self.autostart if isinstance(self.autostart, bool) else cv.sub(
@@ -265,6 +273,9 @@ class LifecycleTransition(Action):
 
     def __init__(self, *, lifecycle_node_names: Iterable[Any], transition_ids: Iterable[Any],
                  **kwargs: Any) -> None:
+        if why := distros.missing("LifecycleTransition"):
+            raise ImportError(f"cannot import name 'LifecycleTransition' from "
+                              f"'launch_ros.actions' ({why})")
         super().__init__(**kwargs)
         self.names = list(lifecycle_node_names)
         self.transition_ids = list(transition_ids)

@@ -17,6 +17,7 @@ from launchverify.frontends.reader import EntityReader, MissingAttribute
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.ir.conditions import Condition
+from launchverify.models import distros
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
 
@@ -289,6 +290,8 @@ class TagParser(EntityReader):
 
     def composable_node(self, item: Entity, lifecycle: bool) -> a.ComposableNode | None:
         """Read one composable node description."""
+        if lifecycle and (why := distros.missing("the <composable_lifecycle_node> tag")):
+            self.sink.parse(f"unknown tag `composable_lifecycle_node`: {why}", item.span)
         try:
             node = a.ComposableNode(
                 package=self.req(item, "pkg"),
@@ -479,6 +482,9 @@ def _node(p: TagParser, e: Entity) -> a.Action:
 
 @tag("lifecycle_node")
 def _lifecycle_node(p: TagParser, e: Entity) -> a.Action:
+    if why := distros.missing("the <lifecycle_node> tag"):
+        p.sink.parse(f"unknown tag `lifecycle_node`: {why}; use a Python launch file's "
+                     "LifecycleNode", e.span)
     fields = p.node_fields(e)
     if fields["name"] is None:
         p.sink.parse("`lifecycle_node` requires the attribute `name`", e.span)
