@@ -309,7 +309,7 @@ class Supervisor:
             self.launch_log.write(f"[{running.label}] {line}\n")
             if to_screen:
                 self.out.write(f"[{running.label}] {line}\n")
-        self.out.flush()
+                self.out.flush()  # a reader behind a pipe sees lines as they come
 
     def exited(self, running: Running, execution: int, code: int) -> None:
         """A process ended: report it, fire handlers, respawn or complete."""
