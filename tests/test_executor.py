@@ -372,3 +372,64 @@ def test_commands_and_the_environment_are_resolved_when_the_launch_runs(
     line = next(x for x in out.splitlines() if "] ready described" in x)
     params = Path(line.split("--params-file ")[1].split()[0])
     assert "robot_description: 42" in params.read_text()
+
+
+def fake_ros2(tmp_path: Path) -> Path:
+    """Write a ``ros2`` that records its arguments (one line per call) and succeeds."""
+    folder = tmp_path / "bin"
+    folder.mkdir()
+    script = folder / "ros2"
+    script.write_text(f"#!{sys.executable}\nimport sys\n"
+                      f"open({str(tmp_path / 'ros2.calls')!r}, 'a').write("
+                      "' '.join(sys.argv[1:]) + '\\n')\n")
+    script.chmod(0o755)
+    return script
+
+
+def test_lifecycle_transitions_go_through_ros2_when_it_is_there(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    ros2 = fake_ros2(tmp_path)
+    monkeypatch.setattr(shutil, "which",
+                        lambda name, *a, **k: str(ros2) if name == "ros2" else _real_which(name))
+    launch = tmp_path / "lc.launch.py"
+    launch.write_text(f"""
+from launch import LaunchDescription
+from launch.actions import EmitEvent, TimerAction
+from launch.events import Shutdown, matches_action
+from launch_ros.actions import LifecycleNode
+from launch_ros.events.lifecycle import ChangeState
+from lifecycle_msgs.msg import Transition
+
+
+def generate_launch_description():
+    talker = LifecycleNode(executable='{sys.executable}', name='talker', namespace='robot',
+                           arguments=['{WORKER}', 'talker'])
+    auto = LifecycleNode(executable='{sys.executable}', name='auto', namespace='',
+                         arguments=['{WORKER}', 'auto'], autostart=True)
+    return LaunchDescription([
+        talker, auto,
+        EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(talker),
+                                    transition_id=Transition.TRANSITION_CONFIGURE)),
+        TimerAction(period=1.0, actions=[EmitEvent(event=Shutdown())]),
+    ])
+""")
+    code, events, _ = run(capsys, tmp_path / "logs", launch)
+    assert code == 0
+    calls = sorted((tmp_path / "ros2.calls").read_text().splitlines())
+    assert calls == ["lifecycle set /auto activate", "lifecycle set /auto configure",
+                     "lifecycle set /robot/talker configure"]
+    assert events.index("lifecycle /auto configure") < events.index("lifecycle /auto activate")
+
+
+def test_engine_ros2_hands_the_file_and_arguments_over(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    ros2 = fake_ros2(tmp_path)
+    monkeypatch.setattr(shutil, "which",
+                        lambda name, *a, **k: str(ros2) if name == "ros2" else _real_which(name))
+    launch = tmp_path / "ok.launch.xml"
+    launch.write_text(f'<launch><arg name="robot" default="r1"/>'
+                      f'<executable cmd="python3 {WORKER} $(var robot)"/></launch>')
+    assert main(["run", str(launch), "robot:=r2", "--engine", "ros2"]) == 0
+    assert (tmp_path / "ros2.calls").read_text() == f"launch {launch} robot:=r2\n"
