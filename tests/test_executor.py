@@ -433,3 +433,33 @@ def test_engine_ros2_hands_the_file_and_arguments_over(
                       f'<executable cmd="python3 {WORKER} $(var robot)"/></launch>')
     assert main(["run", str(launch), "robot:=r2", "--engine", "ros2"]) == 0
     assert (tmp_path / "ros2.calls").read_text() == f"launch {launch} robot:=r2\n"
+
+
+def test_composable_nodes_are_loaded_through_ros2(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    ros2 = fake_ros2(tmp_path)
+    monkeypatch.setattr(shutil, "which",
+                        lambda name, *a, **k: str(ros2) if name == "ros2" else _real_which(name))
+    (tmp_path / "params.yaml").write_text("/perception/camera:\n  ros__parameters:\n    fps: 30\n")
+    launch = tmp_path / "container.launch.xml"
+    launch.write_text(f"""<launch>
+  <node_container exec="{sys.executable}" name="container"
+                  namespace="perception" args="{WORKER} container" output="screen">
+    <composable_node pkg="usb_cam" plugin="usb_cam::UsbCamNode" name="camera"
+                     namespace="perception">
+      <param from="{tmp_path / 'params.yaml'}"/>
+      <param name="frame_id" value="cam"/>
+      <remap from="image" to="image_raw"/>
+    </composable_node>
+  </node_container>
+  <timer period="1.0"><shutdown/></timer>
+</launch>
+""")
+    code, events, _ = run(capsys, tmp_path / "logs", launch)
+    assert code == 0
+    assert (tmp_path / "ros2.calls").read_text().splitlines() == [
+        "component load /perception/container usb_cam usb_cam::UsbCamNode --node-name camera "
+        "--node-namespace /perception --remap-rule image:=image_raw --parameter fps:=30 "
+        "--parameter frame_id:=cam"]
+    assert "component usb_cam/usb_cam::UsbCamNode loaded into /perception/container" in events

@@ -205,4 +205,6 @@ def _closest(key: str, names: dict[str, str]) -> str:
         return ""
     # a wildcard key keeps its wildcard: '/**/colision_monitor' -> '/**/collision_monitor'
     suggestion = f"{prefix}/{found}" if "*" in prefix else names[found]
+    if suggestion == key:  # the wildcard cannot reach it (a component): name it in full
+        suggestion = names[found]
     return f" (did you mean {suggestion!r}?)"

@@ -204,7 +204,7 @@ class CommandBuilder:
                 value = self.value(param.value, param.value_type)
                 if param.scope:  # SetParameter: launch_ros passes -p name:=value
                     flush()
-                    out.extend(["-p", f"{name}:={_yaml_value(value)}"])
+                    out.extend(["-p", f"{name}:={yaml_value(value)}"])
                 else:
                     inline[name] = value
         flush()
@@ -236,7 +236,7 @@ def _nest(flat: dict[str, object]) -> dict[str, object]:
     return out
 
 
-def _yaml_value(value: object) -> str:
+def yaml_value(value: object) -> str:
     """Return a value as one line of YAML (``-p name:=VALUE``)."""
     text = yaml.safe_dump(value, default_flow_style=True, width=1 << 20).strip()
     return text.removesuffix("...").strip()

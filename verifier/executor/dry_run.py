@@ -63,6 +63,8 @@ def _block(plan: Plan, within: int | None, title: str, lines: list[str]) -> None
             entries.append(f"  {when}shut down")
         for request in plan.requests.get(execution, ()):
             entries.append(f"  {when}lifecycle request at {request.origin.span.short()}")
+        for argv in plan.components.get(execution, ()):
+            entries.append(f"  {when}ros2 {shlex.join(argv)}")
     if entries:
         lines.append(title + ":")
         lines.extend(entries)

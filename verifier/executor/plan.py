@@ -9,11 +9,12 @@ that cannot be decided before run time stops the plan (nothing is guessed).
 
 from __future__ import annotations
 
+import shutil
 from collections import defaultdict
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from launchverify.executor.command import Command, CommandBuilder, CommandError
+from launchverify.executor.command import Command, CommandBuilder, CommandError, yaml_value
 from launchverify.graph import HandlerRecord, LaunchGraph, LaunchRecord, TransitionRequest
 from launchverify.ir import actions as a
 from launchverify.models import lifecycle as lc
@@ -52,6 +53,7 @@ class Plan:
     processes: dict[int, Process]
     registers: dict[int, list[int]]  # execution of a RegisterEventHandler: handler indices
     requests: dict[int, list[TransitionRequest]]
+    components: dict[int, list[list[str]]] = field(default_factory=dict)  # load commands
     notes: list[str] = field(default_factory=list)  # what will not be done, said up front
 
     @property
@@ -100,7 +102,8 @@ def build_plan(graph: LaunchGraph, prefixes: list[Path], params_dir: Path, *,
     for request in graph.requests:
         if request.execution is not None and graph.runs(request.origin):
             requests[request.execution].append(request)
-    plan = Plan(graph, dict(blocks), processes, dict(registers), dict(requests))
+    plan = Plan(graph, dict(blocks), processes, dict(registers), dict(requests),
+                components=_components(graph, builder))
     plan.notes.extend(_notes(plan))
     plan.notes.extend(builder.missing)
     return plan
@@ -152,6 +155,43 @@ def _seconds(graph: LaunchGraph, value: object, configuration: str) -> float:
         return 5.0
 
 
+def _components(graph: LaunchGraph, builder: CommandBuilder) -> dict[int, list[list[str]]]:
+    """Return, per executing action, the ``ros2 component load`` argv of each component.
+
+    launch_ros calls the container's ``_container/load_node`` service with the node's
+    name, namespace, remaps, parameters (files already read: the effective values) and
+    extra arguments; ``ros2 component load`` makes the same request.
+    """
+    from launchverify.parameters import effective_parameters
+
+    out: dict[int, list[list[str]]] = defaultdict(list)
+    for node in graph.nodes:
+        if (node.kind not in ("composable_node", "composable_lifecycle_node")
+                or node.execution is None or node.container is None
+                or not graph.runs(node.origin)):
+            continue
+        try:
+            argv = ["component", "load", builder.text(node.container, "the container"),
+                    builder.text(node.package, "the package"),
+                    builder.text(node.executable, "the plugin")]
+            if node.name is not None:
+                argv += ["--node-name", builder.text(node.name, "the node name")]
+            if node.namespace is not None:
+                argv += ["--node-namespace", builder.text(node.namespace, "the namespace")]
+            for remap in node.remappings:
+                argv += ["--remap-rule", f"{builder.text(remap.src, 'a remap')}:="
+                         f"{builder.text(remap.dst, 'a remap')}"]
+            effective = effective_parameters(graph, node)
+            for name in effective.values:
+                winner = effective.winner(name)
+                if winner is not None:
+                    argv += ["--parameter", f"{name}:={yaml_value(winner.value)}"]
+        except CommandError:
+            continue  # said by the notes: its values are not known before run time
+        out[node.execution].append(argv)
+    return dict(out)
+
+
 def _notes(plan: Plan) -> list[str]:
     """Return what the embedded executor will not do, so it is said before starting."""
     notes = [f"{h.origin.span.short()}: OnProcessIO callbacks are Python functions the "
@@ -160,10 +200,12 @@ def _notes(plan: Plan) -> list[str]:
     for execution in (i for block in plan.blocks.values() for _, i in block):
         action = plan.action(execution)
         if isinstance(action, (a.LoadComposableNodes, a.ComposableNodeContainer)) and (
-                isinstance(action, a.LoadComposableNodes) or action.composable_nodes):
+                isinstance(action, a.LoadComposableNodes) or action.composable_nodes) and \
+                shutil.which("ros2") is None:
             notes.append(f"{plan.graph.executed[execution].origin.span.short()}: composable "
-                         "nodes are loaded through the container's ROS service; the "
-                         "embedded executor starts the container only (use --engine ros2)")
+                         "nodes are loaded through the container's ROS service (ros2 "
+                         "component load); without the ros2 command line only the container "
+                         "starts")
         if isinstance(action, (a.OpaqueAction,)):
             notes.append(f"{plan.graph.executed[execution].origin.span.short()}: "
                          f"{action.description} is not run")

@@ -180,6 +180,7 @@ class Supervisor:
             self.shutdown(reason or "Shutdown action")
         for request in self.plan.requests.get(execution, ()):
             self.lifecycle(request)
+        self.load_components(execution)
         self.fire("execution_complete", execution)
 
     # ------------------------------------------------------------------ handlers
@@ -279,6 +280,7 @@ class Supervisor:
         self.fire("process_start", execution)
         if process.autostart and process.lifecycle_fqn:
             self.transition(process.lifecycle_fqn, ["configure", "activate"])
+        self.load_components(execution)
         if self.shutting_down:  # a shutdown began while it started
             self.stop(running)
         assert child.stdout is not None and child.stderr is not None
@@ -407,6 +409,40 @@ class Supervisor:
         for pid in list(self.running):
             with contextlib.suppress(ChildProcessError):
                 os.waitpid(pid, 0)
+
+    # ------------------------------------------------------------------ components
+
+    def load_components(self, execution: int) -> None:
+        """Load an action's composable nodes into their container, as launch_ros does."""
+        commands = self.plan.components.get(execution)
+        if not commands:
+            return
+        if self.ros2 is None:
+            for argv in commands:
+                self.event(f"component {argv[3]}/{argv[4]} not loaded")
+            return
+        task = asyncio.get_running_loop().create_task(self.ros2_load(commands))
+        self.tasks.add(task)
+        task.add_done_callback(self.task_done)
+
+    async def ros2_load(self, commands: list[list[str]]) -> None:
+        """Run ``ros2 component load`` for each component, waiting for the container."""
+        assert self.ros2 is not None
+        for argv in commands:
+            for _attempt in range(40):
+                if self.shutting_down:
+                    return
+                child = await asyncio.create_subprocess_exec(
+                    self.ros2, *argv, stdout=asyncio.subprocess.PIPE,
+                    stderr=asyncio.subprocess.STDOUT, start_new_session=True)
+                output, _ = await child.communicate()
+                if child.returncode == 0:
+                    self.event(f"component {argv[3]}/{argv[4]} loaded into {argv[2]}")
+                    break
+                await asyncio.sleep(0.5)
+            else:
+                self.say("launch", f"failed to load {argv[4]} into {argv[2]}: "
+                         f"{output.decode(errors='replace').strip()}", level="ERROR")
 
     # ------------------------------------------------------------------ lifecycle
 
