@@ -13,7 +13,8 @@ from collections import Counter
 from pathlib import Path
 
 from launchverify import __version__
-from launchverify.fingerprint import fingerprints, relative_file
+from launchverify.fingerprint import fingerprints
+from launchverify.paths import relative_file
 from launchverify.rule import Finding
 
 

@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.models.distros import DISTROS
+from launchverify.paths import relative_file
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -68,13 +69,13 @@ class Config:
 
     def ignored_in(self, file: Path) -> list[str]:
         """Return the selectors ``per-file-ignores`` applies to a file."""
-        relative = _relative(file, self.root)
+        relative = relative_file(file, self.root)
         return [code for pattern, codes in self.per_file_ignores.items()
                 if matches(relative, pattern) for code in codes]
 
     def excludes(self, file: Path) -> bool:
         """Return whether a discovered file is excluded from the check."""
-        relative = _relative(file, self.root)
+        relative = relative_file(file, self.root)
         return any(matches(relative, pattern) for pattern in self.exclude)
 
 
@@ -93,13 +94,6 @@ def matches(relative: str, pattern: str) -> bool:
     if pattern.endswith("/**") and relative.startswith(pattern[:-2]):
         return True
     return fnmatch.fnmatchcase(relative, pattern)
-
-
-def _relative(file: Path, root: Path) -> str:
-    try:
-        return file.resolve().relative_to(root.resolve()).as_posix()
-    except ValueError:
-        return file.resolve().as_posix()
 
 
 def find_config(start: Path) -> Path | None:

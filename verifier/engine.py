@@ -21,11 +21,10 @@ from launchverify.config import Config, matches
 from launchverify.discover import discover
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
-from launchverify.fingerprint import relative_file
 from launchverify.graph import LaunchGraph
 from launchverify.models import distros
 from launchverify.packages import PackageIndex, find_workspace
-from launchverify.paths import display_path
+from launchverify.paths import display_path, relative_file
 from launchverify.registry import select as select_rules
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.suppressions import apply_suppressions

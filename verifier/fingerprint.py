@@ -17,32 +17,19 @@ from collections import Counter
 from collections.abc import Iterable
 from pathlib import Path
 
+from launchverify.paths import relative_file
 from launchverify.rule import Finding
-from launchverify.sources import source_lines
+from launchverify.sources import source_line
 
 _LINE_REFERENCE = re.compile(r"(?<=\S):\d+\b")
 _LINE_WORD = re.compile(r"\b(lines?) \d+\b")
 
 
-def source_line(finding: Finding) -> str:
-    """Return the stripped text of the line a finding points at ('' when unreadable)."""
-    lines = source_lines(finding.span.file)
-    line = finding.span.line
-    return lines[line - 1].strip() if 0 < line <= len(lines) else ""
-
-
-def relative_file(path: Path, base: Path) -> str:
-    """Return a path relative to ``base`` (posix), or absolute when outside it."""
-    try:
-        return path.resolve().relative_to(base.resolve()).as_posix()
-    except ValueError:
-        return path.resolve().as_posix()
-
-
 def fingerprint_fields(finding: Finding, base: Path) -> tuple[str, ...]:
     """Return what a fingerprint hashes, but for the occurrence number."""
     message = _LINE_WORD.sub(r"\1 #", _LINE_REFERENCE.sub(":#", finding.message))
-    return (finding.code, relative_file(finding.span.file, base), source_line(finding),
+    return (finding.code, relative_file(finding.span.file, base),
+            source_line(finding.span.file, finding.span.line),
             message)
 
 

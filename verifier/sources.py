@@ -19,6 +19,12 @@ def source_lines(path: Path) -> tuple[str, ...]:
     return _read(path, stat.st_size, stat.st_mtime_ns)
 
 
+def source_line(path: Path, number: int) -> str:
+    """Return line ``number`` of a file, stripped ('' when there is no such line)."""
+    lines = source_lines(path)
+    return lines[number - 1].strip() if 0 < number <= len(lines) else ""
+
+
 @lru_cache(maxsize=512)
 def _read(path: Path, size: int, modified: int) -> tuple[str, ...]:
     try:

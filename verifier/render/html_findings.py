@@ -12,7 +12,7 @@ from collections.abc import Iterable
 from launchverify.engine import Report
 from launchverify.render.html_text import clip, esc, place
 from launchverify.rule import Finding, Severity
-from launchverify.sources import source_lines
+from launchverify.sources import source_line, source_lines
 from launchverify.span import Span
 
 FRAME_CONTEXT = 2  # source lines shown above and below a finding
@@ -115,11 +115,8 @@ def _chain(report: Report, chain: Iterable[Span], span: Span) -> str:
 
 
 def _source_line(span: Span) -> str:
-    lines = source_lines(span.file)
-    if not 0 < span.line <= len(lines):
-        return ""
-    text = clip(lines[span.line - 1].strip(), LINE_LIMIT)
-    return f' <code class="snippet">{esc(text)}</code>'
+    text = source_line(span.file, span.line)
+    return f' <code class="snippet">{esc(clip(text, LINE_LIMIT))}</code>' if text else ""
 
 
 def code_frame(span: Span) -> str:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import TextIO
 
 from rich.console import Console
@@ -10,7 +9,7 @@ from rich.markup import escape
 
 from launchverify.engine import Report
 from launchverify.rule import Finding, Severity
-from launchverify.sources import source_lines
+from launchverify.sources import source_line, source_lines
 
 STYLES = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "cyan"}
 
@@ -57,7 +56,7 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
                           f"{escape(report.display_path(related.span.file))}:{related.span.line}",
                           style="dim")
             if explain:
-                text = _line(related.span.file, related.span.line)
+                text = source_line(related.span.file, related.span.line)[:200]
                 if text:
                     console.print(f"      {related.span.line} | {escape(text)}", style="dim")
         if finding.witness:
@@ -76,11 +75,6 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
             _explanation(console, finding)
     if not quiet:
         console.print(summary_line(report))
-
-
-def _line(path: Path, number: int) -> str:
-    lines = source_lines(path)
-    return lines[number - 1].strip()[:200] if 0 < number <= len(lines) else ""
 
 
 def _explanation(console: Console, finding: Finding) -> None:
