@@ -374,24 +374,24 @@ def test_commands_and_the_environment_are_resolved_when_the_launch_runs(
     assert "robot_description: 42" in params.read_text()
 
 
-def fake_ros2(tmp_path: Path) -> Path:
-    """Write a ``ros2`` that records its arguments (one line per call) and succeeds."""
+@pytest.fixture
+def ros2_calls(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    """Put a ``ros2`` on the path that records its arguments (a line per call) and succeeds;
+    return the file it records to."""
     folder = tmp_path / "bin"
     folder.mkdir()
     script = folder / "ros2"
+    calls = tmp_path / "ros2.calls"
     script.write_text(f"#!{sys.executable}\nimport sys\n"
-                      f"open({str(tmp_path / 'ros2.calls')!r}, 'a').write("
-                      "' '.join(sys.argv[1:]) + '\\n')\n")
+                      f"open({str(calls)!r}, 'a').write(' '.join(sys.argv[1:]) + '\\n')\n")
     script.chmod(0o755)
-    return script
+    monkeypatch.setattr(shutil, "which",
+                        lambda name, *a, **k: str(script) if name == "ros2" else _real_which(name))
+    return calls
 
 
 def test_lifecycle_transitions_go_through_ros2_when_it_is_there(
-        capsys: pytest.CaptureFixture[str], tmp_path: Path,
-        monkeypatch: pytest.MonkeyPatch) -> None:
-    ros2 = fake_ros2(tmp_path)
-    monkeypatch.setattr(shutil, "which",
-                        lambda name, *a, **k: str(ros2) if name == "ros2" else _real_which(name))
+        capsys: pytest.CaptureFixture[str], tmp_path: Path, ros2_calls: Path) -> None:
     launch = tmp_path / "lc.launch.py"
     launch.write_text(f"""
 from launch import LaunchDescription
@@ -416,31 +416,23 @@ def generate_launch_description():
 """)
     code, events, _ = run(capsys, tmp_path / "logs", launch)
     assert code == 0
-    calls = sorted((tmp_path / "ros2.calls").read_text().splitlines())
+    calls = sorted(ros2_calls.read_text().splitlines())
     assert calls == ["lifecycle set /auto activate", "lifecycle set /auto configure",
                      "lifecycle set /robot/talker configure"]
     assert events.index("lifecycle /auto configure") < events.index("lifecycle /auto activate")
 
 
 def test_engine_ros2_hands_the_file_and_arguments_over(
-        capsys: pytest.CaptureFixture[str], tmp_path: Path,
-        monkeypatch: pytest.MonkeyPatch) -> None:
-    ros2 = fake_ros2(tmp_path)
-    monkeypatch.setattr(shutil, "which",
-                        lambda name, *a, **k: str(ros2) if name == "ros2" else _real_which(name))
+        capsys: pytest.CaptureFixture[str], tmp_path: Path, ros2_calls: Path) -> None:
     launch = tmp_path / "ok.launch.xml"
     launch.write_text(f'<launch><arg name="robot" default="r1"/>'
                       f'<executable cmd="python3 {WORKER} $(var robot)"/></launch>')
     assert main(["run", str(launch), "robot:=r2", "--engine", "ros2"]) == 0
-    assert (tmp_path / "ros2.calls").read_text() == f"launch {launch} robot:=r2\n"
+    assert ros2_calls.read_text() == f"launch {launch} robot:=r2\n"
 
 
 def test_composable_nodes_are_loaded_through_ros2(
-        capsys: pytest.CaptureFixture[str], tmp_path: Path,
-        monkeypatch: pytest.MonkeyPatch) -> None:
-    ros2 = fake_ros2(tmp_path)
-    monkeypatch.setattr(shutil, "which",
-                        lambda name, *a, **k: str(ros2) if name == "ros2" else _real_which(name))
+        capsys: pytest.CaptureFixture[str], tmp_path: Path, ros2_calls: Path) -> None:
     (tmp_path / "params.yaml").write_text("/perception/camera:\n  ros__parameters:\n    fps: 30\n")
     launch = tmp_path / "container.launch.xml"
     launch.write_text(f"""<launch>
@@ -458,7 +450,7 @@ def test_composable_nodes_are_loaded_through_ros2(
 """)
     code, events, _ = run(capsys, tmp_path / "logs", launch)
     assert code == 0
-    assert (tmp_path / "ros2.calls").read_text().splitlines() == [
+    assert ros2_calls.read_text().splitlines() == [
         "component load /perception/container usb_cam usb_cam::UsbCamNode --node-name camera "
         "--node-namespace /perception --remap-rule image:=image_raw --parameter fps:=30 "
         "--parameter frame_id:=cam"]

@@ -44,10 +44,9 @@ def excluded_by_ament() -> list[str]:
 
 def main_with_errors(argv: Sequence[str] | None = None) -> tuple[int, list[str]]:
     """Check launch files; return the exit status and one line per finding."""
-    from launchverify.cli import build_parser, check_options
+    from launchverify.cli import build_parser, check_options, fails
     from launchverify.engine import UsageError, run_check
     from launchverify.render.junit import render_junit
-    from launchverify.rule import Severity
 
     tokens = list(argv or [])
     if not _has_paths(tokens):
@@ -70,9 +69,7 @@ def main_with_errors(argv: Sequence[str] | None = None) -> tuple[int, list[str]]
         f"{f.severity.value} {f.code} [{f.slug}] {f.message}"
         for f in report.findings
     ]
-    threshold = Severity(args.fail_on or config.fail_on or "error").rank
-    failed = any(f.severity.rank >= threshold for f in report.findings)
-    return (0 if args.exit_zero or not failed else 1), errors
+    return (0 if args.exit_zero or not fails(report, args, config) else 1), errors
 
 
 def main(argv: Sequence[str] | None = None) -> int:

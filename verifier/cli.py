@@ -15,8 +15,6 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any, TextIO
 
-from rich.console import Console
-
 from launchverify import __version__
 from launchverify.ament import excluded_by_ament
 from launchverify.baseline import BaselineError, write_baseline
@@ -247,9 +245,13 @@ def _check(args: argparse.Namespace) -> int:
             _render(args, report, sys.stdout, color=color)
     if args.exit_zero:
         return EXIT_OK
+    return EXIT_FINDINGS if fails(report, args, config) else EXIT_OK
+
+
+def fails(report: Report, args: argparse.Namespace, config: Config) -> bool:
+    """Return whether a finding reaches ``--fail-on`` (else the configuration, else error)."""
     threshold = Severity(args.fail_on or config.fail_on or "error").rank
-    failed = any(f.severity.rank >= threshold for f in report.findings)
-    return EXIT_FINDINGS if failed else EXIT_OK
+    return any(f.severity.rank >= threshold for f in report.findings)
 
 
 def _render(args: argparse.Namespace, report: Report, out: TextIO,
@@ -372,6 +374,8 @@ def _progress_bar() -> Callable[[int, int], None]:
         if total < 20:
             return
         if "bar" not in state:
+            from rich.console import Console
+
             bar = Progress(transient=True, console=Console(stderr=True))
             bar.start()
             state["bar"], state["task"] = bar, bar.add_task("checking launch files",

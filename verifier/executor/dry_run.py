@@ -5,7 +5,6 @@ from __future__ import annotations
 import shlex
 
 from launchverify.executor.plan import Plan
-from launchverify.ir import actions as a
 
 
 def describe(plan: Plan) -> list[str]:
@@ -32,7 +31,6 @@ def _block(plan: Plan, within: int | None, title: str, lines: list[str]) -> None
     entries: list[str] = []
     for delay, execution in plan.blocks.get(within, ()):
         when = f"after {delay:g} s: " if delay else ""
-        action = plan.action(execution)
         process = plan.processes.get(execution)
         if process is not None:
             command = process.command
@@ -54,12 +52,9 @@ def _block(plan: Plan, within: int | None, title: str, lines: list[str]) -> None
                               f"{'unlimited' if retries < 0 else retries})")
             extras.append(f"sigterm_timeout={process.sigterm_timeout:g}")
             entries.append("      " + ", ".join(extras))
-        elif execution in plan.graph.logs:
-            level, message = plan.graph.logs[execution]
-            text = plan.graph.base(message) or message.describe()
-            entries.append(f"  {when}log {level}: {text}")
-        elif isinstance(action, a.Shutdown) or (
-                isinstance(action, a.EmitEvent) and action.event == "Shutdown"):
+        elif (log := plan.log(execution)) is not None:
+            entries.append(f"  {when}log {log[0]}: {log[1]}")
+        elif plan.shutdown_reason(execution) is not None:
             entries.append(f"  {when}shut down")
         for request in plan.requests.get(execution, ()):
             entries.append(f"  {when}lifecycle request at {request.origin.span.short()}")

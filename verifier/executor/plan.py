@@ -65,6 +65,24 @@ class Plan:
         """Return the IR action of an execution."""
         return self.graph.executed[execution].action
 
+    def log(self, execution: int) -> tuple[str, str] | None:
+        """Return the level and text of a log action (``None``: not a log)."""
+        if execution not in self.graph.logs:
+            return None
+        level, message = self.graph.logs[execution]
+        return level, self.graph.display(message) or ""
+
+    def shutdown_reason(self, execution: int) -> str | None:
+        """Return why an action shuts the launch down (``None``: it does not)."""
+        action = self.action(execution)
+        if isinstance(action, a.Shutdown):
+            reason = self.graph.base(action.reason) if action.reason is not None else None
+        elif isinstance(action, a.EmitEvent) and action.event == "Shutdown":
+            reason = str(action.details.get("reason", "")) or None
+        else:
+            return None
+        return reason or "Shutdown action"
+
 
 def build_plan(graph: LaunchGraph, prefixes: list[Path], params_dir: Path, *,
                strict: bool = True) -> Plan:

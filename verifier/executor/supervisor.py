@@ -28,7 +28,6 @@ from typing import TextIO
 from launchverify.executor.guard import Guard
 from launchverify.executor.plan import Plan, Process, transition_label
 from launchverify.graph import TransitionRequest
-from launchverify.ir import actions as a
 
 LINE_LIMIT = 1 << 20
 
@@ -161,23 +160,17 @@ class Supervisor:
 
     def execute(self, execution: int) -> None:
         """Execute one action."""
-        action = self.plan.action(execution)
         for number in self.plan.registers.get(execution, ()):
             self.active.add(number)
         if execution in self.plan.processes:
             self.start(execution)
             return  # complete when the process exits
-        if execution in self.graph.logs:
-            level, message = self.graph.logs[execution]
-            self.say("launch.user", self.graph.base(message) or message.describe(),
-                     level=level.upper())
-        if isinstance(action, a.Shutdown) or (
-                isinstance(action, a.EmitEvent) and action.event == "Shutdown"):
-            if isinstance(action, a.Shutdown):
-                reason = self.graph.base(action.reason) if action.reason is not None else None
-            else:
-                reason = str(action.details.get("reason", "")) or None
-            self.shutdown(reason or "Shutdown action")
+        log = self.plan.log(execution)
+        if log is not None:
+            self.say("launch.user", log[1], level=log[0].upper())
+        reason = self.plan.shutdown_reason(execution)
+        if reason is not None:
+            self.shutdown(reason)
         for request in self.plan.requests.get(execution, ()):
             self.lifecycle(request)
         self.load_components(execution)
@@ -427,22 +420,35 @@ class Supervisor:
 
     async def ros2_load(self, commands: list[list[str]]) -> None:
         """Run ``ros2 component load`` for each component, waiting for the container."""
-        assert self.ros2 is not None
         for argv in commands:
-            for _attempt in range(40):
-                if self.shutting_down:
-                    return
-                child = await asyncio.create_subprocess_exec(
-                    self.ros2, *argv, stdout=asyncio.subprocess.PIPE,
-                    stderr=asyncio.subprocess.STDOUT, start_new_session=True)
-                output, _ = await child.communicate()
-                if child.returncode == 0:
-                    self.event(f"component {argv[3]}/{argv[4]} loaded into {argv[2]}")
-                    break
-                await asyncio.sleep(0.5)
+            failure = await self.ros2_call(argv, attempts=40)
+            if self.shutting_down:
+                return
+            if failure is None:
+                self.event(f"component {argv[3]}/{argv[4]} loaded into {argv[2]}")
             else:
-                self.say("launch", f"failed to load {argv[4]} into {argv[2]}: "
-                         f"{output.decode(errors='replace').strip()}", level="ERROR")
+                self.say("launch", f"failed to load {argv[4]} into {argv[2]}: {failure}",
+                         level="ERROR")
+
+    async def ros2_call(self, argv: list[str], attempts: int) -> str | None:
+        """Run ``ros2 ARGV`` until it succeeds, retrying while what it addresses comes up.
+
+        Returns ``None`` on success (or when a shutdown stops the retries), else what the
+        last attempt printed.
+        """
+        assert self.ros2 is not None
+        output = b""
+        for _attempt in range(attempts):
+            if self.shutting_down:
+                return None
+            child = await asyncio.create_subprocess_exec(
+                self.ros2, *argv, stdout=asyncio.subprocess.PIPE,
+                stderr=asyncio.subprocess.STDOUT, start_new_session=True)
+            output, _ = await child.communicate()
+            if child.returncode == 0:
+                return None
+            await asyncio.sleep(0.5)
+        return output.decode(errors="replace").strip()
 
     # ------------------------------------------------------------------ lifecycle
 
@@ -476,20 +482,13 @@ class Supervisor:
         task.add_done_callback(self.task_done)
 
     async def ros2_transitions(self, fqn: str, words: list[str]) -> None:
-        assert self.ros2 is not None
-        for word in words:
-            for _attempt in range(20):  # the node's services may not be up yet
-                if self.shutting_down:
-                    return
-                child = await asyncio.create_subprocess_exec(
-                    self.ros2, "lifecycle", "set", fqn, word, stdout=asyncio.subprocess.PIPE,
-                    stderr=asyncio.subprocess.STDOUT, start_new_session=True)
-                output, _ = await child.communicate()
-                if child.returncode == 0:
-                    self.event(f"lifecycle {fqn} {word}")
-                    break
-                await asyncio.sleep(0.5)
-            else:
-                self.say("launch", f"lifecycle transition '{word}' of {fqn} failed: "
-                         f"{output.decode(errors='replace').strip()}", level="ERROR")
+        """Take a node through transitions in order, stopping at the first that fails."""
+        for word in words:  # the node's services may not be up yet: retried
+            failure = await self.ros2_call(["lifecycle", "set", fqn, word], attempts=20)
+            if self.shutting_down:
                 return
+            if failure is not None:
+                self.say("launch", f"lifecycle transition '{word}' of {fqn} failed: "
+                         f"{failure}", level="ERROR")
+                return
+            self.event(f"lifecycle {fqn} {word}")
