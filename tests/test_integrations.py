@@ -148,3 +148,19 @@ def test_pre_commit_hook_end_to_end(tmp_path: Path) -> None:
                           cwd=work, capture_output=True, text=True, timeout=600, env=env,
                           check=False)
     assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_launch_files_only_skips_given_files_that_are_not_launch_files(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """pre-commit passes every name matching its pattern, launch tests included."""
+    from launchverify.cli import main
+
+    test = tmp_path / "test_talker_launch.py"
+    test.write_text("def generate_test_description():\n    return None\n")
+    launch = tmp_path / "bad.launch.xml"
+    launch.write_text(DUPLICATE)
+    assert main(["check", str(test), "--format", "json"]) == 1  # LV001: no entry point
+    capsys.readouterr()
+    assert main(["check", str(test), str(launch), "--launch-files-only", "-q"]) == 1
+    out = capsys.readouterr().out
+    assert "LV101" in out and "LV001" not in out

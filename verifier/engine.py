@@ -199,11 +199,14 @@ def _configured(findings: list[Finding], config: Config) -> list[Finding]:
     """Apply the configuration's severity overrides and per-file ignores."""
     levels = {code: Severity(level) for selector, level in config.severity.items()
               for code in _codes_of(selector)}
+    ignored: dict[Path, set[str]] = {}  # per file: many findings share one
     out = []
     for finding in findings:
-        ignored = {code for selector in config.ignored_in(finding.span.file)
-                   for code in _codes_of(selector)}
-        if finding.code in ignored:
+        file = finding.span.file
+        if file not in ignored:
+            ignored[file] = {code for selector in config.ignored_in(file)
+                             for code in _codes_of(selector)}
+        if finding.code in ignored[file]:
             continue
         level = levels.get(finding.code)
         out.append(finding if level is None else dataclasses.replace(finding, severity=level))

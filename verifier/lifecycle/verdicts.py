@@ -36,13 +36,7 @@ BRINGUP_EVENTS = (
 ORDER = ("unconfigured", "configuring", "inactive", "activating", "active")
 
 
-Question = tuple[str, int, int, str]  # file, line, column, what is asked there
-
-
-def question(origin: Origin | Span, words: str = "") -> Question:
-    """Return a question about a place, the same in every evaluation of its file."""
-    span = origin.span if isinstance(origin, Origin) else origin
-    return (str(span.file), span.line, span.column, words)
+Question = tuple[str, int, int, str]  # file, line, column, what is asked there (numbered)
 
 
 class Questions:
@@ -56,7 +50,9 @@ class Questions:
         self.asked: Counter[Question] = Counter()
 
     def __call__(self, origin: Origin | Span, words: str = "") -> Question:
-        base = question(origin, words)
+        """Return a question about a place, the same in every evaluation of its file."""
+        span = origin.span if isinstance(origin, Origin) else origin
+        base = (str(span.file), span.line, span.column, words)
         self.asked[base] += 1
         return (*base[:3], f"{words}#{self.asked[base]}")
 
