@@ -131,8 +131,8 @@ class System:
 
     @property
     def empty(self) -> bool:
-        """Return whether there is nothing to explore."""
-        return not self.nodes and not self.managers
+        """Return whether there is nothing to explore or report."""
+        return not self.nodes and not self.managers and not self.refusals
 
 
 def build_system(graph: LaunchGraph) -> System:
@@ -212,8 +212,9 @@ class _Builder:
         self.commands()
         self.autostarts()
         self.launch_requests()
-        self.reactions()
-        self.prune()
+        if self.system.nodes or self.system.managers:  # else no handler can matter
+            self.reactions()
+            self.prune()
         return self.system
 
     def managers(self) -> None:
