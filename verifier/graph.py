@@ -89,16 +89,6 @@ class NodeRecord:
 
 
 @dataclass(frozen=True, slots=True)
-class ProcessRecord:
-    """A plain process (``<executable>``)."""
-
-    origin: Origin
-    cmd: tuple[Sub, ...]
-    name: Sub | None
-    execution: int | None = None  # index in ``LaunchGraph.executed``
-
-
-@dataclass(frozen=True, slots=True)
 class ArgumentRecord:
     """A launch argument declaration as it executed."""
 
@@ -358,7 +348,6 @@ class LaunchGraph:
     environment: dict[str, str] = field(default_factory=dict)  # --env NAME=VALUE
     files: dict[Path, LoadedFile] = field(default_factory=dict)
     nodes: list[NodeRecord] = field(default_factory=list)
-    processes: list[ProcessRecord] = field(default_factory=list)
     includes: list[IncludeRecord] = field(default_factory=list)
     arguments: list[ArgumentRecord] = field(default_factory=list)
     reads: list[ConfigRead] = field(default_factory=list)
@@ -408,6 +397,11 @@ class LaunchGraph:
         if sub is None:
             return None
         return text_of(self._base.reduce(sub))
+
+    @property
+    def processes(self) -> list[LaunchRecord]:
+        """Return the plain processes (``ExecuteProcess``, ``<executable>``) it starts."""
+        return [launch for launch in self.launches if launch.node is None]
 
     def reduced(self, sub: Sub) -> Sub:
         """Return a value reduced under the given arguments, as far as it goes."""

@@ -48,7 +48,6 @@ from launchverify.graph import (
     Origin,
     PackageRef,
     ProblemRecord,
-    ProcessRecord,
     ProcessSettings,
     SkippedAction,
     StaticArgument,
@@ -739,9 +738,7 @@ class Walker:
     def do_ExecuteProcess(self, action: a.ExecuteProcess, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
         cmd = tuple(reducer.reduce(part) for part in action.cmd)
-        name = None if action.process.name is None else reducer.reduce(action.process.name)
         origin = ctx.origin(action.span)
-        self.graph.processes.append(ProcessRecord(origin, cmd, name, self.execution))
         settings = self.visit_process_options(action.process, action.span, ctx, action)
         self.graph.launches.append(LaunchRecord(origin, self.execution, settings, cmd=cmd))
 

@@ -124,7 +124,7 @@ class GraphView:
         return {
             "nodes": [self.node(n) for n in graph.nodes if self.shown(n.origin)],
             "processes": [
-                {"cmd": [self.value(c) for c in p.cmd], "name": self.value(p.name),
+                {"cmd": [self.value(c) for c in p.cmd], "name": self.value(p.settings.name),
                  **self.where(p.origin)}
                 for p in graph.processes if self.shown(p.origin)
             ],
