@@ -14,8 +14,8 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from launchverify.evaluate.runner import evaluate
-from launchverify.packages import PackageIndex
 from launchverify.render.graph_out import GraphView
+from launchverify.workspace.packages import PackageIndex
 
 NAMESPACES = st.sampled_from(["robot", "/fleet", "arm/", "", "a/b", "/"])
 

@@ -15,7 +15,7 @@ from jsonschema import validators  # type: ignore[import-untyped, unused-ignore]
 
 from launchverify import __version__
 from launchverify.engine import CheckOptions, Report, run_check
-from launchverify.fingerprint import fingerprint_fields
+from launchverify.findings.fingerprint import fingerprint_fields
 from launchverify.registry import all_rules
 from launchverify.render import sarif
 from launchverify.render.github import escape_data, escape_property, render_github

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from launchverify.packages import PackageIndex, find_workspace, scan_sources
+from launchverify.workspace.packages import PackageIndex, find_workspace, scan_sources
 
 
 def make_package(root: Path, name: str, folder: str | None = None) -> Path:
@@ -97,8 +97,8 @@ def test_symlinked_repositories_are_followed_once(tmp_path: Path) -> None:
 
 
 def test_installed_executables_are_listed(tmp_path: Path) -> None:
-    from launchverify.package_executables import executables
-    from launchverify.packages import Package
+    from launchverify.workspace.package_executables import executables
+    from launchverify.workspace.packages import Package
 
     lib = tmp_path / "install" / "lib" / "fast_driver"
     lib.mkdir(parents=True)
@@ -111,8 +111,8 @@ def test_installed_executables_are_listed(tmp_path: Path) -> None:
 
 
 def test_cmake_variables_lists_and_branches(tmp_path: Path) -> None:
-    from launchverify.package_executables import executables
-    from launchverify.packages import Package
+    from launchverify.workspace.package_executables import executables
+    from launchverify.workspace.packages import Package
 
     source = make_package(tmp_path, "tools")
     (source / "CMakeLists.txt").write_text(

@@ -17,7 +17,6 @@ from typing import Any, TextIO
 
 from launchverify import __version__
 from launchverify.ament import excluded_by_ament
-from launchverify.baseline import BaselineError, write_baseline
 from launchverify.config import Config, ConfigError, find_config, load_config
 from launchverify.engine import (
     CheckOptions,
@@ -29,6 +28,7 @@ from launchverify.engine import (
     parse_environment,
     run_check,
 )
+from launchverify.findings.baseline import BaselineError, write_baseline
 from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.rule import Rule, Severity

@@ -26,7 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.models.distros import DISTROS
-from launchverify.paths import relative_file
+from launchverify.workspace.paths import relative_file
 
 if sys.version_info >= (3, 11):
     import tomllib

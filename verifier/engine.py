@@ -16,18 +16,18 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from launchverify.baseline import apply_baseline
 from launchverify.config import Config, matches
-from launchverify.discover import discover
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
+from launchverify.findings.baseline import apply_baseline
+from launchverify.findings.suppressions import apply_suppressions
 from launchverify.graph import LaunchGraph
 from launchverify.models import distros
-from launchverify.packages import PackageIndex, find_workspace
-from launchverify.paths import display_path, relative_file
 from launchverify.registry import select as select_rules
 from launchverify.rule import Finding, Rule, RuleContext, Severity
-from launchverify.suppressions import apply_suppressions
+from launchverify.workspace.discover import discover
+from launchverify.workspace.packages import PackageIndex, find_workspace
+from launchverify.workspace.paths import display_path, relative_file
 
 
 class UsageError(Exception):

@@ -13,10 +13,10 @@ from collections.abc import Hashable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import ClassVar
 
+from launchverify.findings.trace import Step
 from launchverify.graph import LaunchGraph, Origin
-from launchverify.packages import PackageIndex
 from launchverify.span import Span
-from launchverify.trace import Step
+from launchverify.workspace.packages import PackageIndex
 
 
 class Severity(enum.Enum):

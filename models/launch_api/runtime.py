@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING, Any
 from launchverify.span import Span
 
 if TYPE_CHECKING:
-    from launchverify.packages import PackageIndex
+    from launchverify.workspace.packages import PackageIndex
 
 
 @dataclass

@@ -5,8 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
-from launchverify.paths import display_path
 from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.workspace.paths import display_path
 
 
 class MissingFile(Rule):

@@ -6,8 +6,8 @@ import difflib
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
-from launchverify.package_executables import executables
 from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.workspace.package_executables import executables
 
 
 class UnknownExecutable(Rule):

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from launchverify.findings.suppressions import Suppression
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Rule, RuleContext, Severity
-from launchverify.suppressions import Suppression
 
 
 class UnusedSuppression(Rule):

@@ -10,10 +10,10 @@ from pathlib import Path
 from launchverify.frontends.param_file import ParamFile
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.models.ros_names import node_key_matches
-from launchverify.package_contents import name_literals, unnamed_node_names
-from launchverify.packages import PackageIndex
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+from launchverify.workspace.package_contents import name_literals, unnamed_node_names
+from launchverify.workspace.packages import PackageIndex
 
 COMPONENT_KINDS = ("composable_node", "composable_lifecycle_node")
 

@@ -8,7 +8,7 @@ from launchverify.frontends import LoadedFile, load_launch_file
 from launchverify.frontends.param_file import ParamFile, load_param_file
 from launchverify.frontends.python import PythonFrontend
 from launchverify.graph import StaticArgument
-from launchverify.packages import PackageIndex
+from launchverify.workspace.packages import PackageIndex
 
 
 class FileCache:

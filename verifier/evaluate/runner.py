@@ -7,7 +7,7 @@ from pathlib import Path
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.walker import Walker
 from launchverify.graph import LaunchGraph
-from launchverify.packages import PackageIndex
+from launchverify.workspace.packages import PackageIndex
 
 
 def evaluate(

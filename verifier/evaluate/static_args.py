@@ -17,7 +17,7 @@ from launchverify.frontends import LoadedFile
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import Unknown
-from launchverify.packages import PackageIndex
+from launchverify.workspace.packages import PackageIndex
 
 Loader = Callable[[Path], LoadedFile]
 MAX_DEPTH = 32

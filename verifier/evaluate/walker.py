@@ -66,9 +66,9 @@ from launchverify.ir.symbolic import (
 )
 from launchverify.models.launch_api.placeholders import placeholder
 from launchverify.models.parameter_values import typed_parameter
-from launchverify.packages import PackageIndex
 from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
+from launchverify.workspace.packages import PackageIndex
 
 MAX_INCLUDE_DEPTH = 40
 MAX_LOOP = 256

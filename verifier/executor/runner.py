@@ -79,7 +79,7 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
 
 
 def _workspace_of(report: Report) -> Path | None:
-    from launchverify.packages import find_workspace
+    from launchverify.workspace.packages import find_workspace
 
     return find_workspace(report.graphs[0].root) if report.graphs else None
 

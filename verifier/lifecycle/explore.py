@@ -22,9 +22,9 @@ from collections.abc import Hashable, Iterator
 from dataclasses import dataclass, field
 from typing import NamedTuple
 
+from launchverify.findings.trace import Step
 from launchverify.lifecycle.system import LAUNCH, Block, Request, System
 from launchverify.models import lifecycle as lc
-from launchverify.trace import Step
 
 MAX_STATES = 50_000
 REDUCE = True  # partial-order reduction (tests compare against the full search)

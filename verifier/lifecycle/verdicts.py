@@ -13,18 +13,18 @@ from collections import Counter
 from dataclasses import dataclass
 from typing import NamedTuple
 
+from launchverify.findings.trace import Step
 from launchverify.graph import LaunchGraph, Origin
 from launchverify.lifecycle import Analysis
 from launchverify.lifecycle.explore import Source, Where, verb
 from launchverify.lifecycle.system import Block, Reaction
 from launchverify.models import lifecycle as lc
 from launchverify.models.ros_names import node_fqn
-from launchverify.package_contents import unnamed_node_names
-from launchverify.packages import PackageIndex
 from launchverify.rule import Finding, Related, Rule
 from launchverify.span import Span
 from launchverify.suggest import typo_of
-from launchverify.trace import Step
+from launchverify.workspace.package_contents import unnamed_node_names
+from launchverify.workspace.packages import PackageIndex
 
 # The events of a bring-up that succeeds: configure, then activate.
 BRINGUP_EVENTS = (

@@ -17,7 +17,7 @@ from launchverify.models import lifecycle as lc
 from launchverify.models.parameter_values import typed_parameter
 from launchverify.models.ros_names import node_fqn
 from launchverify.parameters import Contribution, effective_parameters
-from launchverify.paths import display_path
+from launchverify.workspace.paths import display_path
 
 BRINGUP_ORDER = ("unconfigured", "configuring", "inactive", "activating", "active")
 

@@ -12,8 +12,8 @@ from collections.abc import Iterable
 from launchverify.engine import Report
 from launchverify.render.html_text import clip, esc, place
 from launchverify.rule import Finding, Severity
-from launchverify.sources import source_line, source_lines
 from launchverify.span import Span
+from launchverify.workspace.sources import source_line, source_lines
 
 FRAME_CONTEXT = 2  # source lines shown above and below a finding
 LINE_LIMIT = 240  # characters of a source line shown

@@ -9,7 +9,7 @@ other files get absolute ``file://`` URIs.
 
 Fingerprints: ``partialFingerprints["launchverify/v1"]`` lets a viewer recognise a
 finding again after edits elsewhere in the file moved it; the recipe (shared with
-baselines) is in ``launchverify.fingerprint``, with paths relative to the root.
+baselines) is in ``launchverify.findings.fingerprint``, with paths relative to the root.
 """
 
 from __future__ import annotations
@@ -24,7 +24,7 @@ from urllib.parse import quote
 
 from launchverify import __version__
 from launchverify.engine import Report
-from launchverify.fingerprint import fingerprints
+from launchverify.findings.fingerprint import fingerprints
 from launchverify.registry import all_rules
 from launchverify.rule import Finding, Rule, Severity
 from launchverify.span import Span

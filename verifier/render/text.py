@@ -9,7 +9,7 @@ from rich.markup import escape
 
 from launchverify.engine import Report
 from launchverify.rule import Finding, Severity
-from launchverify.sources import source_line, source_lines
+from launchverify.workspace.sources import source_line, source_lines
 
 STYLES = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "cyan"}
 

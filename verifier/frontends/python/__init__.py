@@ -36,9 +36,9 @@ from launchverify.models.launch_api.placeholders import (
     placeholder,
 )
 from launchverify.own_code import is_own_file
-from launchverify.packages import PackageIndex
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
+from launchverify.workspace.packages import PackageIndex
 
 MAX_SOURCE = 2 * 1024 * 1024
 ENTRY_POINTS = ("generate_launch_description", "generate_test_description")

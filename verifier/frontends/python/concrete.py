@@ -11,7 +11,7 @@ from launchverify.ir import subst as s
 from launchverify.ir.symbolic import EnvInput
 from launchverify.models import booleans
 from launchverify.models.launch_api.placeholders import placeholder
-from launchverify.packages import PackageIndex
+from launchverify.workspace.packages import PackageIndex
 
 
 class SubstitutionFailure(Exception):

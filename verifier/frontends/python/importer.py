@@ -30,7 +30,7 @@ from typing import Any
 
 from launchverify.models.launch_api import MODULES, QUIET_ROOTS, exports_for, is_modelled
 from launchverify.own_code import is_own_file
-from launchverify.packages import PackageIndex
+from launchverify.workspace.packages import PackageIndex
 
 
 class _ModelLoader(importlib.abc.Loader):

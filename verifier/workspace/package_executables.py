@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 
-from launchverify.packages import Package
+from launchverify.workspace.packages import Package
 
 MAX_CMAKE_BYTES = 512 * 1024
 MAX_CALL_DEPTH = 8

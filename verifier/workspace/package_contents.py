@@ -17,7 +17,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from launchverify.graph import LaunchGraph, NodeRecord
-from launchverify.packages import SKIP_DIRS, Package, PackageIndex
+from launchverify.workspace.packages import SKIP_DIRS, Package, PackageIndex
 
 MAX_SOURCE_FILES = 2_000
 _TEST_DIRS = frozenset({"test", "tests"})

@@ -15,8 +15,8 @@ from pathlib import Path
 
 from launchverify.registry import RegistryError, resolve
 from launchverify.rule import Finding
-from launchverify.sources import source_lines
 from launchverify.span import Span
+from launchverify.workspace.sources import source_lines
 
 _HASH = re.compile(r"#\s*launchverify:\s*ignore\b(?:\[(?P<codes>[^\]]*)\])?")
 _XML = re.compile(r"<!--\s*launchverify:\s*ignore\b(?:\[(?P<codes>[^\]]*)\])?\s*-->")

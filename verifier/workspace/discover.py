@@ -6,7 +6,7 @@ import os
 import re
 from pathlib import Path
 
-from launchverify.packages import SKIP_DIRS
+from launchverify.workspace.packages import SKIP_DIRS
 
 LAUNCH_SUFFIXES = ("launch.xml", "launch.yaml", "launch.yml")
 PYTHON_SUFFIX = "launch.py"

@@ -13,9 +13,9 @@ from collections import Counter
 from pathlib import Path
 
 from launchverify import __version__
-from launchverify.fingerprint import fingerprints
-from launchverify.paths import relative_file
+from launchverify.findings.fingerprint import fingerprints
 from launchverify.rule import Finding
+from launchverify.workspace.paths import relative_file
 
 
 class BaselineError(ValueError):

@@ -17,9 +17,9 @@ from collections import Counter
 from collections.abc import Iterable
 from pathlib import Path
 
-from launchverify.paths import relative_file
 from launchverify.rule import Finding
-from launchverify.sources import source_line
+from launchverify.workspace.paths import relative_file
+from launchverify.workspace.sources import source_line
 
 _LINE_REFERENCE = re.compile(r"(?<=\S):\d+\b")
 _LINE_WORD = re.compile(r"\b(lines?) \d+\b")
