@@ -21,13 +21,19 @@ from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
 from launchverify.findings.baseline import apply_baseline
 from launchverify.findings.suppressions import apply_suppressions
+from launchverify.frontends import launch_format
 from launchverify.graph import LaunchGraph
+from launchverify.isolation.confine import Limits
+from launchverify.isolation.pool import IsolatedPython
 from launchverify.models import distros
 from launchverify.registry import select as select_rules
 from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.workspace import reading
 from launchverify.workspace.discover import discover
 from launchverify.workspace.packages import PackageIndex, find_workspace
 from launchverify.workspace.paths import display_path, relative_file
+
+DEFAULT_TIME_LIMIT = 10.0
 
 
 class UsageError(Exception):
@@ -49,6 +55,9 @@ class CheckOptions:
     baseline: Path | None = None
     launch_files_only: bool = False  # given files must look like launch files too
     distro: str | None = None  # the ROS 2 distribution to check for (None: any)
+    jobs: int | None = None  # Python files evaluated at once (None: one per CPU)
+    time_limit: float = DEFAULT_TIME_LIMIT  # seconds per Python evaluation
+    max_file_size: int = reading.DEFAULT_LIMIT  # bytes; larger files are not read
     progress: Callable[[int, int], None] | None = None  # (files evaluated, files in all)
 
 
@@ -141,9 +150,13 @@ def run_check(options: CheckOptions) -> Report:
     if not files:
         return Report([], 0, time.perf_counter() - started, display)
     workspace, index = build_index(options.paths, options.workspace, config.package_paths)
-    loader = FileCache(index, workspace)
+    limits = Limits(seconds=options.time_limit)
     graphs = []
-    with distros.checking(options.distro):
+    with distros.checking(options.distro), reading.size_limit(options.max_file_size), \
+            IsolatedPython(index, workspace, jobs=options.jobs or os.cpu_count() or 1,
+                           limits=limits, distro=options.distro) as python:
+        loader = FileCache(index, workspace, python)
+        python.prefetch(canonical(f) for f in files if launch_format(f) == "python")
         for done, file in enumerate(files):
             graphs.append(evaluate(canonical(file), index=index, workspace=workspace,
                                    pinned=options.arguments, environment=options.environment,

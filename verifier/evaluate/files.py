@@ -4,21 +4,33 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from launchverify.frontends import LoadedFile, load_launch_file
+from launchverify.frontends import LoadedFile, PythonLoader, load_launch_file
 from launchverify.frontends.param_file import ParamFile, load_param_file
-from launchverify.frontends.python import PythonFrontend
 from launchverify.graph import StaticArgument
 from launchverify.workspace.packages import PackageIndex
 
 
 class FileCache:
-    """Loads each launch file and parameter file once per run, whoever asks for it."""
+    """Loads each launch file and parameter file once per run, whoever asks for it.
 
-    def __init__(self, index: PackageIndex, workspace: Path) -> None:
+    Python launch files are evaluated by ``python``; by default by confined worker
+    processes owned by this cache (``close`` ends them).
+    """
+
+    def __init__(self, index: PackageIndex, workspace: Path,
+                 python: PythonLoader | None = None) -> None:
+        from launchverify.isolation.pool import IsolatedPython
+
         self._files: dict[Path, LoadedFile] = {}
         self._param_files: dict[Path, ParamFile] = {}
         self.static_arguments: dict[Path, tuple[StaticArgument, ...]] = {}
-        self.python = PythonFrontend(index, workspace)
+        self._owned = IsolatedPython(index, workspace) if python is None else None
+        self.python: PythonLoader = python or self._owned  # type: ignore[assignment]
+
+    def close(self) -> None:
+        """End the worker processes this cache started, if any."""
+        if self._owned is not None:
+            self._owned.close()
 
     def __call__(self, path: Path) -> LoadedFile:
         """Return the loaded file, reading it the first time."""

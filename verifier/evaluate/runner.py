@@ -37,6 +37,10 @@ def evaluate(
     graph = LaunchGraph(root=root, pinned=dict(pinned or {}),
                         environment=dict(environment or {}),
                         included_elsewhere=included_elsewhere)
-    walker = Walker(graph, index, loader or FileCache(index, workspace), workspace)
-    walker.run()
+    cache = loader or FileCache(index, workspace)
+    try:
+        Walker(graph, index, cache, workspace).run()
+    finally:
+        if loader is None:
+            cache.close()
     return graph

@@ -4,18 +4,26 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Protocol
 
-from launchverify.frontends.python import PythonFrontend
 from launchverify.frontends.tags import TagParser
 from launchverify.frontends.xml_reader import read_xml
 from launchverify.frontends.yaml_reader import read_yaml
 from launchverify.ir.actions import LaunchFile
 from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
+from launchverify.workspace.reading import is_regular, read_file
 
 XML_SUFFIXES = (".xml",)
 YAML_SUFFIXES = (".yaml", ".yml")
 PYTHON_SUFFIXES = (".py",)
+
+
+class PythonLoader(Protocol):
+    """Evaluates Python launch files (in worker processes: ``launchverify.isolation``)."""
+
+    def load(self, path: Path, sink: ProblemSink) -> LaunchFile | None:
+        """Return the file's IR, recording its problems in ``sink``."""
 
 
 @dataclass
@@ -42,18 +50,20 @@ def launch_format(path: Path, data: bytes | None = None) -> str:
     return "yaml"
 
 
-def load_launch_file(path: Path, python: PythonFrontend | None = None) -> LoadedFile:
+def load_launch_file(path: Path, python: PythonLoader | None = None) -> LoadedFile:
     """Read and convert one launch file, recording every problem instead of raising.
 
     Python launch files need ``python`` (which knows the packages and the workspace).
     """
     sink = ProblemSink()
     if launch_format(path) == "python" and python is not None:
+        if not is_regular(path):  # a FIFO would block the worker that opens it
+            return _unreadable(path, "python", sink)
         return LoadedFile(path, "python", python.load(path, sink), sink.problems)
     try:
-        data = path.read_bytes()
+        data = read_file(path)
     except OSError as error:
-        sink.parse(f"cannot read file: {error.strerror or error}", Span.of_file(path))
+        sink.parse(f"cannot read file: {error}", Span.of_file(path))
         return LoadedFile(path, launch_format(path), None, sink.problems)
     fmt = launch_format(path, data)
     if fmt == "python":
@@ -65,3 +75,11 @@ def load_launch_file(path: Path, python: PythonFrontend | None = None) -> Loaded
         return LoadedFile(path, fmt, None, sink.problems)
     launch = TagParser(path, sink).launch_file(root, fmt)
     return LoadedFile(path, fmt, launch, sink.problems)
+
+
+def _unreadable(path: Path, fmt: str, sink: ProblemSink) -> LoadedFile:
+    try:
+        read_file(path, prefix=0)
+    except OSError as error:
+        sink.parse(f"cannot read file: {error}", Span.of_file(path))
+    return LoadedFile(path, fmt, None, sink.problems)

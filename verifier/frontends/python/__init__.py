@@ -39,8 +39,8 @@ from launchverify.own_code import is_own_file
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
+from launchverify.workspace.reading import read_file
 
-MAX_SOURCE = 2 * 1024 * 1024
 ENTRY_POINTS = ("generate_launch_description", "generate_test_description")
 
 
@@ -58,12 +58,9 @@ class PythonFrontend:
     def load(self, path: Path, sink: ProblemSink) -> a.LaunchFile | None:
         """Run a Python launch file and return its IR, recording problems in ``sink``."""
         try:
-            data = path.read_bytes()
+            data = read_file(path)
         except OSError as error:
-            sink.parse(f"cannot read file: {error.strerror or error}", Span.of_file(path))
-            return None
-        if len(data) > MAX_SOURCE:
-            sink.parse("file is larger than 2 MiB; not read", Span.of_file(path))
+            sink.parse(f"cannot read file: {error}", Span.of_file(path))
             return None
         try:
             code = compile(data, str(path), "exec", dont_inherit=True)

@@ -1,12 +1,16 @@
-"""Running a launch file's Python with no side effects, within time and memory limits.
+"""The audit-hook layer of the sandbox a Python launch file runs in.
 
-An audit hook (installed once, active only inside ``sandbox()``) refuses what would touch
-the world: starting processes, sockets, writing, renaming or deleting files, changing the
-working directory or the environment of the process. The only writable place is a private
-temporary folder (``tempfile`` points there), deleted when the evaluation ends. The
-environment the code sees is a symbolic stand-in: unknown variables read as placeholders
-instead of this machine's values. A timer interrupts endless loops; an address-space limit
-stops runaway memory.
+A launch file runs only in a worker process (``launchverify.isolation``), confined by the
+operating system. Inside it, this layer says clearly what was refused: an audit hook
+refuses what Python announces that would touch the world (starting processes, sockets,
+writing, renaming or deleting files, changing the working directory or the environment,
+adding audit hooks), with the user's line. The only writable place is a private scratch
+folder (``tempfile`` points there). The environment the code sees is a symbolic
+stand-in: variables read as placeholders instead of this machine's values. A timer
+interrupts endless loops with the line they are on.
+
+In a worker the hook is armed for the whole process (``arm``); elsewhere ``sandbox()``
+switches it on for a block, in the calling thread.
 """
 
 from __future__ import annotations
@@ -42,7 +46,9 @@ BLOCKED_EVENTS = frozenset({
     "os.setxattr", "os.removexattr", "shutil.rmtree", "shutil.move", "shutil.copyfile",
     "shutil.copytree", "shutil.chown", "shutil.make_archive", "shutil.unpack_archive",
     "os.startfile", "os.system", "sys.setrecursionlimit", "sys.settrace", "sys.setprofile",
+    "sys.addaudithook", "sqlite3.connect", "sqlite3.connect/handle", "os.mkfifo", "os.mknod",
 })
+_TWO_PATHS = frozenset({"os.rename", "os.link", "os.symlink", "shutil.copyfile", "shutil.move"})
 _SCRATCH_EVENTS = frozenset({"os.remove", "os.rename", "os.rmdir", "os.mkdir", "os.chmod",
                              "os.utime", "shutil.rmtree", "shutil.copyfile", "shutil.move"})
 _STDLIB = os.path.dirname(os.__file__)  # noqa: PTH120
@@ -62,10 +68,26 @@ class TimeLimitExceeded(Exception):
 _state = threading.local()
 _scratch: list[str] = []  # the private temporary folder of the current evaluation
 _hook: list[bool] = []  # installed once per process (audit hooks cannot be removed)
+_armed: list[bool] = []  # a worker: on for every thread, for good
 
 
 def _active() -> bool:
-    return getattr(_state, "depth", 0) > 0
+    return bool(_armed) or getattr(_state, "depth", 0) > 0
+
+
+def arm(scratch: str) -> None:
+    """Refuse side effects in this whole process from now on (a worker, once confined)."""
+    _install_hook()
+    _scratch[:] = [os.path.abspath(scratch)]  # noqa: PTH100
+    tempfile.tempdir = _scratch[0]
+    sys.dont_write_bytecode = True
+    os.environ = SymbolicEnviron()  # type: ignore[assignment]  # noqa: B003
+    _armed.append(True)
+
+
+def armed() -> bool:
+    """Return whether this process is a worker with the hook on for good."""
+    return bool(_armed)
 
 
 def _in_scratch(path: Any) -> bool:
@@ -78,7 +100,9 @@ def _in_scratch(path: Any) -> bool:
 def _audit(event: str, args: tuple[Any, ...]) -> None:
     if not _active():
         return
-    if args and _in_scratch(args[0]) and (event == "open" or event in _SCRATCH_EVENTS):
+    paths = args[:2] if event in _TWO_PATHS else args[:1]
+    if paths and all(_in_scratch(p) for p in paths) and (
+            event == "open" or event in _SCRATCH_EVENTS):
         return  # the evaluation's own temporary folder, deleted afterwards
     if event in BLOCKED_EVENTS or event.startswith(BLOCKED_PREFIXES):
         _refuse(f"{event} is not allowed")
@@ -161,12 +185,11 @@ class SymbolicEnviron(MutableMapping[str, str]):
 
 
 @contextmanager
-def sandbox(time_limit: float | None = None) -> Iterator[None]:
+def sandbox(seconds: float | None = None) -> Iterator[None]:
     """Run a block with side effects refused, a symbolic environment and resource limits."""
-    if time_limit is None:
-        time_limit = TIME_LIMIT
+    limit = TIME_LIMIT if seconds is None else seconds
     _install_hook()
-    nested = _active()
+    nested = _active()  # in a worker: limits, timer and scratch folder are the worker's
     _state.depth = getattr(_state, "depth", 0) + 1
     saved_bytecode = sys.dont_write_bytecode
     saved_environ = os.environ
@@ -181,7 +204,7 @@ def sandbox(time_limit: float | None = None) -> Iterator[None]:
         _scratch.append(scratch)
         tempfile.tempdir = scratch
     try:
-        with _time_limit(time_limit if not nested else 0), _memory_limit(not nested), \
+        with time_limit(limit if not nested else 0), _memory_limit(not nested), \
                 redirect_stdout(io.StringIO()), redirect_stderr(io.StringIO()):
             yield
     finally:
@@ -195,7 +218,8 @@ def sandbox(time_limit: float | None = None) -> Iterator[None]:
 
 
 @contextmanager
-def _time_limit(seconds: float) -> Iterator[None]:
+def time_limit(seconds: float) -> Iterator[None]:
+    """Interrupt the block with ``TimeLimitExceeded`` after ``seconds`` (main thread only)."""
     main = threading.current_thread() is threading.main_thread()
     if seconds <= 0 or not main or not hasattr(signal, "setitimer"):
         yield

@@ -1,0 +1,395 @@
+"""launchverify's side of the workers: Python launch files in, validated IR out.
+
+``IsolatedPython`` stands where the in-process Python frontend stood (``load(path,
+sink)``): each Python launch file is evaluated by a fresh worker forked from the zygote,
+up to ``jobs`` at once (``prefetch`` queues files the check will need), and what comes
+back is decoded by ``codec`` with every field checked. A worker whose file has
+OpaqueFunctions stays until the check ends, so the walk can run them when it reaches
+them. Whatever goes wrong in a worker (it dies, exits early, exceeds its time, sends
+garbage) becomes a problem on its file, never an exception here.
+"""
+
+from __future__ import annotations
+
+import os
+import select
+import sys
+import time
+from collections import deque
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from launchverify.ir import actions as a
+from launchverify.isolation.channel import Channel, ChannelError, Closed
+from launchverify.isolation.codec import CodecError, Decoder, Encoder
+from launchverify.isolation.confine import Limits, prepare
+from launchverify.isolation.worker import Setting
+from launchverify.isolation.zygote import Zygote
+from launchverify.problems import Problem, ProblemKind, ProblemSink
+from launchverify.span import Span
+from launchverify.workspace.packages import PackageIndex
+from launchverify.workspace.reading import read_file
+
+GRACE = 2.0  # seconds past the time limit before a worker is killed
+_ENTRY_POINTS = (b"def generate_launch_description", b"def generate_test_description")
+
+
+@dataclass(eq=False)
+class _Worker:
+    """One worker as launchverify sees it."""
+
+    path: Path
+    number: int
+    channel: Channel
+    ended: str | None = None  # why it can no longer answer
+
+
+@dataclass(eq=False)
+class _Request:
+    """A message sent to a worker, waiting for its answer."""
+
+    worker: _Worker
+    deadline: float
+    reply: dict[str, Any] | None = None
+    failure: str | None = None
+    load: _Load | None = None  # the evaluation it answers, if it is one
+
+    @property
+    def done(self) -> bool:
+        return self.reply is not None or self.failure is not None
+
+
+@dataclass(eq=False)
+class _Load:
+    """A file's evaluation: queued, running or done."""
+
+    path: Path
+    request: _Request | None = None
+    launch: a.LaunchFile | None = None
+    problems: list[Problem] = field(default_factory=list)
+    done: bool = False
+
+
+class IsolatedPython:
+    """Evaluates Python launch files in confined worker processes."""
+
+    def __init__(self, index: PackageIndex, workspace: Path, *, jobs: int = 1,
+                 limits: Limits | None = None, distro: str | None = None) -> None:
+        self.limits = limits or Limits()
+        self.setting = Setting(index, workspace, readable_folders(index, workspace),
+                               self.limits, distro,
+                               debug=bool(os.environ.get("LAUNCHVERIFY_DEBUG_WORKERS")))
+        self.jobs = max(1, jobs)
+        self.protections: str | None = None  # as the first worker reported them
+        self._zygote: Zygote | None = None
+        self._loads: dict[Path, _Load] = {}
+        self._queue: deque[_Load] = deque()
+        self._running: list[_Request] = []
+        self._workers: list[_Worker] = []  # alive, for OpaqueFunctions
+        self._helpers: dict[Path, bool] = {}
+
+    # ------------------------------------------------------------------ the loader
+
+    def prefetch(self, paths: Iterable[Path]) -> None:
+        """Queue files the check will load, so that up to ``jobs`` run at once."""
+        for path in paths:
+            if path not in self._loads:
+                load = _Load(path)
+                self._loads[path] = load
+                self._queue.append(load)
+        self._start_queued()
+
+    def load(self, path: Path, sink: ProblemSink) -> a.LaunchFile | None:
+        """Evaluate a Python launch file; its problems go to ``sink``."""
+        load = self._loads.get(path)
+        if load is None:
+            load = _Load(path)
+            self._loads[path] = load
+            self._queue.appendleft(load)
+        elif load in self._queue:  # needed now: first in line
+            self._queue.remove(load)
+            self._queue.appendleft(load)
+        while not load.done:
+            self._start_queued()
+            self._pump()
+        sink.problems.extend(load.problems)
+        return load.launch
+
+    def close(self) -> None:
+        """End every worker and the zygote."""
+        for worker in self._workers:
+            worker.channel.close()
+        for request in self._running:
+            request.worker.channel.close()
+        self._workers.clear()
+        self._running.clear()
+        if self._zygote is not None:
+            self._zygote.close()
+            self._zygote = None
+
+    def __enter__(self) -> IsolatedPython:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # ------------------------------------------------------------------ running requests
+
+    def _start_queued(self) -> None:
+        while self._queue and len(self._running) < self.jobs:
+            load = self._queue.popleft()
+            if self._zygote is None:
+                prepare()
+                self._zygote = Zygote(self.setting)
+            number, fd = self._zygote.spawn({"path": str(load.path)})
+            worker = _Worker(load.path, number, Channel(fd))
+            load.request = self._send(worker, None)
+            load.request.load = load
+            self._running.append(load.request)
+
+    def _send(self, worker: _Worker, message: dict[str, Any] | None) -> _Request:
+        deadline = time.monotonic() + self.limits.seconds + GRACE
+        request = _Request(worker, deadline)
+        if message is not None:
+            try:
+                worker.channel.send(message, deadline)
+            except ChannelError as error:
+                self._fail(request, f"could not be reached ({error})")
+        return request
+
+    def _pump(self) -> None:
+        """Wait for the next answer or deadline among the requests in flight."""
+        if not self._running:
+            return
+        now = time.monotonic()
+        timeout = max(0.0, min(r.deadline for r in self._running) - now)
+        poller = select.poll()
+        by_fd = {}
+        for request in self._running:
+            poller.register(request.worker.channel.fd, select.POLLIN)
+            by_fd[request.worker.channel.fd] = request
+        for fd, _ in poller.poll(timeout * 1000):
+            self._receive(by_fd[fd])
+        now = time.monotonic()
+        for request in self._running:
+            if not request.done and request.deadline <= now:
+                seconds = self.limits.seconds
+                self._fail(request, f"took longer than {seconds:g} s and was stopped (an "
+                           "endless loop, or code that does not give way to the timer?)",
+                           kill=True)
+        for request in [r for r in self._running if r.done]:
+            self._running.remove(request)
+            self._finish(request)
+
+    def _receive(self, request: _Request) -> None:
+        channel = request.worker.channel
+        try:
+            channel.fill()
+            message = channel.take()
+        except Closed:
+            self._fail(request, self._ended(request.worker))
+            return
+        except ChannelError as error:
+            self._fail(request, f"sent a malformed answer ({error})", kill=True)
+            return
+        if message is None:
+            return
+        reply = message[0]
+        if not isinstance(reply, dict) or reply.get("op") not in ("loaded", "result", "error"):
+            self._fail(request, "sent a malformed answer", kill=True)
+            return
+        request.reply = reply
+
+    def _fail(self, request: _Request, why: str, *, kill: bool = False) -> None:
+        worker = request.worker
+        request.failure = why
+        worker.ended = why
+        if kill and self._zygote is not None:
+            self._zygote.kill(worker.number)
+        worker.channel.close()
+
+    def _ended(self, worker: _Worker) -> str:
+        ended = self._zygote.wait(worker.number, 2.0) if self._zygote is not None else None
+        how = ended.describe() if ended is not None else "ended"
+        return f"{how} before answering (os._exit, a crash or a signal in the launch file's code?)"
+
+    def _finish(self, request: _Request) -> None:
+        if request.load is not None:
+            self._loaded(request.load, request)
+
+    # ------------------------------------------------------------------ answers
+
+    def _loaded(self, load: _Load, request: _Request) -> None:
+        load.done = True
+        worker = request.worker
+        reply = request.reply
+        if reply is None or reply.get("op") != "loaded":
+            if reply is None:
+                why, where = f"its process {request.failure}", Span.of_file(load.path)
+            else:
+                why = str(reply.get("message", ""))[:300]
+                where = self._where(load.path, reply.get("where"))
+            load.problems.append(Problem(
+                ProblemKind.EVALUATION, f"the evaluation of this file failed: {why}", where))
+            worker.channel.close()
+            return
+        if self.protections is None:
+            self.protections = str(reply.get("protections", ""))
+        callbacks: list[_Callback] = []
+        decoder = self._decoder(worker, callbacks)
+        try:
+            decoded = decoder.decode(reply.get("data"))
+            if not isinstance(decoded, tuple) or len(decoded) != 2:
+                raise CodecError("not a launch file")
+            launch, problems = decoded
+            if not (launch is None or isinstance(launch, a.LaunchFile)) or not isinstance(
+                    problems, tuple) or not all(isinstance(p, Problem) for p in problems):
+                raise CodecError("not a launch file")
+        except (CodecError, ValueError, TypeError) as error:
+            load.problems.append(Problem(
+                ProblemKind.EVALUATION, "the evaluation of this file failed: its process sent "
+                f"an answer that is not a launch description ({error})",
+                Span.of_file(load.path)))
+            worker.channel.close()
+            return
+        load.launch = launch if launch is None or launch.path == load.path else None
+        load.problems.extend(problems)
+        _place_callbacks(launch, callbacks)
+        if callbacks:
+            self._workers.append(worker)
+        else:
+            worker.channel.close()  # nothing more to ask: the worker exits
+
+    def call(self, worker: _Worker, number: int, configurations: Mapping[str, Any],
+             current: Path, span: Span) -> a.OpaqueResult:
+        """Run one OpaqueFunction of ``worker``'s file."""
+        if worker.ended is not None:
+            return _failed(span, f"not evaluated: the process evaluating this file "
+                           f"{worker.ended}", ProblemKind.UNMODELED)
+        arguments = Encoder(_no_register).encode((dict(configurations), str(current)))
+        request = self._send(worker, {"op": "call", "callback": number, "arguments": arguments})
+        if not request.done:
+            self._running.append(request)
+        while not request.done:
+            self._start_queued()
+            self._pump()
+        if request in self._running:
+            self._running.remove(request)
+        reply = request.reply
+        if reply is None:
+            return _failed(span, f"running this OpaqueFunction failed: the process evaluating "
+                           f"this file {request.failure}", ProblemKind.EVALUATION)
+        if reply.get("op") != "result":
+            where = self._where(worker.path, reply.get("where")) if reply.get("where") else span
+            return _failed(where, f"running this OpaqueFunction failed: "
+                           f"{str(reply.get('message', ''))[:300]}", ProblemKind.EVALUATION)
+        callbacks: list[_Callback] = []
+        decoder = self._decoder(worker, callbacks)
+        try:
+            result = decoder.decode(reply.get("data"))
+            if not isinstance(result, a.OpaqueResult) or not all(
+                    isinstance(p, Problem) for p in result.problems):
+                raise CodecError("not the result of an OpaqueFunction")
+        except (CodecError, ValueError, TypeError) as error:
+            return _failed(span, f"running this OpaqueFunction failed: its answer is not a "
+                           f"launch description ({error})", ProblemKind.EVALUATION)
+        _place_callbacks(result, callbacks)
+        return result
+
+    def _decoder(self, worker: _Worker, callbacks: list[_Callback]) -> Decoder:
+        """Return a decoder for ``worker``'s answers, collecting the callbacks it names."""
+        def callback(number: int) -> _Callback:
+            callbacks.append(_Callback(self, worker, number))
+            return callbacks[-1]
+
+        return Decoder(callback, span=lambda found: self._own_span(worker.path, found))
+
+    # ------------------------------------------------------------------ places
+
+    def _where(self, path: Path, where: object) -> Span:
+        if isinstance(where, list) and len(where) == 2 and isinstance(where[0], str) \
+                and isinstance(where[1], int):
+            return self._own_span(path, Span(Path(where[0]), max(1, where[1])))
+        return Span.of_file(path)
+
+    def _own_span(self, path: Path, span: Span) -> Span:
+        """Keep a worker's places in its own file and the helper modules it imports.
+
+        A launch file's code may claim any file name (``compile(src, 'other.py')``): it
+        must not put findings on other launch files.
+        """
+        if span.file == path or self._is_helper(path, span.file):
+            return span
+        return Span.of_file(path)
+
+    def _is_helper(self, path: Path, file: Path) -> bool:
+        known = self._helpers.get(file)
+        if known is None:
+            known = False
+            if file.suffix == ".py" and file.is_absolute() and (
+                    file.is_relative_to(self.setting.workspace)
+                    or file.is_relative_to(path.parent)):
+                try:
+                    data = read_file(file, prefix=1 << 20)
+                    known = not any(entry in data for entry in _ENTRY_POINTS)
+                except OSError:
+                    known = False
+            self._helpers[file] = known
+        return known
+
+
+class _Callback:
+    """An OpaqueFunction body that runs in its file's worker."""
+
+    def __init__(self, pool: IsolatedPython, worker: _Worker, number: int) -> None:
+        self.pool = pool
+        self.worker = worker
+        self.number = number
+        self.span: Span = Span.of_file(worker.path)
+
+    def __call__(self, configurations: Mapping[str, Any], current: Path) -> a.OpaqueResult:
+        return self.pool.call(self.worker, self.number, configurations, current, self.span)
+
+
+def _place_callbacks(value: object, callbacks: list[_Callback]) -> None:
+    """Point each callback at its OpaqueFunction's line (for its failures)."""
+    if not callbacks:
+        return
+    from launchverify.isolation.codec import iter_records
+
+    for record in iter_records(value):
+        if isinstance(record, a.OpaqueFunction) and isinstance(record.run, _Callback):
+            record.run.span = record.span
+
+
+def _failed(span: Span, message: str, kind: ProblemKind) -> a.OpaqueResult:
+    return a.OpaqueResult(actions=(), problems=(Problem(kind, message, span),))
+
+
+def _no_register(function: Callable[..., Any]) -> int:
+    raise CodecError("launchverify sends no functions to a worker")
+
+
+def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
+    """Return the folders a worker may read: the workspace, packages, Python, system libraries.
+
+    Everything else (home folders, ``/proc``, ``/etc``) stays unreadable where Landlock
+    is available, so a launch file cannot copy secrets into its findings.
+    """
+    import launchverify
+    import launchverify.models
+    import launchverify.rules
+
+    folders = {str(workspace)}
+    folders.update(str(folder) for folder in (*index.workspaces, *index.prefixes))
+    folders.update(str(folder) for found in index.sources.values() for folder in found)
+    for prefix in (sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix):
+        folders.add(prefix)
+    folders.update(entry for entry in sys.path if entry and os.path.isdir(entry))  # noqa: PTH112
+    for package in (launchverify, launchverify.models, launchverify.rules):
+        folders.add(str(Path(package.__file__ or ".").resolve().parent))
+    folders.update(("/usr/lib", "/usr/lib64", "/lib", "/lib64", "/usr/share/zoneinfo",
+                    "/etc/ld.so.cache", "/etc/localtime"))
+    return tuple(sorted(f for f in folders if os.path.exists(f)))  # noqa: PTH110

@@ -1,0 +1,149 @@
+"""A worker: one Python launch file evaluated in a confined process.
+
+Forked from the zygote for one file, it closes every descriptor but its channel, leaves
+the zygote's session, confines itself (``confine``), arms the audit hook, then runs the
+file and sends back its IR as plain data. It stays to run the file's OpaqueFunctions when
+the parent's walk reaches them, one request at a time, each under the time limit, until
+the parent closes the channel. It never returns: it ends with ``os._exit``, so nothing the
+launch file registered (``atexit``, finalizers) runs after the last answer.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import traceback
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any, NoReturn
+
+from launchverify.frontends.python import PythonFrontend
+from launchverify.frontends.python.sandbox import TimeLimitExceeded, arm, time_limit
+from launchverify.isolation.channel import Channel, ChannelError
+from launchverify.isolation.codec import Decoder, Encoder
+from launchverify.isolation.confine import Limits, confine
+from launchverify.models import distros
+from launchverify.problems import ProblemSink
+from launchverify.workspace.packages import PackageIndex
+
+
+@dataclass(frozen=True)
+class Setting:
+    """What every worker of a check shares (inherited through the zygote's memory)."""
+
+    index: PackageIndex
+    workspace: Path
+    readable: tuple[str, ...]  # folders the worker may read (Landlock)
+    limits: Limits
+    distro: str | None
+    debug: bool = False  # keep stderr and print our own failures (LAUNCHVERIFY_DEBUG_WORKERS)
+
+
+def serve(fd: int, request: dict[str, Any], scratch: str, setting: Setting) -> NoReturn:
+    """Run the worker on channel ``fd``; never returns."""
+    status = 0
+    try:
+        _keep_only(fd, keep_stderr=setting.debug)
+        os.setsid()
+        channel = Channel(fd)
+        protections = confine(scratch, (*setting.readable, _folder(request)), setting.limits)
+        arm(scratch)
+        _Worker(channel, setting, protections.describe()).run(request)
+    except BaseException:  # our own failure: the parent reports the worker's end
+        if setting.debug:
+            traceback.print_exc()
+        status = 70
+    os._exit(status)
+
+
+class _Worker:
+    def __init__(self, channel: Channel, setting: Setting, protections: str) -> None:
+        self.channel = channel
+        self.setting = setting
+        self.protections = protections
+        self.callbacks: list[Callable[..., Any]] = []
+
+    def register(self, function: Callable[..., Any]) -> int:
+        self.callbacks.append(function)
+        return len(self.callbacks) - 1
+
+    def run(self, request: dict[str, Any]) -> None:
+        with distros.checking(self.setting.distro):
+            self.answer(self.load, request)
+            while True:
+                try:
+                    request = self.channel.receive()
+                except ChannelError:
+                    return  # the parent is done with this file
+                self.answer(self.call, request)
+
+    def answer(self, handler: Callable[[dict[str, Any]], dict[str, Any]],
+               request: dict[str, Any]) -> None:
+        try:
+            with time_limit(self.setting.limits.seconds):
+                reply = handler(request)
+        except TimeLimitExceeded as error:
+            reply = {"op": "error", "message": f"{error} (an endless loop?)",
+                     "where": _user_line(error)}
+        except BaseException as error:
+            reply = {"op": "error", "message": _describe(error), "where": _user_line(error)}
+        self.channel.send(reply)
+
+    def load(self, request: dict[str, Any]) -> dict[str, Any]:
+        path = Path(request["path"])
+        sink = ProblemSink()
+        frontend = PythonFrontend(self.setting.index, self.setting.workspace)
+        launch = frontend.load(path, sink)
+        encoder = Encoder(self.register)
+        return {"op": "loaded", "protections": self.protections,
+                "data": encoder.encode((launch, tuple(sink.problems)))}
+
+    def call(self, request: dict[str, Any]) -> dict[str, Any]:
+        number = request.get("callback")
+        if not isinstance(number, int) or not 0 <= number < len(self.callbacks):
+            return {"op": "error", "message": "no such callback", "where": None}
+        arguments = Decoder(lambda n: _not_callable).decode(request["arguments"])
+        if not isinstance(arguments, tuple) or len(arguments) != 2:
+            return {"op": "error", "message": "malformed call", "where": None}
+        result = self.callbacks[number](arguments[0], Path(str(arguments[1])))
+        return {"op": "result", "data": Encoder(self.register).encode(result)}
+
+
+def _not_callable(*args: object) -> None:
+    raise TypeError("the parent sends no callbacks")
+
+
+def _folder(request: dict[str, Any]) -> str:
+    return str(Path(request["path"]).parent)
+
+
+def _keep_only(fd: int, *, keep_stderr: bool = False) -> None:
+    """Close every descriptor but ``fd``; standard streams go to /dev/null."""
+    null = os.open(os.devnull, os.O_RDWR)
+    for stream in (0, 1) if keep_stderr else (0, 1, 2):
+        if stream != fd:
+            os.dup2(null, stream)
+    keep = {0, 1, 2, fd}
+    try:
+        open_fds = [int(entry.name) for entry in Path("/proc/self/fd").iterdir()]
+    except OSError:
+        open_fds = list(range(3, 1024))
+    for other in open_fds:
+        if other not in keep:
+            with contextlib.suppress(OSError):
+                os.close(other)
+
+
+def _describe(error: BaseException) -> str:
+    text = str(error)
+    return f"{type(error).__name__}: {text[:300]}" if text else type(error).__name__
+
+
+def _user_line(error: BaseException) -> list[object] | None:
+    """Return ``[file, line]`` of the innermost frame outside launchverify, if any."""
+    from launchverify.own_code import is_own_file
+
+    frames = [f for f in traceback.extract_tb(error.__traceback__)
+              if not is_own_file(f.filename) and not f.filename.startswith("<")]
+    return [frames[-1].filename, frames[-1].lineno or 1] if frames else None

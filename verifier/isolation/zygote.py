@@ -1,0 +1,247 @@
+"""The zygote: a small process forked once per check that forks one worker per file.
+
+launchverify forks it after building the package index and before evaluating anything,
+so it holds the models, the index and little else: forking a worker from it costs about a
+millisecond, where forking launchverify itself late in a large check would copy the page
+tables of everything evaluated so far, and starting an interpreter would cost hundreds.
+
+It talks to launchverify over a ``SOCK_SEQPACKET`` control socket: a spawn request
+carries the worker's end of a fresh socket pair (``SCM_RIGHTS``); the zygote answers when a
+worker ends (its wait status), kills a worker on request (it is the parent, so a pid is
+never reused under it), removes each worker's scratch folder, and when launchverify goes
+away (end of file on the control socket) kills every worker and exits.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import gc
+import json
+import os
+import select
+import shutil
+import signal
+import socket
+import tempfile
+from dataclasses import dataclass
+from typing import Any, NoReturn
+
+from launchverify.isolation.worker import Setting, serve
+
+_PACKET = 1 << 16
+
+
+@dataclass
+class Ended:
+    """How a worker ended, as ``waitpid`` said."""
+
+    code: int | None  # exit status
+    signal: int | None  # the signal that killed it
+
+    def describe(self) -> str:
+        """Return the end in words."""
+        if self.signal is not None:
+            try:
+                name = signal.Signals(self.signal).name
+            except ValueError:
+                name = f"signal {self.signal}"
+            return f"was killed by {name}"
+        return f"exited with status {self.code}"
+
+
+class Zygote:
+    """launchverify's handle on its zygote."""
+
+    def __init__(self, setting: Setting) -> None:
+        ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+        temporary = tempfile.gettempdir()
+        pid = os.fork()
+        if pid == 0:  # the zygote
+            try:
+                ours.close()
+                _Server(theirs, setting, temporary).run()
+            finally:
+                os._exit(0)
+        theirs.close()
+        self.pid = pid
+        self.control = ours
+        self.ended: dict[int, Ended] = {}
+        self._next = 0
+
+    def spawn(self, request: dict[str, Any]) -> tuple[int, int]:
+        """Start a worker; return its number and launchverify's end of its channel."""
+        mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
+        number = self._next
+        self._next += 1
+        try:
+            message = json.dumps({"op": "spawn", "id": number, "request": request}).encode()
+            socket.send_fds(self.control, [message], [theirs.fileno()])
+        finally:
+            theirs.close()
+        mine.setblocking(False)
+        return number, mine.detach()
+
+    def kill(self, number: int) -> None:
+        """Kill a worker (nothing happens if it has ended)."""
+        with contextlib.suppress(OSError):
+            self.control.send(json.dumps({"op": "kill", "id": number}).encode())
+
+    def wait(self, number: int, seconds: float) -> Ended | None:
+        """Return how a worker ended, waiting up to ``seconds`` for the news."""
+        deadline = _now() + seconds
+        while number not in self.ended:
+            remaining = deadline - _now()
+            if remaining <= 0 or not select.select([self.control], [], [], remaining)[0]:
+                return None
+            try:
+                packet = self.control.recv(_PACKET)
+            except OSError:
+                return None
+            if not packet:
+                return None
+            news = json.loads(packet)
+            self.ended[news["id"]] = Ended(news["code"], news["signal"])
+        return self.ended.pop(number)
+
+    def close(self) -> None:
+        """Stop the zygote and every worker (they die with it)."""
+        self.control.close()
+        deadline = _now() + 5
+        while _now() < deadline:
+            try:
+                if os.waitpid(self.pid, os.WNOHANG)[0] != 0:
+                    return
+            except ChildProcessError:
+                return
+            select.select([], [], [], 0.01)
+        with contextlib.suppress(OSError):
+            os.kill(self.pid, signal.SIGKILL)
+            os.waitpid(self.pid, 0)
+
+
+class _Server:
+    """The zygote's side."""
+
+    def __init__(self, control: socket.socket, setting: Setting, temporary: str) -> None:
+        self.control = control
+        self.setting = setting
+        self.temporary = temporary
+        self.workers: dict[int, tuple[int, str]] = {}  # pid -> (number, scratch folder)
+        self.numbers: dict[int, int] = {}  # number -> pid
+
+    def run(self) -> None:
+        os.setsid()  # the terminal's Ctrl-C is launchverify's to handle
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        _forget_environment()
+        gc.freeze()  # workers' collections never touch (and copy) the inherited heap
+        wake_read, wake_write = os.pipe()
+        os.set_blocking(wake_write, False)
+        signal.set_wakeup_fd(wake_write)
+        signal.signal(signal.SIGCHLD, lambda signum, frame: None)
+        try:
+            while True:
+                ready = select.select([self.control.fileno(), wake_read], [], [])[0]
+                if wake_read in ready:
+                    os.read(wake_read, 4096)
+                    self.reap()
+                if self.control.fileno() in ready and not self.receive(wake_read, wake_write):
+                    return
+        finally:
+            self.stop_all()
+
+    def stop_all(self) -> None:
+        """Kill every worker, wait for them, remove their folders."""
+        for pid in list(self.workers):
+            with contextlib.suppress(OSError):
+                os.kill(pid, signal.SIGKILL)
+        while self.workers:
+            try:
+                pid, _ = os.waitpid(-1, 0)
+            except ChildProcessError:
+                break
+            self.forget(pid)
+        for pid in list(self.workers):
+            self.forget(pid)
+
+    def receive(self, *wake: int) -> bool:
+        try:
+            packet, fds, _, _ = socket.recv_fds(self.control, _PACKET, 1)
+        except OSError:
+            return False
+        if not packet:
+            return False
+        message = json.loads(packet)
+        if message["op"] == "spawn" and fds:
+            self.spawn(message["id"], message["request"], fds[0], wake)
+        elif message["op"] == "kill":
+            pid = self.numbers.get(message["id"])
+            if pid is not None:
+                with contextlib.suppress(OSError):
+                    os.kill(pid, signal.SIGKILL)
+        for fd in fds:
+            with contextlib.suppress(OSError):
+                os.close(fd)
+        return True
+
+    def spawn(self, number: int, request: dict[str, Any], fd: int, wake: tuple[int, ...]) -> None:
+        scratch = tempfile.mkdtemp(prefix="launchverify-", dir=self.temporary)
+        pid = os.fork()
+        if pid == 0:
+            _become_worker(self.control, wake, fd, request, scratch, self.setting)
+        self.workers[pid] = (number, scratch)
+        self.numbers[number] = pid
+
+    def reap(self) -> None:
+        while True:
+            try:
+                pid, status = os.waitpid(-1, os.WNOHANG)
+            except ChildProcessError:
+                return
+            if pid == 0:
+                return
+            number = self.forget(pid)
+            if number is None:
+                continue
+            news = {"id": number, "code": os.WEXITSTATUS(status) if os.WIFEXITED(status) else None,
+                    "signal": os.WTERMSIG(status) if os.WIFSIGNALED(status) else None}
+            with contextlib.suppress(OSError):
+                self.control.send(json.dumps(news).encode())
+
+    def forget(self, pid: int) -> int | None:
+        entry = self.workers.pop(pid, None)
+        if entry is None:
+            return None
+        number, scratch = entry
+        self.numbers.pop(number, None)
+        shutil.rmtree(scratch, ignore_errors=True)
+        return number
+
+
+def _become_worker(control: socket.socket, wake: tuple[int, ...], fd: int,
+                   request: dict[str, Any], scratch: str, setting: Setting) -> NoReturn:
+    signal.set_wakeup_fd(-1)
+    signal.signal(signal.SIGCHLD, signal.SIG_DFL)
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+    control.close()
+    for other in wake:
+        os.close(other)
+    serve(fd, request, scratch, setting)
+
+
+def _forget_environment() -> None:
+    """Drop this machine's environment variables: nothing a worker runs may read them.
+
+    Launch files see a symbolic environment; the real one (``os.environ``, ``posix.environ``
+    and the C environment) is emptied here, once, before any worker exists.
+    """
+    os.environ.clear()
+    with contextlib.suppress(ImportError, AttributeError):
+        import posix
+
+        posix.environ.clear()
+
+
+def _now() -> float:
+    import time
+
+    return time.monotonic()

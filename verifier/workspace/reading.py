@@ -1,0 +1,100 @@
+"""Reading files of the workspace without ever blocking or reading without end.
+
+A launch tree may hold a FIFO named ``robot.launch.xml``, a symbolic link to
+``/dev/zero``, or a file of gigabytes. Every reader of launchverify goes through
+``read_file``: it opens without blocking, reads only regular files, and reads at most the
+size limit (``--max-file-size``, default 10 MB); anything else is ``Unreadable`` with a
+reason the caller reports on the file.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import stat
+from collections.abc import Iterator
+from contextvars import ContextVar
+from pathlib import Path
+
+DEFAULT_LIMIT = 10 * 1000 * 1000
+_LIMIT: ContextVar[int] = ContextVar("launchverify_max_file_size", default=DEFAULT_LIMIT)
+_KINDS = ((stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
+          (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"),
+          (stat.S_ISDIR, "a folder"))
+
+
+class Unreadable(OSError):
+    """A file launchverify will not read; ``str()`` says why."""
+
+
+@contextlib.contextmanager
+def size_limit(limit: int) -> Iterator[None]:
+    """Read at most ``limit`` bytes of any file inside the block."""
+    token = _LIMIT.set(limit)
+    try:
+        yield
+    finally:
+        _LIMIT.reset(token)
+
+
+def limit() -> int:
+    """Return the size limit in force."""
+    return _LIMIT.get()
+
+
+def read_file(path: Path, *, prefix: int | None = None) -> bytes:
+    """Return a regular file's bytes.
+
+    ``prefix``: return at most that many bytes of a larger file instead of refusing it
+    (for scans that need only the start, like a package manifest's name).
+    """
+    try:
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0)
+                     | getattr(os, "O_NOCTTY", 0))
+    except OSError as error:
+        raise Unreadable(error.strerror or str(error)) from None
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            kind = next((name for test, name in _KINDS if test(info.st_mode)), "special")
+            raise Unreadable(f"not a regular file ({kind})")
+        most = limit() if prefix is None else prefix
+        if prefix is None and info.st_size > most:
+            raise Unreadable(_too_large(most))
+        chunks = []
+        size = 0
+        while size <= most:
+            chunk = os.read(fd, min(1 << 20, most + 1 - size))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            size += len(chunk)
+        data = b"".join(chunks)
+        if len(data) > most:
+            if prefix is None:
+                raise Unreadable(_too_large(most))
+            data = data[:most]
+        return data
+    except Unreadable:
+        raise
+    except OSError as error:
+        raise Unreadable(error.strerror or str(error)) from None
+    finally:
+        os.close(fd)
+
+
+def read_text(path: Path, *, prefix: int | None = None) -> str:
+    """Return a regular file's text (UTF-8, undecodable bytes replaced)."""
+    return read_file(path, prefix=prefix).decode("utf-8", "replace")
+
+
+def is_regular(path: Path) -> bool:
+    """Return whether ``path`` is (or links to) a regular file, without opening it."""
+    try:
+        return stat.S_ISREG(path.stat().st_mode)
+    except (OSError, ValueError):
+        return False
+
+
+def _too_large(most: int) -> str:
+    return f"larger than {most / 1e6:g} MB (--max-file-size)"
