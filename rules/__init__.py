@@ -19,6 +19,7 @@ from launchverify.rules.files.missing_file import MissingFile
 from launchverify.rules.files.unknown_executable import UnknownExecutable
 from launchverify.rules.files.unknown_package import UnknownPackage
 from launchverify.rules.health.evaluation_error import EvaluationError
+from launchverify.rules.health.internal_error import InternalError
 from launchverify.rules.health.parse_error import ParseError
 from launchverify.rules.health.unmodeled_construct import UnmodeledConstruct
 from launchverify.rules.health.unused_suppression import UnusedSuppression
@@ -40,6 +41,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     EvaluationError,          # LV002
     UnmodeledConstruct,       # LV003
     UnusedSuppression,        # LV004
+    InternalError,            # LV005
     DuplicateNodeName,        # LV101
     InvalidName,              # LV102
     RemapCollision,           # LV103

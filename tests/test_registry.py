@@ -39,7 +39,9 @@ def test_rule_metadata(rule: type) -> None:
     assert len(doc.splitlines()[0]) <= 99
 
 
-@pytest.mark.parametrize("rule", BUILTIN, ids=lambda r: r.code)
+# LV005 reports launchverify's own bugs: tests/test_isolation.py makes rules fail on purpose.
+@pytest.mark.parametrize("rule", [r for r in BUILTIN if r.code != "LV005"],
+                         ids=lambda r: r.code)
 def test_rule_is_exercised_by_the_corpus(rule: type) -> None:
     assert rule.code in corpus_codes(), f"no corpus fixture expects {rule.code}"
 

@@ -19,6 +19,7 @@ from launchverify import __version__
 from launchverify.ament import excluded_by_ament
 from launchverify.config import Config, ConfigError, find_config, load_config
 from launchverify.engine import (
+    DEFAULT_TIME_LIMIT,
     CheckOptions,
     Report,
     UsageError,
@@ -67,9 +68,37 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
     command.add_argument("--distro", choices=DISTROS,
                          help="the ROS 2 distribution to check for (default: $ROS_DISTRO, "
                          "else features of every distribution are accepted)")
+    command.add_argument("-j", "--jobs", type=_positive_int, metavar="N",
+                         help="evaluate up to N Python launch files at once, each in its own "
+                         "confined process (default: the number of CPUs)")
+    command.add_argument("--time-limit", type=_positive_float, metavar="SECONDS",
+                         help="stop a Python launch file's evaluation after SECONDS "
+                         "(default: 10)")
+    command.add_argument("--max-file-size", type=_positive_float, metavar="MB",
+                         help="do not read files larger than MB megabytes (default: 10)")
     command.add_argument("--launch-files-only", action="store_true",
                          help="skip given files that do not look like launch files (as in "
                          "folders); for pre-commit, which passes every matching file")
+
+
+def _positive_int(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a whole number") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError("must be at least 1")
+    return value
+
+
+def _positive_float(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number") from None
+    if not 0 < value < 1e9:
+        raise argparse.ArgumentTypeError("must be a positive number")
+    return value
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -215,6 +244,9 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         baseline=args.baseline,
         launch_files_only=args.launch_files_only,
         distro=args.distro or config.distro or _ros_distro(),
+        jobs=args.jobs or config.jobs,
+        time_limit=args.time_limit or config.time_limit or DEFAULT_TIME_LIMIT,
+        max_file_size=int((args.max_file_size or config.max_file_size or 10) * 1e6),
         progress=_progress_bar() if progress else None,
     )
     return options, config

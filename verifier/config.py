@@ -15,6 +15,9 @@ not count), as ruff and mypy find theirs. Relative paths in it are relative to i
     severity = {LV404 = "error", LV202 = "info"}
     fail-on = "warning"
     distro = "humble"                        # default: $ROS_DISTRO, else any
+    jobs = 4                                 # Python files evaluated at once
+    time-limit = 10                          # seconds per Python evaluation
+    max-file-size = 10                       # MB; larger files are not read
 """
 
 from __future__ import annotations
@@ -37,7 +40,8 @@ CONFIG_NAMES = ("launchverify.toml", "pyproject.toml")
 SEVERITIES = ("error", "warning", "info")
 KNOWN_KEYS = frozenset({
     "select", "ignore", "per-file-ignores", "exclude", "arguments", "environment",
-    "workspace", "package-paths", "severity", "fail-on", "distro",
+    "workspace", "package-paths", "severity", "fail-on", "distro", "jobs", "time-limit",
+    "max-file-size",
 })
 
 
@@ -61,6 +65,9 @@ class Config:
     severity: dict[str, str] = field(default_factory=dict)
     fail_on: str | None = None
     distro: str | None = None
+    jobs: int | None = None
+    time_limit: float | None = None  # seconds
+    max_file_size: float | None = None  # MB
 
     @property
     def root(self) -> Path:
@@ -122,7 +129,7 @@ def _read(path: Path) -> dict[str, Any]:
             return tomllib.load(handle)
     except OSError as error:
         raise ConfigError(f"cannot read {path}: {error.strerror}") from error
-    except tomllib.TOMLDecodeError as error:
+    except (tomllib.TOMLDecodeError, ValueError, RecursionError) as error:
         raise ConfigError(f"{path}: invalid TOML: {error}") from error
 
 
@@ -153,6 +160,9 @@ def load_config(path: Path) -> Config:
         severity=reader.table("severity"),
         fail_on=reader.text("fail-on"),
         distro=reader.text("distro"),
+        jobs=int(n) if (n := reader.number("jobs", integer=True)) is not None else None,
+        time_limit=reader.number("time-limit"),
+        max_file_size=reader.number("max-file-size"),
     )
     for code, level in config.severity.items():
         if level not in SEVERITIES:
@@ -179,6 +189,15 @@ class _Reader:
         value = self.data.get(key)
         if value is not None and not isinstance(value, str):
             raise self.fail(key, "a string")
+        return value
+
+    def number(self, key: str, *, integer: bool = False) -> float | None:
+        value = self.data.get(key)
+        if value is None:
+            return None
+        kinds = (int,) if integer else (int, float)
+        if isinstance(value, bool) or not isinstance(value, kinds) or not 0 < value < 1e9:
+            raise self.fail(key, "a positive whole number" if integer else "a positive number")
         return value
 
     def texts(self, key: str) -> list[str] | None:

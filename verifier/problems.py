@@ -19,6 +19,7 @@ class ProblemKind(enum.Enum):
     PARSE = "parse"
     EVALUATION = "evaluation"
     UNMODELED = "unmodeled"
+    INTERNAL = "internal"  # launchverify failed (LV005), not the file
 
 
 @dataclass(frozen=True, slots=True)

@@ -6,7 +6,9 @@ from pathlib import Path
 
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.walker import Walker
-from launchverify.graph import LaunchGraph
+from launchverify.graph import LaunchGraph, ProblemRecord
+from launchverify.problems import Problem, ProblemKind
+from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
 
 
@@ -40,6 +42,14 @@ def evaluate(
     cache = loader or FileCache(index, workspace)
     try:
         Walker(graph, index, cache, workspace).run()
+    except Exception as error:  # a bug of ours: LV005 on this root, the check goes on
+        graph = LaunchGraph(root=root, pinned=dict(pinned or {}),
+                            environment=dict(environment or {}),
+                            included_elsewhere=included_elsewhere)
+        text = str(error).splitlines()[0][:200] if str(error) else ""
+        graph.problems.append(ProblemRecord(Problem(
+            ProblemKind.INTERNAL, "launchverify failed while evaluating this file "
+            f"({type(error).__name__}{': ' + text if text else ''})", Span.of_file(root))))
     finally:
         if loader is None:
             cache.close()

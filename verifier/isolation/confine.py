@@ -65,8 +65,9 @@ _DENIED = (
     "fork", "vfork", "clone", "execve", "execveat",
     # networking
     "socket", "socketpair", "connect", "bind", "listen", "accept", "accept4",
-    # other processes: signals, tracing, memory
-    "kill", "tkill", "rt_sigqueueinfo", "rt_tgsigqueueinfo", "pidfd_send_signal",
+    # other processes: signals (even to itself: a worker that wants to end, ends by
+    # exiting), tracing, memory
+    "kill", "tkill", "tgkill", "rt_sigqueueinfo", "rt_tgsigqueueinfo", "pidfd_send_signal",
     "pidfd_open", "pidfd_getfd", "ptrace", "process_vm_readv", "process_vm_writev", "kcmp",
     "process_madvise", "process_mrelease", "migrate_pages", "move_pages",
     # limits, scheduling, sessions
@@ -92,117 +93,157 @@ _DENIED = (
 _WRITES = ("rename", "renameat", "renameat2", "link", "linkat", "symlink", "symlinkat",
            "unlink", "unlinkat", "mkdir", "mkdirat", "rmdir", "truncate", "ftruncate", "creat")
 _WRITE_FLAGS = (os.O_WRONLY, os.O_RDWR, os.O_CREAT, os.O_TRUNC, os.O_APPEND)
+_PR_SET_DUMPABLE = 4
 
 
-def confine(scratch: str, readable: Iterable[str], limits: Limits) -> Protections:
-    """Confine this process for good; return which layers took effect."""
-    protections = Protections()
-    _set_limits(limits, protections)
-    landlocked = _landlock(scratch, readable, protections)
-    _seccomp(protections, writes_too=not landlocked)
-    return protections
+class Confinement:
+    """The confinement of a check's workers, prepared once in the zygote.
 
+    Building the seccomp filter and loading the Landlock bindings costs milliseconds;
+    done here, before any fork, each worker only applies them.
+    """
 
-def _set_limits(limits: Limits, protections: Protections) -> None:
-    if resource is None:
-        protections.missing["resource limits"] = "not a POSIX system"
-        return
-    wanted = [
-        ("RLIMIT_AS", _address_space() + limits.memory),
-        ("RLIMIT_CPU", limits.cpu_seconds),
-        ("RLIMIT_FSIZE", limits.file_size),
-        ("RLIMIT_NOFILE", limits.open_files),
-        ("RLIMIT_NPROC", 0),
-        ("RLIMIT_CORE", 0),
-        ("RLIMIT_MSGQUEUE", 0),
-    ]
-    failed = []
-    for name, value in wanted:
-        which = getattr(resource, name, None)
-        if which is None:
-            continue
+    def __init__(self, limits: Limits) -> None:
+        self.limits = limits
+        self.missing: dict[str, str] = {}
+        self.landlock = _landlock_module(self.missing)
+        self.seccomp = _seccomp_filter(self.missing, writes_too=self.landlock is None)
+        self.prctl = _prctl()
+
+    def apply(self, scratch: str, readable: Iterable[str]) -> Protections:
+        """Confine this process for good; return which layers took effect.
+
+        ``readable``: existing folders, none beneath another (``outermost``).
+        """
+        protections = Protections(missing=dict(self.missing))
+        self._limits(protections)
+        if self.landlock is not None:
+            self._landlock(self.landlock, scratch, readable, protections)
+        if self.seccomp is not None:
+            try:
+                self.seccomp.load()
+                protections.active.append(
+                    "seccomp" if self.landlock is not None else "seccomp (no file writes)")
+            except Exception as error:
+                protections.missing["seccomp"] = _reason(error)
+        return protections
+
+    def _limits(self, protections: Protections) -> None:
+        if resource is None:
+            protections.missing["resource limits"] = "not a POSIX system"
+            return
+        limits = self.limits
+        wanted = [
+            ("RLIMIT_AS", _address_space() + limits.memory),
+            ("RLIMIT_CPU", limits.cpu_seconds),
+            ("RLIMIT_FSIZE", limits.file_size),
+            ("RLIMIT_NOFILE", limits.open_files),
+            ("RLIMIT_NPROC", 0),
+            ("RLIMIT_CORE", 0),
+            ("RLIMIT_MSGQUEUE", 0),
+        ]
+        failed = []
+        for name, value in wanted:
+            which = getattr(resource, name, None)
+            if which is None:
+                continue
+            try:
+                _, hard = resource.getrlimit(which)
+                if hard != resource.RLIM_INFINITY:
+                    value = min(value, hard)
+                resource.setrlimit(which, (value, value))
+            except (ValueError, OSError):
+                failed.append(name)
+        if self.prctl is not None:  # no core dump and no ptrace attach, whatever the pattern
+            self.prctl(_PR_SET_DUMPABLE, 0, 0, 0, 0)
+        if failed:
+            protections.missing["some resource limits"] = ", ".join(failed)
+        protections.active.append("resource limits")
+
+    def _landlock(self, landlock: Any, scratch: str, readable: Iterable[str],
+                  protections: Protections) -> None:
         try:
-            _, hard = resource.getrlimit(which)
-            if hard != resource.RLIM_INFINITY:
-                value = min(value, hard)
-            resource.setrlimit(which, (value, value))
-        except (ValueError, OSError):
-            failed.append(name)
-    _not_dumpable()
-    if failed:
-        protections.missing["some resource limits"] = ", ".join(failed)
-    protections.active.append("resource limits")
+            read = landlock.FSAccess.READ_FILE | landlock.FSAccess.READ_DIR \
+                | landlock.FSAccess.EXECUTE
+            ruleset = landlock.Ruleset()
+            for folder in readable:
+                ruleset.allow(folder, rules=read)
+            for device in (os.devnull, "/dev/urandom"):
+                if os.path.exists(device):  # noqa: PTH110
+                    ruleset.allow(device, rules=landlock.FSAccess.READ_FILE
+                                  | landlock.FSAccess.WRITE_FILE)
+            ruleset.allow(scratch)
+            ruleset.apply()
+        except Exception as error:
+            protections.missing["Landlock"] = _reason(error)
+            return
+        protections.active.append(f"Landlock (ABI {landlock.landlock_abi_version()})")
 
 
-def _not_dumpable() -> None:
-    """No core dump and no ptrace attach, whatever the core pattern (``PR_SET_DUMPABLE``)."""
+def outermost(folders: Iterable[str]) -> list[str]:
+    """Return the existing folders (resolved) not beneath another one (one rule each)."""
+    kept: list[str] = []
+    for folder in sorted({os.path.realpath(f) for f in folders if os.path.exists(f)}):  # noqa: PTH110
+        if not any(folder == k or folder.startswith(k.rstrip("/") + "/") for k in kept):
+            kept.append(folder)
+    return kept
+
+
+def _landlock_module(missing: dict[str, str]) -> Any:
     if not sys.platform.startswith("linux"):
-        return
-    try:
-        import ctypes
-
-        ctypes.CDLL(None, use_errno=True).prctl(4, 0, 0, 0, 0)
-    except (OSError, AttributeError):
-        pass
-
-
-def _landlock(scratch: str, readable: Iterable[str], protections: Protections) -> bool:
-    if not sys.platform.startswith("linux"):
-        protections.missing["Landlock"] = "not Linux"
-        return False
+        missing["Landlock"] = "not Linux"
+        return None
     try:
         import landlock
+        from landlock import plumbing
 
-        version = landlock.landlock_abi_version()
-        read = landlock.FSAccess.READ_FILE | landlock.FSAccess.READ_DIR \
-            | landlock.FSAccess.EXECUTE
-        ruleset = landlock.Ruleset()
-        for folder in sorted(set(readable)):
-            if os.path.exists(folder):  # noqa: PTH110
-                ruleset.allow(folder, rules=read)
-        for device in (os.devnull, "/dev/urandom"):
-            if os.path.exists(device):  # noqa: PTH110
-                ruleset.allow(device, rules=landlock.FSAccess.READ_FILE
-                              | landlock.FSAccess.WRITE_FILE)
-        ruleset.allow(scratch)
-        ruleset.apply()
+        landlock.landlock_abi_version()  # raises where the kernel lacks Landlock
+        for warm in (plumbing.get_add_rule, plumbing.get_restrict_self, plumbing.get_prctl):
+            warm()
     except ImportError:
-        protections.missing["Landlock"] = "the 'landlock' package is not installed"
-        return False
-    except Exception as error:  # the kernel lacks it, or a container forbids it
-        protections.missing["Landlock"] = _reason(error)
-        return False
-    protections.active.append(f"Landlock (ABI {version})")
-    return True
+        missing["Landlock"] = "the 'landlock' package is not installed"
+        return None
+    except Exception as error:
+        missing["Landlock"] = _reason(error)
+        return None
+    return landlock
 
 
-def _seccomp(protections: Protections, *, writes_too: bool) -> None:
+def _seccomp_filter(missing: dict[str, str], *, writes_too: bool) -> Any:
     if not sys.platform.startswith("linux"):
-        protections.missing["seccomp"] = "not Linux"
-        return
+        missing["seccomp"] = "not Linux"
+        return None
     try:
         seccomp = _seccomp_module()
         refuse = seccomp.ERRNO(errno.EPERM)
         rules = seccomp.SyscallFilter(seccomp.ALLOW)
-        names = _DENIED + (_WRITES if writes_too else ())
-        for name in names:
+        for name in _DENIED + (_WRITES if writes_too else ()):
             _add(rules, refuse, name)
         _add(rules, seccomp.ERRNO(errno.ENOSYS), "clone3")  # glibc falls back to clone
         _add(rules, seccomp.ERRNO(errno.ENOSYS), "openat2")
-        _add(rules, refuse, "tgkill", seccomp.Arg(0, seccomp.NE, os.getpid()))
         _add(rules, refuse, "prlimit64", seccomp.Arg(2, seccomp.NE, 0))
         if writes_too:
             for flag in _WRITE_FLAGS:
                 _add(rules, refuse, "open", seccomp.Arg(1, seccomp.MASKED_EQ, flag, flag))
                 _add(rules, refuse, "openat", seccomp.Arg(2, seccomp.MASKED_EQ, flag, flag))
-        rules.load()
     except ImportError:
-        protections.missing["seccomp"] = "libseccomp or the 'pyseccomp' package is missing"
-        return
-    except Exception as error:  # a container that forbids seccomp, an old kernel
-        protections.missing["seccomp"] = _reason(error)
-        return
-    protections.active.append("seccomp" + ("" if not writes_too else " (no file writes)"))
+        missing["seccomp"] = "libseccomp or the 'pyseccomp' package is missing"
+        return None
+    except Exception as error:
+        missing["seccomp"] = _reason(error)
+        return None
+    return rules
+
+
+def _prctl() -> Any:
+    if not sys.platform.startswith("linux"):
+        return None
+    try:
+        import ctypes
+
+        return ctypes.CDLL(None, use_errno=True).prctl
+    except (OSError, AttributeError):
+        return None
 
 
 def _seccomp_module() -> Any:
@@ -231,17 +272,3 @@ def _address_space() -> int:
         return pages * os.sysconf("SC_PAGE_SIZE")
     except (OSError, ValueError, IndexError):
         return 0
-
-
-def prepare() -> None:
-    """Load what confinement needs while the process may still read anything.
-
-    ``pyseccomp`` looks libseccomp up with ``ldconfig`` when imported: done once in the
-    launchverify process, before any worker exists.
-    """
-    if not sys.platform.startswith("linux"):
-        return
-    with contextlib.suppress(ImportError, OSError):
-        _seccomp_module()
-    with contextlib.suppress(ImportError):
-        import landlock  # noqa: F401

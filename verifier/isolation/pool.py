@@ -24,7 +24,7 @@ from typing import Any
 from launchverify.ir import actions as a
 from launchverify.isolation.channel import Channel, ChannelError, Closed
 from launchverify.isolation.codec import CodecError, Decoder, Encoder
-from launchverify.isolation.confine import Limits, prepare
+from launchverify.isolation.confine import Limits, outermost
 from launchverify.isolation.worker import Setting
 from launchverify.isolation.zygote import Zygote
 from launchverify.problems import Problem, ProblemKind, ProblemSink
@@ -141,7 +141,6 @@ class IsolatedPython:
         while self._queue and len(self._running) < self.jobs:
             load = self._queue.popleft()
             if self._zygote is None:
-                prepare()
                 self._zygote = Zygote(self.setting)
             number, fd = self._zygote.spawn({"path": str(load.path)})
             worker = _Worker(load.path, number, Channel(fd))
@@ -385,11 +384,11 @@ def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
     folders = {str(workspace)}
     folders.update(str(folder) for folder in (*index.workspaces, *index.prefixes))
     folders.update(str(folder) for found in index.sources.values() for folder in found)
-    for prefix in (sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix):
-        folders.add(prefix)
-    folders.update(entry for entry in sys.path if entry and os.path.isdir(entry))  # noqa: PTH112
+    folders.update((sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix))
+    here = os.getcwd()  # noqa: PTH109 - not readable for being where launchverify started
+    folders.update(entry for entry in sys.path if entry and entry != here)
     for package in (launchverify, launchverify.models, launchverify.rules):
         folders.add(str(Path(package.__file__ or ".").resolve().parent))
     folders.update(("/usr/lib", "/usr/lib64", "/lib", "/lib64", "/usr/share/zoneinfo",
                     "/etc/ld.so.cache", "/etc/localtime"))
-    return tuple(sorted(f for f in folders if os.path.exists(f)))  # noqa: PTH110
+    return tuple(outermost(folders))

@@ -22,7 +22,7 @@ from launchverify.frontends.python import PythonFrontend
 from launchverify.frontends.python.sandbox import TimeLimitExceeded, arm, time_limit
 from launchverify.isolation.channel import Channel, ChannelError
 from launchverify.isolation.codec import Decoder, Encoder
-from launchverify.isolation.confine import Limits, confine
+from launchverify.isolation.confine import Confinement, Limits
 from launchverify.models import distros
 from launchverify.problems import ProblemSink
 from launchverify.workspace.packages import PackageIndex
@@ -40,14 +40,15 @@ class Setting:
     debug: bool = False  # keep stderr and print our own failures (LAUNCHVERIFY_DEBUG_WORKERS)
 
 
-def serve(fd: int, request: dict[str, Any], scratch: str, setting: Setting) -> NoReturn:
+def serve(fd: int, request: dict[str, Any], scratch: str, setting: Setting,
+          confinement: Confinement) -> NoReturn:
     """Run the worker on channel ``fd``; never returns."""
     status = 0
     try:
         _keep_only(fd, keep_stderr=setting.debug)
         os.setsid()
         channel = Channel(fd)
-        protections = confine(scratch, (*setting.readable, _folder(request)), setting.limits)
+        protections = confinement.apply(scratch, _with_folder(setting.readable, request))
         arm(scratch)
         _Worker(channel, setting, protections.describe()).run(request)
     except BaseException:  # our own failure: the parent reports the worker's end
@@ -114,8 +115,12 @@ def _not_callable(*args: object) -> None:
     raise TypeError("the parent sends no callbacks")
 
 
-def _folder(request: dict[str, Any]) -> str:
-    return str(Path(request["path"]).parent)
+def _with_folder(readable: tuple[str, ...], request: dict[str, Any]) -> tuple[str, ...]:
+    """Add the launch file's folder to what may be read, unless it is there already."""
+    folder = os.path.realpath(Path(request["path"]).parent)
+    if any(folder == f or folder.startswith(f.rstrip("/") + "/") for f in readable):
+        return readable
+    return (*readable, folder)
 
 
 def _keep_only(fd: int, *, keep_stderr: bool = False) -> None:

@@ -24,8 +24,10 @@ import signal
 import socket
 import tempfile
 from dataclasses import dataclass
+from pathlib import Path
 from typing import Any, NoReturn
 
+from launchverify.isolation.confine import Confinement
 from launchverify.isolation.worker import Setting, serve
 
 _PACKET = 1 << 16
@@ -133,6 +135,8 @@ class _Server:
         os.setsid()  # the terminal's Ctrl-C is launchverify's to handle
         signal.signal(signal.SIGINT, signal.SIG_IGN)
         _forget_environment()
+        self.confinement = Confinement(self.setting.limits)
+        _warm_up(self.setting)
         gc.freeze()  # workers' collections never touch (and copy) the inherited heap
         wake_read, wake_write = os.pipe()
         os.set_blocking(wake_write, False)
@@ -187,7 +191,8 @@ class _Server:
         scratch = tempfile.mkdtemp(prefix="launchverify-", dir=self.temporary)
         pid = os.fork()
         if pid == 0:
-            _become_worker(self.control, wake, fd, request, scratch, self.setting)
+            _become_worker(self.control, wake, fd, request, scratch, self.setting,
+                           self.confinement)
         self.workers[pid] = (number, scratch)
         self.numbers[number] = pid
 
@@ -218,14 +223,31 @@ class _Server:
 
 
 def _become_worker(control: socket.socket, wake: tuple[int, ...], fd: int,
-                   request: dict[str, Any], scratch: str, setting: Setting) -> NoReturn:
+                   request: dict[str, Any], scratch: str, setting: Setting,
+                   confinement: Confinement) -> NoReturn:
     signal.set_wakeup_fd(-1)
     signal.signal(signal.SIGCHLD, signal.SIG_DFL)
     signal.signal(signal.SIGINT, signal.SIG_DFL)
     control.close()
     for other in wake:
         os.close(other)
-    serve(fd, request, scratch, setting)
+    serve(fd, request, scratch, setting, confinement)
+
+
+def _warm_up(setting: Setting) -> None:
+    """Evaluate launchverify's own warm-up launch file, so that workers start warm."""
+    from launchverify.frontends.python import PythonFrontend
+    from launchverify.ir import actions as a
+    from launchverify.isolation.codec import Encoder, iter_records
+    from launchverify.problems import ProblemSink
+
+    path = Path(__file__).with_name("warm_up_launch.txt")
+    with contextlib.suppress(Exception):
+        launch = PythonFrontend(setting.index, setting.workspace).load(path, ProblemSink())
+        for record in list(iter_records(launch)):
+            if isinstance(record, a.OpaqueFunction):
+                record.run({}, path)
+        json.dumps(Encoder(lambda function: 0).encode(launch))
 
 
 def _forget_environment() -> None:
