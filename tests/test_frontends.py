@@ -473,7 +473,7 @@ def _alias_bomb(levels: int = 8, fan_out: int = 9) -> str:
     return text
 
 
-BIG = 5 * 1024 * 1024 + 1
+BIG = 10 * 1000 * 1000 + 1  # the default --max-file-size, plus one
 
 HOSTILE: list[tuple[str, str, bytes]] = [
     ("invalid-utf8-xml", "x.launch.xml", b'<launch><arg name="\xff\xfe"/></launch>'),

@@ -24,12 +24,14 @@ import os
 from collections.abc import Sequence
 from pathlib import Path
 
+from launchverify.workspace.paths import resolved
+
 EXCLUDE_VARIABLE = "AMENT_LINT_AUTO_FILE_EXCLUDE"
 
 
 def package_root(start: Path) -> Path:
     """Return the nearest folder at or above ``start`` holding a package.xml (else start)."""
-    start = start.resolve()
+    start = resolved(start)
     for folder in (start, *start.parents):
         if (folder / "package.xml").is_file():
             return folder

@@ -29,7 +29,7 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.models.distros import DISTROS
-from launchverify.workspace.paths import relative_file
+from launchverify.workspace.paths import relative_file, resolved
 
 if sys.version_info >= (3, 11):
     import tomllib
@@ -105,7 +105,7 @@ def matches(relative: str, pattern: str) -> bool:
 
 def find_config(start: Path) -> Path | None:
     """Return the nearest configuration file above ``start`` (itself included)."""
-    folder = start.resolve()
+    folder = resolved(start)
     if not folder.is_dir():
         folder = folder.parent
     for candidate in (folder, *folder.parents):

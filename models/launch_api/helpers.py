@@ -15,6 +15,7 @@ from launchverify.ir import subst as s
 from launchverify.models.launch_api.base import Converter, Substitution
 from launchverify.models.launch_api.placeholders import has_placeholder, placeholder
 from launchverify.models.launch_api.runtime import active
+from launchverify.workspace.paths import resolved
 
 
 def _values(mapping: Mapping[Any, Any] | None) -> list[Any]:
@@ -114,7 +115,7 @@ def process_file(input_file_name: Any, **kwargs: Any) -> XacroDocument:
     runtime = active()
     path = Path(name)
     if not has_placeholder(name) and path.is_absolute() and not path.exists() and (
-        path.resolve().is_relative_to(runtime.workspace)
+        resolved(path).is_relative_to(runtime.workspace)
     ):
         raise FileNotFoundError(f"[Errno 2] No such file or directory: '{name}'")
     return XacroDocument(name)

@@ -35,6 +35,7 @@ from launchverify.models.launch_api.placeholders import (
     placeholder,
 )
 from launchverify.models.launch_api.runtime import active
+from launchverify.workspace.paths import resolved
 
 
 def _opaque(what: str) -> str:
@@ -65,7 +66,7 @@ def load_xacro(file_path: Any, mappings: Any = None) -> str:
     path = locate(file_path)
     runtime = active()
     if not has_placeholder(str(file_path)) and path.is_absolute() and not path.exists() and (
-        path.resolve().is_relative_to(runtime.workspace)
+        resolved(path).is_relative_to(runtime.workspace)
     ):
         raise FileNotFoundError(f"[Errno 2] No such file or directory: '{file_path}'")
     return _opaque(f"robot description from {path.name}")
@@ -353,7 +354,7 @@ def _require(path: Path) -> None:
     path = locate(path)
     text = str(path)
     if not has_placeholder(text) and path.is_absolute() and not path.exists() and (
-            path.resolve().is_relative_to(runtime.workspace)):
+            resolved(path).is_relative_to(runtime.workspace)):
         raise FileNotFoundError(f"File {text} doesn't exist")
 
 

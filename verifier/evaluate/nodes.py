@@ -28,6 +28,8 @@ from launchverify.ir import subst as s
 from launchverify.models import booleans
 from launchverify.problems import ProblemKind
 from launchverify.span import Span
+from launchverify.workspace.paths import resolved
+from launchverify.workspace.reading import read_text
 
 if TYPE_CHECKING:
     from launchverify.evaluate.walker import Walker
@@ -200,11 +202,11 @@ class NodeBuilder:
         """
         text = text_of(location) or self.walker.graph.base(location)
         located = None if text is None else self.walker.index.locate(Path(text))
-        if located is None or not located.resolve().is_relative_to(self.walker.workspace):
+        if located is None or not resolved(located).is_relative_to(self.walker.workspace):
             self.walker.mark_incomplete()  # its reads are unknown
             return
         try:
-            content = located.read_bytes()[:MAX_PARAM_FILE].decode("utf-8", "replace")
+            content = read_text(located, prefix=MAX_PARAM_FILE)
         except OSError:
             return
         for number, line in enumerate(content.splitlines(), 1):
@@ -226,7 +228,7 @@ class NodeBuilder:
         if not text or not Path(text).is_absolute():
             return None
         located = self.walker.index.locate(Path(text))
-        if located is None or not located.resolve().is_relative_to(self.walker.workspace):
+        if located is None or not resolved(located).is_relative_to(self.walker.workspace):
             return None
         if located not in self.walker.graph.param_files:
             self.walker.graph.param_files[located] = self.walker.loader.param_file(located)

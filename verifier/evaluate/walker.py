@@ -69,6 +69,8 @@ from launchverify.models.parameter_values import typed_parameter
 from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
+from launchverify.workspace.paths import resolved
+from launchverify.workspace.reading import read_file
 
 MAX_INCLUDE_DEPTH = 40
 MAX_LOOP = 256
@@ -137,11 +139,10 @@ class Walker:
     def workspace_text(self, path: str) -> str | None:
         """Return a workspace file's text (``None`` outside it, missing or too large)."""
         located = self.index.locate(Path(path))
-        if located is None or not located.resolve().is_relative_to(self.workspace):
+        if located is None or not resolved(located).is_relative_to(self.workspace):
             return None
         try:
-            with located.open("rb") as handle:
-                data = handle.read(MAX_FILE_CONTENT + 1)
+            data = read_file(located, prefix=MAX_FILE_CONTENT + 1)
         except OSError:
             return None
         return None if len(data) > MAX_FILE_CONTENT else data.decode("utf-8", "replace")
@@ -150,12 +151,12 @@ class Walker:
         """Return ``$(file-content)`` of a workspace file, never reading outside it."""
         located = self.index.locate(Path(path))
         if located is None:
-            inside = Path(path).is_absolute() and Path(path).resolve().is_relative_to(
+            inside = Path(path).is_absolute() and resolved(Path(path)).is_relative_to(
                 self.workspace)
             if inside or self.index.owner(Path(path)) is not None:
                 self.graph.file_refs.append(FileRef(path, origin, False, "file-content"))
             return Unknown(f"content of {path}")
-        if not located.resolve().is_relative_to(self.workspace):
+        if not resolved(located).is_relative_to(self.workspace):
             return Unknown(f"content of {path}")
         self.graph.file_refs.append(FileRef(path, origin, True, "file-content"))
         text = self.workspace_text(path)

@@ -15,7 +15,7 @@ from pathlib import Path
 from launchverify import __version__
 from launchverify.findings.fingerprint import fingerprints
 from launchverify.rule import Finding
-from launchverify.workspace.paths import relative_file
+from launchverify.workspace.paths import relative_file, resolved
 
 
 class BaselineError(ValueError):
@@ -24,7 +24,7 @@ class BaselineError(ValueError):
 
 def write_baseline(path: Path, findings: list[Finding]) -> None:
     """Record every finding's fingerprint in ``path``."""
-    base = path.resolve().parent
+    base = resolved(path).parent
     entries = [
         {"fingerprint": print_, "code": f.code, "file": relative_file(f.span.file, base),
          "message": f.message}
@@ -44,7 +44,7 @@ def apply_baseline(path: Path, findings: list[Finding]) -> tuple[list[Finding], 
     except (ValueError, KeyError, TypeError) as error:
         raise BaselineError(f"{str(path)!r} is not a launchverify baseline") from error
     kept = []
-    for finding, print_ in zip(findings, fingerprints(findings, path.resolve().parent),
+    for finding, print_ in zip(findings, fingerprints(findings, resolved(path).parent),
                                strict=True):
         if recorded[print_] > 0:
             recorded[print_] -= 1

@@ -12,6 +12,7 @@ the last, and node keys with no ``ros__parameters`` under them, which ROS ignore
 
 from __future__ import annotations
 
+import math
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -21,14 +22,17 @@ import yaml
 from launchverify.frontends.yaml_reader import YamlLoadError, compose, span_of
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
+from launchverify.workspace.reading import long_number, long_number_message, read_file
 
-MAX_BYTES = 2 * 1024 * 1024
+MAX_NODES = 200_000  # alias expansion budget, as for launch files
 PARAMETERS_KEY = "ros__parameters"
 
 _TRUE = frozenset({"y", "Y", "yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON"})
 _FALSE = frozenset({"n", "N", "no", "No", "NO", "false", "False", "FALSE", "off", "Off",
                     "OFF"})
-_INTEGER = re.compile(r"[+-]?\d+")
+# strtol with base 0, as rcl reads integers: decimal, 0x hexadecimal, 0 octal
+_INTEGER = re.compile(r"[+-]?(0[xX][0-9a-fA-F]+|0[0-7]*|[1-9][0-9]*)")
+_INT64 = (-(1 << 63), (1 << 63) - 1)
 _SPECIAL_FLOATS = {".nan": float("nan"), ".NaN": float("nan"), ".NAN": float("nan"),
                    ".inf": float("inf"), ".Inf": float("inf"), ".INF": float("inf"),
                    "-.inf": float("-inf"), "-.Inf": float("-inf"), "-.INF": float("-inf")}
@@ -68,15 +72,15 @@ def load_param_file(path: Path) -> ParamFile:
     """Read a parameter file; problems are recorded, never raised."""
     result = ParamFile(path)
     try:
-        data = path.read_bytes()
+        data = read_file(path)
     except OSError as error:
         result.readable = False
-        result.sink.parse(f"cannot read parameter file: {error.strerror or error}",
-                          Span(path, 1))
+        result.sink.parse(f"cannot read parameter file: {error}", Span(path, 1))
         return result
-    if len(data) > MAX_BYTES:
+    long = long_number(data)
+    if long is not None:
         result.readable = False
-        result.sink.parse(f"parameter file larger than {MAX_BYTES} bytes", Span(path, 1))
+        result.sink.parse(long_number_message(long[1]), Span(path, long[0]))
         return result
     try:
         root = compose(data.decode("utf-8"))
@@ -94,14 +98,40 @@ def load_param_file(path: Path) -> ParamFile:
         result.sink.parse("a parameter file must map node names to ros__parameters",
                           span_of(path, root))
         return result
-    _Reader(result).node_level(root, [])
+    try:
+        _Reader(result).node_level(root, [])
+    except _Budget:
+        result.readable = False
+        result.sink.parse("YAML aliases expand to more than the allowed document size",
+                          Span(path, 1))
+    except _Recursive as error:
+        result.readable = False
+        result.sink.parse("a YAML alias refers to a node that contains it (infinite "
+                          "document)", span_of(path, error.node))
+    except RecursionError:
+        result.readable = False
+        result.sink.parse("the parameter file nests too deeply", Span(path, 1))
     return result
+
+
+class _Budget(Exception):
+    """Alias expansion makes the document too large."""
+
+
+class _Recursive(Exception):
+    """An alias refers to a node that contains it."""
+
+    def __init__(self, node: yaml.Node) -> None:
+        super().__init__("recursive alias")
+        self.node = node
 
 
 class _Reader:
     def __init__(self, result: ParamFile) -> None:
         self.result = result
         self.path = result.path
+        self.count = 0
+        self.open: set[int] = set()  # mappings being read (an alias back to one: a cycle)
 
     def problem(self, message: str, node: yaml.Node) -> None:
         self.result.sink.parse(message, span_of(self.path, node))
@@ -109,14 +139,27 @@ class _Reader:
     def rcl_problem(self, message: str, node: yaml.Node) -> None:
         self.result.rcl_sink.parse(message, span_of(self.path, node))
 
+    def enter(self, node: yaml.Node) -> None:
+        """Mark a collection as being read; meeting it again inside itself is a cycle."""
+        if id(node) in self.open:
+            raise _Recursive(node)
+        self.open.add(id(node))
+
     def pairs(self, mapping: yaml.MappingNode) -> list[tuple[str, yaml.Node, yaml.Node]]:
         """Return (key, key node, value node); duplicate keys are reported, last wins."""
         seen: dict[str, yaml.Node] = {}
         out: list[tuple[str, yaml.Node, yaml.Node]] = []
+        self.count += len(mapping.value)
+        if self.count > MAX_NODES:
+            raise _Budget
         for key_node, value_node in mapping.value:
             if key_node.tag == "tag:yaml.org,2002:merge" and isinstance(
                     value_node, yaml.MappingNode):
-                out.extend(self.pairs(value_node))  # ``<<: *defaults``
+                self.enter(value_node)
+                try:
+                    out.extend(self.pairs(value_node))  # ``<<: *defaults``
+                finally:
+                    self.open.discard(id(value_node))
                 continue
             key = str(key_node.value) if isinstance(key_node, yaml.ScalarNode) else ""
             if key in seen:
@@ -129,6 +172,14 @@ class _Reader:
 
     def node_level(self, mapping: yaml.MappingNode, names: list[tuple[str, yaml.Node]]) -> bool:
         """Read node keys down to ``ros__parameters``; return whether any block was found."""
+        self.enter(mapping)
+        try:
+            return self._node_level(mapping, names)
+        finally:
+            self.open.discard(id(mapping))
+
+    def _node_level(self, mapping: yaml.MappingNode,
+                    names: list[tuple[str, yaml.Node]]) -> bool:
         found = False
         for key, key_node, value in self.pairs(mapping):
             if key == PARAMETERS_KEY:
@@ -157,7 +208,16 @@ class _Reader:
         return found
 
     def parameters(self, mapping: yaml.MappingNode, prefix: str, block: ParamBlock) -> None:
-        for key, key_node, value in self.pairs(mapping):
+        self.enter(mapping)
+        try:
+            pairs = self.pairs(mapping)
+            self._parameters(pairs, prefix, block)
+        finally:
+            self.open.discard(id(mapping))
+
+    def _parameters(self, pairs: list[tuple[str, yaml.Node, yaml.Node]], prefix: str,
+                    block: ParamBlock) -> None:
+        for key, key_node, value in pairs:
             name = f"{prefix}.{key}" if prefix else key
             if isinstance(value, yaml.MappingNode):
                 self.parameters(value, name, block)
@@ -178,6 +238,9 @@ class _Reader:
         values: list[object] = []
         kinds: set[str] = set()
         inner_lists = 0
+        self.count += len(node.value)
+        if self.count > MAX_NODES:
+            raise _Budget
         for item in node.value:
             if isinstance(item, yaml.SequenceNode):
                 inner_lists += 1
@@ -211,14 +274,31 @@ def scalar(node: yaml.ScalarNode) -> tuple[object, str]:
         return True, "bool"
     if text in _FALSE:
         return False, "bool"
-    if _INTEGER.fullmatch(text):
-        return int(text), "integer"
+    integer = _c_integer(text)
+    if integer is not None:
+        return integer, "integer"
     if text in _SPECIAL_FLOATS:
         return _SPECIAL_FLOATS[text], "double"
+    if "_" in text:  # Python's float() accepts 1_000, strtod does not
+        return text, "string"
     try:
-        return float(text), "double"
+        number = float(text)
     except ValueError:
         return text, "string"
+    if math.isinf(number) and "inf" not in text.lower():
+        return text, "string"  # strtod: out of range (ERANGE), so rcl keeps the text
+    return number, "double"
+
+
+def _c_integer(text: str) -> int | None:
+    """Return the integer strtol(text, 0) reads in full without overflow, else ``None``."""
+    match = _INTEGER.fullmatch(text)
+    if match is None or len(text) > 24:  # longer than any 64-bit integer: out of range
+        return None
+    body = match.group(1)
+    base = 16 if body[:2] in ("0x", "0X") else 8 if body.startswith("0") and body != "0" else 10
+    value = int(body, base) * (-1 if text.startswith("-") else 1)
+    return value if _INT64[0] <= value <= _INT64[1] else None
 
 
 def _empty(node: yaml.Node) -> bool:

@@ -7,6 +7,7 @@ seen. Aliases can make a small file expand enormously, so conversion has a node 
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import yaml
@@ -14,11 +15,13 @@ import yaml
 from launchverify.frontends.entity import Attr, Entity, Scalar
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
+from launchverify.workspace.reading import long_number, long_number_message
 
-MAX_BYTES = 5 * 1024 * 1024
 # libyaml composes about 16 times faster and keeps the same marks; PyYAML may lack it.
 _COMPOSER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 MAX_NODES = 200_000
+MAX_FLOW_DEPTH = 1000  # libyaml's composer recurses in C: far deeper overflows its stack
+MAX_BLOCK_INDENT = 4000  # columns of indentation (each block level adds at least one)
 
 
 class _Budget(Exception):
@@ -50,6 +53,7 @@ def span_of(path: Path, node: yaml.Node) -> Span:
 
 def compose(text: str) -> yaml.Node | None:
     """Compose one YAML document safely, raising ``YamlLoadError`` with a position."""
+    _check_depth(text)
     try:
         return yaml.compose(text, Loader=_COMPOSER)
     except yaml.MarkedYAMLError as error:
@@ -62,6 +66,25 @@ def compose(text: str) -> yaml.Node | None:
         raise YamlLoadError("invalid YAML: nesting too deep", 1, 1) from None
 
 
+def _check_depth(text: str) -> None:
+    """Refuse what would nest deeper than libyaml's composer can recurse (linear scan).
+
+    Brackets are counted wherever they are (even quoted): a real file never comes near.
+    """
+    depth = deepest = 0
+    for char in re.finditer(r"[\[\]{}]", text):
+        depth = max(depth + (1 if char.group() in "[{" else -1), 0)
+        if depth > deepest:
+            deepest = depth
+            if deepest > MAX_FLOW_DEPTH:
+                line = text.count("\n", 0, char.start()) + 1
+                raise YamlLoadError(f"YAML nested more than {MAX_FLOW_DEPTH} levels deep",
+                                    line, 1)
+    for match in re.finditer(rf"^ {{{MAX_BLOCK_INDENT},}}", text, re.MULTILINE):
+        line = text.count("\n", 0, match.start()) + 1
+        raise YamlLoadError(f"YAML indented more than {MAX_BLOCK_INDENT} columns", line, 1)
+
+
 class ScalarReader:
     """Turns scalar nodes into Python values by YAML 1.1 rules (as PyYAML's safe_load)."""
 
@@ -72,7 +95,7 @@ class ScalarReader:
         """Return the typed value of a scalar node."""
         try:
             result = self._constructor.construct_object(node, deep=True)
-        except yaml.YAMLError:
+        except (yaml.YAMLError, ValueError):  # a value PyYAML cannot convert
             return str(node.value)
         if isinstance(result, (str, int, float, bool)) or result is None:
             return result
@@ -82,8 +105,9 @@ class ScalarReader:
 def read_yaml(path: Path, data: bytes, sink: ProblemSink) -> Entity | None:
     """Parse YAML launch text into the root entity; record problems, never raise."""
     whole = Span.of_file(path)
-    if len(data) > MAX_BYTES:
-        sink.parse(f"file is larger than {MAX_BYTES // (1024 * 1024)} MiB; not read", whole)
+    long = long_number(data)
+    if long is not None:
+        sink.parse(long_number_message(long[1]), Span(path, long[0]))
         return None
     try:
         text = decode(data)

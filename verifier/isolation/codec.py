@@ -6,11 +6,12 @@ trust it: the bytes may come from the launch file's own code. So the wire format
 every field against the record's type annotations. Anything else is a ``CodecError``,
 which the parent reports on the file; it never reaches the evaluator.
 
-Shape: scalars are themselves; every container is a list whose first item is a tag:
-``["#t", ...]`` a tuple, ``["#l", ...]`` a list, ``["#d", k, v, ...]`` a dict with string
-keys, ``["#p", text]`` a path, ``["#i", hex]`` an integer beyond 64 bits (decimal
-conversion of huge integers is refused by Python and quadratic), ``["#e", enum, value]``,
-``["#f", id]`` a callback that runs in the worker, ``["#r", n]`` the n-th record again
+Shape: scalars are themselves (integers within 64 bits, as ROS's: a larger one is refused
+rather than sent, since converting huge integers to text is refused by Python and
+quadratic); every container is a list whose first item is a tag: ``["#t", ...]`` a
+tuple, ``["#l", ...]`` a list, ``["#d", k, v, ...]`` a dict with string keys, ``["#p",
+text]`` a path, ``["#e", enum, value]``, ``["#f", id]`` a callback that runs in the
+worker, ``["#r", n]`` the n-th record again
 (actions are compared by identity: an event handler's target is the same object as the
 action in the list), and ``[ClassName, field...]`` a record with its fields in order.
 """
@@ -71,7 +72,10 @@ class Encoder:
         if value is None or isinstance(value, (bool, str, float)):
             return value
         if isinstance(value, int):
-            return value if -_SMALL_INT < value < _SMALL_INT else ["#i", format(value, "x")]
+            if not -_SMALL_INT <= value < _SMALL_INT:
+                raise CodecError(f"an integer of {value.bit_length()} bits (ROS integers "
+                                 "have 64)")
+            return value
         if depth > MAX_DEPTH:
             raise CodecError(f"the launch description nests deeper than {MAX_DEPTH} levels")
         if isinstance(value, enum.Enum):
@@ -143,8 +147,6 @@ class Decoder:
             return {k: self.decode(v, depth + 1) for k, v in pairs}
         if tag == "#p":
             return Path(_one(rest, str))
-        if tag == "#i":
-            return _big_int(_one(rest, str))
         if tag == "#e":
             return _enum(rest)
         if tag == "#f":
@@ -186,15 +188,6 @@ def _one(rest: list[object], kind: type) -> Any:
     if len(rest) != 1 or not isinstance(rest[0], kind) or isinstance(rest[0], bool):
         raise CodecError("malformed value")
     return rest[0]
-
-
-def _big_int(digits: str) -> int:
-    if len(digits) > 100_000:
-        raise CodecError("an integer of more than 400 000 bits")
-    try:
-        return int(digits, 16)
-    except ValueError:
-        raise CodecError("malformed integer") from None
 
 
 def _enum(rest: list[object]) -> enum.Enum:

@@ -7,6 +7,7 @@ import re
 from pathlib import Path
 
 from launchverify.workspace.packages import SKIP_DIRS
+from launchverify.workspace.reading import read_file
 
 LAUNCH_SUFFIXES = ("launch.xml", "launch.yaml", "launch.yml")
 PYTHON_SUFFIX = "launch.py"
@@ -41,10 +42,9 @@ def is_launch_file(path: Path) -> bool:
 
 def _head(path: Path, size: int) -> bytes:
     try:
-        with path.open("rb") as handle:
-            return handle.read(size)
+        return read_file(path, prefix=size)
     except OSError:
-        return b""
+        return b""  # a FIFO, a device, unreadable: the loader says why
 
 
 

@@ -18,6 +18,7 @@ from pathlib import Path
 
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.workspace.packages import SKIP_DIRS, Package, PackageIndex
+from launchverify.workspace.reading import read_file
 
 MAX_SOURCE_FILES = 2_000
 _TEST_DIRS = frozenset({"test", "tests"})
@@ -85,7 +86,7 @@ def _scan(source: Path) -> tuple[frozenset[str], frozenset[str]]:
             if files > MAX_SOURCE_FILES:
                 return frozenset(names), frozenset(literals)
             try:
-                data = (Path(folder) / filename).read_bytes()[:MAX_SOURCE_BYTES]
+                data = read_file(Path(folder) / filename, prefix=MAX_SOURCE_BYTES)
             except OSError:
                 continue
             text = data.decode("utf-8", "replace")

@@ -20,6 +20,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from launchverify.workspace.packages import Package
+from launchverify.workspace.reading import read_file
 
 MAX_CMAKE_BYTES = 512 * 1024
 MAX_CALL_DEPTH = 8
@@ -310,7 +311,7 @@ def _commands(text: str) -> list[tuple[str, list[str]]]:
 
 def _read(path: Path) -> str | None:
     try:
-        data = path.read_bytes()[:MAX_CMAKE_BYTES]
+        data = read_file(path, prefix=MAX_CMAKE_BYTES)
     except OSError:
         return None
     return data.decode("utf-8", "replace")

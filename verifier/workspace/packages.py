@@ -16,6 +16,9 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
+from launchverify.workspace.paths import resolved
+from launchverify.workspace.reading import read_file
+
 SKIP_DIRS = frozenset({
     ".git", ".hg", ".svn", "build", "install", "log", "node_modules", "__pycache__",
     ".venv", "venv", ".tox", ".mypy_cache", ".pytest_cache", ".ruff_cache",
@@ -50,7 +53,7 @@ class Package:
 def package_name(package_xml: Path) -> str | None:
     """Return the ``<name>`` of a package manifest, or ``None`` if unreadable."""
     try:
-        data = package_xml.read_bytes()[:200_000]
+        data = read_file(package_xml, prefix=200_000)
     except OSError:
         return None
     match = _NAME.search(data)
@@ -120,8 +123,8 @@ class PackageIndex:
     def __init__(self, workspaces: Iterable[Path] = (), prefixes: Iterable[Path] = ()) -> None:
         self._packages: dict[str, Package] = {}
         self.sources: dict[str, list[Path]] = {}  # every source folder of each name
-        self.workspaces = [w.resolve() for w in workspaces]
-        self.prefixes = [p.resolve() for p in prefixes]
+        self.workspaces = [resolved(w) for w in workspaces]
+        self.prefixes = [resolved(p) for p in prefixes]
         self.has_install = bool(self.prefixes)
         for prefix in self.prefixes:
             for name in scan_prefix(prefix):
@@ -230,7 +233,7 @@ def find_workspace(start: Path) -> Path:
     Falls back to the folder above the outermost package containing ``start``, or to
     ``start``'s own folder.
     """
-    start = start.resolve()
+    start = resolved(start)
     folder = start if start.is_dir() else start.parent
     outermost_package: Path | None = None
     for candidate in (folder, *folder.parents):

@@ -2,15 +2,24 @@
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
+
+
+def resolved(path: Path) -> Path:
+    """Return ``path`` absolute with symbolic links resolved; never raises on link loops.
+
+    (``Path.resolve`` raises ``RuntimeError`` on a loop, which a hostile tree may hold.)
+    """
+    return Path(os.path.realpath(path))
 
 
 def relative_file(path: Path, base: Path) -> str:
     """Return a path relative to ``base`` (posix), or absolute when outside it."""
     try:
-        return path.resolve().relative_to(base.resolve()).as_posix()
+        return resolved(path).relative_to(resolved(base)).as_posix()
     except ValueError:
-        return path.resolve().as_posix()
+        return resolved(path).as_posix()
 
 
 def display_path(path: Path | str) -> str:
@@ -19,6 +28,6 @@ def display_path(path: Path | str) -> str:
     if not candidate.is_absolute():
         return str(candidate)
     try:
-        return str(candidate.relative_to(Path.cwd().resolve()))
+        return str(candidate.relative_to(resolved(Path.cwd())))
     except ValueError:
         return str(candidate)

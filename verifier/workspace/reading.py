@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import re
 import stat
 from collections.abc import Iterator
 from contextvars import ContextVar
@@ -94,6 +95,28 @@ def is_regular(path: Path) -> bool:
         return stat.S_ISREG(path.stat().st_mode)
     except (OSError, ValueError):
         return False
+
+
+MAX_DIGITS = 4300  # Python's int-to-string limit, and so ros2 launch's
+_DIGITS = re.compile(rb"[0-9]+")
+
+
+def long_number(data: bytes) -> tuple[int, int] | None:
+    """Return ``(line, digits)`` of the first run of more than ``MAX_DIGITS`` digits.
+
+    Python refuses to convert such integers (and would take quadratic time to); a file
+    holding one is not read. The scan is linear: each run of digits is visited once.
+    """
+    for match in _DIGITS.finditer(data):
+        if match.end() - match.start() > MAX_DIGITS:
+            return data.count(b"\n", 0, match.start()) + 1, match.end() - match.start()
+    return None
+
+
+def long_number_message(digits: int) -> str:
+    """Return the problem text for a number too long to read."""
+    return (f"a number of {digits} digits: Python (and ros2 launch with it) reads integers "
+            f"of at most {MAX_DIGITS} digits; the file is not read")
 
 
 def _too_large(most: int) -> str:

@@ -9,6 +9,8 @@ from __future__ import annotations
 from functools import lru_cache
 from pathlib import Path
 
+from launchverify.workspace.reading import limit, read_text
+
 
 def source_lines(path: Path) -> tuple[str, ...]:
     """Return a file's lines (undecodable bytes replaced; empty when unreadable)."""
@@ -28,6 +30,6 @@ def source_line(path: Path, number: int) -> str:
 @lru_cache(maxsize=512)
 def _read(path: Path, size: int, modified: int) -> tuple[str, ...]:
     try:
-        return tuple(path.read_text(encoding="utf-8", errors="replace").splitlines())
+        return tuple(read_text(path, prefix=limit()).splitlines())
     except OSError:
         return ()

@@ -9,6 +9,7 @@ recorded as a problem at the user's line, never raised.
 from __future__ import annotations
 
 import builtins
+import errno
 import io
 import traceback
 from collections.abc import Iterator, Mapping
@@ -39,6 +40,7 @@ from launchverify.own_code import is_own_file
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
+from launchverify.workspace.paths import resolved
 from launchverify.workspace.reading import read_file
 
 ENTRY_POINTS = ("generate_launch_description", "generate_test_description")
@@ -128,6 +130,11 @@ class _Session:
             self.sink.unmodeled(str(error), span)
         elif isinstance(error, SandboxViolation):
             pass  # reported with every other refusal when the run ends
+        elif isinstance(error, PermissionError) and error.errno == errno.EPERM:
+            # the operating system's confinement refused what the audit hook did not see
+            self.unmodeled(f"launch files are evaluated without side effects: the sandbox "
+                           f"refused an operation ({_shown(str(error))}); the evaluation of "
+                           "this file may be incomplete", span)
         elif isinstance(error, TimeLimitExceeded):
             self.sink.evaluation(f"{error} (an endless loop?)", span)
         elif isinstance(error, MemoryError):
@@ -200,8 +207,6 @@ class _Session:
                         "'generate_launch_description()'", Span.of_file(self.path))
                     return None
                 result = entry()
-        except KeyboardInterrupt:
-            raise
         except BaseException as error:  # the user's code: anything may come out
             self.failure(error)
             return None
@@ -249,7 +254,7 @@ class _Session:
                 file = located
         unknown = has_placeholder(name) or isinstance(file, Opaque) or (
             path.is_absolute() and not Path(file).exists()
-            and not path.resolve().is_relative_to(self.frontend.workspace))
+            and not resolved(path).is_relative_to(self.frontend.workspace))
         if unknown and reading:
             # A file of the robot (a package not in the workspace): an input, not an error.
             content = placeholder("opaque", f"content of {path.name}")
@@ -286,8 +291,6 @@ class _Session:
             with self.environment():
                 entities = model.call(context)
             actions = self.converter().actions(entities or [])
-        except KeyboardInterrupt:
-            raise
         except BaseException as error:  # the user's code
             self.failure(error)
         finally:
