@@ -12,8 +12,9 @@ import dataclasses
 import os
 import time
 from collections import defaultdict
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 
 from launchverify.config import Config, matches
@@ -232,11 +233,11 @@ def _codes_of(selector: str) -> list[str]:
     return [rule.code for rule in resolve(selector)]
 
 
-def _isolated(rule: Rule, findings: Iterator[Finding], file: Path | None
+def _isolated(rule: Rule, findings: Callable[[], Iterable[Finding]], file: Path | None
               ) -> Iterator[Finding]:
     """Yield a rule's findings; if the rule fails, LV005 on the file instead of a crash."""
     try:
-        yield from findings
+        yield from findings()
     except Exception as error:  # a bug of ours must not end the check
         from launchverify.rules.health.internal_error import InternalError
 
@@ -262,13 +263,14 @@ def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
         if every_context:
             unanimous.add(rule_class.code)
         for graph in smallest_first if every_context else graphs:
-            for finding in _isolated(rule, rule.check(graph, ctx), graph.root):
+            for finding in _isolated(rule, partial(rule.check, graph, ctx), graph.root):
                 key = finding.key()
                 votes[key].add(id(graph))
                 known = merged.get(key)
                 if known is None or len(finding.chain) < len(known.chain):
                     merged[key] = finding
-        for finding in _isolated(rule, rule.finish(ctx), graphs[0].root if graphs else None):
+        for finding in _isolated(rule, partial(rule.finish, ctx),
+                                 graphs[0].root if graphs else None):
             merged.setdefault(finding.key(), finding)
     kept = [
         f for key, f in merged.items()

@@ -65,9 +65,7 @@ _DENIED = (
     "fork", "vfork", "clone", "execve", "execveat",
     # networking
     "socket", "socketpair", "connect", "bind", "listen", "accept", "accept4",
-    # other processes: signals (even to itself: a worker that wants to end, ends by
-    # exiting), tracing, memory
-    "kill", "tkill", "tgkill", "rt_sigqueueinfo", "rt_tgsigqueueinfo", "pidfd_send_signal",
+    # other processes: tracing, memory
     "pidfd_open", "pidfd_getfd", "ptrace", "process_vm_readv", "process_vm_writev", "kcmp",
     "process_madvise", "process_mrelease", "migrate_pages", "move_pages",
     # limits, scheduling, sessions
@@ -89,6 +87,10 @@ _DENIED = (
     "utime", "utimes", "utimensat", "futimesat", "setxattr", "lsetxattr", "fsetxattr",
     "removexattr", "lremovexattr", "fremovexattr",
 )
+# Signals, even to itself (a worker that wants to end, ends by exiting): the process is
+# killed (SIGSYS), so that a C-level raise() cannot fail silently and go on.
+_KILLED = ("kill", "tkill", "tgkill", "rt_sigqueueinfo", "rt_tgsigqueueinfo",
+           "pidfd_send_signal")
 # Without Landlock: every change to the file system.
 _WRITES = ("rename", "renameat", "renameat2", "link", "linkat", "symlink", "symlinkat",
            "unlink", "unlinkat", "mkdir", "mkdirat", "rmdir", "truncate", "ftruncate", "creat")
@@ -113,7 +115,7 @@ class Confinement:
     def apply(self, scratch: str, readable: Iterable[str]) -> Protections:
         """Confine this process for good; return which layers took effect.
 
-        ``readable``: existing folders, none beneath another (``outermost``).
+        ``readable``: existing folders (and files), none beneath another (``outermost``).
         """
         protections = Protections(missing=dict(self.missing))
         self._limits(protections)
@@ -163,11 +165,11 @@ class Confinement:
     def _landlock(self, landlock: Any, scratch: str, readable: Iterable[str],
                   protections: Protections) -> None:
         try:
-            read = landlock.FSAccess.READ_FILE | landlock.FSAccess.READ_DIR \
-                | landlock.FSAccess.EXECUTE
+            files = landlock.FSAccess.READ_FILE | landlock.FSAccess.EXECUTE
+            folders = files | landlock.FSAccess.READ_DIR
             ruleset = landlock.Ruleset()
-            for folder in readable:
-                ruleset.allow(folder, rules=read)
+            for path in readable:  # a rule on a file may hold only rights on files
+                ruleset.allow(path, rules=folders if os.path.isdir(path) else files)  # noqa: PTH112
             for device in (os.devnull, "/dev/urandom"):
                 if os.path.exists(device):  # noqa: PTH110
                     ruleset.allow(device, rules=landlock.FSAccess.READ_FILE
@@ -219,6 +221,8 @@ def _seccomp_filter(missing: dict[str, str], *, writes_too: bool) -> Any:
         rules = seccomp.SyscallFilter(seccomp.ALLOW)
         for name in _DENIED + (_WRITES if writes_too else ()):
             _add(rules, refuse, name)
+        for name in _KILLED:
+            _add(rules, seccomp.KILL_PROCESS, name)
         _add(rules, seccomp.ERRNO(errno.ENOSYS), "clone3")  # glibc falls back to clone
         _add(rules, seccomp.ERRNO(errno.ENOSYS), "openat2")
         _add(rules, refuse, "prlimit64", seccomp.Arg(2, seccomp.NE, 0))

@@ -384,9 +384,14 @@ def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
     folders = {str(workspace)}
     folders.update(str(folder) for folder in (*index.workspaces, *index.prefixes))
     folders.update(str(folder) for found in index.sources.values() for folder in found)
-    folders.update((sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix))
-    here = os.getcwd()  # noqa: PTH109 - not readable for being where launchverify started
-    folders.update(entry for entry in sys.path if entry and entry != here)
+    prefixes = (sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix)
+    folders.update(prefixes)
+    # Python's own folders: beneath a prefix, site-packages-like, or on PYTHONPATH (a ROS
+    # installation's); not the folder launchverify was started in.
+    python_path = os.environ.get("PYTHONPATH", "").split(os.pathsep)
+    folders.update(entry for entry in sys.path if entry and (
+        entry in python_path or entry.endswith(("site-packages", "dist-packages"))
+        or any(entry.startswith(prefix + os.sep) for prefix in prefixes)))
     for package in (launchverify, launchverify.models, launchverify.rules):
         folders.add(str(Path(package.__file__ or ".").resolve().parent))
     folders.update(("/usr/lib", "/usr/lib64", "/lib", "/lib64", "/usr/share/zoneinfo",

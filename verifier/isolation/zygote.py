@@ -47,6 +47,8 @@ class Ended:
                 name = signal.Signals(self.signal).name
             except ValueError:
                 name = f"signal {self.signal}"
+            if self.signal == signal.SIGSYS:
+                name += " (a system call the sandbox forbids, such as sending a signal)"
             return f"was killed by {name}"
         return f"exited with status {self.code}"
 

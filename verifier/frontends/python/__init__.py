@@ -210,6 +210,7 @@ class _Session:
         except BaseException as error:  # the user's code: anything may come out
             self.failure(error)
             return None
+        self._finalizers()
         if isinstance(result, tuple) and result:
             result = result[0]  # generate_test_description returns (description, context)
         if not isinstance(result, LaunchDescription):
@@ -218,6 +219,16 @@ class _Session:
                 f"{type(result).__name__}", Span.of_file(self.path))
             return None
         return result
+
+    def _finalizers(self) -> None:
+        """Note classes of the launch file whose ``__del__`` launchverify never runs."""
+        for value in list(self.namespace.values()):
+            finalizer = vars(value).get("__del__") if isinstance(value, type) else None
+            code = getattr(finalizer, "__code__", None)
+            if code is not None and value.__module__ == self.namespace["__name__"]:
+                self.unmodeled(f"{value.__name__}.__del__ is a finalizer: ros2 launch runs "
+                               "it when the object is collected, launchverify never does",
+                               Span(self.path, code.co_firstlineno))
 
     def convert(self, description: LaunchDescription) -> a.LaunchFile | None:
         """Turn the description into IR."""
@@ -257,9 +268,18 @@ class _Session:
             and not resolved(path).is_relative_to(self.frontend.workspace))
         if unknown and reading:
             # A file of the robot (a package not in the workspace): an input, not an error.
-            content = placeholder("opaque", f"content of {path.name}")
-            return OpaqueText(content) if "b" not in mode else io.BytesIO(content.encode())
-        return builtins.open(file, mode, *args, **kwargs)  # noqa: PTH123 (user code's open)
+            return _unknown_content(path, mode)
+        try:
+            return builtins.open(file, mode, *args, **kwargs)  # noqa: PTH123 (user code's open)
+        except PermissionError as error:
+            if not reading or error.errno != errno.EACCES:
+                raise
+            # Outside what a launch file may read (the workspace, packages, Python): a
+            # file of this machine, not of the launch tree; its content is not read.
+            self.unmodeled(f"{_shown(name)} is outside the workspace and its packages: "
+                           "launchverify does not read it, its content is unknown",
+                           self._user_span())
+            return _unknown_content(path, mode)
 
     # ------------------------------------------------------------------ OpaqueFunction
 
@@ -288,9 +308,9 @@ class _Session:
                                 launch_file=str(current))
         actions: tuple[a.Action, ...] = ()
         try:
-            with self.environment():
+            with self.environment():  # conversion may call the user's code (__fspath__)
                 entities = model.call(context)
-            actions = self.converter().actions(entities or [])
+                actions = self.converter().actions(entities or [])
         except BaseException as error:  # the user's code
             self.failure(error)
         finally:
@@ -352,6 +372,11 @@ def _yaml_knows_opaque_files() -> Iterator[None]:
     finally:
         for name, original in originals.items():
             setattr(yaml, name, original)
+
+
+def _unknown_content(path: Path, mode: str) -> Any:
+    content = placeholder("opaque", f"content of {path.name}")
+    return OpaqueText(content) if "b" not in mode else io.BytesIO(content.encode())
 
 
 def _no_opaque(model: Any) -> a.Action:

@@ -82,7 +82,42 @@ def arm(scratch: str) -> None:
     tempfile.tempdir = _scratch[0]
     sys.dont_write_bytecode = True
     os.environ = SymbolicEnviron()  # type: ignore[assignment]  # noqa: B003
+    _wrap_unaudited()
     _armed.append(True)
+
+
+def _wrap_unaudited() -> None:
+    """Give clear messages for what Python does not announce to audit hooks.
+
+    The kernel refuses these anyway; the wrappers only say so at the user's line. Handlers
+    for the end of the process (``atexit``, ``weakref.finalize``) are noted, not run: a
+    worker ends with ``os._exit``.
+    """
+    import atexit
+    import weakref
+
+    def refusing(name: str) -> Any:
+        def refuse(*args: Any, **kwargs: Any) -> Any:
+            _refuse(f"{name} is not allowed")
+
+        return refuse
+
+    for name in ("mkfifo", "mknod"):
+        if hasattr(os, name):
+            setattr(os, name, refusing(f"os.{name}"))
+
+    def at_exit(function: Any, *args: Any, **kwargs: Any) -> Any:
+        _note("atexit handlers (and weakref finalizers) are never run")
+        return function
+
+    atexit.register = at_exit  # type: ignore[assignment]
+
+    class Finalize(weakref.finalize):  # type: ignore[type-arg]
+        def __init__(self, obj: Any, function: Any, *args: Any, **kwargs: Any) -> None:
+            _note("atexit handlers (and weakref finalizers) are never run")
+            super().__init__(obj, function, *args, **kwargs)
+
+    weakref.finalize = Finalize  # type: ignore[misc,assignment]
 
 
 def armed() -> bool:
@@ -125,6 +160,18 @@ def _refuse(what: str) -> None:
     if refusals is not None:
         refusals.append((message, where))
     raise SandboxViolation(message)
+
+
+def _note(what: str) -> None:
+    """Remember something not done, to be reported with the refusals, without raising."""
+    message = f"launch files are evaluated without side effects: {what}"
+    frame = sys._getframe(2)
+    while frame is not None and not _user_code(frame.f_code.co_filename):
+        frame = frame.f_back  # type: ignore[assignment]
+    where = (frame.f_code.co_filename, frame.f_lineno) if frame is not None else None
+    refusals = getattr(_state, "refused", None)
+    if refusals is not None:
+        refusals.append((message, where))
 
 
 def _user_code(filename: str) -> bool:
@@ -205,7 +252,7 @@ def sandbox(seconds: float | None = None) -> Iterator[None]:
         tempfile.tempdir = scratch
     try:
         with time_limit(limit if not nested else 0), _memory_limit(not nested), \
-                redirect_stdout(io.StringIO()), redirect_stderr(io.StringIO()):
+                redirect_stdout(_Discard()), redirect_stderr(_Discard()):
             yield
     finally:
         os.environ = saved_environ  # noqa: B003
@@ -215,6 +262,16 @@ def sandbox(seconds: float | None = None) -> Iterator[None]:
             _scratch.pop()
             tempfile.tempdir = saved_tempdir
             shutil.rmtree(scratch, ignore_errors=True)
+
+
+class _Discard(io.TextIOBase):
+    """Where a launch file's prints go: nowhere, and without keeping them in memory."""
+
+    def write(self, text: str) -> int:
+        return len(text)
+
+    def writable(self) -> bool:
+        return True
 
 
 @contextmanager

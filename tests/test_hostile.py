@@ -1,0 +1,600 @@
+"""Hostile launch trees: a pull request's files cannot touch the machine or the verdict.
+
+One workspace holds every attack below beside two sentinel files with a known finding
+(LV101 in XML and in Python); one ``launchverify check`` runs over all of it, as CI would
+on a pull request. Then, for each attack: nothing outside the check changed (canary
+files, a listener on 127.0.0.1 that must see no connection, wrapper programs on PATH that
+log any call, no scratch folder left behind), its own file has a finding, and the
+sentinels' findings are still there; the exit status and the JSON come from launchverify.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import socket
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+SECRET = "LV-TOP-SECRET-7f3a"  # in a file outside the workspace and in the environment
+TIME_LIMIT = 1.0  # seconds per evaluation (lowered for the test)
+WALL_LIMIT = 90.0  # the whole check, with every attack (on a busy 2-core machine)
+
+PY_HEADER = """\
+import os, sys
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch_ros.actions import Node
+CANARY = {canary!r}
+PORT = {port}
+"""
+
+PY_END = """
+def generate_launch_description():
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker')])
+"""
+
+# name -> (file name, content); Python ones get PY_HEADER and, unless they define their
+# own, PY_END. {canary} is a folder outside the workspace: anything in it is a side effect.
+ATTACKS: dict[str, tuple[str, str]] = {
+    # code that runs outside the audit hook's reach
+    "thread": ("thread.launch.py", """
+import threading
+threading.Thread(target=lambda: os.system(f"touch {CANARY}/thread")).start()
+"""),
+    "atexit": ("atexit.launch.py", """
+import atexit
+atexit.register(lambda: open(CANARY + '/atexit', 'w').write('x'))
+"""),
+    "del": ("del.launch.py", """
+class Evil:
+    def __del__(self):
+        open(CANARY + '/del', 'w').write('x')
+KEEP = Evil()
+"""),
+    "finalize": ("finalize.launch.py", """
+import weakref
+class Thing: pass
+THING = Thing()
+weakref.finalize(THING, lambda: os.system(f"touch {CANARY}/finalize"))
+"""),
+    "exception-str": ("exception_str.launch.py", """
+class Loud(Exception):
+    def __str__(self):
+        os.system(f"touch {CANARY}/exception_str")
+        return 'loud'
+
+def generate_launch_description():
+    raise Loud()
+"""),
+    "fspath": ("fspath.launch.py", """
+class Path:
+    def __fspath__(self):
+        os.system(f"touch {CANARY}/fspath")
+        return '/tmp/x.yaml'
+
+def setup(context):
+    return [Node(package='demo_nodes_cpp', executable='talker', parameters=[Path()])]
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=setup)])
+"""),
+    "sandbox-reset": ("sandbox_reset.launch.py", """
+for name, module in list(sys.modules.items()):
+    if name.startswith('launchverify') and name.endswith('sandbox'):
+        getattr(module, '_armed', []).clear()
+        getattr(module, '_scratch', []).clear()
+open(CANARY + '/sandbox_reset', 'w').write('x')
+"""),
+    # effects Python does not announce
+    "mkfifo": ("mkfifo.launch.py", """
+try:
+    os.mkfifo(CANARY + '/fifo')
+except OSError:
+    pass
+"""),
+    "mknod": ("mknod.launch.py", """
+import stat
+try:
+    os.mknod(CANARY + '/node', stat.S_IFREG | 0o600)
+except OSError:
+    pass
+"""),
+    "sqlite": ("sqlite.launch.py", """
+import sqlite3
+sqlite3.connect(CANARY + '/db.sqlite').execute('create table t (x)')
+"""),
+    "fork-exec": ("fork_exec.launch.py", """
+import _posixsubprocess
+ARGS = [[b'/usr/bin/touch', (CANARY + '/fork_exec').encode()], [b'/usr/bin/touch'], True,
+        (), None, None, -1, -1, -1, -1, -1, -1, *os.pipe(), False, False]
+for tail in ([-1, None, None, None, -1, None, False],   # 3.11: 23 arguments
+             [None, None, None, -1, None, False],       # 3.10
+             [-1, None, None, None, -1, None, False, False]):
+    try:
+        _posixsubprocess.fork_exec(*ARGS, *tail)
+        break
+    except TypeError:
+        continue
+"""),
+    "replace-from-scratch": ("replace.launch.py", """
+import tempfile
+fd, name = tempfile.mkstemp()
+os.write(fd, b'x')
+os.close(fd)
+os.replace(name, CANARY + '/replaced')
+"""),
+    "link-into-scratch": ("link.launch.py", """
+import tempfile
+os.link(CANARY + '/keep.txt', tempfile.gettempdir() + '/linked')
+open(tempfile.gettempdir() + '/linked', 'w').write('changed')
+"""),
+    "setrlimit": ("setrlimit.launch.py", """
+import resource
+resource.setrlimit(resource.RLIMIT_AS, (resource.RLIM_INFINITY, resource.RLIM_INFINITY))
+"""),
+    "memory": ("memory.launch.py", """
+BLOB = 'a' * (50 * 1024 ** 3)
+"""),
+    "setitimer": ("setitimer.launch.py", """
+import signal
+signal.setitimer(signal.ITIMER_REAL, 0)
+signal.signal(signal.SIGALRM, signal.SIG_IGN)
+while True:
+    pass
+"""),
+    "catch-everything": ("catch.launch.py", """
+while True:
+    try:
+        while True:
+            pass
+    except BaseException:
+        pass
+"""),
+    "loop-in-c": ("c_loop.launch.py", """
+import collections, itertools
+collections.deque(itertools.count(), maxlen=0)
+"""),
+    "sigalrm-default": ("sigalrm.launch.py", """
+import signal
+signal.signal(signal.SIGALRM, signal.SIG_DFL)
+while True:
+    pass
+"""),
+    # the verdict forged or lost
+    "exit-0": ("exit0.launch.py", """
+os._exit(0)
+"""),
+    "forged-output": ("forged.launch.py", """
+os.write(1, b'{"findings": [], "summary": {"errors": 0, "forged": true}}')
+os.write(2, b'forged on stderr')
+os._exit(0)
+"""),
+    "forged-frames": ("frames.launch.py", """
+for fd in range(3, 64):
+    try:
+        os.write(fd, b'\\x00\\x00\\x00\\x00\\x00\\x00\\x00\\x10{"op":"loaded"}')
+    except OSError:
+        pass
+"""),
+    "sorted": ("sorted.launch.py", """
+import builtins
+builtins.sorted = lambda *args, **kwargs: []
+builtins.len = lambda *args: 0
+"""),
+    "patch-launchverify": ("patch_lv.launch.py", """
+for name, module in list(sys.modules.items()):
+    if name.startswith('launchverify'):
+        for attribute in ('run_rules', 'run_check', 'evaluate', 'load_launch_file'):
+            if hasattr(module, attribute):
+                setattr(module, attribute, lambda *a, **k: [])
+"""),
+    "patch-libraries": ("patch_libs.launch.py", """
+import yaml, lxml.etree, launch_ros.actions
+yaml.compose = lambda *a, **k: None
+yaml.safe_load = lambda *a, **k: {}
+lxml.etree.fromstring = lambda *a, **k: None
+os.getenv = lambda *a, **k: 'patched'
+launch_ros.actions.Node.__init__ = lambda self, *a, **k: None
+"""),
+    "misattributed": ("misattributed.launch.py", """
+def generate_launch_description():
+    exec(compile("raise ValueError('blamed on the sentinel')", SENTINEL_PY, "exec"))
+"""),
+    # one file ending the whole check
+    "keyboard-interrupt": ("interrupt.launch.py", """
+raise KeyboardInterrupt
+"""),
+    "system-exit": ("system_exit.launch.py", """
+raise SystemExit(0)
+"""),
+    "recursion": ("recursion.launch.py", """
+sys.setrecursionlimit(10 ** 6)
+def down(n):
+    return down(n + 1) + 1
+down(0)
+"""),
+    "segfault": ("segfault.launch.py", """
+import faulthandler
+faulthandler._sigsegv()
+"""),
+    "sigkill-self": ("sigkill.launch.py", """
+import signal
+os.kill(os.getpid(), signal.SIGKILL)
+"""),
+    "kill-parent": ("kill_parent.launch.py", """
+import signal
+for target in (os.getppid(), -1):
+    try:
+        os.kill(target, signal.SIGKILL)
+    except OSError:
+        pass
+try:
+    os.killpg(0, signal.SIGKILL)
+except OSError:
+    pass
+"""),
+    "audit-hook": ("audit_hook.launch.py", """
+try:
+    sys.addaudithook(lambda event, args: None)
+except Exception:
+    pass
+os.system(f"touch {CANARY}/audit_hook")
+"""),
+    "opaque-loop": ("opaque_loop.launch.py", """
+def setup(context):
+    while True:
+        pass
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=setup)])
+"""),
+    "opaque-exit": ("opaque_exit.launch.py", """
+def setup(context):
+    os._exit(3)
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=setup),
+                              OpaqueFunction(function=setup)])
+"""),
+    "huge-integer": ("huge_int.launch.py", """
+def generate_launch_description():
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker',
+                                   parameters=[{'x': 10 ** 5000}])])
+"""),
+    "deep-description": ("deep.launch.py", """
+from launch.actions import GroupAction
+def generate_launch_description():
+    inner = Node(package='demo_nodes_cpp', executable='talker')
+    for _ in range(3000):
+        inner = GroupAction([inner])
+    return LaunchDescription([inner])
+"""),
+    # the machine: processes, network, files, secrets
+    "processes": ("processes.launch.py", """
+import subprocess, ctypes
+for attempt in (lambda: subprocess.run(['touch', CANARY + '/subprocess']),
+                lambda: os.system(f"touch {CANARY}/system"),
+                lambda: os.fork(),
+                lambda: ctypes.CDLL(None).system(f"touch {CANARY}/ctypes".encode()),
+                lambda: os.posix_spawn('/usr/bin/touch', ['touch', CANARY + '/spawn'], {})):
+    try:
+        attempt()
+    except BaseException:
+        pass
+"""),
+    "network": ("network.launch.py", """
+import socket, urllib.request
+for attempt in (lambda: socket.create_connection(('127.0.0.1', PORT), timeout=1),
+                lambda: urllib.request.urlopen(f'http://127.0.0.1:{PORT}/', timeout=1)):
+    try:
+        attempt()
+    except BaseException:
+        pass
+"""),
+    "files": ("files.launch.py", """
+import shutil
+for attempt in (lambda: open(CANARY + '/written', 'w').write('x'),
+                lambda: open(CANARY + '/keep.txt', 'a').write('x'),
+                lambda: os.truncate(CANARY + '/keep.txt', 0),
+                lambda: os.chmod(CANARY + '/keep.txt', 0o777),
+                lambda: os.remove(CANARY + '/keep.txt'),
+                lambda: os.symlink('/etc/passwd', CANARY + '/symlink'),
+                lambda: os.mkdir(CANARY + '/folder'),
+                lambda: shutil.rmtree(CANARY)):
+    try:
+        attempt()
+    except BaseException:
+        pass
+"""),
+    "secrets": ("secrets.launch.py", """
+def read(path):
+    try:
+        return open(path).read()
+    except BaseException as error:
+        return type(error).__name__
+
+def generate_launch_description():
+    found = read(SECRET_FILE) + read('/proc/self/environ') + str(dict(os.environ))
+    import posix
+    found += str(getattr(posix, 'environ', {}))
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker',
+                                   name='n' + found.encode().hex()[:4000])])
+"""),
+    "print-flood": ("flood.launch.py", """
+for _ in range(2000):
+    print('x' * 50000)
+    sys.stderr.write('y' * 50000)
+"""),
+    # data files that end checks or hang them
+    "xml-long-integer": ("long_int.launch.xml",
+                         '<launch><arg name="n" default="' + "9" * 5000 + '"/></launch>'),
+    "yaml-long-integer": ("long_int.launch.yaml",
+                          "launch:\n- arg:\n    name: n\n    default: " + "9" * 5000 + "\n"),
+    "yaml-deep-nesting": ("deep.launch.yaml", "launch: " + "[" * 100_000),
+    "xml-cdata-comments": ("cdata.launch.xml", "<launch><![CDATA[" + "<!--" * 1_000_000
+                           + "]]></launch>"),
+    "param-long-integer": ("param_long.launch.xml", """<launch>
+<node pkg="demo_nodes_cpp" exec="talker" name="param_long">
+  <param from="{workspace}/params/long.yaml"/>
+</node></launch>"""),
+    "param-recursive-alias": ("param_recursive.launch.xml", """<launch>
+<node pkg="demo_nodes_cpp" exec="talker" name="param_recursive">
+  <param from="{workspace}/params/recursive.yaml"/>
+</node></launch>"""),
+    "param-alias-bomb": ("param_bomb.launch.xml", """<launch>
+<node pkg="demo_nodes_cpp" exec="talker" name="param_bomb">
+  <param from="{workspace}/params/bomb.yaml"/>
+</node></launch>"""),
+}
+
+# Attacks with nothing to report: the attempt has no effect on anything and the file is
+# otherwise a correct launch file (its own worker's launchverify patched; a valid XML file
+# whose CDATA would make a quadratic scan hang; prints that go nowhere).
+INERT = frozenset({"patch-launchverify", "xml-cdata-comments", "print-flood"})
+# Attacks on a parameter file: the finding is on that file.
+PARAMETER_FILES = {"param-long-integer": "long.yaml", "param-recursive-alias": "recursive.yaml",
+                   "param-alias-bomb": "bomb.yaml"}
+SPECIAL = ("fifo", "package-fifo", "dev-zero", "symlink-loop")  # made in the file system
+
+SENTINEL_XML = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="twin"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="twin"/>
+</launch>
+"""
+SENTINEL_PY = """\
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='pytwin'),
+        Node(package='demo_nodes_cpp', executable='listener', name='pytwin'),
+    ])
+"""
+
+
+def _alias_bomb() -> str:
+    """Nine levels of mappings, each naming the one below nine times: 9**9 parameters."""
+    text = "a0: &a0 {" + ", ".join(f"k{i}: x" for i in range(9)) + "}\n"
+    for level in range(1, 10):
+        below = ", ".join(f"k{i}: *a{level - 1}" for i in range(9))
+        text += f"a{level}: &a{level} {{{below}}}\n"
+    return "node:\n  ros__parameters:\n" + "".join("    " + line + "\n"
+                                                  for line in text.splitlines())
+
+
+@dataclass
+class Outcome:
+    """What one check of the hostile workspace produced, and what happened around it."""
+
+    root: Path
+    workspace: Path
+    canary: Path
+    status: int
+    stdout: str
+    stderr: str
+    seconds: float
+    report: dict[str, object] | None
+    connections: list[str]
+    before: dict[str, str]
+    after: dict[str, str]
+    calls: str
+    scratch_left: list[str]
+
+    def findings_in(self, name: str) -> list[dict[str, object]]:
+        findings = self.report["findings"] if self.report else []
+        assert isinstance(findings, list)
+        return [f for f in findings if Path(str(f["file"])).name == name]
+
+
+def _snapshot(root: Path, skip: Path) -> dict[str, str]:
+    """Return every file and folder below ``root`` with a digest of its content."""
+    state: dict[str, str] = {}
+    for current, dirs, files in os.walk(root):
+        if Path(current) == skip:
+            dirs[:] = []
+            continue
+        for name in dirs:
+            state[str(Path(current) / name)] = "dir"
+        for name in files:
+            path = Path(current) / name
+            try:
+                if path.is_symlink() or not path.is_file():
+                    state[str(path)] = "special"
+                    continue
+                info = path.stat()
+                state[str(path)] = f"{oct(info.st_mode)} " + hashlib.sha256(
+                    path.read_bytes()).hexdigest()
+            except OSError as error:
+                state[str(path)] = f"error {error.errno}"
+    return state
+
+
+def _listener() -> tuple[socket.socket, list[str]]:
+    server = socket.socket()
+    server.bind(("127.0.0.1", 0))
+    server.listen(16)
+    seen: list[str] = []
+
+    def accept() -> None:
+        while True:
+            try:
+                connection, address = server.accept()
+            except OSError:
+                return
+            seen.append(str(address))
+            connection.close()
+
+    threading.Thread(target=accept, daemon=True).start()
+    return server, seen
+
+
+def _wrappers(folder: Path, log: Path) -> None:
+    folder.mkdir()
+    for name in ("sh", "bash", "touch", "true", "ls", "id", "echo", "python3", "curl",
+                 "ros2", "ldconfig", "gcc", "cc"):
+        script = folder / name
+        script.write_text(f"#!/bin/sh\necho \"{name} $*\" >> {log}\n")
+        script.chmod(0o755)
+
+
+def _build(root: Path, port: int) -> tuple[Path, Path]:
+    workspace = root / "ws"
+    canary = root / "canary"
+    (workspace / "params").mkdir(parents=True)
+    canary.mkdir()
+    (canary / "keep.txt").write_text("keep me")
+    (root / "secret.txt").write_text(SECRET)
+    sentinel_py = workspace / "sentinel.launch.py"
+    (workspace / "sentinel.launch.xml").write_text(SENTINEL_XML)
+    sentinel_py.write_text(SENTINEL_PY)
+    (workspace / "params" / "long.yaml").write_text(
+        "node:\n  ros__parameters:\n    n: " + "7" * 5000 + "\n")
+    (workspace / "params" / "recursive.yaml").write_text(
+        "node: &a\n  ros__parameters:\n    inner: *a\n")
+    (workspace / "params" / "bomb.yaml").write_text(_alias_bomb())
+    for name, (filename, content) in ATTACKS.items():
+        path = workspace / filename
+        if filename.endswith(".py"):
+            header = PY_HEADER.format(canary=str(canary), port=port)
+            header += f"SENTINEL_PY = {str(sentinel_py)!r}\n"
+            header += f"SECRET_FILE = {str(root / 'secret.txt')!r}\n"
+            body = content if "def generate_launch_description" in content \
+                else content + PY_END
+            path.write_text(header + body)
+        else:
+            path.write_text(content.replace("{workspace}", str(workspace)))
+        assert name
+    os.mkfifo(workspace / "fifo.launch.xml")
+    (workspace / "pkg_fifo").mkdir()
+    os.mkfifo(workspace / "pkg_fifo" / "package.xml")
+    (workspace / "zero.launch.xml").symlink_to("/dev/zero")
+    (workspace / "loop.launch.xml").symlink_to(workspace / "loop2.launch.xml")
+    (workspace / "loop2.launch.xml").symlink_to(workspace / "loop.launch.xml")
+    return workspace, canary
+
+
+@pytest.fixture(scope="module")
+def outcome(tmp_path_factory: pytest.TempPathFactory) -> Iterator[Outcome]:
+    root = tmp_path_factory.mktemp("hostile")
+    server, connections = _listener()
+    port = server.getsockname()[1]
+    workspace, canary = _build(root, port)
+    scratch = root / "tmp"
+    scratch.mkdir()
+    log = root / "calls.log"
+    _wrappers(root / "bin", log)
+    env = {**os.environ, "PATH": f"{root / 'bin'}:{os.environ.get('PATH', '')}",
+           "TMPDIR": str(scratch), "LV_TEST_SECRET": SECRET}
+    env.pop("LAUNCHVERIFY_DEBUG_WORKERS", None)
+    before = _snapshot(root, scratch)
+    start = time.perf_counter()
+    done = subprocess.run(
+        [sys.executable, "-m", "launchverify", "check", str(workspace), "--format", "json",
+         "--workspace", str(workspace), "--time-limit", str(TIME_LIMIT), "-j", "2",
+         "--exclude", "loop*.launch.xml"],
+        capture_output=True, text=True, env=env, cwd=root, timeout=WALL_LIMIT * 2,
+        check=False)
+    seconds = time.perf_counter() - start
+    time.sleep(0.2)  # anything a stray process would do, it has done by now
+    server.close()
+    try:
+        report = json.loads(done.stdout)
+    except ValueError:
+        report = None
+    yield Outcome(root, workspace, canary, done.returncode, done.stdout, done.stderr,
+                  seconds, report, connections, before, _snapshot(root, scratch),
+                  log.read_text() if log.exists() else "",
+                  sorted(p.name for p in scratch.iterdir()))
+
+
+# --------------------------------------------------------------------------- the check
+
+
+def test_the_verdict_comes_from_launchverify(outcome: Outcome) -> None:
+    assert outcome.report is not None, outcome.stdout[:2000] + outcome.stderr[-2000:]
+    assert outcome.status == 1, outcome.stderr[-2000:]
+    assert "\"forged\": true" not in outcome.stdout and "forged on stderr" not in outcome.stderr
+    assert set(outcome.report) == {"tool", "findings", "summary"}
+    assert outcome.stdout.count('"tool"') == 1
+
+
+def test_sentinels_keep_their_findings(outcome: Outcome) -> None:
+    for name in ("sentinel.launch.xml", "sentinel.launch.py"):
+        found = outcome.findings_in(name)
+        assert [f["code"] for f in found] == ["LV101"], found
+
+
+def test_bounded_time(outcome: Outcome) -> None:
+    assert outcome.seconds < WALL_LIMIT
+
+
+def test_no_side_effects(outcome: Outcome) -> None:
+    assert outcome.after == outcome.before
+    assert (outcome.canary / "keep.txt").read_text() == "keep me"
+    assert not outcome.connections
+    assert not outcome.calls
+    assert not outcome.scratch_left  # every worker's scratch folder was removed
+
+
+def test_no_secret_reaches_the_report(outcome: Outcome) -> None:
+    shown = outcome.stdout + outcome.stderr
+    assert SECRET not in shown
+    assert SECRET.encode().hex() not in shown
+
+
+def test_no_process_survives(outcome: Outcome) -> None:
+    mine = subprocess.run(["ps", "-eo", "pid,args"], capture_output=True, text=True,
+                          check=False).stdout
+    assert str(outcome.workspace) not in mine
+
+
+@pytest.mark.parametrize("name", sorted(ATTACKS))
+def test_each_attack_has_a_finding_on_its_own_file(outcome: Outcome, name: str) -> None:
+    filename = PARAMETER_FILES.get(name, ATTACKS[name][0])
+    found = outcome.findings_in(filename)
+    assert found or name in INERT, f"{name}: no finding on {filename}"
+    assert all(f["code"] != "LV005" for f in found), found
+
+
+@pytest.mark.parametrize("name", SPECIAL)
+def test_special_files_are_findings_not_hangs(outcome: Outcome, name: str) -> None:
+    filename = {"fifo": "fifo.launch.xml", "package-fifo": "package.xml",
+                "dev-zero": "zero.launch.xml", "symlink-loop": "loop.launch.xml"}[name]
+    if name == "package-fifo":  # scanned for packages, not a launch file: skipped quietly
+        assert outcome.report is not None
+        return
+    if name == "symlink-loop":  # excluded on the command line: applying it must not fail
+        assert not outcome.findings_in(filename)
+        return
+    [finding] = outcome.findings_in(filename)
+    assert finding["code"] == "LV001" and "not a regular file" in str(finding["message"])

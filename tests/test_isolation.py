@@ -1,0 +1,208 @@
+"""Worker isolation: the codec and channel between workers and launchverify, -j, LV005.
+
+The hostile suite (test_hostile.py) attacks the whole; these pin the parts down.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import json
+import socket
+from pathlib import Path
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from launchverify.engine import CheckOptions, run_check
+from launchverify.frontends.python import PythonFrontend
+from launchverify.ir import actions as a
+from launchverify.isolation.channel import Channel, ChannelError, Closed, dumps
+from launchverify.isolation.codec import MAX_DEPTH, CodecError, Decoder, Encoder
+from launchverify.isolation.pool import IsolatedPython
+from launchverify.problems import ProblemSink
+from launchverify.render.json_out import render_json
+from launchverify.workspace.packages import PackageIndex
+
+CORPUS = Path(__file__).resolve().parent.parent / "corpus"
+PYTHON_FILES = sorted(p for p in (CORPUS / "python").rglob("*.py")
+                      if "endless_loop" not in str(p) and p.name.endswith("launch.py"))
+
+
+def _roundtrip(value: object) -> tuple[object, object]:
+    """Encode, send through JSON, decode; return both encodings (they must be equal)."""
+    first = Encoder(lambda function: 0).encode(value)
+    decoded = Decoder(lambda number: (lambda *args: None)).decode(json.loads(json.dumps(first)))
+    second = Encoder(lambda function: 0).encode(decoded)
+    return first, second
+
+
+@pytest.mark.parametrize("path", PYTHON_FILES, ids=lambda p: str(p.relative_to(CORPUS)))
+def test_every_corpus_description_survives_the_trip(path: Path) -> None:
+    frontend = PythonFrontend(PackageIndex([path.parent]), path.parent)
+    launch = frontend.load(path, ProblemSink())
+    first, second = _roundtrip(launch)
+    assert first == second
+
+
+def test_records_shared_by_identity_stay_shared() -> None:
+    from launchverify.span import Span
+
+    span = Span(Path("/x.launch.py"), 3)
+    node = a.ExecuteProcess(span=span, cmd=())
+    handler = a.RegisterEventHandler(span=span, handler=a.EventHandler(
+        event="process_exit", entities=(), span=span, target=node))
+    launch = a.LaunchFile(path=Path("/x.launch.py"), format="python", actions=(node, handler),
+                          span=span)
+    data = Encoder(lambda function: 0).encode(launch)
+    decoded = Decoder(lambda number: (lambda *args: None)).decode(json.loads(json.dumps(data)))
+    assert isinstance(decoded, a.LaunchFile)
+    first, second = decoded.actions
+    assert isinstance(second, a.RegisterEventHandler) and second.handler.target is first
+
+
+SPAN = ["Span", ["#p", "/x"], 1, 1, None, None]
+MALFORMED = {
+    "not a record": ["Popen", "rm -rf /"],
+    "a private class": ["_Worker", 1],
+    "too few fields": ["Text"],
+    "a number where text goes": ["Text", 5],
+    "text where a substitution goes": ["LaunchConfig", "x", None],
+    "a reference to nothing": ["#r", 3],
+    "a reference to itself": ["Concat", ["#t", ["#r", 0]]],
+    "a bool as a reference": ["#r", True],
+    "an unknown tag": ["#x", 1],
+    "an empty list": [],
+    "a bare object": {"op": "loaded"},
+    "a mapping with a number key": ["#d", 1, 2],
+    "an unknown enumeration": ["#e", "Signals", 9],
+    "a callback named by text": ["#f", "os.system"],
+    "a span outside its type": ["Span", ["#p", "/x"], "one", 1, None, None],
+    "an action without its place": ["Log", None, None, ["#d"], ["Text", "x"], "info"],
+    "deeper than allowed": ["Concat", ["#t"] * 1],
+}
+
+
+def _deep(levels: int) -> object:
+    value: object = ["Text", "x"]
+    for _ in range(levels):
+        value = ["Concat", ["#t", value]]
+    return value
+
+
+@pytest.mark.parametrize("name", sorted(MALFORMED))
+def test_the_decoder_refuses_what_is_not_a_description(name: str) -> None:
+    data = MALFORMED[name] if name != "deeper than allowed" else _deep(MAX_DEPTH + 5)
+    with pytest.raises(CodecError):
+        Decoder(lambda number: (lambda *args: None)).decode(data)
+
+
+JSON = st.recursive(
+    st.none() | st.booleans() | st.integers(-(2 ** 70), 2 ** 70) | st.floats()
+    | st.sampled_from(["#t", "#l", "#d", "#p", "#e", "#f", "#r", "Text", "Span", "Node",
+                       "LaunchFile", "Concat", "ProblemKind", "x"]),
+    lambda inner: st.lists(inner, max_size=6) | st.dictionaries(st.text(max_size=3), inner,
+                                                                max_size=3),
+    max_leaves=30)
+
+
+@settings(max_examples=300, deadline=None)
+@given(JSON)
+def test_the_decoder_never_fails_otherwise(data: object) -> None:
+    with contextlib.suppress(CodecError):
+        Decoder(lambda number: (lambda *args: None)).decode(data)
+
+
+def test_huge_integers_are_refused_before_they_leave_the_worker() -> None:
+    with pytest.raises(CodecError, match="bits"):
+        Encoder(lambda function: 0).encode(10 ** 5000)
+
+
+def test_the_channel_refuses_oversized_and_malformed_messages() -> None:
+    mine, theirs = socket.socketpair()
+    channel = Channel(mine.detach(), limit=1000)
+    theirs.sendall(dumps({"op": "loaded", "data": "x" * 10}))
+    assert channel.receive(deadline=None) == {"op": "loaded", "data": "x" * 10}
+    theirs.sendall(dumps("y" * 5000))
+    with pytest.raises(ChannelError):
+        channel.receive(deadline=None)
+    mine2, theirs2 = socket.socketpair()
+    channel2 = Channel(mine2.detach())
+    theirs2.sendall(b"\x00\x00\x00\x00\x00\x00\x00\x03{x}")
+    with pytest.raises(ChannelError):
+        channel2.receive(deadline=None)
+    theirs2.close()
+    with pytest.raises(Closed):
+        channel2.receive(deadline=None)
+    channel.close()
+    channel2.close()
+    theirs.close()
+
+
+DUPLICATE = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="twin"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="twin"/>
+</launch>
+"""
+
+
+def test_a_failing_rule_is_lv005_and_the_check_goes_on(tmp_path: Path,
+                                                       monkeypatch: pytest.MonkeyPatch) -> None:
+    from launchverify.rules.naming.invalid_name import InvalidName
+
+    (tmp_path / "a.launch.xml").write_text(DUPLICATE)
+    (tmp_path / "b.launch.xml").write_text(DUPLICATE)
+
+    def broken(self: object, graph: object, ctx: object) -> object:
+        raise RecursionError("maximum recursion depth exceeded")
+
+    monkeypatch.setattr(InvalidName, "check", broken)
+    report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+    codes = sorted((f.span.file.name, f.code) for f in report.findings)
+    assert codes == [("a.launch.xml", "LV005"), ("a.launch.xml", "LV101"),
+                     ("b.launch.xml", "LV005"), ("b.launch.xml", "LV101")]
+    assert "rule LV102 failed" in report.findings[0].message
+
+
+def test_a_failing_evaluation_is_lv005_on_its_root(tmp_path: Path,
+                                                   monkeypatch: pytest.MonkeyPatch) -> None:
+    from launchverify.evaluate.walker import Walker
+
+    (tmp_path / "a.launch.xml").write_text(DUPLICATE)
+    (tmp_path / "b.launch.xml").write_text(DUPLICATE)
+    run = Walker.run
+
+    def fails_on_a(self: Walker) -> None:
+        if self.graph.root.name == "a.launch.xml":
+            raise KeyError("boom")
+        run(self)
+
+    monkeypatch.setattr(Walker, "run", fails_on_a)
+    report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+    codes = sorted((f.span.file.name, f.code) for f in report.findings)
+    assert ("a.launch.xml", "LV005") in codes and ("b.launch.xml", "LV101") in codes
+
+
+def test_output_is_the_same_for_every_number_of_jobs() -> None:
+    tree = CORPUS / "python"
+    rendered = []
+    for jobs in (1, 3):
+        report = run_check(CheckOptions(paths=[tree], workspace=tree, jobs=jobs,
+                                        exclude=["*endless_loop*"]))
+        out = io.StringIO()
+        render_json(report, out)
+        document = json.loads(out.getvalue())
+        document["summary"].pop("seconds")
+        rendered.append(document)
+    assert rendered[0] == rendered[1] and rendered[0]["findings"]
+
+
+def test_workers_say_which_protections_hold(tmp_path: Path) -> None:
+    path = tmp_path / "x.launch.py"
+    path.write_text("from launch import LaunchDescription\n"
+                    "def generate_launch_description():\n    return LaunchDescription([])\n")
+    with IsolatedPython(PackageIndex([tmp_path]), tmp_path) as python:
+        assert python.load(path, ProblemSink()) is not None
+        assert python.protections is not None
+        assert python.protections.startswith("active: resource limits")
