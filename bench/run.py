@@ -7,7 +7,8 @@ files checked, findings by code, wall seconds (min/median/max), CPU seconds, sec
 file, the peak resident memory of the child processes and the load average (the numbers
 mean little on a busy machine).
 
-    .venv/bin/python bench/run.py [--files 500] [--repeat 5]
+    .venv/bin/python bench/run.py [--files 500] [--repeat 5] [--jobs N]
+        [--launchverify OTHER/bin/launchverify]   # e.g. an older version, to compare
 """
 
 from __future__ import annotations
@@ -36,12 +37,17 @@ def children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def run_once(target: Path) -> tuple[float, float, dict[str, Any]]:
-    """Run one check; return its wall time, its CPU time and its JSON report."""
+def run_once(program: Path, target: Path, jobs: int | None = None
+             ) -> tuple[float, float, dict[str, Any]]:
+    """Run one check; return its wall time, its CPU time and its JSON report.
+
+    CPU time counts every process of the check (workers and their zygote included).
+    """
     cpu = children_cpu()
     started = time.perf_counter()
     done = subprocess.run(
-        [str(LAUNCHVERIFY), "check", str(target), "--format", "json"],
+        [str(program), "check", str(target), "--format", "json",
+         *(["--jobs", str(jobs)] if jobs else [])],
         cwd=REPO, capture_output=True, text=True, check=False,
     )
     wall = time.perf_counter() - started
@@ -50,12 +56,12 @@ def run_once(target: Path) -> tuple[float, float, dict[str, Any]]:
     return wall, children_cpu() - cpu, json.loads(done.stdout)
 
 
-def startup_seconds(repeat: int) -> str:
+def startup_seconds(program: Path, repeat: int) -> str:
     """Return the median time of ``launchverify --version`` (interpreter and imports)."""
     times = []
     for _ in range(repeat):
         started = time.perf_counter()
-        done = subprocess.run([str(LAUNCHVERIFY), "--version"], capture_output=True,
+        done = subprocess.run([str(program), "--version"], capture_output=True,
                               check=False)
         if done.returncode != 0:
             return "n/a (launchverify --version failed)"
@@ -63,9 +69,9 @@ def startup_seconds(repeat: int) -> str:
     return f"{statistics.median(times):.3f}"
 
 
-def code_version() -> str:
+def code_version(program: Path) -> str:
     """Return the launchverify version and the git commit it runs from (``+dirty``)."""
-    version = subprocess.run([str(LAUNCHVERIFY), "--version"], capture_output=True,
+    version = subprocess.run([str(program), "--version"], capture_output=True,
                              text=True, check=False).stdout.strip()
     try:
         commit = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=REPO,
@@ -94,9 +100,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--warmup", type=int, default=1, help="unmeasured runs first")
     parser.add_argument("--out", type=Path, default=DEFAULT_OUT, help="generated tree")
     parser.add_argument("--regenerate", action="store_true", help="generate even if current")
+    parser.add_argument("--jobs", type=int, help="passed as --jobs (default: launchverify's)")
+    parser.add_argument("--launchverify", type=Path, help="the launchverify to run (default: "
+                        "the one next to this Python)")
     args = parser.parse_args(argv)
-    if not LAUNCHVERIFY.exists():
-        sys.exit(f"no launchverify next to this Python: {LAUNCHVERIFY}")
+    program = args.launchverify.absolute() if args.launchverify else LAUNCHVERIFY
+    if not program.exists():
+        sys.exit(f"no launchverify at {program}")
     if args.repeat < 1:
         parser.error("--repeat must be at least 1")
 
@@ -110,19 +120,19 @@ def main(argv: list[str] | None = None) -> int:
 
     load_before = os.getloadavg()[0]
     for _ in range(args.warmup):
-        run_once(target)
+        run_once(program, target, args.jobs)
     walls: list[float] = []
     cpus: list[float] = []
     reported: list[float] = []
     report: dict[str, Any] = {}
     for _ in range(args.repeat):
-        wall, cpu, report = run_once(target)
+        wall, cpu, report = run_once(program, target, args.jobs)
         walls.append(wall)
         cpus.append(cpu)
         reported.append(report["summary"]["seconds"])
     load_after = os.getloadavg()[0]
     peak_kib = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss  # KiB on Linux
-    startup = startup_seconds(3)
+    startup = startup_seconds(program, 3)
 
     files = report["summary"]["files"]
     codes = Counter(f["code"] for f in report["findings"])
@@ -140,7 +150,7 @@ def main(argv: list[str] | None = None) -> int:
     ]
     print(f"\nlaunchverify check {target} --format json: {args.repeat} runs "
           f"after {args.warmup} warm-up; seed {args.seed}, {os.cpu_count()} CPUs, "
-          f"Python {platform.python_version()}, {code_version()}")
+          f"Python {platform.python_version()}, {code_version(program)}")
     rows.append(("load average before/after", f"{load_before:.2f} / {load_after:.2f}"))
     width = max(len(name) for name, _ in rows)
     for name, value in rows:
