@@ -150,7 +150,9 @@ def main(argv: list[str] | None = None) -> int:
     ]
     print(f"\nlaunchverify check {target} --format json: {args.repeat} runs "
           f"after {args.warmup} warm-up; seed {args.seed}, {os.cpu_count()} CPUs, "
-          f"Python {platform.python_version()}, {code_version(program)}")
+          f"Python {platform.python_version()}, "
+          f"{code_version(program) if program == LAUNCHVERIFY else program}"
+          f"{f', --jobs {args.jobs}' if args.jobs else ''}")
     rows.append(("load average before/after", f"{load_before:.2f} / {load_after:.2f}"))
     width = max(len(name) for name, _ in rows)
     for name, value in rows:

@@ -76,6 +76,8 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
                          "(default: 10)")
     command.add_argument("--max-file-size", type=_positive_float, metavar="MB",
                          help="do not read files larger than MB megabytes (default: 10)")
+    command.add_argument("-v", "--verbose", action="store_true",
+                         help="say how Python launch files were confined")
     command.add_argument("--launch-files-only", action="store_true",
                          help="skip given files that do not look like launch files (as in "
                          "folders); for pre-commit, which passes every matching file")
@@ -275,9 +277,22 @@ def _check(args: argparse.Namespace) -> int:
         with _output_may_close():
             color = {"auto": None, "always": True, "never": False}[args.color]
             _render(args, report, sys.stdout, color=color)
+    sys.stdout.flush()
+    _say_protections(report, args.verbose)
     if args.exit_zero:
         return EXIT_OK
     return EXIT_FINDINGS if fails(report, args, config) else EXIT_OK
+
+
+def _say_protections(report: Report, verbose: bool) -> None:
+    """Say once how Python launch files were confined: always when a layer was missing."""
+    if not report.python_files or report.protections is None:
+        return
+    missing = "unavailable" in report.protections
+    if verbose or missing:
+        print(f"launchverify: {'note: ' if missing else ''}{report.python_files} Python launch "
+              f"file(s) evaluated in confined processes; {report.protections}",
+              file=sys.stderr)
 
 
 def fails(report: Report, args: argparse.Namespace, config: Config) -> bool:
@@ -320,6 +335,7 @@ def _report(args: argparse.Namespace) -> int:
 
     options, _ = check_options(args, progress=sys.stderr.isatty())
     report = run_check(options)
+    _say_protections(report, args.verbose)
     with args.output.open("w", encoding="utf-8") as handle:
         render_html(report, handle)
     print(f"wrote {args.output} ({len(report.findings)} findings in {report.files} files)",

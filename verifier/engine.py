@@ -74,6 +74,8 @@ class Report:
     checked: list[Path] = field(default_factory=list)  # the launch files checked as roots
     suppressed: int = 0  # findings silenced by inline comments
     baselined: int = 0  # findings dropped because the baseline records them
+    python_files: int = 0  # Python launch files evaluated, each in a confined process
+    protections: str | None = None  # which confinement layers held, as workers said
 
     def display_path(self, path: Path) -> str:
         """Return a path as the user gave it, else relative to the working directory."""
@@ -164,6 +166,7 @@ def run_check(options: CheckOptions) -> Report:
                                    loader=loader))
             if options.progress is not None:
                 options.progress(done + 1, len(files))
+        python_files, protections = python.evaluated, python.protections
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
     for graph in graphs:
         graph.included_elsewhere = graph.root in included
@@ -177,7 +180,7 @@ def run_check(options: CheckOptions) -> Report:
     return Report(sorted(findings, key=Finding.sort_key), len(loaded),
                   time.perf_counter() - started, display, graphs,
                   checked=[canonical(f) for f in files], suppressed=suppressed,
-                  baselined=baselined)
+                  baselined=baselined, python_files=python_files, protections=protections)
 
 
 def _excluded(file: Path, patterns: list[str]) -> bool:

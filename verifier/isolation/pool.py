@@ -83,6 +83,7 @@ class IsolatedPython:
                                debug=bool(os.environ.get("LAUNCHVERIFY_DEBUG_WORKERS")))
         self.jobs = max(1, jobs)
         self.protections: str | None = None  # as the first worker reported them
+        self.evaluated = 0  # files evaluated by workers
         self._zygote: Zygote | None = None
         self._loads: dict[Path, _Load] = {}
         self._queue: deque[_Load] = deque()
@@ -222,6 +223,7 @@ class IsolatedPython:
 
     def _loaded(self, load: _Load, request: _Request) -> None:
         load.done = True
+        self.evaluated += 1
         worker = request.worker
         reply = request.reply
         if reply is None or reply.get("op") != "loaded":
