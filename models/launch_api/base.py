@@ -19,7 +19,8 @@ from typing import TYPE_CHECKING, Any, Protocol
 from launchverify.ir import subst as s
 from launchverify.ir.actions import Action as IRAction
 from launchverify.ir.conditions import Condition as IRCondition
-from launchverify.own_code import is_own_file
+from launchverify.models.launch_api import runtime
+from launchverify.models.launch_api.runtime import blamable
 from launchverify.span import Span
 
 if TYPE_CHECKING:
@@ -32,10 +33,11 @@ def caller_span(skip: int = 1) -> Span:
     helper function of the user's points at the helper's line.
     """
     frame: FrameType | None = sys._getframe(skip)
-    while frame is not None and is_own_file(frame.f_code.co_filename):
+    while frame is not None and not blamable(frame.f_code.co_filename):
         frame = frame.f_back
     if frame is None:
-        return Span(Path("<unknown>"), 1)
+        fallback = runtime.current.fallback if runtime.current is not None else None
+        return fallback or Span(Path("<unknown>"), 1)
     return _frame_span(frame)
 
 

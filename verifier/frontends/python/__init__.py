@@ -24,6 +24,7 @@ from launchverify.frontends.python.importer import Opaque, import_context
 from launchverify.frontends.python.sandbox import (
     SandboxViolation,
     TimeLimitExceeded,
+    in_scratch,
     sandbox,
     take_refusals,
 )
@@ -36,7 +37,7 @@ from launchverify.models.launch_api.placeholders import (
     has_placeholder,
     placeholder,
 )
-from launchverify.own_code import is_own_file
+from launchverify.models.launch_api.runtime import blamable
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
@@ -93,6 +94,7 @@ class _Session:
         self.namespace: dict[str, Any] = {}
         self.lookups: list[tuple[str, Span]] = []
         self.failed_read: tuple[str, Span] | None = None  # OpaqueFunction read of nothing
+        self.fallback: Span | None = None  # the running OpaqueFunction's line
 
     # ------------------------------------------------------------------ reporting
 
@@ -116,11 +118,11 @@ class _Session:
         import sys
 
         frame = sys._getframe(1)
-        while frame is not None and (is_own_file(frame.f_code.co_filename)
+        while frame is not None and (not blamable(frame.f_code.co_filename, self.path)
                                      or "importlib" in frame.f_code.co_filename):
             frame = frame.f_back  # type: ignore[assignment]
         if frame is None:
-            return Span.of_file(self.path)
+            return self.fallback or Span.of_file(self.path)
         return Span(Path(frame.f_code.co_filename), frame.f_lineno or 1)
 
     def failure(self, error: BaseException) -> None:
@@ -135,6 +137,12 @@ class _Session:
             self.unmodeled(f"launch files are evaluated without side effects: the sandbox "
                            f"refused an operation ({_shown(str(error))}); the evaluation of "
                            "this file may be incomplete", span)
+        elif isinstance(error, FileNotFoundError) and in_scratch(error.filename):
+            # A temporary file that a process of the launch writes at run time (xacro, a
+            # generated world): launchverify starts no process, so it never exists here.
+            self.unmodeled("the launch file's code needs a temporary file that only exists "
+                           f"at run time ({type(error).__name__} on a file in its temporary "
+                           "folder); what follows is not evaluated", span)
         elif isinstance(error, TimeLimitExceeded):
             self.sink.evaluation(f"{error} (an endless loop?)", span)
         elif isinstance(error, MemoryError):
@@ -160,10 +168,10 @@ class _Session:
 
     def _error_span(self, error: BaseException) -> Span:
         frames = traceback.extract_tb(error.__traceback__)
-        user = [f for f in frames if not is_own_file(f.filename) and _is_file(f.filename)
+        user = [f for f in frames if blamable(f.filename, self.path)
                 and not f.filename.startswith(_STDLIB)]
         if not user:
-            return Span.of_file(self.path)
+            return self.fallback or Span.of_file(self.path)
         frame = user[-1]
         column = (frame.colno or 0) + 1 if getattr(frame, "colno", None) is not None else 1
         return Span(Path(frame.filename), frame.lineno or 1, column)
@@ -176,7 +184,7 @@ class _Session:
         frontend = self.frontend
         runtime.current = runtime.Runtime(frontend.index, frontend.workspace, self.unmodeled,
                                           self.path, context_tools=self._context_tools,
-                                          lookups=self.lookups)
+                                          lookups=self.lookups, fallback=self.fallback)
         take_refusals()
         try:
             with import_context([self.path.parent], frontend.index, self.module_unmodeled,
@@ -302,6 +310,7 @@ class _Session:
         saved, saved_lookups = self.sink, self.lookups
         self.sink, self.lookups = sink, []
         self.in_opaque, self.failed_read = True, None
+        self.fallback = model._span
         performer = _Performer(self.frontend, configurations, current)
         context = LaunchContext(configurations=dict(configurations), performer=performer.perform,
                                 condition_evaluator=performer.evaluate,
@@ -316,7 +325,7 @@ class _Session:
         finally:
             lookups = tuple(self.lookups)
             self.sink, self.lookups = saved, saved_lookups
-            self.in_opaque = False
+            self.in_opaque, self.fallback = False, None
         reads: tuple[tuple[str, bool, bool] | tuple[str, bool, bool, Span], ...] = (
             *performer.reducer.reads, *context.launch_configurations.read)
         if self.failed_read is not None:

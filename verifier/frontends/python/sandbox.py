@@ -125,6 +125,11 @@ def armed() -> bool:
     return bool(_armed)
 
 
+def in_scratch(path: Any) -> bool:
+    """Return whether a path is in the evaluation's private temporary folder."""
+    return _in_scratch(path)
+
+
 def _in_scratch(path: Any) -> bool:
     if not _scratch or not isinstance(path, (str, bytes, os.PathLike)):
         return False
