@@ -237,3 +237,47 @@ def generate_launch_description():
 """)
     graph = run_check(CheckOptions(paths=[path], workspace=tmp_path)).graphs[0]
     assert [graph.runs(node.origin) for node in graph.nodes] == runs
+
+
+def test_findings_stay_in_the_launch_file_that_imports_another(tmp_path: Path) -> None:
+    # realsense's rs_multi_camera_launch.py runs rs_launch.launch_setup this way: places
+    # in the imported launch file go to the line of the importing file that reached them.
+    (tmp_path / "base_launch.py").write_text(HEADER + """
+def launch_setup(context):
+    return [Node(package='usb_cam', executable='usb_cam_node_exe', name='cam'),
+            Node(package='usb_cam', executable='usb_cam_node_exe', name='cam')]
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=launch_setup)])
+""")
+    body = """
+import sys
+sys.path.append(os.path.dirname(__file__))
+import base_launch
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=base_launch.launch_setup)])
+"""
+    path = write(tmp_path, "multi_launch.py", body)
+    report = run_check(CheckOptions(paths=[path], workspace=tmp_path))
+    assert [(f.code, f.span.file.name, f.span.line) for f in report.findings] == [
+        ("LV101", "multi_launch.py", 12)]
+
+
+def test_a_temporary_file_written_at_run_time_is_an_unknown(tmp_path: Path) -> None:
+    # nav2's simulation launch files name a temporary world file that xacro writes when
+    # the launch runs, and read or remove it in an OpaqueFunction
+    body = """
+import tempfile
+
+def remove(context):
+    os.remove(WORLD)
+    return []
+
+WORLD = tempfile.mktemp(prefix='nav2_', suffix='.sdf')
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=remove)])
+"""
+    [(code, line, message)] = findings(write(tmp_path, "world.launch.py", body))
+    assert (code, line) == ("LV003", 10) and "only exists at run time" in message
