@@ -56,7 +56,7 @@ class CheckOptions:
     baseline: Path | None = None
     launch_files_only: bool = False  # given files must look like launch files too
     distro: str | None = None  # the ROS 2 distribution to check for (None: any)
-    jobs: int | None = None  # Python files evaluated at once (None: one per CPU)
+    jobs: int | None = None  # Python files evaluated ahead at once (None: default_jobs())
     time_limit: float = DEFAULT_TIME_LIMIT  # seconds per Python evaluation
     max_file_size: int = reading.DEFAULT_LIMIT  # bytes; larger files are not read
     progress: Callable[[int, int], None] | None = None  # (files evaluated, files in all)
@@ -156,7 +156,7 @@ def run_check(options: CheckOptions) -> Report:
     limits = Limits(seconds=options.time_limit)
     graphs = []
     with distros.checking(options.distro), reading.size_limit(options.max_file_size), \
-            IsolatedPython(index, workspace, jobs=options.jobs or os.cpu_count() or 1,
+            IsolatedPython(index, workspace, jobs=options.jobs or default_jobs(),
                            limits=limits, distro=options.distro) as python:
         loader = FileCache(index, workspace, python)
         python.prefetch(canonical(f) for f in files if launch_format(f) == "python")
@@ -181,6 +181,11 @@ def run_check(options: CheckOptions) -> Report:
                   time.perf_counter() - started, display, graphs,
                   checked=[canonical(f) for f in files], suppressed=suppressed,
                   baselined=baselined, python_files=python_files, protections=protections)
+
+
+def default_jobs() -> int:
+    """Return how many Python files to evaluate at once: a CPU each, but one is ours."""
+    return max(1, (os.cpu_count() or 1) - 1)
 
 
 def _excluded(file: Path, patterns: list[str]) -> bool:

@@ -54,7 +54,10 @@ def _records() -> dict[str, type]:
 
 
 RECORDS = _records()
+_NAMES = {cls: tuple(f.name for f in dataclasses.fields(cls))  # type: ignore[arg-type]
+          for cls in RECORDS.values()}
 ENUMS: dict[str, type[enum.Enum]] = {"ProblemKind": ProblemKind}
+_SCALARS = frozenset({bool, str, int, float})  # what JSON decodes to (exactly these types)
 
 
 # --------------------------------------------------------------------------- encoding
@@ -69,7 +72,23 @@ class Encoder:
         self._keep: list[object] = []  # ids stay unique while the encoding runs
 
     def encode(self, value: object, depth: int = 0) -> object:
-        if value is None or isinstance(value, (bool, str, float)):
+        kind = type(value)
+        if kind is str or value is None or kind is bool or kind is float:
+            return value
+        names = _NAMES.get(kind)
+        if names is not None:  # a record: the common case, dispatched first
+            known = self._seen.get(id(value))
+            if known is not None:
+                return ["#r", known]
+            if depth > MAX_DEPTH:
+                raise CodecError(f"the launch description nests deeper than {MAX_DEPTH} "
+                                 "levels")
+            self._seen[id(value)] = len(self._seen)
+            self._keep.append(value)
+            encode = self.encode
+            depth += 1
+            return [kind.__name__, *[encode(getattr(value, name), depth) for name in names]]
+        if isinstance(value, (bool, str, float)):
             return value
         if isinstance(value, int):
             if not -_SMALL_INT <= value < _SMALL_INT:
@@ -93,21 +112,9 @@ class Encoder:
                     raise CodecError(f"a mapping key is {type(key).__name__}, not text")
                 out += [key, self.encode(item, depth + 1)]
             return out
-        name = type(value).__name__
-        if RECORDS.get(name) is type(value):
-            known = self._seen.get(id(value))
-            if known is not None:
-                return ["#r", known]
-            self._seen[id(value)] = len(self._seen)
-            self._keep.append(value)
-            fields = dataclasses.fields(value)  # type: ignore[arg-type]
-            return [name, *(self._field(value, f, depth) for f in fields)]
         if callable(value):
             return ["#f", self.register(value)]
-        raise CodecError(f"a {name} value cannot be part of a launch description")
-
-    def _field(self, record: object, field: dataclasses.Field[Any], depth: int) -> object:
-        return self.encode(getattr(record, field.name), depth + 1)
+        raise CodecError(f"a {kind.__name__} value cannot be part of a launch description")
 
 
 # --------------------------------------------------------------------------- decoding
@@ -129,9 +136,9 @@ class Decoder:
         self._records: list[object | None] = []
 
     def decode(self, data: object, depth: int = 0) -> object:
-        if data is None or isinstance(data, (bool, str, int, float)):
+        if data is None or data.__class__ in _SCALARS:
             return data
-        if not isinstance(data, list) or not data or not isinstance(data[0], str):
+        if data.__class__ is not list or not data or data[0].__class__ is not str:
             raise CodecError("malformed value")
         if depth > MAX_DEPTH:
             raise CodecError(f"the launch description nests deeper than {MAX_DEPTH} levels")
@@ -169,8 +176,10 @@ class Decoder:
         slot = len(self._records)
         self._records.append(None)  # reserved: a reference to it now would be a cycle
         arguments = {}
-        for (field, check), raw in zip(fields, values, strict=False):
-            value = self.decode(raw, depth + 1)
+        decode = self.decode
+        depth += 1
+        for (field, check), raw in zip(fields, values, strict=True):
+            value = raw if raw.__class__ is str else decode(raw, depth)
             if not check(value):
                 raise CodecError(f"{name}.{field} has an unexpected {type(value).__name__}")
             arguments[field] = value

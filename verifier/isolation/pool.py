@@ -108,13 +108,13 @@ class IsolatedPython:
         if load is None:
             load = _Load(path)
             self._loads[path] = load
-            self._queue.appendleft(load)
-        elif load in self._queue:  # needed now: first in line
+            self._start(load)  # needed now: it starts whatever else runs
+        elif load.request is None:
             self._queue.remove(load)
-            self._queue.appendleft(load)
+            self._start(load)
         while not load.done:
-            self._start_queued()
             self._pump()
+            self._start_queued()
         sink.problems.extend(load.problems)
         return load.launch
 
@@ -140,14 +140,17 @@ class IsolatedPython:
 
     def _start_queued(self) -> None:
         while self._queue and len(self._running) < self.jobs:
-            load = self._queue.popleft()
-            if self._zygote is None:
-                self._zygote = Zygote(self.setting)
-            number, fd = self._zygote.spawn({"path": str(load.path)})
-            worker = _Worker(load.path, number, Channel(fd))
-            load.request = self._send(worker, None)
-            load.request.load = load
-            self._running.append(load.request)
+            self._start(self._queue.popleft())
+
+    def _start(self, load: _Load) -> None:
+        """Start a worker on a file."""
+        if self._zygote is None:
+            self._zygote = Zygote(self.setting)
+        number, fd = self._zygote.spawn({"path": str(load.path)})
+        worker = _Worker(load.path, number, Channel(fd))
+        load.request = self._send(worker, None)
+        load.request.load = load
+        self._running.append(load.request)
 
     def _send(self, worker: _Worker, message: dict[str, Any] | None) -> _Request:
         deadline = time.monotonic() + self.limits.seconds + GRACE
@@ -274,8 +277,8 @@ class IsolatedPython:
         if not request.done:
             self._running.append(request)
         while not request.done:
-            self._start_queued()
             self._pump()
+            self._start_queued()
         if request in self._running:
             self._running.remove(request)
         reply = request.reply
