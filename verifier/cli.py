@@ -70,7 +70,7 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
                          "else features of every distribution are accepted)")
     command.add_argument("-j", "--jobs", type=_positive_int, metavar="N",
                          help="evaluate up to N Python launch files ahead at once, each in its "
-                         "own confined process (default: one less than the CPUs, at least 1)")
+                         "own confined process (default: the number of CPUs)")
     command.add_argument("--time-limit", type=_positive_float, metavar="SECONDS",
                          help="stop a Python launch file's evaluation after SECONDS "
                          "(default: 10)")

@@ -184,8 +184,11 @@ def run_check(options: CheckOptions) -> Report:
 
 
 def default_jobs() -> int:
-    """Return how many Python files to evaluate at once: a CPU each, but one is ours."""
-    return max(1, (os.cpu_count() or 1) - 1)
+    """Return how many Python files to evaluate ahead at once: one per CPU.
+
+    (Measured on 2 CPUs: 2 ahead beats 1, the walk waiting less, though it shares a CPU.)
+    """
+    return os.cpu_count() or 1
 
 
 def _excluded(file: Path, patterns: list[str]) -> bool:
