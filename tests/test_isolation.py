@@ -206,3 +206,61 @@ def test_workers_say_which_protections_hold(tmp_path: Path) -> None:
         assert python.load(path, ProblemSink()) is not None
         assert python.protections is not None
         assert python.protections.startswith("active: resource limits")
+
+
+PART = """\
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch_ros.actions import Node
+
+
+def setup(context):
+    robot = context.launch_configurations['robot']
+    return [Node(package='demo_nodes_cpp', executable='talker', name='part{n}_' + robot),
+            Node(package='demo_nodes_cpp', executable='talker', name='part{n}_' + robot)]
+
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument('robot', default_value='r0'),
+                              OpaqueFunction(function=setup)])
+"""
+ALL = """\
+from launch import LaunchDescription
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+
+def generate_launch_description():
+    here = __file__.rsplit('/', 1)[0]
+    return LaunchDescription([
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(f'{here}/part{n}.launch.py'),
+                                 launch_arguments={'robot': robot}.items())
+        for robot in ('r1', 'r2') for n in range(6)])
+"""
+
+
+def test_recycled_workers_give_the_same_findings(tmp_path: Path,
+                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    from launchverify.isolation import pool
+
+    for n in range(6):
+        (tmp_path / f"part{n}.launch.py").write_text(PART.replace("{n}", str(n)))
+    (tmp_path / "all.launch.py").write_text(ALL)
+
+    def findings() -> list[tuple[str, str, int, str]]:
+        report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+        return [(f.code, f.span.file.name, f.span.line, f.message) for f in report.findings]
+
+    everyone = findings()
+    monkeypatch.setattr(pool, "MAX_ALIVE", 2)
+    revived = []
+    revive = pool.IsolatedPython._revive
+
+    def counted(self: pool.IsolatedPython, worker: object) -> str | None:
+        revived.append(worker)
+        return revive(self, worker)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(pool.IsolatedPython, "_revive", counted)
+    assert findings() == everyone
+    assert revived
+    assert sum(code == "LV101" for code, *_ in everyone) == 6 + 12  # alone, and r1/r2

@@ -54,8 +54,7 @@ def _records() -> dict[str, type]:
 
 
 RECORDS = _records()
-_NAMES = {cls: tuple(f.name for f in dataclasses.fields(cls))  # type: ignore[arg-type]
-          for cls in RECORDS.values()}
+_NAMES = {cls: tuple(f.name for f in dataclasses.fields(cls)) for cls in RECORDS.values()}
 ENUMS: dict[str, type[enum.Enum]] = {"ProblemKind": ProblemKind}
 _SCALARS = frozenset({bool, str, int, float})  # what JSON decodes to (exactly these types)
 

@@ -33,6 +33,7 @@ from launchverify.workspace.packages import PackageIndex
 from launchverify.workspace.reading import read_file
 
 GRACE = 2.0  # seconds past the time limit before a worker is killed
+MAX_ALIVE = 64  # idle workers kept for their OpaqueFunctions (about 8 MB each)
 _ENTRY_POINTS = (b"def generate_launch_description", b"def generate_test_description")
 
 
@@ -44,6 +45,8 @@ class _Worker:
     number: int
     channel: Channel
     ended: str | None = None  # why it can no longer answer
+    loaded: int = 0  # callbacks its evaluation made (those a fresh worker makes again)
+    recycled: bool = False  # ended to bound memory; a fresh one takes over when asked
 
 
 @dataclass(eq=False)
@@ -88,7 +91,7 @@ class IsolatedPython:
         self._loads: dict[Path, _Load] = {}
         self._queue: deque[_Load] = deque()
         self._running: list[_Request] = []
-        self._workers: list[_Worker] = []  # alive, for OpaqueFunctions
+        self._workers: dict[_Worker, None] = {}  # alive for OpaqueFunctions, oldest use first
         self._helpers: dict[Path, bool] = {}
 
     # ------------------------------------------------------------------ the loader
@@ -209,6 +212,7 @@ class IsolatedPython:
         worker = request.worker
         request.failure = why
         worker.ended = why
+        self._workers.pop(worker, None)
         if kill and self._zygote is not None:
             self._zygote.kill(worker.number)
         worker.channel.close()
@@ -262,16 +266,59 @@ class IsolatedPython:
         load.problems.extend(problems)
         _place_callbacks(launch, callbacks)
         if callbacks:
-            self._workers.append(worker)
+            worker.loaded = len(callbacks)
+            self._keep(worker)
         else:
             worker.channel.close()  # nothing more to ask: the worker exits
+
+    def _keep(self, worker: _Worker) -> None:
+        """Keep a worker alive for its file's OpaqueFunctions.
+
+        Beyond ``MAX_ALIVE``, the least recently used one ends; it is started again if
+        asked.
+        """
+        self._workers.pop(worker, None)
+        self._workers[worker] = None
+        while len(self._workers) > MAX_ALIVE:
+            oldest = next(iter(self._workers))
+            del self._workers[oldest]
+            oldest.channel.close()  # it exits; the zygote removes its folder
+            oldest.recycled = True
+
+    def _revive(self, worker: _Worker) -> str | None:
+        """Start a fresh worker for a recycled one's file; return why it failed, if it did."""
+        if self._zygote is None:
+            self._zygote = Zygote(self.setting)
+        number, fd = self._zygote.spawn({"path": str(worker.path)})
+        fresh = _Worker(worker.path, number, Channel(fd))
+        request = self._send(fresh, None)
+        self._running.append(request)
+        while not request.done:
+            self._pump()
+            self._start_queued()
+        if request in self._running:
+            self._running.remove(request)
+        reply = request.reply
+        if reply is None or reply.get("op") != "loaded":
+            return f"{request.failure or 'failed'} when it was started again"
+        if reply.get("callbacks") != worker.loaded:
+            fresh.channel.close()
+            return "made other OpaqueFunctions when it was evaluated again"
+        worker.number, worker.channel, worker.recycled = fresh.number, fresh.channel, False
+        return None
 
     def call(self, worker: _Worker, number: int, configurations: Mapping[str, Any],
              current: Path, span: Span) -> a.OpaqueResult:
         """Run one OpaqueFunction of ``worker``'s file."""
+        if worker.recycled:
+            why = (self._revive(worker) if number < worker.loaded else
+                   "made this OpaqueFunction in an earlier call and was recycled")
+            if why is not None:
+                worker.ended = why
         if worker.ended is not None:
             return _failed(span, f"not evaluated: the process evaluating this file "
                            f"{worker.ended}", ProblemKind.UNMODELED)
+        self._keep(worker)
         arguments = Encoder(_no_register).encode((dict(configurations), str(current)))
         request = self._send(worker, {"op": "call", "callback": number, "arguments": arguments})
         if not request.done:

@@ -97,8 +97,9 @@ class _Worker:
         frontend = PythonFrontend(self.setting.index, self.setting.workspace)
         launch = frontend.load(path, sink)
         encoder = Encoder(self.register)
-        return {"op": "loaded", "protections": self.protections,
-                "data": encoder.encode((launch, tuple(sink.problems)))}
+        data = encoder.encode((launch, tuple(sink.problems)))
+        return {"op": "loaded", "protections": self.protections, "data": data,
+                "callbacks": len(self.callbacks)}
 
     def call(self, request: dict[str, Any]) -> dict[str, Any]:
         number = request.get("callback")
