@@ -146,14 +146,33 @@ class IsolatedPython:
             self._start(self._queue.popleft())
 
     def _start(self, load: _Load) -> None:
-        """Start a worker on a file."""
-        if self._zygote is None:
-            self._zygote = Zygote(self.setting)
-        number, fd = self._zygote.spawn({"path": str(load.path)})
+        """Start a worker on a file (a failure to start one is a problem on the file)."""
+        try:
+            number, fd = self._spawn(load.path)
+        except OSError as error:
+            load.done = True
+            load.problems.append(Problem(
+                ProblemKind.EVALUATION, "the evaluation of this file failed: no process "
+                f"could be started for it ({error.strerror or error})", Span.of_file(load.path)))
+            return
         worker = _Worker(load.path, number, Channel(fd))
         load.request = self._send(worker, None)
         load.request.load = load
         self._running.append(load.request)
+
+    def _spawn(self, path: Path) -> tuple[int, int]:
+        """Ask the zygote for a worker on ``path``; a new zygote if the old one is gone."""
+        for attempt in range(2):
+            if self._zygote is None:
+                self._zygote = Zygote(self.setting)
+            try:
+                return self._zygote.spawn({"path": str(path)})
+            except OSError:
+                self._zygote.close()
+                self._zygote = None
+                if attempt:
+                    raise
+        raise AssertionError("unreachable")
 
     def _send(self, worker: _Worker, message: dict[str, Any] | None) -> _Request:
         deadline = time.monotonic() + self.limits.seconds + GRACE
@@ -287,9 +306,10 @@ class IsolatedPython:
 
     def _revive(self, worker: _Worker) -> str | None:
         """Start a fresh worker for a recycled one's file; return why it failed, if it did."""
-        if self._zygote is None:
-            self._zygote = Zygote(self.setting)
-        number, fd = self._zygote.spawn({"path": str(worker.path)})
+        try:
+            number, fd = self._spawn(worker.path)
+        except OSError as error:
+            return f"could not be started again ({error.strerror or error})"
         fresh = _Worker(worker.path, number, Channel(fd))
         request = self._send(fresh, None)
         self._running.append(request)

@@ -42,6 +42,8 @@ class Ended:
 
     def describe(self) -> str:
         """Return the end in words."""
+        if self.code is None and self.signal is None:
+            return "could not be started (no process or temporary folder could be made)"
         if self.signal is not None:
             try:
                 name = signal.Signals(self.signal).name
@@ -80,6 +82,9 @@ class Zygote:
         try:
             message = json.dumps({"op": "spawn", "id": number, "request": request}).encode()
             socket.send_fds(self.control, [message], [theirs.fileno()])
+        except OSError:
+            mine.close()
+            raise
         finally:
             theirs.close()
         mine.setblocking(False)
@@ -190,8 +195,21 @@ class _Server:
         return True
 
     def spawn(self, number: int, request: dict[str, Any], fd: int, wake: tuple[int, ...]) -> None:
-        scratch = tempfile.mkdtemp(prefix="launchverify-", dir=self.temporary)
-        pid = os.fork()
+        try:
+            scratch = tempfile.mkdtemp(prefix="launchverify-", dir=self.temporary)
+        except OSError:
+            scratch = ""
+        try:
+            pid = os.fork() if scratch else -1
+        except OSError:
+            pid = -1
+        if pid < 0:  # no folder or no process: the worker "ends" at once, never started
+            if scratch:
+                shutil.rmtree(scratch, ignore_errors=True)
+            with contextlib.suppress(OSError):
+                self.control.send(json.dumps({"id": number, "code": None,
+                                              "signal": None}).encode())
+            return
         if pid == 0:
             _become_worker(self.control, wake, fd, request, scratch, self.setting,
                            self.confinement)
