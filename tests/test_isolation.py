@@ -264,3 +264,22 @@ def test_recycled_workers_give_the_same_findings(tmp_path: Path,
     assert findings() == everyone
     assert revived
     assert sum(code == "LV101" for code, *_ in everyone) == 6 + 12  # alone, and r1/r2
+
+
+def test_a_worker_that_cannot_start_is_a_finding(tmp_path: Path,
+                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    from launchverify.isolation.zygote import Zygote
+
+    def refuse(self: Zygote, request: dict[str, object]) -> tuple[int, int]:
+        raise BlockingIOError(11, "Resource temporarily unavailable")
+
+    monkeypatch.setattr(Zygote, "spawn", refuse)
+    (tmp_path / "a.launch.py").write_text("from launch import LaunchDescription\n"
+                                          "def generate_launch_description():\n"
+                                          "    return LaunchDescription([])\n")
+    (tmp_path / "b.launch.xml").write_text(DUPLICATE)
+    report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+    found = sorted((f.span.file.name, f.code, f.message) for f in report.findings)
+    assert found[0][:2] == ("a.launch.py", "LV002") and "no process could be started" \
+        in found[0][2]
+    assert found[1][:2] == ("b.launch.xml", "LV101")
