@@ -112,7 +112,7 @@ class IsolatedPython:
             load = _Load(path)
             self._loads[path] = load
             self._start(load)  # needed now: it starts whatever else runs
-        elif load.request is None:
+        elif load.request is None and not load.done:  # queued: needed now
             self._queue.remove(load)
             self._start(load)
         while not load.done:
