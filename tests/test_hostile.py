@@ -598,3 +598,26 @@ def test_special_files_are_findings_not_hangs(outcome: Outcome, name: str) -> No
         return
     [finding] = outcome.findings_in(filename)
     assert finding["code"] == "LV001" and "not a regular file" in str(finding["message"])
+
+
+def test_without_landlock_nothing_is_written_either(outcome: Outcome,
+                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    """The fallback where the kernel has no Landlock: seccomp refuses every write."""
+    from launchverify.engine import CheckOptions, run_check
+    from launchverify.isolation import confine
+
+    def no_landlock(missing: dict[str, str]) -> None:
+        missing["Landlock"] = "disabled for this test"
+
+    monkeypatch.setattr(confine, "_landlock_module", no_landlock)
+    monkeypatch.setenv("TMPDIR", str(outcome.root / "tmp"))
+    before = _snapshot(outcome.root, outcome.root / "tmp")
+    report = run_check(CheckOptions(paths=[outcome.workspace], workspace=outcome.workspace,
+                                    time_limit=TIME_LIMIT, jobs=2,
+                                    exclude=[str(outcome.workspace / "loop*.launch.xml")]))
+    assert report.protections is not None
+    assert "seccomp (no file writes)" in report.protections
+    assert "Landlock (disabled for this test)" in report.protections
+    assert _snapshot(outcome.root, outcome.root / "tmp") == before
+    for name in ("sentinel.launch.xml", "sentinel.launch.py"):
+        assert [f.code for f in report.findings if f.span.file.name == name] == ["LV101"]
