@@ -184,6 +184,17 @@ class IsolatedPython:
                 self._fail(request, f"could not be reached ({error})")
         return request
 
+    def _await(self, request: _Request) -> _Request:
+        """Wait for one request's answer (evaluations ahead go on meanwhile)."""
+        if not request.done:
+            self._running.append(request)
+        while not request.done:
+            self._pump()
+            self._start_queued()
+        if request in self._running:
+            self._running.remove(request)
+        return request
+
     def _pump(self) -> None:
         """Wait for the next answer or deadline among the requests in flight."""
         if not self._running:
@@ -311,13 +322,7 @@ class IsolatedPython:
         except OSError as error:
             return f"could not be started again ({error.strerror or error})"
         fresh = _Worker(worker.path, number, Channel(fd))
-        request = self._send(fresh, None)
-        self._running.append(request)
-        while not request.done:
-            self._pump()
-            self._start_queued()
-        if request in self._running:
-            self._running.remove(request)
+        request = self._await(self._send(fresh, None))
         reply = request.reply
         if reply is None or reply.get("op") != "loaded":
             return f"{request.failure or 'failed'} when it was started again"
@@ -340,14 +345,8 @@ class IsolatedPython:
                            f"{worker.ended}", ProblemKind.UNMODELED)
         self._keep(worker)
         arguments = Encoder(_no_register).encode((dict(configurations), str(current)))
-        request = self._send(worker, {"op": "call", "callback": number, "arguments": arguments})
-        if not request.done:
-            self._running.append(request)
-        while not request.done:
-            self._pump()
-            self._start_queued()
-        if request in self._running:
-            self._running.remove(request)
+        request = self._await(self._send(
+            worker, {"op": "call", "callback": number, "arguments": arguments}))
         reply = request.reply
         if reply is None:
             return _failed(span, f"running this OpaqueFunction failed: the process evaluating "

@@ -156,27 +156,20 @@ def _audit(event: str, args: tuple[Any, ...]) -> None:
 
 def _refuse(what: str) -> None:
     """Remember the refusal (the launch file may catch the exception) and raise."""
+    raise SandboxViolation(_note(what, depth=3))
+
+
+def _note(what: str, depth: int = 2) -> str:
+    """Remember something not done, to be reported with the refusals; return the message."""
     message = f"launch files are evaluated without side effects: {what}"
-    frame = sys._getframe(2)
+    frame = sys._getframe(depth)
     while frame is not None and not _user_code(frame.f_code.co_filename):
         frame = frame.f_back  # type: ignore[assignment]
     where = (frame.f_code.co_filename, frame.f_lineno) if frame is not None else None
     refusals = getattr(_state, "refused", None)
     if refusals is not None:
         refusals.append((message, where))
-    raise SandboxViolation(message)
-
-
-def _note(what: str) -> None:
-    """Remember something not done, to be reported with the refusals, without raising."""
-    message = f"launch files are evaluated without side effects: {what}"
-    frame = sys._getframe(2)
-    while frame is not None and not _user_code(frame.f_code.co_filename):
-        frame = frame.f_back  # type: ignore[assignment]
-    where = (frame.f_code.co_filename, frame.f_lineno) if frame is not None else None
-    refusals = getattr(_state, "refused", None)
-    if refusals is not None:
-        refusals.append((message, where))
+    return message
 
 
 def _user_code(filename: str) -> bool:
