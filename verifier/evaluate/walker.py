@@ -167,7 +167,7 @@ class Walker:
     def run(self) -> None:
         """Evaluate the root file as ``ros2 launch ROOT args...`` does."""
         ctx = Ctx(file=self.graph.root, chain=(), path=())
-        loaded = self.load(self.graph.root, ctx)
+        loaded = self.load(self.graph.root, ctx, root=True)
         if loaded.launch is None:
             return
         self.graph.root_arguments = self.static_args(loaded)
@@ -177,9 +177,15 @@ class Walker:
         self.visit_all(loaded.launch.actions, ctx)
         self.file_stack.pop()
 
-    def load(self, path: Path, ctx: Ctx) -> LoadedFile:
-        """Load a file (cached by the loader) and record its problems once."""
+    def load(self, path: Path, ctx: Ctx, *, root: bool = False) -> LoadedFile:
+        """Load a file (cached by the loader) and record its problems once.
+
+        A ROS 1 file checked on its own (``root``) gives its one info and is not walked;
+        included, it gives its parse errors like any file ros2 launch cannot load.
+        """
         loaded: LoadedFile = self.loader(path)
+        if root and loaded.ros1 is not None:
+            loaded = dataclasses.replace(loaded, launch=None, problems=[loaded.ros1])
         for record in self.include_stack:
             record.files.add(path)
         if path not in self.graph.files:

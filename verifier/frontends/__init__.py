@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Protocol
 
-from launchverify.frontends.tags import TagParser
+from launchverify.frontends.tags import TagParser, ros1_launch_file
 from launchverify.frontends.xml_reader import read_xml
 from launchverify.frontends.yaml_reader import read_yaml
 from launchverify.ir.actions import LaunchFile
@@ -28,12 +28,18 @@ class PythonLoader(Protocol):
 
 @dataclass
 class LoadedFile:
-    """The result of reading one launch file: its IR (when readable) and its problems."""
+    """The result of reading one launch file: its IR (when readable) and its problems.
+
+    ``ros1``: the file is a ROS 1 (roslaunch) file; this info replaces ``problems`` when
+    the file is checked on its own. Through an include ``problems`` stay: ros2 launch fails
+    there.
+    """
 
     path: Path
     format: str
     launch: LaunchFile | None
     problems: list[Problem] = field(default_factory=list)
+    ros1: Problem | None = None
 
 
 def launch_format(path: Path, data: bytes | None = None) -> str:
@@ -73,8 +79,9 @@ def load_launch_file(path: Path, python: PythonLoader | None = None) -> LoadedFi
     root = read_xml(path, data, sink) if fmt == "xml" else read_yaml(path, data, sink)
     if root is None:
         return LoadedFile(path, fmt, None, sink.problems)
+    ros1 = ros1_launch_file(root, path) if fmt == "xml" else None
     launch = TagParser(path, sink).launch_file(root, fmt)
-    return LoadedFile(path, fmt, launch, sink.problems)
+    return LoadedFile(path, fmt, launch, sink.problems, ros1)
 
 
 def _unreadable(path: Path, fmt: str, sink: ProblemSink) -> LoadedFile:

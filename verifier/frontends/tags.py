@@ -8,17 +8,19 @@ tags of kilted/rolling), so anything left unread is reported as launch would ref
 from __future__ import annotations
 
 import contextlib
-from collections.abc import Callable
+import re
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TypedDict
 
 from launchverify.frontends.entity import Entity, Scalar
 from launchverify.frontends.reader import EntityReader, MissingAttribute
+from launchverify.frontends.subst_parser import SUBSTITUTIONS
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.ir.conditions import Condition
 from launchverify.models import distros
-from launchverify.problems import ProblemSink
+from launchverify.problems import Problem, ProblemKind, ProblemSink
 from launchverify.span import Span
 
 Handler = Callable[["TagParser", Entity], a.Action | None]
@@ -552,3 +554,98 @@ def _set_use_sim_time(p: TagParser, e: Entity) -> a.Action:
 @tag("set_ros_log_dir")
 def _set_ros_log_dir(p: TagParser, e: Entity) -> a.Action:
     return a.SetRosLogDir(**p.common(e), new_log_dir=p.req(e, "new_log_dir"))
+
+
+# ---------------------------------------------------------------------- ROS 1 files
+
+ROS1_MESSAGE = "ROS 1 launch file: not checked (ros2 launch cannot read it)"
+# Tags of roslaunch (ROS 1). Any other tag with a handler above exists only in ROS 2.
+_ROS1_TAGS = frozenset({"launch", "node", "machine", "include", "remap", "env", "param",
+                        "rosparam", "group", "test", "arg"})
+# Substitutions only roslaunch has; those it shares with ROS 2 prove nothing either way.
+_ROS1_SUBSTITUTIONS = frozenset({"find", "arg", "optenv"})
+_SHARED_SUBSTITUTIONS = frozenset({"env", "eval", "anon", "dirname"})
+_DECISIVE = frozenset({"$(find)", "$(arg)"})
+_SUBSTITUTION_NAME = re.compile(r"\$\(\s*([\w-]+)")
+
+
+def ros1_launch_file(root: Entity, path: Path) -> Problem | None:
+    """Return the info for an XML file written for roslaunch (ROS 1), else ``None``.
+
+    The rule of recognition. The root must be ``<launch>``. ROS 1 signals, each counted
+    once per kind:
+
+    - the substitutions ``$(find ...)`` and ``$(arg ...)`` (decisive on their own) and
+      ``$(optenv ...)``;
+    - the tags ``<rosparam>``, ``<machine>`` and ``<test>``;
+    - ``<node type=...>`` without ``exec``;
+    - ``<arg value=...>`` without ``default`` outside an ``<include>`` (a ROS 1 constant);
+    - ``<param>``, ``<remap>`` or ``<env>`` directly inside ``<launch>`` or ``<group>``
+      (one kind per tag);
+    - ``ns=`` on ``<node>``, ``<group>`` or ``<include>``;
+    - a file name ending in ``.launch``.
+
+    The file is ROS 1 when it has a decisive signal or two signals of different kinds, and
+    no ROS 2 spelling at all: a tag only ROS 2 has (``<let>``, ``<executable>``,
+    ``<set_parameter>``...), ``<node exec=...>`` or ``<node namespace=...>``, or a
+    substitution only ROS 2 has (``$(var)``, ``$(find-pkg-share)``...). A ROS 2 file with a
+    ROS 1 leftover, or a file ported halfway, keeps its parse errors.
+
+    Only a file checked on its own gets this single info instead of its parse errors:
+    ``ros2 launch`` cannot include it, so through an include its errors stay.
+    """
+    if root.tag != "launch":
+        return None
+    ros1: dict[str, Span] = {}
+    if path.name.lower().endswith(".launch"):
+        ros1[".launch file name"] = root.span
+    for entity, parent in _walk(root, None):
+        for kind, span in _ros1_signals(entity, parent):
+            ros1.setdefault(kind, span)
+        if _ros2_spelling(entity):
+            return None
+    if not (_DECISIVE & ros1.keys() or len(ros1) >= 2):
+        return None
+    seen = sorted(ros1.items(), key=lambda item: (item[1].line, item[1].column))
+    evidence = ", ".join(f"{kind} (line {span.line})" for kind, span in seen[:3])
+    return Problem(ProblemKind.UNMODELED, f"{ROS1_MESSAGE}; seen: {evidence}", root.span)
+
+
+def _walk(entity: Entity, parent: str | None) -> Iterator[tuple[Entity, str | None]]:
+    yield entity, parent
+    for child in entity.child_list or []:
+        yield from _walk(child, entity.tag)
+
+
+def _substitution_names(entity: Entity) -> Iterator[tuple[str, Span]]:
+    for attr in entity.attrs.values():
+        if isinstance(attr.value, str):
+            for match in _SUBSTITUTION_NAME.finditer(attr.value):
+                yield match.group(1), attr.span
+
+
+def _ros1_signals(entity: Entity, parent: str | None) -> Iterator[tuple[str, Span]]:
+    for name, span in _substitution_names(entity):
+        if name in _ROS1_SUBSTITUTIONS:
+            yield f"$({name})", span
+    attrs = entity.attrs
+    if entity.tag in ("rosparam", "machine", "test"):
+        yield f"<{entity.tag}>", entity.span
+    if entity.tag == "node" and "type" in attrs and "exec" not in attrs:
+        yield "<node type=>", attrs["type"].span
+    if entity.tag == "arg" and parent != "include" and "value" in attrs \
+            and "default" not in attrs:
+        yield "<arg value=>", attrs["value"].span
+    if entity.tag in ("param", "remap", "env") and parent in ("launch", "group"):
+        yield f"<{entity.tag}> outside a node", entity.span
+    if entity.tag in ("node", "group", "include") and "ns" in attrs:
+        yield "ns=", attrs["ns"].span
+
+
+def _ros2_spelling(entity: Entity) -> bool:
+    if entity.tag in TAGS and entity.tag not in _ROS1_TAGS:
+        return True
+    if entity.tag == "node" and ("exec" in entity.attrs or "namespace" in entity.attrs):
+        return True
+    return any(name in SUBSTITUTIONS and name not in _SHARED_SUBSTITUTIONS
+               for name, _ in _substitution_names(entity))
