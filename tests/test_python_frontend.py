@@ -162,7 +162,13 @@ def generate_launch_description():
     nodes = json.loads(capsys.readouterr().out)["nodes"]
     assert nodes[0]["namespace"] == "/$(env ROBOT_NAME)"
     assert nodes[0]["fqn"] == "/$(env ROBOT_NAME)/driver"
-    assert nodes[1]["name"] == "burger"
+    # os.getenv with a default reads as $(env NAME default): an input, not the default
+    assert nodes[1]["name"] == "$(env ROBOT_MODEL burger)"
+    # what --env gives, every reading sees
+    assert main(["graph", str(path), "--env", "ROBOT_MODEL=waffle", "--env",
+                 "ROBOT_NAME=alpha"]) == 0
+    nodes = json.loads(capsys.readouterr().out)["nodes"]
+    assert [n["fqn"] for n in nodes] == ["/alpha/driver", "/waffle"]
 
 
 def test_opaque_function_sees_the_arguments(tmp_path: Path) -> None:

@@ -31,6 +31,7 @@ from launchverify.registry import select as select_rules
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.workspace import reading
 from launchverify.workspace.discover import discover
+from launchverify.workspace.includers import Includers
 from launchverify.workspace.packages import PackageIndex, find_workspace
 from launchverify.workspace.paths import display_path, relative_file
 
@@ -157,7 +158,8 @@ def run_check(options: CheckOptions) -> Report:
     graphs = []
     with distros.checking(options.distro), reading.size_limit(options.max_file_size), \
             IsolatedPython(index, workspace, jobs=options.jobs or default_jobs(),
-                           limits=limits, distro=options.distro) as python:
+                           limits=limits, distro=options.distro,
+                           environment=options.environment) as python:
         loader = FileCache(index, workspace, python)
         python.prefetch(canonical(f) for f in files if launch_format(f) == "python")
         for done, file in enumerate(files):
@@ -168,8 +170,9 @@ def run_check(options: CheckOptions) -> Report:
                 options.progress(done + 1, len(files))
         python_files, protections = python.evaluated, python.protections
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
+    includers = Includers.of_workspace(index.workspaces)
     for graph in graphs:
-        graph.included_elsewhere = graph.root in included
+        graph.included_elsewhere = graph.root in included or includers.included(graph.root)
     findings = run_rules(graphs, rules, RuleContext(packages=index))
     loaded = {path for g in graphs for path in g.files}
     findings, suppressed = _suppress(findings, loaded, rules)

@@ -20,7 +20,6 @@ from launchverify.ir.subst import Sub, Text
 from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy, describe_path
 from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
-from launchverify.suggest import typo_of
 
 
 @dataclass(frozen=True, slots=True)
@@ -450,23 +449,17 @@ class LaunchGraph:
     def launchable_alone(self) -> bool:
         """Return whether the root is meant to be launched by itself, not only included.
 
-        A root that others include, that declares arguments without defaults, or that reads
-        configurations it never declares expects an includer to provide values: what such
-        values would fix is not reported there.
+        A root that another launch file of the workspace names (``included_elsewhere``)
+        expects its includers to provide values: what they would fix is not reported there.
+        One that no file names is an entry point, launched directly, and what ``ros2
+        launch`` would fail on is reported there, reads of configurations it never
+        declares included; but arguments without defaults are the user's to give, and
+        what they would fix is not reported.
         """
         if self.included_elsewhere:
             return False
-        if any(not a.has_default and not a.conditional and a.name not in self.pinned
-               for a in self.root_arguments):
-            return False
-        known = self.declared_names() | set(self.pinned)
-        declared_in = {(arg.name, arg.action.span.file) for arg in self.arguments}
-        return not any(
-            not r.found and not r.has_default and not r.origin.chain
-            and (r.name, r.origin.span.file) not in declared_in
-            and typo_of(r.name, known) is None
-            for r in self.reads
-        )
+        return not any(not a.has_default and not a.conditional and a.name not in self.pinned
+                       for a in self.root_arguments)
 
     def declared_names(self) -> set[str]:
         """Return every argument name declared anywhere in the evaluation."""

@@ -20,6 +20,15 @@ def placeholder(kind: str, name: str) -> str:
     return f"{OPEN}{kind}:{clean}{CLOSE}"
 
 
+def environment_variable(name: str, default: str | None = None) -> str:
+    """Return the placeholder for a variable of the robot's environment.
+
+    With a default it reads as ``$(env NAME default)`` does: the default when the robot
+    does not set it, which launchverify cannot know (environment names hold no ``=``).
+    """
+    return placeholder("env", name if default is None else f"{name}={default}")
+
+
 def has_placeholder(text: str) -> bool:
     """Return whether a string carries a value that is not known statically."""
     return OPEN in text

@@ -18,13 +18,15 @@ class FileCache:
     """
 
     def __init__(self, index: PackageIndex, workspace: Path,
-                 python: PythonLoader | None = None) -> None:
+                 python: PythonLoader | None = None,
+                 environment: dict[str, str] | None = None) -> None:
         from launchverify.isolation.pool import IsolatedPython
 
         self._files: dict[Path, LoadedFile] = {}
         self._param_files: dict[Path, ParamFile] = {}
         self.static_arguments: dict[Path, tuple[StaticArgument, ...]] = {}
-        self._owned = IsolatedPython(index, workspace) if python is None else None
+        self._owned = (IsolatedPython(index, workspace, environment=environment)
+                       if python is None else None)
         self.python: PythonLoader = python or self._owned  # type: ignore[assignment]
 
     def close(self) -> None:

@@ -13,7 +13,7 @@ from typing import TYPE_CHECKING
 
 from launchverify.evaluate.reducers import Ctx, ScopeReducer
 from launchverify.evaluate.scope import GLOBAL_PARAMS, ROS_NAMESPACE, ROS_REMAPS
-from launchverify.evaluate.values import ns_prefix, text_of
+from launchverify.evaluate.values import machine_dependent, ns_prefix, text_of
 from launchverify.frontends.subst_parser import SubstitutionSyntaxError, parse_substitution
 from launchverify.graph import (
     FileRef,
@@ -237,6 +237,8 @@ class NodeBuilder:
     def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx) -> None:
         """Record whether a file the launch needs exists (when its path is known)."""
         text = text_of(location)
+        if text is None and machine_dependent(location):
+            return  # the robot's environment decides; not a claim to make here
         if text is None:
             text = self.walker.graph.base(location)
         if text is None:

@@ -39,7 +39,7 @@ def evaluate(
     graph = LaunchGraph(root=root, pinned=dict(pinned or {}),
                         environment=dict(environment or {}),
                         included_elsewhere=included_elsewhere)
-    cache = loader or FileCache(index, workspace)
+    cache = loader or FileCache(index, workspace, environment=environment)
     try:
         Walker(graph, index, cache, workspace).run()
     except Exception as error:  # a bug of ours: LV005 on this root, the check goes on

@@ -487,6 +487,15 @@ class BaseReducer(Reducer):
         return sub if sub.default is None else self.reduce(sub.default)
 
 
+def machine_dependent(sub: s.Sub) -> bool:
+    """Return whether a value depends on an environment variable not given with ``--env``.
+
+    (Given ones are substituted; what remains is an input of the robot's machine, which
+    the machine running the check cannot speak for.)
+    """
+    return any(isinstance(part, EnvInput) for part in s.walk(sub))
+
+
 def describe_value(sub: s.Sub | None) -> str | None:
     """Return text for output: the text of concrete values, the expression otherwise."""
     if sub is None:
@@ -500,6 +509,7 @@ __all__ = [
     "Reducer",
     "describe_value",
     "is_unset",
+    "machine_dependent",
     "ns_prefix",
     "text_of",
 ]

@@ -32,7 +32,7 @@ from launchverify.evaluate.scope import (
     guarded,
 )
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
-from launchverify.evaluate.values import is_unset, ns_prefix, text_of
+from launchverify.evaluate.values import is_unset, machine_dependent, ns_prefix, text_of
 from launchverify.frontends import LoadedFile
 from launchverify.graph import (
     ArgumentRecord,
@@ -396,7 +396,8 @@ class Walker:
         target, note = self.resolve_path(path_text, written_in, action.path)
         record.note = note
         if target is None:
-            record.status = "missing" if self.in_workspace(Path(path_text)) else "external"
+            absent = self.in_workspace(Path(path_text)) and not machine_dependent(location)
+            record.status = "missing" if absent else "external"
             self.mark_incomplete()
             return
         record.target = target

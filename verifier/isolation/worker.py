@@ -37,6 +37,7 @@ class Setting:
     readable: tuple[str, ...]  # folders the worker may read (Landlock)
     limits: Limits
     distro: str | None
+    environment: dict[str, str]  # --env: the machine's variables a launch file may read
     debug: bool = False  # keep stderr and print our own failures (LAUNCHVERIFY_DEBUG_WORKERS)
 
 
@@ -49,7 +50,7 @@ def serve(fd: int, request: dict[str, Any], scratch: str, setting: Setting,
         os.setsid()
         channel = Channel(fd)
         protections = confinement.apply(scratch, _with_folder(setting.readable, request))
-        arm(scratch)
+        arm(scratch, setting.environment)
         _Worker(channel, setting, protections.describe()).run(request)
     except BaseException:  # our own failure: the parent reports the worker's end
         if setting.debug:

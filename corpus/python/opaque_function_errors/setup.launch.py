@@ -4,20 +4,20 @@ from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node
 
 
-# This file reads configurations it never declares ('robot', 'camera_ns'): launchverify takes
-# it as meant to be included (an includer may set them), so the SubstitutionFailure and the
-# KeyError that a direct `ros2 launch` of it would raise are not reported. Launched through
-# an includer that does not set them, they are (see opaque_function_included).
+# This file reads configurations it never declares ('robot', 'camera_ns'), and no launch
+# file of the workspace includes it: it is launched directly, and `ros2 launch` fails on
+# those reads (LV201, the rule for them, rather than the SubstitutionFailure and KeyError
+# as LV002). Were it included, its includer could set them (see included_setup/).
 
 
 def driver(context):
     # declared as 'robot_name', read as 'robot': SubstitutionFailure when launched directly
-    robot = LaunchConfiguration('robot').perform(context)  # expect-not: LV002
+    robot = LaunchConfiguration('robot').perform(context)  # expect: LV201  # expect-not: LV002
     return [Node(package='demo_nodes_cpp', executable='talker', name='driver', namespace=robot)]
 
 
 def camera(context):
-    ns = context.launch_configurations['camera_ns']  # expect-not: LV002
+    ns = context.launch_configurations['camera_ns']  # expect: LV201  # expect-not: LV002
     return [Node(package='usb_cam', executable='usb_cam_node_exe', name='camera', namespace=ns)]
 
 

@@ -33,7 +33,8 @@ def placeholder_sub(text: str) -> s.Sub:
         parts.append(s.Text(text[position:match.start()]))
         kind, name = match.group(1), match.group(2)
         if kind == "env":
-            parts.append(s.EnvVar(s.Text(name)))
+            variable, equals, default = name.partition("=")
+            parts.append(s.EnvVar(s.Text(variable), s.Text(default) if equals else None))
         elif kind in ("pkg", "prefix"):  # the lookup itself was recorded where it was made
             folder = "share folder" if kind == "pkg" else "install prefix"
             parts.append(s.Opaque(f"{folder} of {name}"))

@@ -27,7 +27,7 @@ from contextlib import contextmanager, redirect_stderr, redirect_stdout
 from pathlib import Path
 from typing import Any
 
-from launchverify.models.launch_api.placeholders import placeholder
+from launchverify.models.launch_api.placeholders import environment_variable
 from launchverify.own_code import is_own_file
 
 try:
@@ -75,13 +75,16 @@ def _active() -> bool:
     return bool(_armed) or getattr(_state, "depth", 0) > 0
 
 
-def arm(scratch: str) -> None:
-    """Refuse side effects in this whole process from now on (a worker, once confined)."""
+def arm(scratch: str, environment: dict[str, str] | None = None) -> None:
+    """Refuse side effects in this whole process from now on (a worker, once confined).
+
+    ``environment``: the variables given with ``--env``, all a launch file may read.
+    """
     _install_hook()
     _scratch[:] = [os.path.abspath(scratch)]  # noqa: PTH100
     tempfile.tempdir = _scratch[0]
     sys.dont_write_bytecode = True
-    os.environ = SymbolicEnviron()  # type: ignore[assignment]  # noqa: B003
+    os.environ = SymbolicEnviron(environment)  # type: ignore[assignment]  # noqa: B003
     _wrap_unaudited()
     _armed.append(True)
 
@@ -192,22 +195,26 @@ def _install_hook() -> None:
 class SymbolicEnviron(MutableMapping[str, str]):
     """``os.environ`` as a launch file sees it: variables of the robot, not of this machine.
 
-    Reading a variable gives a placeholder for its unknown value; ``get`` with a default
-    gives the default (the same choice as ``$(env NAME default)``). Writes stay here.
+    A variable given with ``--env NAME=VALUE`` has that value; any other reads as a
+    placeholder for an unknown input, with its default when ``get``/``getenv`` give one
+    (as ``$(env NAME default)``: the same input everywhere, never a concrete value that
+    an error claim could rest on). Writes stay here.
     """
 
-    def __init__(self) -> None:
-        self._set: dict[str, str] = {}
+    def __init__(self, given: dict[str, str] | None = None) -> None:
+        self._set: dict[str, str] = dict(given or {})
 
     def __getitem__(self, key: str) -> str:
         if key in self._set:
             return self._set[key]
-        return placeholder("env", key)
+        return environment_variable(key)
 
     def get(self, key: str, default: Any = None) -> Any:
         if key in self._set:
             return self._set[key]
-        return default if default is not None else placeholder("env", key)
+        if default is None:
+            return environment_variable(key)
+        return environment_variable(key, default) if isinstance(default, str) else default
 
     def __setitem__(self, key: str, value: str) -> None:
         self._set[key] = value

@@ -1,0 +1,48 @@
+"""Entry points versus included files, decided from the whole workspace.
+
+A launch file that another launch file of the workspace names is meant to be included:
+checked on its own, what its includers would provide is not held against it. One that no
+file names is launched directly, and whatever ``ros2 launch`` would fail on is an error
+there. Names are read from the text of every launch file of the workspace (an include
+is written ``$(find-pkg-share pkg)/launch/x.launch.xml`` or
+``os.path.join(share, 'launch', 'x_launch.py')``): a file is named when its file name
+appears in another launch file. A name computed at run time is not seen, so such a file
+counts as an entry point.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from pathlib import Path
+
+from launchverify.workspace.discover import discover
+from launchverify.workspace.paths import resolved
+from launchverify.workspace.reading import read_file
+
+_NAME = re.compile(rb"[\w.\-]+\.(?:py|xml|yaml|yml|launch)\b")
+_SCANNED_BYTES = 1 << 20
+
+
+class Includers:
+    """Which launch files of a workspace other launch files name."""
+
+    def __init__(self, files: Iterable[Path]) -> None:
+        self._named_by: dict[str, set[Path]] = {}
+        for path in files:
+            try:
+                text = read_file(path, prefix=_SCANNED_BYTES)
+            except OSError:
+                continue
+            where = resolved(path)
+            for name in set(_NAME.findall(text)):
+                self._named_by.setdefault(name.decode("utf-8", "replace"), set()).add(where)
+
+    @classmethod
+    def of_workspace(cls, folders: Iterable[Path]) -> Includers:
+        """Scan every launch file below the folders (the workspace's sources)."""
+        return cls(discover([folder for folder in folders if folder.is_dir()]))
+
+    def included(self, path: Path) -> bool:
+        """Return whether another launch file names this one."""
+        return bool(self._named_by.get(path.name, set()) - {resolved(path)})
