@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import builtins
 import errno
+import inspect
 import io
 import traceback
 from collections.abc import Iterator, Mapping
@@ -38,6 +39,7 @@ from launchverify.models.launch_api.placeholders import (
     placeholder,
 )
 from launchverify.models.launch_api.runtime import blamable
+from launchverify.own_code import is_own_file
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
@@ -147,6 +149,12 @@ class _Session:
             self.sink.evaluation(f"{error} (an endless loop?)", span)
         elif isinstance(error, MemoryError):
             self.sink.evaluation("evaluation ran out of memory", span)
+        elif (library := _failing_library(error)) is not None:
+            # Installed libraries here are launchverify's, not the robot's: their versions
+            # differ (pydantic 1 on humble, 2 here), so their failures are no verdict.
+            self.unmodeled(f"the library {library} fails here ({type(error).__name__}: "
+                           f"{_shown(str(error))[:160]}); the robot's copy may differ, what "
+                           "follows is not evaluated", span)
         elif has_placeholder(str(error)):
             # It failed on a value only the robot or an includer knows: not evaluated.
             self.unmodeled(f"the launch file's code fails on a value unknown here "
@@ -213,6 +221,15 @@ class _Session:
                     self.sink.parse(
                         "launch file does not contain the required function "
                         "'generate_launch_description()'", Span.of_file(self.path))
+                    return None
+                required = _required_parameters(entry)
+                if required:
+                    # A test script's helper, called by its own main(): not a launch file.
+                    code = getattr(entry, "__code__", None)
+                    self.sink.unmodeled(
+                        f"{entry.__name__}() takes parameters ({', '.join(required)}): not "
+                        "a launch file ros2 launch can start; not checked",
+                        Span(self.path, code.co_firstlineno if code is not None else 1))
                     return None
                 result = entry()
         except BaseException as error:  # the user's code: anything may come out
@@ -399,6 +416,33 @@ def _shown(text: str) -> str:
     spelled = {"env": "$(env {})", "arg": "$(var {})", "pkg": "$(find-pkg-share {})",
                "prefix": "$(find-pkg-prefix {})", "opaque": "<{}>"}
     return PATTERN.sub(lambda m: spelled[m.group(1)].format(m.group(2)), text)[:200]
+
+
+def _required_parameters(function: Any) -> list[str]:
+    """Return the names of the parameters a call without arguments would lack."""
+    try:
+        signature = inspect.signature(function)
+    except (TypeError, ValueError):
+        return []
+    return [name for name, parameter in signature.parameters.items()
+            if parameter.default is inspect.Parameter.empty
+            and parameter.kind not in (inspect.Parameter.VAR_POSITIONAL,
+                                       inspect.Parameter.VAR_KEYWORD)]
+
+
+_INSTALLED = ("site-packages", "dist-packages")
+
+
+def _failing_library(error: BaseException) -> str | None:
+    """Return the installed library an exception was raised in (``None``: anywhere else)."""
+    frames = traceback.extract_tb(error.__traceback__)
+    if not frames:
+        return None
+    parts = Path(frames[-1].filename).parts
+    for index, part in enumerate(parts[:-1]):
+        if part in _INSTALLED and not is_own_file(frames[-1].filename):
+            return parts[index + 1].removesuffix(".py")
+    return None
 
 
 def _is_file(name: str) -> bool:

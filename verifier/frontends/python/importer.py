@@ -17,6 +17,7 @@ one launch file's helpers never leak into the next.
 
 from __future__ import annotations
 
+import dis
 import importlib
 import importlib.abc
 import importlib.machinery
@@ -175,7 +176,19 @@ class Opaque:
         return Opaque(f"{self._description}.{name}")
 
     def __iter__(self) -> Iterator[Any]:
-        return iter(())
+        # ``a, b, c = unknown`` asks for exactly three values: give three unknowns; a loop
+        # over an unknown runs no round (its length is unknown too).
+        wanted = _unpacked_count(sys._getframe(1))
+        return iter([Opaque(f"{self._description}[{i}]") for i in range(wanted)])
+
+    def __contains__(self, item: object) -> bool:
+        return False
+
+    def __fspath__(self) -> str:
+        return str(self)
+
+    def __format__(self, spec: str) -> str:
+        return str(self)
 
     def __bool__(self) -> bool:
         return False
@@ -221,13 +234,44 @@ class Opaque:
         return self
 
     __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _same
-    __truediv__ = __rtruediv__ = __floordiv__ = __mod__ = __neg__ = _same
+    __truediv__ = __rtruediv__ = __floordiv__ = __rfloordiv__ = __mod__ = __rmod__ = _same
+    __neg__ = __pow__ = __rpow__ = __and__ = __rand__ = __xor__ = __rxor__ = _same
 
     def __eq__(self, other: object) -> bool:
         return other is self
 
+    def _false(self, other: object) -> bool:
+        return False
+
+    __lt__ = __le__ = __gt__ = __ge__ = _false
+
+    def __round__(self, digits: int | None = None) -> Opaque:
+        return self
+
+    __abs__ = __pos__ = __invert__ = __round__
+
     def __hash__(self) -> int:
         return id(self)
+
+
+_UNPACK_SEQUENCE = dis.opmap["UNPACK_SEQUENCE"]
+_UNPACK_EX = dis.opmap["UNPACK_EX"]
+
+
+def _unpacked_count(frame: types.FrameType | None) -> int:
+    """Return how many values the instruction running in ``frame`` unpacks (0: none)."""
+    if frame is None:
+        return 0
+    code = frame.f_code.co_code
+    at = frame.f_lasti
+    if not 0 <= at < len(code) - 1:
+        return 0
+    operation, argument = code[at], code[at + 1]
+    if operation == _UNPACK_SEQUENCE:
+        return argument
+    if operation == _UNPACK_EX:  # a, *rest, b: the fixed ones, and the rest empty
+        return (argument & 0xFF) + (argument >> 8)
+    return 0
 
 
 class OpaqueBase:
