@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import dataclasses
 from collections import defaultdict
 from collections.abc import Iterator
 
+from launchverify.events import overlap_guards
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import Arg, Opaque, Select
@@ -32,6 +34,14 @@ class DuplicateNodeName(Rule):
     argument without default, an environment variable) only makes two names equal when
     they use it in the same place. Nodes under conditions launchverify cannot model are
     not compared.
+
+    Two nodes that never run at the same time are not duplicates either: a node started
+    by an `OnProcessExit` handler of the other one's process (or later in a chain of
+    exits), or by an `OnExecutionComplete` handler of it, starts once the other has ended.
+    When that process has `respawn` on, launch starts it again after the handler fired,
+    so the pair is still reported (with the `respawn` argument as part of the witness when
+    an argument sets it). Starting on the other's `OnProcessStart`, in a timer, or on the
+    exit of an unrelated process is no such guarantee.
 
     ## Why it matters
     ROS 2 starts both. Parameter services, lifecycle transitions, `ros2 node` tools and
@@ -110,20 +120,27 @@ def collision(graph: LaunchGraph, first: NodeRecord, second: NodeRecord,
               same_fixed_name: bool) -> tuple[str, Witness] | None:
     """Return (name, witness) when two nodes can run together under one name.
 
-    ``same_fixed_name``: both names are the same whatever the switches, so only the path
-    conditions matter.
+    Together means at the same time: the event structure may keep them apart
+    (``overlap_guards``). ``same_fixed_name``: both names are the same whatever the
+    switches, so only the path conditions matter.
     """
     assert first.fqn is not None and second.fqn is not None
+    overlap = overlap_guards(graph, first.execution, second.execution)
+    if overlap is None:
+        return None  # one starts only once the other has ended for good
+    first_origin = first.origin
+    if overlap:  # they meet only if the one that ended first respawns
+        first_origin = dataclasses.replace(first_origin, path=(*first_origin.path, *overlap))
     first_text, second_text = graph.base(first.fqn), graph.base(second.fqn)
     if (first_text is not None and first_text == second_text
-            and graph.runs(first.origin) and graph.runs(second.origin)):
+            and graph.runs(first_origin) and graph.runs(second.origin)):
         return first_text, Witness()  # under the arguments as given: no solver needed
     reasoner = reasoner_for(graph)
     if same_fixed_name:
-        witness = reasoner.together(first.origin.path, second.origin.path)
+        witness = reasoner.together(first_origin.path, second.origin.path)
         shown = first_text if first_text is not None else first.fqn.describe()
         return None if witness is None else (shown, witness)
-    found = reasoner.same_name(first.fqn, first.origin.path, second.fqn, second.origin.path)
+    found = reasoner.same_name(first.fqn, first_origin.path, second.fqn, second.origin.path)
     if found is None:
         return None
     witness, name = found
