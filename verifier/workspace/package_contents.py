@@ -21,7 +21,8 @@ from launchverify.workspace.packages import SKIP_DIRS, Package, PackageIndex
 from launchverify.workspace.reading import read_file
 
 MAX_SOURCE_FILES = 2_000
-_TEST_DIRS = frozenset({"test", "tests"})
+# Folders that hold no node code: tests, and launch files (Python ones are .py too).
+_NOT_NODE_CODE = frozenset({"test", "tests", "launch"})
 MAX_SOURCE_BYTES = 512 * 1024
 _SOURCE_SUFFIXES = (".cpp", ".cc", ".cxx", ".hpp", ".hh", ".h", ".py")
 # Node("x"), LifecycleNode("x"), rclcpp::Node("x"), make_shared<rclcpp::Node>("x"),
@@ -37,7 +38,12 @@ _LITERAL = re.compile(r"""["']([A-Za-z_][A-Za-z0-9_]*)["']""")
 
 
 def default_node_names(package: Package) -> frozenset[str] | None:
-    """Return the node names a package's code may give its nodes (``None``: unknown)."""
+    """Return the node names a package's code may give its nodes (``None``: unknown).
+
+    Unknown when its sources are not here: no source folder, or one without node code
+    (an installed package's share folder, a checkout of its launch files only), or more
+    code than is read.
+    """
     if package.source is None:
         return None
     return _scan(package.source)[0]
@@ -71,20 +77,23 @@ def name_literals(package: Package) -> frozenset[str] | None:
     return _scan(package.source)[1]
 
 
+Scan = tuple[frozenset[str], frozenset[str]] | tuple[None, None]
+
+
 @lru_cache(maxsize=256)
-def _scan(source: Path) -> tuple[frozenset[str], frozenset[str]]:
+def _scan(source: Path) -> Scan:
     names: set[str] = set()
     literals: set[str] = set()
     files = 0
     for folder, dirs, filenames in os.walk(source):
         dirs[:] = [d for d in dirs
-                   if d not in SKIP_DIRS and d not in _TEST_DIRS and not d.startswith(".")]
+                   if d not in SKIP_DIRS and d not in _NOT_NODE_CODE and not d.startswith(".")]
         for filename in filenames:
-            if not filename.endswith(_SOURCE_SUFFIXES):
+            if not filename.endswith(_SOURCE_SUFFIXES) or filename == "setup.py":
                 continue
             files += 1
             if files > MAX_SOURCE_FILES:
-                return frozenset(names), frozenset(literals)
+                return None, None  # not all read: what is absent is not known to be
             try:
                 data = read_file(Path(folder) / filename, prefix=MAX_SOURCE_BYTES)
             except OSError:
@@ -92,4 +101,6 @@ def _scan(source: Path) -> tuple[frozenset[str], frozenset[str]]:
             text = data.decode("utf-8", "replace")
             names.update(_NODE_NAME.findall(text))
             literals.update(_LITERAL.findall(text))
+    if not files:
+        return None, None  # no node code here: the package's nodes are not known
     return frozenset(names), frozenset(literals)
