@@ -24,6 +24,7 @@ from launchverify.findings.baseline import apply_baseline
 from launchverify.findings.suppressions import apply_suppressions
 from launchverify.frontends import launch_format
 from launchverify.graph import LaunchGraph
+from launchverify.ir.symbolic import PathCondition
 from launchverify.isolation.confine import Limits
 from launchverify.isolation.pool import IsolatedPython
 from launchverify.models import distros
@@ -247,6 +248,22 @@ def _codes_of(selector: str) -> list[str]:
     return [rule.code for rule in resolve(selector)]
 
 
+def dead(graph: LaunchGraph, path: PathCondition) -> bool:
+    """Return whether a path condition holds under no value the user can give.
+
+    (A finding there is about code this root never runs: an include another argument of
+    the includer switched off.)
+    """
+    from launchverify.smt import reasoner_for
+
+    cache = graph.derived.setdefault("dead paths", {})
+    known = cache.get(path)
+    if known is None:
+        known = reasoner_for(graph).unreachable(path)
+        cache[path] = known
+    return bool(known)
+
+
 def _isolated(rule: Rule, findings: Callable[[], Iterable[Finding]], file: Path | None
               ) -> Iterator[Finding]:
     """Yield a rule's findings; if the rule fails, LV005 on the file instead of a crash."""
@@ -278,6 +295,8 @@ def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
             unanimous.add(rule_class.code)
         for graph in smallest_first if every_context else graphs:
             for finding in _isolated(rule, partial(rule.check, graph, ctx), graph.root):
+                if finding.path and dead(graph, finding.path):
+                    continue  # where it is cannot run under this root, whatever the arguments
                 key = finding.key()
                 votes[key].add(id(graph))
                 known = merged.get(key)

@@ -8,7 +8,7 @@ the arguments as given (command line, then defaults): what ``ros2 launch`` would
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Hashable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -368,7 +368,7 @@ class LaunchGraph:
     # Reads a workspace file for values that depend on file content (set by the evaluator).
     file_reader: Callable[[str], str | None] | None = field(default=None, repr=False)
     # What is computed from the records once and asked for again (effective parameters).
-    derived: dict[str, dict[int, object]] = field(default_factory=dict, repr=False)
+    derived: dict[str, dict[Hashable, object]] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         self._base = BaseReducer(self.inputs(), read=self.read_file)

@@ -15,6 +15,7 @@ from typing import ClassVar
 
 from launchverify.findings.trace import Step
 from launchverify.graph import LaunchGraph, Origin
+from launchverify.ir.symbolic import PathCondition
 from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
 
@@ -53,6 +54,8 @@ class Finding:
     chain: tuple[Span, ...] = ()
     witness: Mapping[str, str] | None = None
     trace: tuple[Step, ...] = ()  # how the launch gets there (lifecycle rules)
+    # the path condition of where it is (not shown: dead code is dropped by the engine)
+    path: PathCondition = field(default=(), compare=False, repr=False)
 
     def key(self) -> tuple[object, ...]:
         """Return what makes two findings the same (for de-duplication across roots)."""
@@ -139,7 +142,8 @@ class Rule:
         **values: object,
     ) -> Finding:
         """Build a finding from the message template at a record's origin (or a span)."""
-        span, chain = (origin.span, origin.chain) if isinstance(origin, Origin) else (origin, ())
+        span, chain, path = ((origin.span, origin.chain, origin.path)
+                             if isinstance(origin, Origin) else (origin, (), ()))
         return Finding(
             code=self.code,
             slug=self.slug,
@@ -150,6 +154,7 @@ class Rule:
             chain=chain,
             witness=witness,
             trace=trace,
+            path=path,
         )
 
     @classmethod

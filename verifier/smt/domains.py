@@ -15,6 +15,11 @@ Two ways to range over arguments (``Mode``):
 
 An argument without default and without choices that is not pinned is *unconstrained*
 in both modes.
+
+Only arguments the user can see are switches: those ``ros2 launch --show-args`` lists for
+the root (launch's static discovery, through the includes whose path needs no
+configuration). An argument declared only where static discovery does not reach keeps
+its default: a witness never asks the user to set what the launch does not expose.
 """
 
 from __future__ import annotations
@@ -50,6 +55,7 @@ class ArgumentDomain:
     defaults: set[str] = field(default_factory=set)  # default texts under the base view
     symbolic_default: bool = False  # some default depends on something unknown
     required: bool = False  # declared somewhere without a default
+    exposed: bool = True  # listed by ``ros2 launch --show-args`` for the root (or pinned)
 
     @property
     def boolean(self) -> bool:
@@ -60,12 +66,16 @@ class ArgumentDomain:
     @property
     def switch(self) -> bool:
         """Return whether the argument is varied in ``SWITCHES`` mode."""
-        return self.pinned is None and (self.choices is not None or self.boolean)
+        return self.pinned is None and self.exposed and (
+            self.choices is not None or self.boolean)
 
     def values(self, mode: Mode) -> tuple[str, ...] | None:
         """Return the finite set of values a given argument takes, or ``None`` (any)."""
         if self.pinned is not None:
             return (self.pinned,)
+        if mode is Mode.SWITCHES and not self.exposed and self.defaults \
+                and not self.symbolic_default:
+            return tuple(sorted(self.defaults))  # not the user's to set: its default
         if self.choices is not None:
             return self.choices
         if mode is Mode.SWITCHES and self.boolean:
@@ -103,6 +113,9 @@ def argument_domains(graph: LaunchGraph) -> dict[str, ArgumentDomain]:
                 c for c in domain.choices if c in record.choices)
             domain.choices = kept
             domain.choices_at = domain.choices_at or record.origin.span
+    listed = {argument.name for argument in graph.root_arguments}
+    for domain in out.values():
+        domain.exposed = domain.name in listed
     for name, value in graph.pinned.items():
         out.setdefault(name, ArgumentDomain(name)).pinned = value
     return out

@@ -15,8 +15,18 @@ from typing import TYPE_CHECKING
 
 from launchverify.evaluate.values import BaseReducer
 from launchverify.graph import LaunchGraph
-from launchverify.ir.subst import Sub
-from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy
+from launchverify.ir.subst import Opaque as s_Opaque
+from launchverify.ir.subst import Sub, walk
+from launchverify.ir.symbolic import (
+    Arg,
+    EnvInput,
+    Guard,
+    Opaque,
+    PathCondition,
+    StrEquals,
+    Truthy,
+    Unknown,
+)
 from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
 from launchverify.smt.domains import ArgumentDomain, Mode, argument_domains
 from launchverify.smt.search import Search, all_hold, holds
@@ -66,6 +76,36 @@ class Reasoner:
             else:
                 self._together[paths] = self.z3.together(paths)
         return self._together[paths]
+
+    def unreachable(self, path: PathCondition) -> bool:
+        """Return whether a path holds under no value the user can give the arguments.
+
+        Asked over the switches (``together``), and trusted only for guards whose every
+        input is a switch, has choices or is pinned: a free-text argument, an environment
+        variable or an unknown might make a guard hold. So the path is unreachable when
+        those guards together cannot hold (one of them, say ``$(and False $(var x))``).
+        """
+        if not path or self.together(path) is not None:
+            return False
+        decided = tuple(guard for guard in path if self._switched(guard))
+        return bool(decided) and self.together(decided) is None
+
+    def _switched(self, guard: Guard) -> bool:
+        """Return whether a guard reads only switches, arguments with choices, pinned ones."""
+        if isinstance(guard, Opaque):
+            return False
+        expressions = ((guard.expression,) if isinstance(guard, Truthy) else
+                       (guard.left, *(() if guard.right is None else (guard.right,)))
+                       if isinstance(guard, StrEquals) else ())
+        for part in (p for expression in expressions for p in walk(expression)):
+            if isinstance(part, Arg):
+                domain = self.domains.get(part.name)
+                if domain is None or not (domain.switch or domain.pinned is not None
+                                          or domain.choices is not None):
+                    return False
+            elif isinstance(part, (EnvInput, Unknown, s_Opaque)):
+                return False
+        return True
 
     def same_name(self, first: Sub, first_path: PathCondition, second: Sub,
                   second_path: PathCondition) -> tuple[Witness, str] | None:
