@@ -702,6 +702,10 @@ class Walker:
             assert isinstance(problem, Problem)
             self.problem(problem.kind, problem.message, problem.span, ctx,
                          contextual=problem.contextual)
+            if problem.kind is ProblemKind.EVALUATION:
+                # the body stopped at an exception: what it would have read and started
+                # is unknown, so absence rules (unused arguments...) must not judge
+                self.mark_incomplete()
         self.visit_all(result.actions, ctx)
 
     def concrete_configurations(self) -> dict[str, Any]:
