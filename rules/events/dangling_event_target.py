@@ -60,6 +60,8 @@ class DanglingEventTarget(Rule):
                                    why="is never executed (is it added to the launch?)")
                 continue
             reasoner = reasoner_for(graph)
+            if reasoner.together(handler.origin.path) is None:
+                continue  # the handler itself is not registered under the switches
             if all(reasoner.together(handler.origin.path, r.origin.path) is None
                    for r in runs):
                 yield self.finding(handler.origin, related=related, target=label,
