@@ -9,8 +9,10 @@ substitutions, lists of them, conditions, parameters.
 
 from __future__ import annotations
 
+import contextlib
 import os
 import sys
+import sysconfig
 from collections.abc import Iterable
 from pathlib import Path
 from types import FrameType
@@ -21,6 +23,7 @@ from launchverify.ir.actions import Action as IRAction
 from launchverify.ir.conditions import Condition as IRCondition
 from launchverify.models.launch_api import runtime
 from launchverify.models.launch_api.runtime import blamable
+from launchverify.own_code import is_own_file
 from launchverify.span import Span
 
 if TYPE_CHECKING:
@@ -96,7 +99,130 @@ class Converter(Protocol):
         """Return ``False`` when a description source was already used by an include."""
 
 
-class LaunchDescriptionEntity:
+# ------------------------------------------------------------------ what a model lacks
+
+def _installed_folders() -> tuple[str, ...]:
+    """Return the folders of Python's standard library and of installed libraries."""
+    import site
+
+    folders = {sysconfig.get_paths().get(key) for key in (
+        "stdlib", "platstdlib", "purelib", "platlib")}
+    folders.update(os.path.join(prefix, "lib")  # noqa: PTH118 (as runtime.blamable)
+                   for prefix in (sys.prefix, sys.base_prefix, sys.exec_prefix))
+    with contextlib.suppress(AttributeError):  # an old virtualenv's site module lacks it
+        folders.update(site.getsitepackages())
+    return tuple(sorted(folder.rstrip(os.sep) + os.sep for folder in folders if folder))
+
+
+_INSTALLED = _installed_folders()
+
+
+def _user_code(filename: str) -> bool:
+    """Return whether a frame in ``filename`` is the launch file's code (or its helpers).
+
+    Not launchverify's own code (which probes attributes with ``getattr(x, name, default)``
+    and must keep getting ``AttributeError``), not Python's or an installed library's.
+    """
+    return not (is_own_file(filename) or filename.startswith(("<", *_INSTALLED)))
+
+
+def _model_name(obj: Any) -> str:
+    """Return the name of the nearest launchverify model class of ``obj`` (its launch name)."""
+    for klass in type(obj).__mro__:
+        if klass.__module__.startswith("launchverify."):
+            return klass.__name__
+    return type(obj).__name__
+
+
+def unmodelled_attribute(obj: Any, name: str, depth: int = 2) -> Any:
+    """Return an unknown value for an attribute a model lacks, read by the launch file.
+
+    The real class may well have it (an attribute of launch nobody modelled yet): the
+    launch file gets an opaque value and one LV003, never an ``AttributeError`` that would
+    be reported as the launch file's failure (LV002). Dunder names, reads outside an
+    evaluation and reads by launchverify's or a library's code keep raising
+    ``AttributeError``, which Python's protocols and ``getattr(x, name, default)`` rely on.
+    """
+    frame: FrameType | None = sys._getframe(depth)
+    missing = AttributeError(f"'{type(obj).__name__}' object has no attribute '{name}'",
+                             name=name, obj=obj)
+    if (name.startswith("__") or runtime.current is None or frame is None
+            or not _user_code(frame.f_code.co_filename)):
+        raise missing
+    from launchverify.frontends.python.importer import Opaque
+
+    what = f"{_model_name(obj)}.{name}"
+    while frame is not None and not blamable(frame.f_code.co_filename):
+        frame = frame.f_back
+    span = _frame_span(frame) if frame is not None else (
+        runtime.current.fallback or Span(runtime.current.launch_file, 1))
+    runtime.current.unmodeled(f"{what} is not modelled; values from it are unknown", span)
+    return Opaque(what)
+
+
+class Modelled:
+    """Base of the models of launch's classes: what a model lacks is unknown, not an error.
+
+    ``__getattr__`` runs only for attributes the model does not have (see
+    ``unmodelled_attribute``); type checkers do not see it, so a typo in launchverify's own
+    code stays an error for them.
+    """
+
+    if not TYPE_CHECKING:
+        def __getattr__(self, name: str) -> Any:
+            return unmodelled_attribute(self, name)
+
+
+def normalized(value: Any) -> Any:
+    """``normalize_to_list_of_substitutions``, for what models return to launch files.
+
+    Launch's getters return lists of substitutions where the constructor took strings,
+    substitutions or lists of them; values launchverify does not know (opaque values) stay
+    as they are, and ``None`` stays ``None``.
+    """
+    from launchverify.models.launch_api.launch_substitutions import TextSubstitution
+
+    def one(item: Any) -> Any:
+        if isinstance(item, (str, os.PathLike)):
+            return TextSubstitution(text=os.fspath(item) if not isinstance(item, str) else item)
+        return item
+
+    if value is None:
+        return None
+    if isinstance(value, (str, os.PathLike, Substitution)) or _unknown(value):
+        return [one(value)]
+    try:
+        items = list(value)
+    except TypeError:
+        return [value]
+    return [one(item) for item in items]
+
+
+def typed(value: Any) -> Any:
+    """``normalize_typed_substitution``: scalars stay, substitutions become lists of them."""
+    if isinstance(value, (bool, int, float, str)) or value is None:
+        return value
+    if isinstance(value, Substitution) or _unknown(value):
+        return normalized(value)
+    try:
+        items = list(value)
+    except TypeError:
+        return value
+    if items and all(isinstance(item, (str, Substitution)) for item in items) and any(
+            isinstance(item, Substitution) for item in items):
+        return normalized(items)
+    return [item if isinstance(item, (bool, int, float, str)) else normalized(item)
+            for item in items]
+
+
+def described(substitutions: Any) -> str:
+    """Return ``' + '.join(sub.describe() ...)`` as launch's ``describe()`` methods do."""
+    return " + ".join(
+        sub.describe() if isinstance(sub, Substitution) else repr(sub)
+        for sub in normalized(substitutions) or [])
+
+
+class LaunchDescriptionEntity(Modelled):
     """Base of everything that can appear in a launch description."""
 
     def __init__(self) -> None:
@@ -118,6 +244,22 @@ class LaunchDescriptionEntity:
     def get_sub_entities(self) -> list[LaunchDescriptionEntity]:
         """Return nested entities (launch's API)."""
         return []
+
+    def describe_sub_entities(self) -> list[Any]:
+        """Return the sub-entities always visited (launch's API)."""
+        return []
+
+    def describe_conditional_sub_entities(self) -> list[tuple[str, Any]]:
+        """Return ``(condition description, entities)`` pairs (launch's API)."""
+        return []
+
+    def visit(self, context: Any) -> Any:
+        """Visit the entity (launch's API): statically nothing runs."""
+        return None
+
+    def get_asyncio_future(self) -> None:
+        """Return the future of an on-going activity: statically there is none."""
+        return None
 
 
 class Action(LaunchDescriptionEntity):
@@ -141,16 +283,32 @@ class Action(LaunchDescriptionEntity):
             common["attr_spans"] = {"if": where}
         return common
 
-    def execute(self, context: Any) -> None:
+    def describe(self) -> str:
+        """Return a description (launch's ``Action.describe``: the object's repr)."""
+        return repr(self)
+
+    def describe_sub_entities(self) -> list[Any]:
+        """Return the sub-entities when unconditional (launch's API)."""
+        return list(self.get_sub_entities()) if self.__condition is None else []
+
+    def describe_conditional_sub_entities(self) -> list[tuple[str, Any]]:
+        """Return the sub-entities under their condition (launch's API)."""
+        if self.__condition is None:
+            return []
+        return [(f"Conditionally included by {self.describe()}", self.get_sub_entities())]
+
+    def execute(self, context: Any) -> Any:
         """Do nothing: statically nothing executes."""
         return None
 
-    def visit(self, context: Any) -> None:
-        """Do nothing: statically nothing executes."""
+    def visit(self, context: Any) -> Any:
+        """Execute when the condition holds in ``context`` (launch's ``Action.visit``)."""
+        if self.__condition is None or self.__condition.evaluate(context):
+            return self.execute(context)
         return None
 
 
-class Substitution:
+class Substitution(Modelled):
     """Base of the modelled substitutions: each holds its IR expression."""
 
     def __init__(self) -> None:
@@ -164,8 +322,8 @@ class Substitution:
         return s.Opaque(name)
 
     def describe(self) -> str:
-        """Return a description (launch's API)."""
-        return type(self).__name__
+        """Return a description (launch's ``Substitution.describe``: the object's repr)."""
+        return repr(self)
 
     def perform(self, context: Any) -> str:
         """Perform the substitution in an OpaqueFunction's concrete context."""
@@ -176,7 +334,7 @@ class Substitution:
         return result
 
 
-class Condition:
+class Condition(Modelled):
     """Base of the modelled conditions."""
 
     def __init__(self) -> None:
@@ -195,6 +353,10 @@ class Condition:
             raise TypeError("evaluate() needs a LaunchContext")
         result: bool = evaluator(self)
         return result
+
+    def describe(self) -> str:
+        """Return a description (launch's ``Condition.describe``: the object's repr)."""
+        return repr(self)
 
 
 def check_substitutions(value: Any) -> Any:

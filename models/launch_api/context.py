@@ -8,40 +8,86 @@ is unknown comes back as a placeholder.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 from pathlib import Path
-from types import SimpleNamespace
 from typing import Any
 
-from launchverify.models.launch_api.base import Substitution
+from launchverify.models.launch_api.base import Modelled, Substitution, _unknown
 from launchverify.models.launch_api.launch_substitutions import TextSubstitution
 
 
-class LaunchContext:
+class LaunchContext(Modelled):
     """``launch.LaunchContext`` as an OpaqueFunction sees it."""
 
-    def __init__(self, argv: Any = None, *, noninteractive: bool = False,
+    def __init__(self, *, argv: Any = None, noninteractive: bool = False,
                  configurations: dict[str, str] | None = None,
                  performer: Callable[[Any], str] | None = None,
                  condition_evaluator: Callable[[Any], bool] | None = None,
                  launch_file: str = "") -> None:
-        self.argv = list(argv or [])
-        self.noninteractive = noninteractive
-        self.launch_configurations = RecordingDict(configurations or {})
+        self._argv = argv if argv is not None else []
+        self._noninteractive = noninteractive
+        self._launch_configurations = RecordingDict(configurations or {})
         if performer is None:  # a context the launch file made itself: a fresh one
             from launchverify.models.launch_api import runtime
 
             tools = runtime.current.context_tools if runtime.current is not None else None
             if tools is not None:
-                performer, condition_evaluator = tools(self.launch_configurations)
+                performer, condition_evaluator = tools(self._launch_configurations)
         self._performer = performer
         self._condition_evaluator = condition_evaluator
-        self.locals = SimpleNamespace(
-            current_launch_file_path=launch_file,
-            current_launch_file_directory=str(Path(launch_file).parent),
-            launch_configurations=self.launch_configurations,
-        )
-        self.environment = os.environ
+        self._globals: dict[str, Any] = {}
+        self._locals: dict[str, Any] = {}
+        if launch_file:  # what IncludeLaunchDescription sets for the file it includes
+            self._locals.update(current_launch_file_path=launch_file,
+                                current_launch_file_directory=str(Path(launch_file).parent))
+        self._event_handlers: list[Any] = []
+
+    @property
+    def argv(self) -> Any:
+        """Return the command line arguments given to the launch (launch's API)."""
+        return self._argv
+
+    @property
+    def noninteractive(self) -> bool:
+        """Return whether the launch is non-interactive (launch's API)."""
+        return self._noninteractive
+
+    @property
+    def launch_configurations(self) -> RecordingDict:
+        """Return the launch configurations in scope (launch's API)."""
+        return self._launch_configurations
+
+    @property
+    def environment(self) -> Any:
+        """Return the environment: ``os.environ``, as launch does (robot values unknown)."""
+        return os.environ
+
+    @property
+    def is_shutdown(self) -> bool:
+        """Return whether the launch is shutting down: statically it never is."""
+        return False
+
+    @property
+    def asyncio_loop(self) -> None:
+        """Return launch's event loop: statically there is none."""
+        return None
+
+    @property
+    def locals(self) -> _AttributeDict:
+        """Return the locals (and globals) as read-only attributes (launch's API)."""
+        return _AttributeDict(self.get_locals_as_dict())
+
+    def get_locals_as_dict(self) -> dict[str, Any]:
+        """Return the globals, overridden by the locals (launch's API)."""
+        return {**self._globals, **self._locals}
+
+    def extend_globals(self, extensions: dict[str, Any]) -> None:
+        """Add globals (launch's API)."""
+        self._globals.update(extensions)
+
+    def extend_locals(self, extensions: dict[str, Any]) -> None:
+        """Add locals (launch's API)."""
+        self._locals.update(extensions)
 
     def perform_substitution(self, substitution: Any) -> str:
         """Return the value of a substitution under this context's configurations."""
@@ -55,17 +101,46 @@ class LaunchContext:
             raise RuntimeError("this LaunchContext cannot evaluate conditions")
         return self._condition_evaluator(condition)
 
-    def get_locals_as_dict(self) -> dict[str, Any]:
-        """Return the locals (launch's API)."""
-        return dict(vars(self.locals))
-
-    def extend_locals(self, new_locals: dict[str, Any]) -> None:
-        """Add locals (launch's API)."""
-        for key, value in new_locals.items():
-            setattr(self.locals, key, value)
-
     def register_event_handler(self, event_handler: Any, append: bool = False) -> None:
-        """Accept a handler registration (statically nothing happens)."""
+        """Accept a handler registration (statically no event happens)."""
+        if append:
+            self._event_handlers.append(event_handler)
+        else:
+            self._event_handlers.insert(0, event_handler)
+
+    def unregister_event_handler(self, event_handler: Any) -> None:
+        """Remove a registered handler (``ValueError`` when it is not, as launch raises)."""
+        self._event_handlers.remove(event_handler)
+
+    def would_handle_event(self, event: Any) -> bool:
+        """Return whether a registered handler matches ``event`` (launch's API)."""
+        return any(handler.matches(event) for handler in self._event_handlers)
+
+    def emit_event_sync(self, event: Any) -> None:
+        """Queue an event (launch's API): statically events are not processed."""
+
+    async def emit_event(self, event: Any) -> None:
+        """Queue an event (launch's API, a coroutine): statically events are not processed."""
+
+    def add_completion_future(self, completion_future: Any) -> None:
+        """Accept a future launch would wait for (launch's API): statically none runs."""
+
+
+class _AttributeDict:
+    """What ``LaunchContext.locals`` returns: the locals as read-only attributes."""
+
+    def __init__(self, values: dict[str, Any]) -> None:
+        self.__dict__["_values"] = values
+
+    def __getattr__(self, key: str) -> Any:
+        values = self.__dict__["_values"]
+        if key not in values:
+            raise AttributeError(f"context.locals does not contain attribute '{key}', it "
+                                 f"contains: [{', '.join(values)}]")
+        return values[key]
+
+    def __setattr__(self, key: str, value: Any) -> None:
+        raise AttributeError(f"can't set attribute '{key}', locals are read-only")
 
 
 class MissingConfiguration(KeyError):
@@ -103,20 +178,94 @@ class RecordingDict(dict[str, str]):
 
 def normalize_to_list_of_substitutions(subs: Any) -> list[Any]:
     """``launch.utilities.normalize_to_list_of_substitutions``."""
-    if isinstance(subs, (str, Substitution)):
-        subs = [subs]
-    out: list[Any] = []
-    for item in subs:
-        out.append(TextSubstitution(text=item) if isinstance(item, str) else item)
-    return out
+    def one(item: Any) -> Any:
+        if isinstance(item, Substitution):
+            return item
+        if isinstance(item, (str, Path)):
+            return TextSubstitution(text=str(item))
+        if _unknown(item):
+            return item
+        raise TypeError(f"Failed to normalize given item of type '{type(item)}', when only "
+                        "'str' or 'launch.Substitution' were expected.")
+
+    if isinstance(subs, (str, Path, Substitution)) or _unknown(subs):
+        return [one(subs)]
+    return [one(item) for item in subs]
 
 
-def perform_substitutions(context: LaunchContext, subs: Iterable[Any]) -> str:
+def perform_substitutions(context: LaunchContext, subs: Any) -> str:
     """``launch.utilities.perform_substitutions``."""
-    return "".join(context.perform_substitution(s) for s in normalize_to_list_of_substitutions(
-        subs))
+    return "".join(context.perform_substitution(s) if isinstance(s, Substitution) else str(s)
+                   for s in normalize_to_list_of_substitutions(subs))
+
+
+_SCALARS = (int, float, bool, str)
+
+
+def _extract_type(data_type: Any) -> tuple[Any, bool]:
+    """``extract_type``: ``List[int]`` -> ``(int, True)``, ``bool`` -> ``(bool, False)``."""
+    arguments = getattr(data_type, "__args__", None)
+    if getattr(data_type, "__origin__", None) is list and arguments:
+        return arguments[0], True
+    if data_type not in _SCALARS:
+        raise ValueError(f"Unrecognized data type: {data_type}")
+    return data_type, False
+
+
+def _valid(value: Any) -> bool:
+    if isinstance(value, list):
+        member = next((type(x) for x in value if type(x) is not str), str)
+        return member in _SCALARS and all(isinstance(x, member) for x in value)
+    return isinstance(value, _SCALARS)
+
+
+def coerce_to_type(value: str, data_type: Any = None) -> Any:
+    """``launch.utilities.type_utils.coerce_to_type``: YAML rules, or the type asked for."""
+    import yaml
+
+    def as_yaml(text: str, message: str) -> Any:
+        if not text:
+            return text
+        try:
+            output = yaml.safe_load(text)
+        except Exception as error:
+            raise ValueError(f"{message}: yaml.safe_load() failed\n{error}") from None
+        if not _valid(output):
+            raise ValueError(f"{message}: output type is not allowed, got {type(output)}")
+        return output
+
+    if data_type is None:
+        return as_yaml(value, f"Failed to convert '{value}' using yaml rules")
+    kind, is_list = _extract_type(data_type)
+    if is_list:
+        output = as_yaml(value, f"Cannot convert value '{value}' to a list of '{kind}'")
+        if not isinstance(output, list) or not all(isinstance(x, kind) for x in output):
+            raise ValueError(f"Cannot convert value '{value}' to a list of '{kind}'")
+        return output
+    if kind is str:
+        return value
+    if kind in (int, float):
+        return kind(value)
+    if kind is bool:
+        value = {"1": "true", "0": "false"}.get(value, value)
+    output = as_yaml(value, f"Failed to convert '{value}' to '{kind}'")
+    if isinstance(output, kind):
+        return output
+    raise ValueError(f"Cannot convert value '{value}' to '{kind}'")
 
 
 def perform_typed_substitution(context: LaunchContext, value: Any, data_type: Any) -> Any:
-    """``launch.utilities.type_utils.perform_typed_substitution`` (strings only)."""
-    return perform_substitutions(context, value) if not isinstance(value, bool) else value
+    """``launch.utilities.type_utils.perform_typed_substitution``."""
+    if isinstance(value, _SCALARS):
+        if data_type is not None and not isinstance(value, _extract_type(data_type)[0]):
+            raise TypeError(f"value=`{value}` is a scalar and not an instance of `{data_type}`")
+        return value
+    if isinstance(value, (Substitution, list)) and all(
+            isinstance(item, Substitution) for item in (
+                value if isinstance(value, list) else [value])) and value != []:
+        return coerce_to_type(perform_substitutions(context, value), data_type)
+    if isinstance(value, list):
+        kind = _extract_type(data_type)[0] if data_type is not None else None
+        return [coerce_to_type(perform_substitutions(context, item), kind)
+                if isinstance(item, (list, Substitution)) else item for item in value]
+    return coerce_to_type(perform_substitutions(context, value), data_type)

@@ -17,8 +17,11 @@ from launchverify.models.launch_api.base import (
     Action,
     Converter,
     LaunchDescriptionEntity,
+    Modelled,
     check_substitutions,
     flatten,
+    normalized,
+    typed,
 )
 
 
@@ -28,27 +31,80 @@ class LaunchDescription(LaunchDescriptionEntity):
     def __init__(self, initial_entities: Iterable[Any] | None = None, *,
                  deprecated_reason: str | None = None) -> None:
         super().__init__()
-        self.entities: list[Any] = list(initial_entities or [])
-        self.deprecated_reason = deprecated_reason
+        self._entities: list[Any] = list(initial_entities) if initial_entities is not None else []
+        self._deprecated_reason = deprecated_reason
+
+    @property
+    def entities(self) -> list[Any]:
+        """Return the entities: the list itself, as launch does (appending to it adds)."""
+        return self._entities
+
+    @property
+    def deprecated(self) -> bool:
+        """Return whether the description is deprecated (launch's API)."""
+        return self._deprecated_reason is not None
+
+    @property
+    def deprecated_reason(self) -> str | None:
+        """Return why the description is deprecated, or ``None`` (launch's API)."""
+        return self._deprecated_reason
 
     def add_action(self, action: Any) -> None:
         """Append an action."""
-        self.entities.append(action)
+        self._entities.append(action)
 
     def add_entity(self, entity: Any) -> None:
         """Append an entity."""
-        self.entities.append(entity)
+        self._entities.append(entity)
 
     def get_sub_entities(self) -> list[Any]:
-        return list(self.entities)
+        return list(self._entities)
+
+    def describe_sub_entities(self) -> list[Any]:
+        return self._entities
+
+    def visit(self, context: Any) -> list[Any]:
+        """Return the entities to visit (launch's API)."""
+        return self._entities
 
     def get_launch_arguments(self, conditional_inclusion: bool = False) -> list[Any]:
-        """Return the argument declarations directly in this description."""
-        return [e for e in flatten(self.entities) if isinstance(e, DeclareLaunchArgument)]
+        """Return the argument declarations of this description, nested ones included."""
+        return [item[0] for item in
+                self.get_launch_arguments_with_include_launch_description_actions(
+                    conditional_inclusion)]
+
+    def get_launch_arguments_with_include_launch_description_actions(
+            self, conditional_inclusion: bool = False) -> list[tuple[Any, Any]]:
+        """Return ``(declaration, includes it is nested in)`` pairs, as launch walks them.
+
+        Descriptions of files an include would load are not loaded: their declarations are
+        not listed.
+        """
+        declared: list[tuple[Any, Any]] = []
+
+        def walk(entities: Any, conditional: bool, includes: list[Any] | None) -> None:
+            for entity in flatten(entities):
+                if isinstance(entity, DeclareLaunchArgument):
+                    if entity.name in (known.name for known, _ in declared):
+                        continue
+                    entity._conditionally_included = conditional or entity.condition is not None
+                    declared.append((entity, includes))
+                if isinstance(entity, ResetLaunchConfigurations):
+                    return
+                nested = includes
+                if isinstance(entity, IncludeLaunchDescription):
+                    nested = [*(includes or []), entity]
+                if isinstance(entity, LaunchDescriptionEntity):
+                    walk(entity.describe_sub_entities(), False, nested)
+                    for _, sub_entities in entity.describe_conditional_sub_entities():
+                        walk(sub_entities, True, nested)
+
+        walk(self._entities, conditional_inclusion, None)
+        return declared
 
     def to_ir(self, cv: Converter) -> a.Action:
         # A description inside another visits its entities in place, without a scope.
-        return a.Group(span=self._span, actions=cv.actions(self.entities), scoped=False)
+        return a.Group(span=self._span, actions=cv.actions(self._entities), scoped=False)
 
 
 class NoGraphEffect(Action):
@@ -75,18 +131,46 @@ class DeclareLaunchArgument(Action):
         if choices is not None and not list(choices):
             raise RuntimeError(
                 "Provided choices arg is empty. Use None to ignore the choice list.")
-        self.name = name
-        self.default_value = None if default_value is None else check_substitutions(
+        self._name = name
+        self._default_value = None if default_value is None else check_substitutions(
             default_value)
-        self.description = description
-        self.choices = None if choices is None else tuple(choices)
+        self._description = description
+        self._choices = None if choices is None else list(choices)
+        self._conditionally_included = False
+
+    @property
+    def name(self) -> str:
+        """Return the argument's name (launch's API)."""
+        return self._name
+
+    @property
+    def default_value(self) -> list[Any] | None:
+        """Return the default as substitutions, or ``None`` (launch's API)."""
+        return normalized(self._default_value)  # type: ignore[no-any-return]
+
+    @property
+    def description(self) -> str:
+        """Return the description as launch completes it (choices, 'no description given')."""
+        choices = self._choices
+        if self._description is None:
+            return "no description given" if choices is None else f"One of: {choices}"
+        if choices is None:
+            return self._description
+        text = self._description if self._description.endswith(".") else (
+            self._description + ".")
+        return f"{text} Valid choices are: {choices}"
+
+    @property
+    def choices(self) -> list[Any] | None:
+        """Return the allowed values, or ``None`` (launch's API)."""
+        return self._choices
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.DeclareArgument(**cv_common(self, cv), name=self.name,
-                                 default=cv.opt_sub(self.default_value),
-                                 description=self.description,
-                                 choices=None if self.choices is None else tuple(
-                                     str(c) for c in self.choices))
+        return a.DeclareArgument(**cv_common(self, cv), name=self._name,
+                                 default=cv.opt_sub(self._default_value),
+                                 description=self._description,
+                                 choices=None if self._choices is None else tuple(
+                                     str(c) for c in self._choices))
 
 
 class SetLaunchConfiguration(Action):
@@ -94,11 +178,21 @@ class SetLaunchConfiguration(Action):
 
     def __init__(self, name: Any, value: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.name, self.value = check_substitutions(name), check_substitutions(value)
+        self._name, self._value = check_substitutions(name), check_substitutions(value)
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the configuration's name as substitutions (launch's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
+
+    @property
+    def value(self) -> list[Any]:
+        """Return the value as substitutions (launch's API)."""
+        return normalized(self._value)  # type: ignore[no-any-return]
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.SetConfig(**cv_common(self, cv), name=cv.sub(self.name),
-                           value=cv.sub(self.value))
+        return a.SetConfig(**cv_common(self, cv), name=cv.sub(self._name),
+                           value=cv.sub(self._value))
 
 
 class UnsetLaunchConfiguration(Action):
@@ -106,10 +200,15 @@ class UnsetLaunchConfiguration(Action):
 
     def __init__(self, name: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.name = name
+        self._name = name
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the configuration's name as substitutions (launch's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.UnsetConfig(**cv_common(self, cv), name=cv.sub(self.name))
+        return a.UnsetConfig(**cv_common(self, cv), name=cv.sub(self._name))
 
 
 class ResetLaunchConfigurations(Action):
@@ -142,15 +241,30 @@ class PopLaunchConfigurations(Action):
 # ----------------------------------------------------------------------------- structure
 
 
-class LaunchDescriptionSource:
+class LaunchDescriptionSource(Modelled):
     """``LaunchDescriptionSource(launch_description=None, location=..., method=...)``."""
 
     kind = "any"
 
-    def __init__(self, launch_description: Any = None, location: Any = "<script>",
-                 method: str = "") -> None:
+    def __init__(self, launch_description: Any = None, location: Any = "<string>",
+                 method: str = "unspecified mechanism from a script") -> None:
         self.launch_description = launch_description
-        self.location = location
+        self._location = location
+        self._method = method
+
+    @property
+    def location(self) -> str:
+        """Return the location as launch shows it before loading: its substitutions joined.
+
+        Launch joins ``str()`` of each substitution (object representations) until
+        ``get_launch_description`` expanded it; statically it never is.
+        """
+        return " + ".join(str(sub) for sub in normalized(self._location))
+
+    @property
+    def method(self) -> str:
+        """Return how the description is loaded (launch's API)."""
+        return self._method
 
 
 class PythonLaunchDescriptionSource(LaunchDescriptionSource):
@@ -159,23 +273,24 @@ class PythonLaunchDescriptionSource(LaunchDescriptionSource):
     kind = "python"
 
     def __init__(self, launch_file_path: Any) -> None:
-        super().__init__(location=launch_file_path)
+        super().__init__(location=launch_file_path, method="interpreted python launch file")
 
 
 class AnyLaunchDescriptionSource(LaunchDescriptionSource):
     """``AnyLaunchDescriptionSource(launch_file_path)``."""
 
     def __init__(self, launch_file_path: Any) -> None:
-        super().__init__(location=launch_file_path)
+        super().__init__(location=launch_file_path, method="interpreted launch file")
 
 
 class FrontendLaunchDescriptionSource(LaunchDescriptionSource):
-    """``FrontendLaunchDescriptionSource(launch_file_path, parser=...)``."""
+    """``FrontendLaunchDescriptionSource(launch_file_path, *, method=..., parser=...)``."""
 
     kind = "frontend"
 
-    def __init__(self, launch_file_path: Any, parser: Any = None) -> None:
-        super().__init__(location=launch_file_path)
+    def __init__(self, launch_file_path: Any, *, method: str = "interpreted frontend launch file",
+                 parser: Any = None) -> None:
+        super().__init__(location=launch_file_path, method=method)
 
 
 class XMLLaunchDescriptionSource(FrontendLaunchDescriptionSource):
@@ -183,11 +298,17 @@ class XMLLaunchDescriptionSource(FrontendLaunchDescriptionSource):
 
     kind = "xml"
 
+    def __init__(self, launch_file_path: Any) -> None:
+        super().__init__(launch_file_path, method="interpreted XML launch file")
+
 
 class YAMLLaunchDescriptionSource(FrontendLaunchDescriptionSource):
     """``launch_yaml...YAMLLaunchDescriptionSource(launch_file_path)``."""
 
     kind = "yaml"
+
+    def __init__(self, launch_file_path: Any) -> None:
+        super().__init__(launch_file_path, method="interpreted YAML launch file")
 
 
 class IncludeLaunchDescription(Action):
@@ -196,19 +317,37 @@ class IncludeLaunchDescription(Action):
     def __init__(self, launch_description_source: Any, *, launch_arguments: Any = None,
                  **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.source = launch_description_source
+        self._source = launch_description_source
+        self._given_arguments = () if launch_arguments is None else tuple(launch_arguments)
         pairs = []
-        for pair in launch_arguments or []:  # a dict iterates its keys: launch fails there too
+        for pair in self._given_arguments:  # a dict iterates its keys: launch fails there too
             name, value = pair
             pairs.append((check_substitutions(name), check_substitutions(value)))
-        self.launch_arguments = pairs
+        self._arguments = pairs
+
+    @property
+    def launch_description_source(self) -> Any:
+        """Return the description source (launch's API)."""
+        return self._source
+
+    @property
+    def launch_arguments(self) -> tuple[Any, ...]:
+        """Return the ``(name, value)`` pairs as given (launch's API)."""
+        return self._given_arguments
+
+    def get_sub_entities(self) -> list[Any]:
+        """Return the description when the source holds one (files are not loaded here)."""
+        source = self._source
+        description = getattr(source, "launch_description", None) if isinstance(
+            source, LaunchDescriptionSource) else None
+        return [description] if description is not None else []
 
     def to_ir(self, cv: Converter) -> a.Action:
         arguments = tuple(
             a.IncludeArg(name=cv.sub(name), value=cv.sub(value), span=self._span)
-            for name, value in self.launch_arguments
+            for name, value in self._arguments
         )
-        source = self.source
+        source = self._source
         if isinstance(source, LaunchDescriptionSource) and source.launch_description is not None:
             sets = tuple(a.SetConfig(span=self._span, name=arg.name, value=arg.value)
                          for arg in arguments)
@@ -218,7 +357,7 @@ class IncludeLaunchDescription(Action):
             cv.fail("this include reuses another include's description source: its actions "
                     "are the same objects, and ros2 launch fails executing them a second time "
                     "('executed more than once')", self._span)
-        location = source.location if isinstance(source, LaunchDescriptionSource) else source
+        location = source._location if isinstance(source, LaunchDescriptionSource) else source
         kind = source.kind if isinstance(source, LaunchDescriptionSource) else "any"
         return a.Include(**cv_common(self, cv), path=cv.sub(location), arguments=arguments,
                          source_kind=kind)
@@ -230,17 +369,18 @@ class GroupAction(Action):
     def __init__(self, actions: Iterable[Any], *, scoped: bool = True, forwarding: bool = True,
                  launch_configurations: Any = None, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.actions = list(actions)
-        self.scoped, self.forwarding = bool(scoped), bool(forwarding)
-        self.launch_configurations = launch_configurations
+        self._actions = list(actions)
+        self._scoped, self._forwarding = bool(scoped), bool(forwarding)
+        self._launch_configurations = launch_configurations
 
     def get_sub_entities(self) -> list[Any]:
-        return list(self.actions)
+        return list(self._actions)
 
     def to_ir(self, cv: Converter) -> a.Action:
-        keep = () if self.launch_configurations is None else cv.pairs(self.launch_configurations)
-        return a.Group(**cv_common(self, cv), actions=cv.actions(self.actions),
-                       scoped=self.scoped, forwarding=self.forwarding, keep=keep)
+        keep = () if self._launch_configurations is None else cv.pairs(
+            self._launch_configurations)
+        return a.Group(**cv_common(self, cv), actions=cv.actions(self._actions),
+                       scoped=self._scoped, forwarding=self._forwarding, keep=keep)
 
 
 class TimerAction(Action):
@@ -251,13 +391,39 @@ class TimerAction(Action):
     def __init__(self, *, period: Any, actions: Iterable[Any], cancel_on_shutdown: Any = True,
                  **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.period, self.actions = period, list(actions)
-        self.cancel_on_shutdown = cancel_on_shutdown
+        self._period, self._actions = period, list(actions)
+        self._cancel_on_shutdown = cancel_on_shutdown
+        self._canceled = False
+
+    @property
+    def period(self) -> Any:
+        """Return the period: a number, or substitutions (launch's API)."""
+        return typed(self._period)
+
+    @property
+    def actions(self) -> list[Any]:
+        """Return the actions run when the timer fires (launch's API)."""
+        return self._actions
+
+    def describe(self) -> str:
+        return f"TimerAction(period={self.period}, actions=<actions>)"
+
+    def describe_conditional_sub_entities(self) -> list[tuple[str, Any]]:
+        return [(f"{self.period} seconds pass without being canceled", self._actions)]
+
+    def handle(self, context: Any) -> list[Any]:
+        """Return what runs when the timer fires: its actions (launch's API)."""
+        return list(self._actions)
+
+    def cancel(self) -> None:
+        """Cancel the timer (launch's API): statically nothing is pending."""
+        self._canceled = True
 
     def to_ir(self, cv: Converter) -> a.Action:
-        period = cv.sub(str(self.period) if isinstance(self.period, (int, float)) else self.period)
-        cancel = self.cancel_on_shutdown
-        return a.Timer(**cv_common(self, cv), period=period, actions=cv.actions(self.actions),
+        period = cv.sub(str(self._period) if isinstance(self._period, (int, float))
+                        else self._period)
+        cancel = self._cancel_on_shutdown
+        return a.Timer(**cv_common(self, cv), period=period, actions=cv.actions(self._actions),
                        cancel_on_shutdown=cancel if isinstance(cancel, bool) else cv.sub(cancel),
                        ros_time=self.ros_time)
 
@@ -282,6 +448,10 @@ class OpaqueFunction(Action):
         """Run the function with a concrete context; return what it yields."""
         return self.function(context, *self.args, **self.kwargs)
 
+    def execute(self, context: Any) -> Any:
+        """Run the function (launch's API), as the walk does when it reaches the action."""
+        return self.call(context)
+
     @property
     def label(self) -> str:
         """Return how findings name this action."""
@@ -291,17 +461,24 @@ class OpaqueFunction(Action):
 class ForEach(OpaqueFunction):
     """``ForEach(input_values, *, function)`` (kilted, rolling): one call per mapping."""
 
+    SEPARATOR = ";"
+
     def __init__(self, input_values: Any, *, function: Callable[..., Any], **kwargs: Any) -> None:
         super().__init__(function=function, **kwargs)
-        self.input_values = input_values
+        self._input_values = input_values
+
+    @property
+    def input_values(self) -> list[Any]:
+        """Return the input values as substitutions (launch's API)."""
+        return normalized(self._input_values)  # type: ignore[no-any-return]
 
     def call(self, context: Any) -> Any:
         import yaml
 
-        values = self.input_values
+        values = self._input_values
         text = values if isinstance(values, str) else context.perform_substitution(values)
         entities: list[Any] = []
-        for chunk in (part for part in text.split(";") if part.strip()):
+        for chunk in (part for part in text.split(self.SEPARATOR) if part.strip()):
             mapping = yaml.safe_load(chunk)
             if not isinstance(mapping, dict):
                 raise ValueError(f"ForEach value {chunk!r} is not a mapping")
@@ -319,10 +496,21 @@ class ForLoop(OpaqueFunction):
     def __init__(self, length: Any, *, function: Callable[..., Any], name: Any = None,
                  **kwargs: Any) -> None:
         super().__init__(function=function, **kwargs)
-        self.length = length
+        self._length = length
+        self._name = name
+
+    @property
+    def length(self) -> list[Any]:
+        """Return the number of iterations as substitutions (launch's API)."""
+        return normalized(self._length)  # type: ignore[no-any-return]
+
+    @property
+    def name(self) -> Any:
+        """Return the loop's name (launch's API)."""
+        return self._name
 
     def call(self, context: Any) -> Any:
-        length = self.length
+        length = self._length
         count = length if isinstance(length, int) else int(context.perform_substitution(length))
         entities: list[Any] = []
         for index in range(min(count, 256)):
@@ -362,7 +550,8 @@ class ExecuteProcess(Action):
                  respawn: Any = False, respawn_delay: float | None = None,
                  respawn_max_retries: int = -1, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.cmd = list(cmd)
+        self._cmd = list(cmd)
+        self.cached_output = cached_output
         self.options = {
             "prefix": prefix, "name": name, "cwd": cwd, "env": env,
             "additional_env": additional_env, "shell": shell,
@@ -371,6 +560,87 @@ class ExecuteProcess(Action):
             "on_exit": on_exit, "respawn": respawn, "respawn_delay": respawn_delay,
             "respawn_max_retries": respawn_max_retries,
         }
+
+    @property
+    def cmd(self) -> list[list[Any]]:
+        """Return the command line, each part a list of substitutions (launch's API)."""
+        return [normalized(part) for part in self._cmd]
+
+    @property
+    def name(self) -> list[Any] | None:
+        """Return the process's name as substitutions, or ``None`` (launch's API)."""
+        return normalized(self.options["name"])  # type: ignore[no-any-return]
+
+    @property
+    def cwd(self) -> list[Any] | None:
+        """Return the working folder as substitutions, or ``None`` (launch's API)."""
+        return normalized(self.options["cwd"])  # type: ignore[no-any-return]
+
+    @property
+    def env(self) -> list[tuple[list[Any], list[Any]]] | None:
+        """Return the environment as pairs of substitutions, or ``None`` (launch's API)."""
+        return _env_pairs(self.options["env"])
+
+    @property
+    def additional_env(self) -> list[tuple[list[Any], list[Any]]] | None:
+        """Return the added environment as pairs of substitutions (launch's API)."""
+        return _env_pairs(self.options["additional_env"])
+
+    @property
+    def shell(self) -> Any:
+        """Return whether the command runs in a shell (launch's API)."""
+        return self.options["shell"]
+
+    @property
+    def emulate_tty(self) -> Any:
+        """Return whether a tty is emulated (launch's API)."""
+        return self.options["emulate_tty"]
+
+    @property
+    def output(self) -> Any:
+        """Return where output goes: substitutions, or a dict as given (launch's API)."""
+        output = self.options["output"]
+        return output if isinstance(output, dict) else normalized(output)
+
+    @property
+    def sigterm_timeout(self) -> list[Any]:
+        """Return the SIGTERM timeout as substitutions (launch's API)."""
+        return _timeout(self.options["sigterm_timeout"], "sigterm_timeout")
+
+    @property
+    def sigkill_timeout(self) -> list[Any]:
+        """Return the SIGKILL timeout as substitutions (launch's API)."""
+        return _timeout(self.options["sigkill_timeout"], "sigkill_timeout")
+
+    @property
+    def process_details(self) -> None:
+        """Return the running process's details: ``None`` until it runs, so always here."""
+        return None
+
+    @property
+    def return_code(self) -> None:
+        """Return the exit code: ``None`` until the process ends, so always here."""
+        return None
+
+    def get_stdout(self) -> str:
+        """Return the cached output: nothing runs statically (launch raises without cache)."""
+        return self._cached("stdout")
+
+    def get_stderr(self) -> str:
+        """Return the cached error output (see ``get_stdout``)."""
+        return self._cached("stderr")
+
+    def _cached(self, stream: str) -> str:
+        if not self.cached_output:
+            raise RuntimeError(f"cached output must be true to be able to get {stream}, proc "
+                               f"'{self.options['name']}'")
+        return ""
+
+    def get_sub_entities(self) -> list[Any]:
+        on_exit = self.options["on_exit"]
+        if on_exit is None or callable(on_exit):
+            return []
+        return list(on_exit) if isinstance(on_exit, (list, tuple)) else [on_exit]
 
     def process_options(self, cv: Converter, *, with_name: bool = True) -> a.ProcessOptions:
         """Return the IR process options."""
@@ -402,11 +672,26 @@ class ExecuteProcess(Action):
         )
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.ExecuteProcess(**cv_common(self, cv), cmd=tuple(cv.sub(p) for p in self.cmd),
+        return a.ExecuteProcess(**cv_common(self, cv), cmd=tuple(cv.sub(p) for p in self._cmd),
                                 process=self.process_options(cv))
 
 
 ExecuteLocal = ExecuteProcess
+
+
+def _env_pairs(value: Any) -> list[tuple[list[Any], list[Any]]] | None:
+    if value is None:
+        return None
+    items = value.items() if isinstance(value, dict) else value
+    return [(normalized(key), normalized(item)) for key, item in items]
+
+
+def _timeout(value: Any, name: str) -> list[Any]:
+    if value is None:  # launch's default: LaunchConfiguration(name, default=5)
+        from launchverify.models.launch_api.launch_substitutions import LaunchConfiguration
+
+        value = LaunchConfiguration(name, default=5)
+    return normalized(_text(value))  # type: ignore[no-any-return]
 
 
 def _text(value: Any) -> Any:
@@ -421,10 +706,21 @@ class SetEnvironmentVariable(Action):
 
     def __init__(self, name: Any, value: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.name, self.value = name, value
+        self._name, self._value = name, value
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the variable's name as substitutions (launch's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
+
+    @property
+    def value(self) -> list[Any]:
+        """Return the value as substitutions (launch's API)."""
+        return normalized(self._value)  # type: ignore[no-any-return]
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.SetEnv(**cv_common(self, cv), name=cv.sub(self.name), value=cv.sub(self.value))
+        return a.SetEnv(**cv_common(self, cv), name=cv.sub(self._name),
+                        value=cv.sub(self._value))
 
 
 class UnsetEnvironmentVariable(Action):
@@ -432,10 +728,15 @@ class UnsetEnvironmentVariable(Action):
 
     def __init__(self, name: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.name = name
+        self._name = name
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the variable's name as substitutions (launch's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.UnsetEnv(**cv_common(self, cv), name=cv.sub(self.name))
+        return a.UnsetEnv(**cv_common(self, cv), name=cv.sub(self._name))
 
 
 class AppendEnvironmentVariable(Action):
@@ -444,13 +745,33 @@ class AppendEnvironmentVariable(Action):
     def __init__(self, name: Any, value: Any, prepend: Any = False,
                  separator: Any = os.pathsep, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.name, self.value, self.prepend, self.separator = name, value, prepend, separator
+        self._name, self._value, self._prepend, self._separator = name, value, prepend, separator
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the variable's name as substitutions (launch's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
+
+    @property
+    def value(self) -> list[Any]:
+        """Return the value as substitutions (launch's API)."""
+        return normalized(self._value)  # type: ignore[no-any-return]
+
+    @property
+    def prepend(self) -> Any:
+        """Return whether to prepend: a bool, or substitutions (launch's API)."""
+        return typed(self._prepend)
+
+    @property
+    def separator(self) -> list[Any]:
+        """Return the separator as substitutions (launch's API)."""
+        return normalized(self._separator)  # type: ignore[no-any-return]
 
     def to_ir(self, cv: Converter) -> a.Action:
-        prepend = self.prepend if isinstance(self.prepend, bool) else cv.sub(self.prepend)
-        return a.AppendEnv(**cv_common(self, cv), name=cv.sub(self.name),
-                           value=cv.sub(self.value), prepend=prepend,
-                           separator=cv.sub(self.separator))
+        prepend = self._prepend if isinstance(self._prepend, bool) else cv.sub(self._prepend)
+        return a.AppendEnv(**cv_common(self, cv), name=cv.sub(self._name),
+                           value=cv.sub(self._value), prepend=prepend,
+                           separator=cv.sub(self._separator))
 
 
 class ResetEnvironment(Action):
@@ -482,10 +803,21 @@ class LogInfo(Action):
 
     def __init__(self, *, msg: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.msg = msg
+        self._msg = msg
+        self._level: Any = "INFO"
+
+    @property
+    def msg(self) -> list[Any]:
+        """Return the message as substitutions (launch's API)."""
+        return normalized(self._msg)  # type: ignore[no-any-return]
+
+    @property
+    def level(self) -> list[Any]:
+        """Return the level as substitutions (launch's API)."""
+        return normalized(self._level)  # type: ignore[no-any-return]
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.Log(**cv_common(self, cv), message=cv.sub(self.msg))
+        return a.Log(**cv_common(self, cv), message=cv.sub(self._msg))
 
 
 class Log(LogInfo):
@@ -493,7 +825,7 @@ class Log(LogInfo):
 
     def __init__(self, *, msg: Any, level: Any = "INFO", **kwargs: Any) -> None:
         super().__init__(msg=msg, **kwargs)
-        self.level = str(level).lower()
+        self._level = level
 
 
 class Shutdown(Action):
@@ -502,6 +834,14 @@ class Shutdown(Action):
     def __init__(self, *, reason: Any = "reason not given", **kwargs: Any) -> None:
         super().__init__(**kwargs)
         self.reason = reason
+        from launchverify.models.launch_api.launch_events import Shutdown as ShutdownEvent
+
+        self._event = ShutdownEvent(reason=reason)
+
+    @property
+    def event(self) -> Any:
+        """Return the event this action emits: ``launch.events.Shutdown`` (launch's API)."""
+        return self._event
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.Shutdown(**cv_common(self, cv), reason=cv.sub(self.reason))
@@ -570,6 +910,10 @@ class RegisterEventHandler(Action):
 
 class UnregisterEventHandler(NoGraphEffect):
     """``UnregisterEventHandler(event_handler)``."""
+
+    def __init__(self, event_handler: Any, **kwargs: Any) -> None:
+        super().__init__(**kwargs)
+        self.event_handler = event_handler
 
 
 def cv_common(action: Action, cv: Converter) -> dict[str, Any]:

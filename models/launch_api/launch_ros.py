@@ -7,20 +7,39 @@ reach these classes through the module table in ``launch_api/__init__.py``.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Iterable
+from pathlib import Path
 from typing import Any
 
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.models import distros
-from launchverify.models.launch_api.base import Action, Converter, Substitution, caller_span
+from launchverify.models.launch_api.base import (
+    Action,
+    Converter,
+    Modelled,
+    Substitution,
+    caller_span,
+    described,
+    normalized,
+    typed,
+)
 from launchverify.models.launch_api.launch_actions import ExecuteProcess, TimerAction, cv_common
-from launchverify.models.launch_api.launch_substitutions import PathJoinSubstitution
+from launchverify.models.launch_api.launch_substitutions import (
+    LocalSubstitution,
+    PathJoinSubstitution,
+)
 
 # ----------------------------------------------------------------------------- descriptions
 
 
-class ParameterFile:
+# The attributes the Python frontend's converter reads (``param_file``, ``allow_substs``,
+# ``name``, ``value``, ``value_type``) keep the values as given; launch normalizes them to
+# lists of substitutions.
+
+
+class ParameterFile(Modelled):
     """``ParameterFile(param_file, *, allow_substs=False)``."""
 
     def __init__(self, param_file: Any, *, allow_substs: Any = False) -> None:
@@ -28,24 +47,62 @@ class ParameterFile:
         self.param_file = param_file
         self.allow_substs = allow_substs
 
+    def evaluate(self, context: Any) -> Path:
+        """Return the file's path in ``context`` (launch's API).
 
-class ParameterValue:
+        With ``allow_substs`` launch writes a substituted copy to a temporary file when the
+        launch runs; statically the copy stands for its source file, as ``RewrittenYaml``.
+        """
+        param_file = self.param_file
+        if not isinstance(param_file, (os.PathLike, bytes)):
+            param_file = _perform(context, param_file)
+        return Path(os.fsdecode(param_file))
+
+    def cleanup(self) -> None:
+        """Remove the temporary copy (launch's API): statically none was written."""
+
+
+class ParameterValue(Modelled):
     """``ParameterValue(value, *, value_type=None)``."""
 
     def __init__(self, value: Any, *, value_type: Any = None) -> None:
         self.value = value
         self.value_type = value_type
 
+    def evaluate(self, context: Any) -> Any:
+        """Return the value in ``context``, typed as launch types it (launch's API)."""
+        from launchverify.models.launch_api.context import perform_typed_substitution
 
-class Parameter:
-    """``launch_ros.descriptions.Parameter(name, value, value_type=None)``."""
+        return perform_typed_substitution(context, typed(self.value), self.value_type)
+
+
+class Parameter(Modelled):
+    """``launch_ros.descriptions.Parameter(name, value, *, value_type=None)``."""
 
     def __init__(self, name: Any, value: Any, value_type: Any = None) -> None:
         self._span = caller_span()
         self.name, self.value, self.value_type = name, value, value_type
 
+    def evaluate(self, context: Any) -> tuple[str, Any]:
+        """Return ``(name, value)`` in ``context`` (launch's API)."""
+        value = ParameterValue(self.value, value_type=self.value_type).evaluate(context)
+        return _perform(context, self.name), value
 
-class ComposableNode:
+
+def _perform(context: Any, value: Any) -> str:
+    from launchverify.models.launch_api.context import perform_substitutions
+
+    return perform_substitutions(context, value)
+
+
+def _remap_rules(rules: Any) -> list[tuple[list[Any], list[Any]]] | None:
+    """``normalize_remap_rules``: each rule a pair of lists of substitutions."""
+    if rules is None:
+        return None
+    return [(normalized(src), normalized(dst)) for src, dst in rules]
+
+
+class ComposableNode(Modelled):
     """``ComposableNode(*, package, plugin, name=None, namespace=None, ...)``."""
 
     lifecycle = False
@@ -54,23 +111,63 @@ class ComposableNode:
                  parameters: Any = None, remappings: Any = None, extra_arguments: Any = None,
                  condition: Any = None) -> None:
         self._span = caller_span()
-        self.package, self.plugin, self.name, self.namespace = package, plugin, name, namespace
-        self.parameters, self.remappings = parameters, remappings
-        self.extra_arguments, self.condition = extra_arguments, condition
+        self._package, self._plugin, self._name, self._namespace = (
+            package, plugin, name, namespace)
+        self._parameters, self._remappings = parameters, remappings
+        self._extra_arguments, self._condition = extra_arguments, condition
+
+    @property
+    def package(self) -> list[Any]:
+        """Return the package as substitutions (launch_ros's API)."""
+        return normalized(self._package)  # type: ignore[no-any-return]
+
+    @property
+    def node_plugin(self) -> list[Any]:
+        """Return the plugin as substitutions (launch_ros's API)."""
+        return normalized(self._plugin)  # type: ignore[no-any-return]
+
+    @property
+    def node_name(self) -> list[Any] | None:
+        """Return the name as substitutions, or ``None`` (launch_ros's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
+
+    @property
+    def node_namespace(self) -> list[Any] | None:
+        """Return the namespace as substitutions, or ``None`` (launch_ros's API)."""
+        return normalized(self._namespace)  # type: ignore[no-any-return]
+
+    @property
+    def parameters(self) -> Any:
+        """Return the parameters as given, or ``None`` (launch_ros normalizes them)."""
+        return self._parameters
+
+    @property
+    def remappings(self) -> list[tuple[list[Any], list[Any]]] | None:
+        """Return the remapping rules as pairs of substitutions (launch_ros's API)."""
+        return _remap_rules(self._remappings)
+
+    @property
+    def extra_arguments(self) -> Any:
+        """Return the extra arguments as given, or ``None`` (launch_ros normalizes them)."""
+        return self._extra_arguments
+
+    def condition(self) -> Any:
+        """Return the condition (a method, not a property, in launch_ros 0.30)."""
+        return self._condition
 
     def to_description(self, cv: Converter) -> a.ComposableNode:
         """Return the IR description."""
         extra = []
-        for entry in self.extra_arguments or []:
+        for entry in self._extra_arguments or []:
             for key, value in (entry.items() if isinstance(entry, dict) else [entry]):
                 extra.append(a.ParamItem(name=cv.sub(key), value=cv.param_value(value),
                                          span=self._span))
         return a.ComposableNode(
-            package=cv.sub(self.package), plugin=cv.sub(self.plugin), span=self._span,
-            name=cv.opt_sub(self.name), namespace=cv.opt_sub(self.namespace),
-            parameters=cv.parameters(self.parameters, self._span),
-            remappings=cv.remaps(self.remappings, self._span),
-            extra_arguments=tuple(extra), condition=cv.condition(self.condition),
+            package=cv.sub(self._package), plugin=cv.sub(self._plugin), span=self._span,
+            name=cv.opt_sub(self._name), namespace=cv.opt_sub(self._namespace),
+            parameters=cv.parameters(self._parameters, self._span),
+            remappings=cv.remaps(self._remappings, self._span),
+            extra_arguments=tuple(extra), condition=cv.condition(self._condition),
             lifecycle=self.lifecycle,
         )
 
@@ -84,12 +181,20 @@ class ComposableLifecycleNode(ComposableNode):
         super().__init__(**kwargs)
         self.autostart = autostart
 
+    @property
+    def node_autostart(self) -> Any:
+        """Return whether the node is brought up on its own (launch_ros's API)."""
+        return typed(self.autostart)
+
 
 # ----------------------------------------------------------------------------- actions
 
 
 class Node(ExecuteProcess):
     """``Node(*, executable, package=None, name=None, namespace=None, ...)``."""
+
+    UNSPECIFIED_NODE_NAME = "<node_name_unspecified>"
+    UNSPECIFIED_NODE_NAMESPACE = "<node_namespace_unspecified>"
 
     def __init__(self, *, executable: Any, package: Any = None, name: Any = None,
                  namespace: Any = None, exec_name: Any = None, parameters: Any = None,
@@ -100,10 +205,46 @@ class Node(ExecuteProcess):
             raise TypeError(f"Expected 'parameters' to be one of [<class 'list'>], but got "
                             f"'{parameters}' of type '{type(parameters)}'")
         self.node_executable, self.node_package = executable, package
-        self.node_name_value, self.node_namespace = name, namespace
-        self.exec_name = exec_name
-        self.parameters, self.remappings = parameters, remappings
-        self.ros_arguments, self.arguments = ros_arguments, arguments
+        self._node_name, self._node_namespace = name, namespace
+        self.options["name"] = exec_name  # the process's name, as launch_ros passes it
+        self._exec_name = exec_name
+        self._parameters, self._remappings = parameters, remappings
+        self._ros_arguments, self._arguments = ros_arguments, arguments
+
+    @property
+    def node_name(self) -> str:
+        """Raise as launch_ros does: the full name is only known once the node runs."""
+        raise RuntimeError("cannot access 'node_name' before executing action")
+
+    @property
+    def expanded_node_namespace(self) -> str:
+        """Return the namespace launch computes when executing: unspecified until then."""
+        return self.UNSPECIFIED_NODE_NAMESPACE
+
+    @property
+    def expanded_remapping_rules(self) -> None:
+        """Return the remappings launch computes when executing: ``None`` until then."""
+        return None
+
+    def is_node_name_fully_specified(self) -> bool:
+        """Return whether name and namespace are known (needs ``node_name``, as in launch_ros)."""
+        keywords = (self.UNSPECIFIED_NODE_NAME, self.UNSPECIFIED_NODE_NAMESPACE)
+        return all(keyword not in self.node_name for keyword in keywords)
+
+    @property
+    def cmd(self) -> list[list[Any]]:
+        """Return the command line launch_ros builds for the node (launch's API)."""
+        cmd: list[Any] = [ExecutableInPackage(package=self.node_package,
+                                              executable=self.node_executable)
+                          if self.node_package is not None else self.node_executable]
+        cmd += list(self._arguments or [])
+        if self._ros_arguments is not None:
+            cmd += ["--ros-args", *self._ros_arguments]
+        cmd += ["--ros-args"]
+        if self._node_name is not None:
+            cmd += ["-r", LocalSubstitution("ros_specific_arguments['name']",
+                                            description="node name")]
+        return [normalized(part) for part in cmd]
 
     def node_fields(self, cv: Converter) -> dict[str, Any]:
         """Return what every Node-like IR action takes."""
@@ -111,13 +252,13 @@ class Node(ExecuteProcess):
             **cv_common(self, cv),
             "executable": cv.sub(self.node_executable),
             "package": cv.opt_sub(self.node_package),
-            "name": cv.opt_sub(self.node_name_value),
-            "namespace": cv.opt_sub(self.node_namespace),
-            "exec_name": cv.opt_sub(self.exec_name),
-            "parameters": cv.parameters(self.parameters, self._span),
-            "remappings": cv.remaps(self.remappings, self._span),
-            "ros_arguments": tuple(cv.sub(x) for x in self.ros_arguments or []),
-            "arguments": tuple(cv.sub(x) for x in self.arguments or []),
+            "name": cv.opt_sub(self._node_name),
+            "namespace": cv.opt_sub(self._node_namespace),
+            "exec_name": cv.opt_sub(self._exec_name),
+            "parameters": cv.parameters(self._parameters, self._span),
+            "remappings": cv.remaps(self._remappings, self._span),
+            "ros_arguments": tuple(cv.sub(x) for x in self._ros_arguments or []),
+            "arguments": tuple(cv.sub(x) for x in self._arguments or []),
             "process": self.process_options(cv, with_name=False),
         }
 
@@ -140,6 +281,20 @@ class LifecycleNode(Node):
         super().__init__(name=name, namespace=namespace, **kwargs)
         self.autostart = False if autostart is _NOT_GIVEN else autostart
 
+    @property
+    def node_autostart(self) -> Any:
+        """Return whether the node is brought up on its own (launch_ros's API)."""
+        return typed(self.autostart)
+
+    @property
+    def is_lifecycle_node(self) -> bool:
+        """Return ``True`` (launch_ros's API)."""
+        return True
+
+    def get_lifecycle_event_manager(self) -> None:
+        """Return the manager launch_ros creates when executing: ``None`` until then."""
+        return None
+
     def to_ir(self, cv: Converter) -> a.Action:
         autostart = self.autostart if isinstance(self.autostart, bool) else cv.sub(
             self.autostart)
@@ -153,12 +308,12 @@ class ComposableNodeContainer(Node):
                  composable_node_descriptions: Iterable[Any] | None = None,
                  **kwargs: Any) -> None:
         super().__init__(name=name, namespace=namespace, **kwargs)
-        self.descriptions = list(composable_node_descriptions or [])
+        self._descriptions = list(composable_node_descriptions or [])
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.ComposableNodeContainer(
             **self.node_fields(cv),
-            composable_nodes=tuple(d.to_description(cv) for d in self.descriptions),
+            composable_nodes=tuple(d.to_description(cv) for d in self._descriptions),
         )
 
 
@@ -168,23 +323,23 @@ class LoadComposableNodes(Action):
     def __init__(self, *, composable_node_descriptions: Iterable[Any], target_container: Any,
                  **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.descriptions = list(composable_node_descriptions)
-        self.target_container = target_container
+        self._descriptions = list(composable_node_descriptions)
+        self._target_container = target_container
 
     def to_ir(self, cv: Converter) -> a.Action:
-        target = self.target_container
+        target = self._target_container
         if isinstance(target, ComposableNodeContainer):
             ir_target: s.Sub | a.Action = _container_name(target, cv)
         else:
             ir_target = cv.sub(target)
         return a.LoadComposableNodes(
             **cv_common(self, cv), target=ir_target,
-            composable_nodes=tuple(d.to_description(cv) for d in self.descriptions),
+            composable_nodes=tuple(d.to_description(cv) for d in self._descriptions),
         )
 
 
 def _container_name(container: ComposableNodeContainer, cv: Converter) -> s.Sub:
-    parts = [cv.sub(container.node_namespace), s.Text("/"), cv.sub(container.node_name_value)]
+    parts = [cv.sub(container._node_namespace), s.Text("/"), cv.sub(container._node_name)]
     return s.concat(parts)
 
 
@@ -193,10 +348,15 @@ class PushRosNamespace(Action):
 
     def __init__(self, namespace: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.namespace = namespace
+        self._namespace = namespace
+
+    @property
+    def namespace(self) -> list[Any]:
+        """Return the namespace as substitutions (launch_ros's API)."""
+        return normalized(self._namespace)  # type: ignore[no-any-return]
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.PushNamespace(**cv_common(self, cv), namespace=cv.sub(self.namespace))
+        return a.PushNamespace(**cv_common(self, cv), namespace=cv.sub(self._namespace))
 
 
 PushROSNamespace = PushRosNamespace
@@ -207,10 +367,20 @@ class SetRemap(Action):
 
     def __init__(self, src: Any, dst: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.src, self.dst = src, dst
+        self._src, self._dst = src, dst
+
+    @property
+    def src(self) -> list[Any]:
+        """Return what is remapped, as substitutions (launch_ros's API)."""
+        return normalized(self._src)  # type: ignore[no-any-return]
+
+    @property
+    def dst(self) -> list[Any]:
+        """Return what it is remapped to, as substitutions (launch_ros's API)."""
+        return normalized(self._dst)  # type: ignore[no-any-return]
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.SetRemap(**cv_common(self, cv), src=cv.sub(self.src), dst=cv.sub(self.dst))
+        return a.SetRemap(**cv_common(self, cv), src=cv.sub(self._src), dst=cv.sub(self._dst))
 
 
 class SetParameter(Action):
@@ -218,11 +388,21 @@ class SetParameter(Action):
 
     def __init__(self, name: Any, value: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.name, self.value = name, value
+        self._name, self._value = name, value
+
+    @property
+    def name(self) -> tuple[Any, ...]:
+        """Return the parameter's name: a tuple of substitutions (launch_ros's API)."""
+        return tuple(normalized(self._name))
+
+    @property
+    def value(self) -> Any:
+        """Return the value: scalars as given, substitutions as lists (launch_ros's API)."""
+        return typed(self._value)
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.SetParameter(**cv_common(self, cv), name=cv.sub(self.name),
-                              value=cv.param_value(self.value))
+        return a.SetParameter(**cv_common(self, cv), name=cv.sub(self._name),
+                              value=cv.param_value(self._value))
 
 
 class SetParametersFromFile(Action):
@@ -241,10 +421,15 @@ class SetUseSimTime(Action):
 
     def __init__(self, value: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.value = value
+        self._value = value
+
+    @property
+    def value(self) -> Any:
+        """Return the value: a bool, or substitutions (launch_ros's API)."""
+        return typed(self._value)
 
     def to_ir(self, cv: Converter) -> a.Action:
-        value = self.value if isinstance(self.value, bool) else cv.sub(self.value)
+        value = self._value if isinstance(self._value, bool) else cv.sub(self._value)
         return a.SetUseSimTime(**cv_common(self, cv), value=value)
 
 
@@ -253,10 +438,15 @@ class SetROSLogDir(Action):
 
     def __init__(self, new_log_dir: Any, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self.new_log_dir = new_log_dir
+        self._new_log_dir = new_log_dir
+
+    @property
+    def log_dir(self) -> list[Any]:
+        """Return the new log folder as substitutions (launch_ros's API)."""
+        return normalized(self._new_log_dir)  # type: ignore[no-any-return]
 
     def to_ir(self, cv: Converter) -> a.Action:
-        return a.SetRosLogDir(**cv_common(self, cv), new_log_dir=cv.sub(self.new_log_dir))
+        return a.SetRosLogDir(**cv_common(self, cv), new_log_dir=cv.sub(self._new_log_dir))
 
 
 class RosTimer(TimerAction):
@@ -270,6 +460,16 @@ ROSTimer = RosTimer
 
 class LifecycleTransition(Action):
     """``LifecycleTransition(*, lifecycle_node_names, transition_ids)``."""
+
+    transition_targets = {
+        1: {"start_state": "configuring", "goal_state": "inactive"},
+        2: {"start_state": "cleaningup", "goal_state": "unconfigured"},
+        3: {"start_state": "activating", "goal_state": "active"},
+        4: {"start_state": "deactivating", "goal_state": "inactive"},
+        5: {"start_state": "shuttingdown", "goal_state": "finalized"},
+        6: {"start_state": "shuttingdown", "goal_state": "finalized"},
+        7: {"start_state": "shuttingdown", "goal_state": "finalized"},
+    }
 
     def __init__(self, *, lifecycle_node_names: Iterable[Any], transition_ids: Iterable[Any],
                  **kwargs: Any) -> None:
@@ -292,18 +492,37 @@ class LifecycleTransition(Action):
 # ----------------------------------------------------------------------------- substitutions
 
 
-class FindPackageShare(PathJoinSubstitution):
-    """``FindPackageShare(package)`` (a ``PathSubstitution`` in rolling: ``/`` appends)."""
+class _FindPackageBase(PathJoinSubstitution):
+    """What launch_ros's ``FindPackage`` substitutions share: a ``PathSubstitution`` of itself."""
 
     def __init__(self, package: Any) -> None:
-        super().__init__([])
-        self.package = package
+        super().__init__([self])
+        self._package = package
+
+    @property
+    def package(self) -> list[Any]:
+        """Return the package as substitutions (launch_ros's API)."""
+        return normalized(self._package)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"{type(self).__name__}(pkg={described(self._package)})"
+
+
+class FindPackagePrefix(_FindPackageBase):
+    """``FindPackagePrefix(package)`` (``/`` appends)."""
+
+    def find(self, package_name: str) -> str:
+        """Return the package's install prefix (launch_ros's API)."""
+        from launchverify.models.launch_api.ament import get_package_prefix
+
+        return get_package_prefix(package_name)
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.FindPackageShare(cv.sub(self.package))
+        return s.FindPackagePrefix(cv.sub(self._package))
 
-    def __truediv__(self, other: Any) -> PathJoinSubstitution:
-        return PathJoinSubstitution([self, other])
+
+class FindPackageShare(_FindPackageBase):
+    """``FindPackageShare(package)`` (``/`` appends)."""
 
     def find(self, package_name: str) -> str:
         """Return the share folder (launch_ros's API)."""
@@ -311,34 +530,32 @@ class FindPackageShare(PathJoinSubstitution):
 
         return get_package_share_directory(package_name)
 
-
-class FindPackagePrefix(PathJoinSubstitution):
-    """``FindPackagePrefix(package)`` (a ``PathSubstitution`` in rolling)."""
-
-    def __init__(self, package: Any) -> None:
-        super().__init__([])
-        self.package = package
-
-    def __truediv__(self, other: Any) -> PathJoinSubstitution:
-        return PathJoinSubstitution([self, other])
-
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.FindPackagePrefix(cv.sub(self.package))
+        return s.FindPackageShare(cv.sub(self._package))
 
 
 class FindPackage(FindPackagePrefix):
-    """``FindPackage(package)`` (the old name of FindPackagePrefix)."""
+    """``FindPackage(package)``: launch_ros's base of the two; taken as FindPackagePrefix."""
 
 
-class ExecutableInPackage(Substitution):
+class ExecutableInPackage(FindPackagePrefix):
     """``ExecutableInPackage(executable, package)``."""
 
     def __init__(self, executable: Any, package: Any) -> None:
-        super().__init__()
-        self.executable, self.package = executable, package
+        super().__init__(package)
+        self._executable = executable
+
+    @property
+    def executable(self) -> list[Any]:
+        """Return the executable as substitutions (launch_ros's API)."""
+        return normalized(self._executable)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return (f"ExecInPkg(pkg={described(self._package)}, "
+                f"exec={described(self._executable)})")
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.ExecutableInPackage(cv.sub(self.executable), cv.sub(self.package))
+        return s.ExecutableInPackage(cv.sub(self._executable), cv.sub(self._package))
 
 
 class ParameterSubstitution(Substitution):
@@ -346,7 +563,12 @@ class ParameterSubstitution(Substitution):
 
     def __init__(self, name: Any, *, default: Any = None) -> None:
         super().__init__()
-        self.name, self.default = name, default
+        self._name, self._default = name, default
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the parameter's name as substitutions (launch_ros's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.RosParameter(cv.sub(self.name), cv.opt_sub(self.default))
+        return s.RosParameter(cv.sub(self._name), cv.opt_sub(self._default))

@@ -6,6 +6,7 @@ arguments and turns them into the IR expression of ``launchverify.ir.subst``.
 
 from __future__ import annotations
 
+import operator
 from collections.abc import Iterable
 from typing import Any
 
@@ -15,8 +16,12 @@ from launchverify.models.launch_api.base import (
     Condition,
     Converter,
     Substitution,
+    _unknown,
     check_substitutions,
+    described,
+    normalized,
 )
+from launchverify.models.launch_api.placeholders import placeholder
 
 
 class TextSubstitution(Substitution):
@@ -26,10 +31,21 @@ class TextSubstitution(Substitution):
         super().__init__()
         if not isinstance(text, str):
             raise TypeError(f"TextSubstitution expected Text object got '{type(text)}' instead.")
-        self.text = text
+        self._text = text
+
+    @property
+    def text(self) -> str:
+        """Return the text (launch's API)."""
+        return self._text
+
+    def describe(self) -> str:
+        return f"'{self._text}'"
+
+    def perform(self, context: Any) -> str:
+        return self._text
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return cv.sub(self.text)
+        return cv.sub(self._text)
 
 
 class LaunchConfiguration(Substitution):
@@ -37,15 +53,23 @@ class LaunchConfiguration(Substitution):
 
     def __init__(self, variable_name: Any, *, default: Any = None) -> None:
         super().__init__()
-        self.variable_name = variable_name
-        self.default = default
+        self._variable_name = variable_name
+        self._default = default
+
+    @property
+    def variable_name(self) -> list[Any]:
+        """Return the name as a list of substitutions (launch's API)."""
+        return normalized(self._variable_name)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"LaunchConfig({described(self._variable_name)})"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        default = None if self.default is None else cv.sub(
-            self.default if not isinstance(self.default, (list, tuple)) or self.default
+        default = None if self._default is None else cv.sub(
+            self._default if not isinstance(self._default, (list, tuple)) or self._default
             else ""
         )
-        return s.LaunchConfig(cv.sub(self.variable_name), default)
+        return s.LaunchConfig(cv.sub(self._variable_name), default)
 
 
 class EnvironmentVariable(Substitution):
@@ -53,11 +77,24 @@ class EnvironmentVariable(Substitution):
 
     def __init__(self, name: Any, *, default_value: Any = None) -> None:
         super().__init__()
-        self.name = name
-        self.default_value = default_value
+        self._name = name
+        self._default_value = default_value
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the variable's name as substitutions (launch's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
+
+    @property
+    def default_value(self) -> list[Any] | None:
+        """Return the default as substitutions, or ``None`` (launch's API)."""
+        return normalized(self._default_value)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"EnvVar({described(self._name)})"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.EnvVar(cv.sub(self.name), cv.opt_sub(self.default_value))
+        return s.EnvVar(cv.sub(self._name), cv.opt_sub(self._default_value))
 
 
 class PythonExpression(Substitution):
@@ -65,21 +102,36 @@ class PythonExpression(Substitution):
 
     def __init__(self, expression: Any, python_modules: Any = None) -> None:
         super().__init__()
-        self.expression = expression
-        self.python_modules = python_modules
+        self._expression = expression
+        self._python_modules = python_modules
+
+    @property
+    def expression(self) -> list[Any]:
+        """Return the expression as substitutions (launch's API)."""
+        return normalized(self._expression)  # type: ignore[no-any-return]
+
+    @property
+    def python_modules(self) -> list[Any]:
+        """Return the modules to import, as substitutions (launch's API)."""
+        modules = ["math"] if self._python_modules is None else self._python_modules
+        return normalized(modules)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        modules = ", ".join(sub.describe() for sub in self.python_modules)
+        return f"PythonExpr({described(self._expression)}, [{modules}])"
 
     def to_sub(self, cv: Converter) -> s.Sub:
         modules = None
-        if self.python_modules is not None:
-            names = self.python_modules if isinstance(self.python_modules, (list, tuple)) else [
-                self.python_modules]
+        if self._python_modules is not None:
+            names = self._python_modules if isinstance(
+                self._python_modules, (list, tuple)) else [self._python_modules]
             parts: list[s.Sub] = []
             for index, name in enumerate(names):
                 if index:
                     parts.append(s.Text(","))
                 parts.append(cv.sub(name))
             modules = s.concat(parts)
-        return s.PythonExpr(cv.sub(self.expression), modules)
+        return s.PythonExpr(cv.sub(self._expression), modules)
 
 
 class Command(Substitution):
@@ -87,14 +139,27 @@ class Command(Substitution):
 
     def __init__(self, command: Any, *, on_stderr: Any = "fail") -> None:
         super().__init__()
-        self.command = command
-        self.on_stderr = on_stderr
+        self._command = command
+        self._on_stderr = on_stderr
+
+    @property
+    def command(self) -> list[Any]:
+        """Return the command line as substitutions (launch's API)."""
+        return normalized(self._command)  # type: ignore[no-any-return]
+
+    @property
+    def on_stderr(self) -> list[Any]:
+        """Return what to do with output on stderr, as substitutions (launch's API)."""
+        return normalized(self._on_stderr)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"Command({described(self._command)})"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        command = self.command
+        command = self._command
         if isinstance(command, (list, tuple)):
             command = list(command)
-        return s.Command(cv.sub(command), cv.opt_sub(self.on_stderr))
+        return s.Command(cv.sub(command), cv.opt_sub(self._on_stderr))
 
 
 class FindExecutable(Substitution):
@@ -102,10 +167,18 @@ class FindExecutable(Substitution):
 
     def __init__(self, *, name: Any) -> None:
         super().__init__()
-        self.name = name
+        self._name = name
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the executable's name as substitutions (launch's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"FindExec({described(self._name)})"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.FindExecutable(cv.sub(self.name))
+        return s.FindExecutable(cv.sub(self._name))
 
 
 class PathJoinSubstitution(Substitution):
@@ -113,38 +186,63 @@ class PathJoinSubstitution(Substitution):
 
     def __init__(self, substitutions: Iterable[Any]) -> None:
         super().__init__()
-        self.substitutions = list(substitutions)
+        self._parts = list(substitutions)
+
+    @property
+    def substitutions(self) -> list[list[Any]]:
+        """Return the path components, each a list of substitutions (launch's API)."""
+        return [normalized(part) for part in self._parts]
+
+    def __repr__(self) -> str:
+        parts = ", ".join(described(part) for part in self._parts)
+        return f"PathJoinSubstitution('{parts}')"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.PathJoin(tuple(cv.sub(part) for part in self.substitutions))
+        return s.PathJoin(tuple(cv.sub(part) for part in self._parts))
 
     def __truediv__(self, other: Any) -> PathJoinSubstitution:
-        return PathJoinSubstitution([*self.substitutions, other])
+        return PathJoinSubstitution([*self._parts, other])
 
 
 class PathSubstitution(PathJoinSubstitution):
-    """``PathSubstitution(path)`` (rolling): a path to build on with ``/``."""
+    """``PathSubstitution(path)``: each substitution of ``path`` is a path component."""
 
     def __init__(self, path: Any) -> None:
-        super().__init__([path])
+        parts = [path] if isinstance(path, (str, Substitution)) or _unknown(path) else list(path)
+        super().__init__(parts)
 
 
 class ThisLaunchFile(Substitution):
     """``ThisLaunchFile()``."""
 
+    def describe(self) -> str:
+        return "ThisLaunchFile()"
+
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.ThisLaunchFile()
 
 
-class ThisLaunchFileDir(Substitution):
-    """``ThisLaunchFileDir()``."""
+class ThisLaunchFileDir(PathJoinSubstitution):
+    """``ThisLaunchFileDir()``: a ``PathSubstitution`` of itself (``/`` appends)."""
+
+    def __init__(self) -> None:
+        super().__init__([self])
+
+    def describe(self) -> str:
+        return "ThisLaunchFileDir()"
 
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.ThisLaunchFileDir()
 
 
-class LaunchLogDir(Substitution):
-    """``LaunchLogDir()``."""
+class LaunchLogDir(PathJoinSubstitution):
+    """``LaunchLogDir()``: a ``PathSubstitution`` of itself (``/`` appends)."""
+
+    def __init__(self) -> None:
+        super().__init__([self])
+
+    def describe(self) -> str:
+        return "LaunchLogDir()"
 
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.LaunchLogDir()
@@ -155,10 +253,22 @@ class AnonName(Substitution):
 
     def __init__(self, name: Any) -> None:
         super().__init__()
-        self.name = name
+        self._name = name
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the name as substitutions (launch's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"AnonName({described(self._name)})"
+
+    def compute_name(self, id_value: str) -> str:
+        """Return an anonymous name: host, process and a random number, unknown statically."""
+        return placeholder("opaque", f"anonymous name for {id_value}")
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.AnonName(cv.sub(self.name))
+        return s.AnonName(cv.sub(self._name))
 
 
 class LocalSubstitution(Substitution):
@@ -166,10 +276,25 @@ class LocalSubstitution(Substitution):
 
     def __init__(self, expression: str, description: str | None = None) -> None:
         super().__init__()
-        self.expression = expression
+        self._expression = expression
+        self._description = description
+
+    @property
+    def expression(self) -> str:
+        """Return the expression on ``context.locals`` (launch's API)."""
+        return self._expression
+
+    @property
+    def description(self) -> str | None:
+        """Return the description given (launch's API)."""
+        return self._description
+
+    def describe(self) -> str:
+        shown = self._expression if self._description is None else self._description
+        return f"LocalVar('{shown}')"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.LocalSub(self.expression)
+        return s.LocalSub(self._expression)
 
 
 class NotSubstitution(Substitution):
@@ -177,54 +302,95 @@ class NotSubstitution(Substitution):
 
     def __init__(self, value: Any) -> None:
         super().__init__()
-        self.value = value
+        self._value = value
+
+    @property
+    def value(self) -> list[Any]:
+        """Return the operand as substitutions (launch's API)."""
+        return normalized(self._value)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"NotSubstitution({self.value})"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.NotSub(cv.sub(self.value))
+        return s.NotSub(cv.sub(self._value))
 
 
-class AndSubstitution(Substitution):
+class _BinarySubstitution(Substitution):
+    """What ``AndSubstitution`` and ``OrSubstitution`` share (left and right operands)."""
+
+    func: Any = None
+
+    def __init__(self, left: Any, right: Any) -> None:
+        super().__init__()
+        self._left, self._right = left, right
+
+    @property
+    def left(self) -> list[Any]:
+        """Return the left operand as substitutions (launch's API)."""
+        return normalized(self._left)  # type: ignore[no-any-return]
+
+    @property
+    def right(self) -> list[Any]:
+        """Return the right operand as substitutions (launch's API)."""
+        return normalized(self._right)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"{type(self).__name__}({self.left} {self.right})"
+
+
+class AndSubstitution(_BinarySubstitution):
     """``AndSubstitution(left, right)``."""
 
-    def __init__(self, left: Any, right: Any) -> None:
-        super().__init__()
-        self.left, self.right = left, right
+    func = staticmethod(operator.and_)
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.AndSub(cv.sub(self.left), cv.sub(self.right))
+        return s.AndSub(cv.sub(self._left), cv.sub(self._right))
 
 
-class OrSubstitution(Substitution):
+class OrSubstitution(_BinarySubstitution):
     """``OrSubstitution(left, right)``."""
 
-    def __init__(self, left: Any, right: Any) -> None:
-        super().__init__()
-        self.left, self.right = left, right
+    func = staticmethod(operator.or_)
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.OrSub(cv.sub(self.left), cv.sub(self.right))
+        return s.OrSub(cv.sub(self._left), cv.sub(self._right))
 
 
-class AnySubstitution(Substitution):
-    """``AnySubstitution(*args)``."""
+class _ContainerSubstitution(Substitution):
+    """What ``AnySubstitution`` and ``AllSubstitution`` share."""
 
-    def __init__(self, *args: Any) -> None:
+    func: Any = None
+
+    def __init__(self, *args: Any, container: Any = None) -> None:
         super().__init__()
-        self.args = args
+        self._args = (*args, *(container or ()))
+
+    @property
+    def args(self) -> list[list[Any]]:
+        """Return the operands, each as substitutions (launch's API)."""
+        return [normalized(arg) for arg in self._args]
+
+    def describe(self) -> str:
+        return f"{type(self).__name__}({' '.join(str(arg) for arg in self.args)})"
+
+
+class AnySubstitution(_ContainerSubstitution):
+    """``AnySubstitution(*args, container=None)``."""
+
+    func = staticmethod(any)
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.AnySub(tuple(cv.sub(arg) for arg in self.args))
+        return s.AnySub(tuple(cv.sub(arg) for arg in self._args))
 
 
-class AllSubstitution(Substitution):
-    """``AllSubstitution(*args)``."""
+class AllSubstitution(_ContainerSubstitution):
+    """``AllSubstitution(*args, container=None)``."""
 
-    def __init__(self, *args: Any) -> None:
-        super().__init__()
-        self.args = args
+    func = staticmethod(all)
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.AllSub(tuple(cv.sub(arg) for arg in self.args))
+        return s.AllSub(tuple(cv.sub(arg) for arg in self._args))
 
 
 class EqualsSubstitution(Substitution):
@@ -232,21 +398,30 @@ class EqualsSubstitution(Substitution):
 
     def __init__(self, left: Any, right: Any) -> None:
         super().__init__()
-        self.left, self.right = left, right
+        self._left, self._right = _equals_text(left), _equals_text(right)
+
+    @property
+    def left(self) -> list[Any]:
+        """Return the left operand as substitutions (launch's API)."""
+        return normalized(self._left)  # type: ignore[no-any-return]
+
+    @property
+    def right(self) -> list[Any]:
+        """Return the right operand as substitutions (launch's API)."""
+        return normalized(self._right)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"{type(self).__name__}({self.left} {self.right})"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.EqualsSub(cv.sub(_equals_text(self.left)), cv.sub(_equals_text(self.right)))
+        return s.EqualsSub(cv.sub(self._left), cv.sub(self._right))
 
 
-class NotEqualsSubstitution(Substitution):
+class NotEqualsSubstitution(EqualsSubstitution):
     """``NotEqualsSubstitution(left, right)``."""
 
-    def __init__(self, left: Any, right: Any) -> None:
-        super().__init__()
-        self.left, self.right = left, right
-
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.NotEqualsSub(cv.sub(_equals_text(self.left)), cv.sub(_equals_text(self.right)))
+        return s.NotEqualsSub(cv.sub(self._left), cv.sub(self._right))
 
 
 def _equals_text(value: Any) -> Any:
@@ -267,10 +442,29 @@ class IfElseSubstitution(Substitution):
         super().__init__()
         if not if_value and not else_value:
             raise RuntimeError("One of if_value and else_value must be specified")
-        self.condition, self.if_value, self.else_value = condition, if_value, else_value
+        self._condition, self._if_value, self._else_value = condition, if_value, else_value
+
+    @property
+    def condition(self) -> list[Any]:
+        """Return the condition as substitutions (launch's API)."""
+        return normalized(self._condition)  # type: ignore[no-any-return]
+
+    @property
+    def if_value(self) -> list[Any]:
+        """Return the value when true, as substitutions (launch's API)."""
+        return normalized(self._if_value)  # type: ignore[no-any-return]
+
+    @property
+    def else_value(self) -> list[Any]:
+        """Return the value when false, as substitutions (launch's API)."""
+        return normalized(self._else_value)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"IfElseSubstitution({self.condition}, {self.if_value}, {self.else_value})"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.IfElse(cv.sub(self.condition), cv.sub(self.if_value), cv.sub(self.else_value))
+        return s.IfElse(cv.sub(self._condition), cv.sub(self._if_value),
+                        cv.sub(self._else_value))
 
 
 class FileContent(Substitution):
@@ -278,10 +472,18 @@ class FileContent(Substitution):
 
     def __init__(self, path: Any) -> None:
         super().__init__()
-        self.path = path
+        self._path = path
+
+    @property
+    def path(self) -> list[Any]:
+        """Return the file's path as substitutions (launch's API)."""
+        return normalized(self._path)  # type: ignore[no-any-return]
+
+    def describe(self) -> str:
+        return f"FileContent({', '.join(sub.describe() for sub in self.path)})"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.FileContent(cv.sub(self.path))
+        return s.FileContent(cv.sub(self._path))
 
 
 class StringJoinSubstitution(Substitution):
@@ -289,12 +491,22 @@ class StringJoinSubstitution(Substitution):
 
     def __init__(self, substitutions: Iterable[Any], delimiter: Any = "") -> None:
         super().__init__()
-        self.substitutions = list(substitutions)
-        self.delimiter = delimiter
+        self._parts = list(substitutions)
+        self._delimiter = delimiter
+
+    @property
+    def substitutions(self) -> list[list[Any]]:
+        """Return the parts, each a list of substitutions (launch's API)."""
+        return [normalized(part) for part in self._parts]
+
+    @property
+    def delimiter(self) -> list[Any]:
+        """Return the delimiter as substitutions (launch's API)."""
+        return normalized(self._delimiter)  # type: ignore[no-any-return]
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.StringJoin(cv.sub(self.delimiter),
-                            tuple(cv.sub(part) for part in self.substitutions))
+        return s.StringJoin(cv.sub(self._delimiter),
+                            tuple(cv.sub(part) for part in self._parts))
 
 
 class ForEachVar(Substitution):
@@ -302,21 +514,39 @@ class ForEachVar(Substitution):
 
     def __init__(self, name: Any, *, default_value: Any = None) -> None:
         super().__init__()
-        self.name, self.default_value = name, default_value
+        self._name, self._default_value = name, default_value
+
+    @property
+    def name(self) -> list[Any]:
+        """Return the variable's name as substitutions (launch's API)."""
+        return normalized(self._name)  # type: ignore[no-any-return]
+
+    @property
+    def default_value(self) -> list[Any] | None:
+        """Return the default as substitutions, or ``None`` (launch's API)."""
+        return normalized(self._default_value)  # type: ignore[no-any-return]
+
+    @classmethod
+    def get_local_arg_name(cls, name: str) -> str:
+        """Return the name of the context local holding the value (launch's API)."""
+        return f"ForEachVar__{name}"
+
+    def describe(self) -> str:
+        return (f"{type(self).__name__}(name={described(self._name)}, "
+                f"default_value={described(self._default_value or [])})")
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.ForEachVar(cv.sub(self.name), cv.opt_sub(self.default_value))
+        return s.ForEachVar(cv.sub(self._name), cv.opt_sub(self._default_value))
 
 
-class ForLoopIndex(Substitution):
+class ForLoopIndex(ForEachVar):
     """``ForLoopIndex(name)`` (kilted, rolling)."""
 
-    def __init__(self, name: Any) -> None:
-        super().__init__()
-        self.name = name
+    def __init__(self, name: Any, **kwargs: Any) -> None:
+        super().__init__(name)
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.ForLoopIndex(cv.sub(self.name))
+        return s.ForLoopIndex(cv.sub(self._name))
 
 
 # ---------------------------------------------------------------------------- conditions
@@ -327,21 +557,21 @@ class IfCondition(Condition):
 
     def __init__(self, predicate_expression: Any) -> None:
         super().__init__()
-        self.predicate_expression = check_substitutions(predicate_expression)
+        self._predicate_expression = check_substitutions(predicate_expression)
+
+    def _predicate_func(self, context: Any) -> bool:
+        """Return whether the condition holds in ``context`` (what ``evaluate`` calls)."""
+        return Condition.evaluate(self, context)
 
     def to_condition(self, cv: Converter) -> c.Condition:
-        return c.IfCondition(cv.sub(self.predicate_expression))
+        return c.IfCondition(cv.sub(self._predicate_expression))
 
 
-class UnlessCondition(Condition):
-    """``UnlessCondition(predicate_expression)``."""
-
-    def __init__(self, predicate_expression: Any) -> None:
-        super().__init__()
-        self.predicate_expression = check_substitutions(predicate_expression)
+class UnlessCondition(IfCondition):
+    """``UnlessCondition(predicate_expression)`` (an ``IfCondition`` negated, as in launch)."""
 
     def to_condition(self, cv: Converter) -> c.Condition:
-        return c.UnlessCondition(cv.sub(self.predicate_expression))
+        return c.UnlessCondition(cv.sub(self._predicate_expression))
 
 
 class LaunchConfigurationEquals(Condition):
@@ -351,10 +581,14 @@ class LaunchConfigurationEquals(Condition):
 
     def __init__(self, launch_configuration_name: str, expected_value: Any) -> None:
         super().__init__()
-        self.name, self.expected_value = launch_configuration_name, expected_value
+        self._name, self._expected_value = launch_configuration_name, expected_value
+
+    def _predicate_func(self, context: Any) -> bool:
+        """Return whether the condition holds in ``context`` (what ``evaluate`` calls)."""
+        return Condition.evaluate(self, context)
 
     def to_condition(self, cv: Converter) -> c.Condition:
-        return c.ConfigEquals(cv.sub(self.name), cv.opt_sub(self.expected_value), self.negate)
+        return c.ConfigEquals(cv.sub(self._name), cv.opt_sub(self._expected_value), self.negate)
 
 
 class LaunchConfigurationNotEquals(LaunchConfigurationEquals):
@@ -364,14 +598,20 @@ class LaunchConfigurationNotEquals(LaunchConfigurationEquals):
 
 
 class FunctionCondition(Condition):
-    """``launch.Condition(predicate=callable)``: opaque."""
+    """``launch.Condition(predicate=callable)``: the predicate runs in OpaqueFunctions."""
 
     def __init__(self, *, predicate: Any = None) -> None:
         super().__init__()
-        self.predicate = predicate
+        self._predicate = predicate
+
+    def evaluate(self, context: Any) -> bool:
+        """Call the predicate with ``context`` (``False`` without one), as launch does."""
+        if self._predicate is None:
+            return False
+        return self._predicate(context)  # type: ignore[no-any-return]
 
     def to_condition(self, cv: Converter) -> c.Condition:
-        if self.predicate is None:
+        if self._predicate is None:
             return c.IfCondition(s.Text("false"))
-        name = getattr(self.predicate, "__name__", "a callable")
+        name = getattr(self._predicate, "__name__", "a callable")
         return c.OpaqueCondition(f"condition {name}()")

@@ -225,11 +225,11 @@ class _Session:
                 required = _required_parameters(entry)
                 if required:
                     # A test script's helper, called by its own main(): not a launch file.
-                    code = getattr(entry, "__code__", None)
+                    body = getattr(entry, "__code__", None)
                     self.sink.unmodeled(
                         f"{entry.__name__}() takes parameters ({', '.join(required)}): not "
                         "a launch file ros2 launch can start; not checked",
-                        Span(self.path, code.co_firstlineno if code is not None else 1))
+                        Span(self.path, body.co_firstlineno if body is not None else 1))
                     return None
                 result = entry()
         except BaseException as error:  # the user's code: anything may come out
