@@ -59,6 +59,7 @@ class _Located:
     """Where a reducer's problems and records point, and how it reports them."""
 
     prefix = ""
+    contextual = False  # its failures rest on argument values an includer may replace
 
     def __init__(self, walker: Walker) -> None:
         self.walker = walker
@@ -72,7 +73,8 @@ class _Located:
 
     def fail(self, message: str) -> None:
         assert self.span is not None
-        self.walker.problem(ProblemKind.EVALUATION, self.prefix + message, self.span, self.ctx)
+        self.walker.problem(ProblemKind.EVALUATION, self.prefix + message, self.span, self.ctx,
+                            contextual=self.contextual)
 
     def unmodeled(self, message: str) -> None:
         assert self.span is not None
@@ -213,6 +215,7 @@ class DefaultsReducer(_Located, BaseReducer):
     """
 
     prefix = "with the default arguments, "
+    contextual = True  # an includer passes other values: reported where launched directly
 
     def __init__(self, walker: Walker) -> None:
         BaseReducer.__init__(self, walker.graph.inputs())
