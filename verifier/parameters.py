@@ -16,7 +16,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from launchverify.graph import LaunchGraph, NodeRecord, ParamRecord
-from launchverify.ir.subst import Sub
+from launchverify.ir.subst import Sub, walk
+from launchverify.ir.symbolic import Arg
 from launchverify.models.parameter_values import typed_parameter
 from launchverify.models.ros_names import node_key_matches
 from launchverify.span import Span
@@ -148,6 +149,8 @@ def _inline_value(graph: LaunchGraph, param: ParamRecord) -> object:
     """Return an inline value as the node receives it (``None`` when not known)."""
     value = param.value
     if isinstance(value, Sub):
+        if _includer_decides(graph, value):
+            return None
         text = graph.base(value)
         return None if text is None else typed_parameter(text, param.value_type)
     if isinstance(value, tuple):
@@ -156,8 +159,19 @@ def _inline_value(graph: LaunchGraph, param: ParamRecord) -> object:
     return value
 
 
+def _includer_decides(graph: LaunchGraph, value: Sub) -> bool:
+    """Return whether a value rests on arguments of a file meant to be included.
+
+    Its includers pass their own values (a list where the default is one topic): what the
+    default gives is no claim to make on the file alone.
+    """
+    return not graph.launchable_alone() and any(isinstance(part, Arg) for part in walk(value))
+
+
 def _inline_item(graph: LaunchGraph, item: object, value_type: str | None) -> object:
     if isinstance(item, Sub):
+        if _includer_decides(graph, item):
+            return None
         text = graph.base(item)
         return None if text is None else typed_parameter(text, value_type)
     return item
