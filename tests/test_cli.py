@@ -160,3 +160,17 @@ def test_command_line_argument_typo(capsys: pytest.CaptureFixture[str]) -> None:
     assert "rihgt:=camera_right" in finding["message"]
     assert "did you mean 'right'" in finding["message"]
     assert finding["line"] == 1
+
+
+def test_graph_says_whether_the_file_is_launched_directly(tmp_path: Path,
+                                                          capsys: pytest.CaptureFixture[str]
+                                                          ) -> None:
+    (tmp_path / "part.launch.xml").write_text('<launch><node pkg="a" exec="b" name="c"/>'
+                                              "</launch>")
+    (tmp_path / "top.launch.xml").write_text('<launch><include file="$(dirname)/'
+                                             'part.launch.xml"/></launch>')
+    assert main(["graph", str(tmp_path / "part.launch.xml")]) == 0
+    view = json.loads(capsys.readouterr().out)["view"]
+    assert view["launched_directly"] is False and "includes it" in view["why"]
+    assert main(["graph", str(tmp_path / "top.launch.xml"), "--format", "text"]) == 0
+    assert capsys.readouterr().out.startswith("launched directly: ")

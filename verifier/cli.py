@@ -33,6 +33,7 @@ from launchverify.findings.baseline import BaselineError, write_baseline
 from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.rule import Rule, Severity
+from launchverify.workspace.includers import Includers
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 
@@ -448,6 +449,7 @@ def _graph(args: argparse.Namespace) -> int:
     workspace, index = build_index([path], args.workspace)
     graph = evaluate(canonical(path), index=index, workspace=workspace, pinned=arguments,
                      environment=parse_environment(args.env))
+    graph.included_elsewhere = Includers.of_workspace(index.workspaces).included(graph.root)
     with _output_may_close():
         if args.format == "json":
             render_graph_json(graph, sys.stdout, symbolic=args.symbolic)

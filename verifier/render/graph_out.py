@@ -122,6 +122,7 @@ class GraphView:
         """Return the whole graph as the documented JSON object."""
         graph = self.graph
         return {
+            "view": view(graph),
             "nodes": [self.node(n) for n in graph.nodes if self.shown(n.origin)],
             "processes": [
                 {"cmd": [self.value(c) for c in p.cmd], "name": self.value(p.settings.name),
@@ -186,6 +187,18 @@ def _has_inputs(sub: Sub) -> bool:
     return any(isinstance(x, (Arg, EnvInput, Select)) for x in walk(sub))
 
 
+def view(graph: LaunchGraph) -> dict[str, Any]:
+    """Say how the root was judged: launched directly, or meant to be included, and why."""
+    if graph.included_elsewhere:
+        return {"launched_directly": False, "why": "another launch file of the workspace "
+                "includes it: what its includers would provide is not held against it"}
+    if not graph.launchable_alone():
+        return {"launched_directly": False, "why": "it declares arguments without defaults: "
+                "what values given for them would fix is not held against it"}
+    return {"launched_directly": True, "why": "no launch file of the workspace includes it: "
+            "what ros2 launch would fail on is reported"}
+
+
 def render_graph_json(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False) -> None:
     """Write the graph as JSON."""
     json.dump(GraphView(graph, symbolic).document(), out, indent=2)
@@ -195,6 +208,8 @@ def render_graph_json(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
 def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False) -> None:
     """Write the graph as an indented listing."""
     doc = GraphView(graph, symbolic).document()
+    out.write(f"{'launched directly' if doc['view']['launched_directly'] else 'included'}: "
+              f"{doc['view']['why']}\n")
     for node in doc["nodes"]:
         label = node["fqn"] or f"<unnamed {node['executable']}>"
         kind = "" if node["kind"] == "node" else f" [{node['kind']}]"
