@@ -5,7 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph, Origin
-from launchverify.ir.walk import configuration_names
+from launchverify.ir import actions as a
+from launchverify.ir import subst as s
+from launchverify.ir.walk import configuration_names, iter_subs
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.span import Span
 from launchverify.suggest import did_you_mean
@@ -33,6 +35,9 @@ class UnknownIncludeArgument(Rule):
 
     ## Fix
     Use the name the included file declares, or declare the argument there.
+
+    An argument that later arguments of the same include read (`$(var common_dir)/a.yaml`)
+    is a helper the includer computes with, and is not reported.
     """
 
     code = "LV204"
@@ -52,6 +57,7 @@ class UnknownIncludeArgument(Rule):
                 launch = graph.files[path].launch if path in graph.files else None
                 if launch is not None:
                     known |= configuration_names(launch)
+            known |= helper_names(include.action)
             for name, _value, span in include.arguments:
                 if name is None or name in known:
                     continue
@@ -71,3 +77,17 @@ class UnknownIncludeArgument(Rule):
             yield self.finding(Span.of_file(graph.root), name=f"{name}:={graph.pinned[name]}",
                                target=graph.root.name + " (given on the command line)",
                                hint=did_you_mean(name, known))
+
+
+def helper_names(include: a.Include) -> set[str]:
+    """Return the names the include's own argument values read.
+
+    launch sets an include's arguments one after another, so an argument may exist only to
+    build the values of the ones after it.
+    """
+    return {
+        sub.name.text
+        for argument in include.arguments
+        for sub in iter_subs(argument.value)
+        if isinstance(sub, s.LaunchConfig) and isinstance(sub.name, s.Text)
+    }

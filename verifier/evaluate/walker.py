@@ -402,12 +402,6 @@ class Walker:
             return
         record.target = target
         record.relative = not Path(path_text).is_absolute()
-        # Re-entering a file with the same arguments can only recurse forever; with other
-        # arguments it may terminate (a recursion guarded by a condition), up to a depth.
-        key = (target, self.include_key(action, ctx))
-        if key in self.file_stack or len(self.file_stack) >= MAX_INCLUDE_DEPTH:
-            record.status = "cycle"
-            return
         inner = dataclasses.replace(ctx, file=target, chain=(*ctx.chain, action.span))
         loaded = self.load(target, inner)
         if loaded.launch is None:
@@ -420,7 +414,7 @@ class Walker:
         # include argument is the included file's folder.
         self.current_file = target  # and never restores it (before rolling 3.9.6)
         arguments = []
-        for argument in action.arguments:
+        for argument in action.arguments:  # one after another: later ones see earlier ones
             arg_reducer = self.reducer.at(ctx, argument.span)
             name = arg_reducer.text(argument.name)
             value = arg_reducer.reduce(argument.value)
@@ -428,6 +422,12 @@ class Walker:
             if name is not None:
                 self.scopes.set(name, value, ctx.path)
         record.arguments = tuple(arguments)
+        # Re-entering a file with the same arguments can only recurse forever; with other
+        # arguments it may terminate (a recursion guarded by a condition), up to a depth.
+        key = (target, tuple(sorted((name, value.describe()) for name, value, _ in arguments)))
+        if key in self.file_stack or len(self.file_stack) >= MAX_INCLUDE_DEPTH:
+            record.status = "cycle"
+            return
         missing = record.missing_required()
         if missing:  # launch raises here: what the file would start is not certain to run
             inner = inner.guarded(_opaque(f"{target.name} misses required argument "
@@ -440,14 +440,6 @@ class Walker:
         finally:
             self.file_stack.pop()
             self.include_stack.pop()
-
-    def include_key(self, action: a.Include, ctx: Ctx) -> tuple[tuple[str | None, str], ...]:
-        """Return the include's arguments as text, to tell a cycle from a recursion."""
-        reducer = self.reducer.at(ctx, action.span)
-        return tuple(sorted(
-            (reducer.text(arg.name), reducer.reduce(arg.value).describe())
-            for arg in action.arguments
-        ))
 
     def in_workspace(self, path: Path) -> bool:
         """Return whether a missing file would belong to the checked tree."""
