@@ -365,6 +365,9 @@ class LaunchGraph:
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into
+    # An OpaqueFunction stopped at a configuration nobody set: its reads before that point
+    # are known (LV201 judges them), what it would have read or started after is not.
+    stopped_early: bool = False
     # Reads a workspace file for values that depend on file content (set by the evaluator).
     file_reader: Callable[[str], str | None] | None = field(default=None, repr=False)
     # What is computed from the records once and asked for again (effective parameters).

@@ -67,7 +67,7 @@ class UnknownIncludeArgument(Rule):
 
     def command_line(self, graph: LaunchGraph) -> Iterator[Finding]:
         """Arguments given as name:=value that the launch never declares nor reads."""
-        if not graph.pinned or not graph.complete:
+        if not graph.pinned or not graph.complete or graph.stopped_early:
             return
         known = graph.declared_names() | graph.read_names()
         for loaded in graph.files.values():

@@ -47,7 +47,7 @@ class UnusedArgument(Rule):
     every_context = True
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        if not graph.complete:
+        if not graph.complete or graph.stopped_early:
             return  # a part we cannot see may read it
         if any(r.problem.kind is ProblemKind.PARSE for r in graph.problems):
             return  # reads may sit in what could not be parsed

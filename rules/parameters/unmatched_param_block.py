@@ -164,7 +164,7 @@ def receivers_of(graph: LaunchGraph, path: Path,
         if receiver is None:
             return None
         receivers.append(receiver)
-    if graph.opaque_files:
+    if graph.opaque_files or graph.stopped_early:
         return None
     for include in graph.includes:
         if include.status != "loaded" and any(

@@ -689,6 +689,10 @@ class Walker:
             self.record_read(name, ctx.origin(action.span), found, has_default)
         for name, span in failed.items():
             self.record_read(name, ctx.origin(span), False, False)
+        if failed:
+            self.graph.stopped_early = True
+            for record in self.include_stack:
+                record.complete = False
         self.record_lookups(result.lookups, ctx)
         for problem in result.problems:
             assert isinstance(problem, Problem)

@@ -11,4 +11,7 @@ def generate_launch_description():
         SetLaunchConfiguration('camera_ns', 'front'),
         IncludeLaunchDescription(PythonLaunchDescriptionSource(
             os.path.join(here, 'camera_setup.launch.py'))),
+        SetLaunchConfiguration('selector_param_path', os.path.join(here, 'selector.yaml')),
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(
+            os.path.join(here, 'selector.launch.py'))),
     ])
