@@ -46,18 +46,19 @@ class Receiver:
 
     def matches(self, key: str) -> bool:
         """Return whether a block's node key can apply to this node."""
-        prefix, _, last = key.rpartition("/")
+        last = key.rpartition("/")[2]
         if last in self.inner and not self.component:
             return True  # a node the process creates inside gets the process's files
         if self.fqn is not None:
             if self.component:
                 return key == "/**" or key.strip("/") == self.fqn.strip("/")
             return node_key_matches(key, self.fqn)
-        if last == "**":
-            return node_key_matches(key, self.namespace.rstrip("/") + "/x")
-        if self.names is not None and last != "*" and last not in self.names:
+        wildcard = last in ("*", "**")
+        if self.names is not None and not wildcard and last not in self.names:
             return False
-        return node_key_matches(prefix or "/", self.namespace)
+        # any name the code may give it: the key's own last token stands for it
+        name = "x" if wildcard else last
+        return node_key_matches(key, self.namespace.rstrip("/") + "/" + name)
 
 
 @dataclass
