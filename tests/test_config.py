@@ -196,6 +196,16 @@ def test_explain_prints_why_and_fix(capsys: pytest.CaptureFixture[str]) -> None:
     assert '3 | <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>' in out
 
 
+def test_explain_says_what_was_not_judged(capsys: pytest.CaptureFixture[str]) -> None:
+    setup = CORPUS / "python" / "opaque_function_errors" / "setup.launch.py"
+    main(["check", str(setup), "--explain"])
+    out = capsys.readouterr().out
+    assert "Not judged where the evaluation is incomplete" in out
+    assert "setup.launch.py:15: an OpaqueFunction stopped at configuration 'robot'" in out
+    main(["check", str(DUPLICATE), "--explain"])
+    assert "Not judged" not in capsys.readouterr().out
+
+
 def test_rules_and_explain_commands(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["rules"]) == 0
     listing = capsys.readouterr().out.splitlines()

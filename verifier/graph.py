@@ -365,9 +365,9 @@ class LaunchGraph:
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into
-    # An OpaqueFunction stopped at a configuration nobody set: its reads before that point
-    # are known (LV201 judges them), what it would have read or started after is not.
-    stopped_early: bool = False
+    # OpaqueFunctions stopped at a configuration nobody set (name, where): their reads before
+    # that point are known (LV201 judges them), what they would read or start after is not.
+    stops: list[tuple[str, Origin]] = field(default_factory=list)
     # Reads a workspace file for values that depend on file content (set by the evaluator).
     file_reader: Callable[[str], str | None] | None = field(default=None, repr=False)
     # What is computed from the records once and asked for again (effective parameters).
@@ -421,6 +421,26 @@ class LaunchGraph:
             if verdict is None:
                 result = None
         return result
+
+    @property
+    def stopped_early(self) -> bool:
+        """Return whether an OpaqueFunction stopped before its end (absence is unknown)."""
+        return bool(self.stops)
+
+    def unseen(self) -> list[tuple[str, Span]]:
+        """Return what the evaluation could not see into, and where: why it is incomplete.
+
+        Claims that something is absent (an argument unused, a parameter block for no
+        node) are not made on an incomplete evaluation; ``check --explain`` lists this.
+        """
+        out = [(f"include {include.status} ({self.display(include.location)})",
+                include.origin.span)
+               for include in self.includes if include.status not in ("loaded", "cycle")]
+        out += [(record.problem.message, record.problem.span) for record in self.problems
+                if record.problem.kind is ProblemKind.UNMODELED]
+        out += [(f"an OpaqueFunction stopped at configuration {name!r}, which nothing sets "
+                 "here", origin.span) for name, origin in self.stops]
+        return list(dict.fromkeys(out))
 
     def complete_as_given(self) -> bool:
         """Return whether everything that runs under the given arguments was understood.

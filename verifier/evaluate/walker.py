@@ -690,7 +690,7 @@ class Walker:
         for name, span in failed.items():
             self.record_read(name, ctx.origin(span), False, False)
         if failed:
-            self.graph.stopped_early = True
+            self.graph.stops += [(name, ctx.origin(span)) for name, span in failed.items()]
             for record in self.include_stack:
                 record.complete = False
         self.record_lookups(result.lookups, ctx)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import TextIO
 
 from rich.console import Console
@@ -73,6 +74,8 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
             console.print("    (--explain prints the trace)", style="dim")
         if explain:
             _explanation(console, finding)
+    if explain:
+        _unjudged(console, report)
     if not quiet:
         console.print(summary_line(report))
 
@@ -91,6 +94,25 @@ def _explanation(console: Console, finding: Finding) -> None:
             console.print(f"    {label}: {escape(text)}", style="dim")
     console.print(f"    (launchverify explain {finding.code} prints the whole rule)",
                   style="dim")
+
+
+def _unjudged(console: Console, report: Report) -> None:
+    """Say which launch files were too incomplete for claims that something is absent."""
+    shown: set[tuple[str, Path, int]] = set()
+    lines = []
+    for graph in report.graphs:
+        for reason, span in graph.unseen():
+            if (reason, span.file, span.line) in shown:
+                continue
+            shown.add((reason, span.file, span.line))
+            lines.append(f"  {report.display_path(span.file)}:{span.line}: {reason}")
+    if not lines:
+        return
+    console.print("Not judged where the evaluation is incomplete: claims that something is "
+                  "absent (unused arguments, parameter blocks for no node, nodes a manager "
+                  "waits for) are not made on a launch that reaches these:", style="dim")
+    for line in lines:
+        console.print(escape(line), style="dim")
 
 
 def summary_line(report: Report) -> str:
