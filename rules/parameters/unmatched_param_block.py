@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import dataclasses
 import difflib
-from collections.abc import Iterator
+import fnmatch
+from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from launchverify.frontends.param_file import ParamFile
 from launchverify.graph import LaunchGraph, NodeRecord
+from launchverify.models.node_names import InnerNode, inner_nodes
 from launchverify.models.ros_names import node_key_matches
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
@@ -32,6 +35,7 @@ class Receiver:
     namespace: str = "/"
     names: frozenset[str] | None = None
     inner: frozenset[str] = frozenset()  # names the package's code may give inner nodes
+    inner_nodes: tuple[InnerNode, ...] = ()  # what models/inner_nodes.py knows it creates
 
     @property
     def component(self) -> bool:
@@ -47,7 +51,7 @@ class Receiver:
     def matches(self, key: str) -> bool:
         """Return whether a block's node key can apply to this node."""
         last = key.rpartition("/")[2]
-        if last in self.inner and not self.component:
+        if not self.component and (last in self.inner or self.inner_match(key, last)):
             return True  # a node the process creates inside gets the process's files
         if self.fqn is not None:
             if self.component:
@@ -59,6 +63,35 @@ class Receiver:
         # any name the code may give it: the key's own last token stands for it
         name = "x" if wildcard else last
         return node_key_matches(key, self.namespace.rstrip("/") + "/" + name)
+
+
+    def inner_match(self, key: str, last: str) -> bool:
+        """Return whether a key names a node the process is known to create inside."""
+        own = self.fqn.rpartition("/")[2] if self.fqn is not None else None
+        return any(
+            fnmatch.fnmatchcase(last, inner.pattern(own))
+            and node_key_matches(key, _join(self.inner_namespace(inner), last))
+            for inner in self.inner_nodes
+        )
+
+    def inner_namespace(self, inner: InnerNode) -> str:
+        """Return the namespace an inner node runs in."""
+        return _join(self.namespace, inner.namespace)
+
+    def namespaces(self) -> set[str]:
+        """Return the namespaces this node and the nodes it creates run in."""
+        return {self.namespace.rstrip("/") or "/"} | {
+            self.inner_namespace(inner) for inner in self.inner_nodes}
+
+    def inner_names(self) -> dict[str, str]:
+        """Return the inner nodes with a literal name: name -> fully qualified name."""
+        return {inner.name: _join(self.inner_namespace(inner), inner.name)
+                for inner in self.inner_nodes if not any(c in inner.name for c in "*{")}
+
+
+def _join(*parts: str) -> str:
+    """Join namespace parts and a name into one absolute name."""
+    return "/" + "/".join(token for part in parts for token in part.split("/") if token)
 
 
 @dataclass
@@ -81,8 +114,14 @@ class UnmatchedParamBlock(Rule):
     match (`controller:` does not match `/robot1/controller`). Components loaded into a
     container only see `/**` and their exact name (launch_ros filters the file itself).
     A block that matches no node in any launch of the check is reported, with the closest
-    node name. Files that reach something launchverify cannot see into (an include outside
-    the workspace, a node whose name is unknown) are not judged.
+    node name. Nodes that a process creates inside itself get its files too: nav2's
+    costmaps (`local_costmap/local_costmap`), behaviour-tree client nodes, a ros2_control
+    manager's controllers (one per `<name>.type` it lists), and names found in the
+    package's own sources when they are in the workspace. A block in a namespace where
+    none of the loading nodes runs is more likely for an inner node launchverify does not
+    know than a slip, and is only an info. Files that reach something launchverify cannot
+    see into (an include outside the workspace, a node whose name is unknown) are not
+    judged.
 
     ## Why it matters
     ROS ignores the block without a word: the node starts with its default parameters,
@@ -130,18 +169,26 @@ class UnmatchedParamBlock(Rule):
                 continue
             names = {r.fqn.rpartition("/")[2]: r.fqn for r in use.receivers.values()
                      if r.fqn is not None}
+            for receiver in use.receivers.values():
+                names.update(receiver.inner_names())
             for index, block in enumerate(use.param_file.blocks):
                 if index in use.matched:
                     continue
-                hint = _closest(block.key, names)
+                namespace = _foreign_namespace(block.key, use.receivers.values())
+                hint = _closest(block.key, names) if namespace is None else (
+                    f" (none of them runs in {namespace}: a node one of them creates "
+                    "inside itself?)")
                 shown = sorted(use.receivers)
                 listed = ", ".join(shown[:6]) + (", ..." if len(shown) > 6 else "")
                 first = use.receivers[shown[0]].node
-                yield self.finding(
+                finding = self.finding(
                     block.span,
                     related=(Related(first.origin.span, f"loaded by {listed}"),),
                     key=block.key, file=path.name, hint=hint,
                 )
+                if namespace is not None:  # more likely a node we do not model than a slip
+                    finding = dataclasses.replace(finding, severity=Severity.INFO)
+                yield finding
 
 
 def receivers_of(graph: LaunchGraph, path: Path,
@@ -184,13 +231,34 @@ def _receiver(graph: LaunchGraph, node: NodeRecord,
     package_name = graph.base(node.package)
     package = packages.find(package_name) if packages and package_name else None
     inner = (name_literals(package) if package is not None else None) or frozenset()
+    created = inner_nodes(package_name, graph.base(node.executable), _loaded_names(graph, node))
     fqn = graph.base(node.fqn)
     if fqn is not None:
-        return Receiver(node, fqn, inner=inner)
+        return Receiver(node, fqn, fqn.rpartition("/")[0] or "/", inner=inner,
+                        inner_nodes=created)
     unnamed = unnamed_node_names(graph, node, packages)
     if unnamed is None:
         return None  # a name or namespace we cannot compute
-    return Receiver(node, None, unnamed[0], unnamed[1], inner)
+    return Receiver(node, None, unnamed[0], unnamed[1], inner, created)
+
+
+def _loaded_names(graph: LaunchGraph, node: NodeRecord) -> list[str]:
+    """Return the parameter names of every file a node loads (a manager's controllers)."""
+    files = [graph.param_files.get(param.source) for param in node.parameters
+             if param.source is not None]
+    return [name for loaded in files if loaded is not None
+            for block in loaded.blocks for name in block.parameters]
+
+
+def _foreign_namespace(key: str, receivers: Iterable[Receiver]) -> str | None:
+    """Return a key's namespace when it is literal and no receiver runs in it."""
+    prefix = key.rpartition("/")[0] or "/"
+    if "*" in prefix or prefix == "/":
+        return None
+    known = {namespace for receiver in receivers for namespace in receiver.namespaces()}
+    if any(namespace == prefix or namespace.startswith(prefix + "/") for namespace in known):
+        return None
+    return prefix
 
 
 def _mentions(text: str | None, spellings: set[str]) -> bool:

@@ -8,6 +8,7 @@ with ``allow_substs`` in the node's scope.
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -227,7 +228,7 @@ class NodeBuilder:
         text = text_of(location) or self.walker.graph.base(location)
         if not text or not Path(text).is_absolute():
             return None
-        located = self.walker.index.locate(Path(text))
+        located = self.walker.index.locate(Path(os.path.normpath(text)))  # "launch/../config"
         if located is None or not resolved(located).is_relative_to(self.walker.workspace):
             return None
         if located not in self.walker.graph.param_files:

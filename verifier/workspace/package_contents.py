@@ -17,6 +17,7 @@ from functools import lru_cache
 from pathlib import Path
 
 from launchverify.graph import LaunchGraph, NodeRecord
+from launchverify.models.node_names import builtin_name
 from launchverify.workspace.packages import SKIP_DIRS, Package, PackageIndex
 from launchverify.workspace.reading import read_file
 
@@ -67,6 +68,8 @@ def unnamed_node_names(graph: LaunchGraph, node: NodeRecord, packages: PackageIn
     executable = graph.base(node.executable)
     if names is not None and executable is not None:
         names = names | {executable}
+    if names is None and (known := builtin_name(package_name, executable)) is not None:
+        names = frozenset({known})  # a well-known executable whose sources are not here
     return namespace, names
 
 
