@@ -68,6 +68,9 @@ class Converter(Protocol):
     def opt_sub(self, value: Any) -> s.Sub | None:
         """Return ``sub(value)``, or ``None`` for ``None``."""
 
+    def performed(self, value: Substitution) -> s.Sub | None:
+        """Return what a launch file's own Substitution subclass performs to, if knowable."""
+
     def condition(self, value: Any) -> IRCondition | None:
         """Return an IR condition for a modelled condition (or ``None``)."""
 
@@ -316,6 +319,9 @@ class Substitution(Modelled):
 
     def to_sub(self, cv: Converter) -> s.Sub:
         """Return the IR expression (a subclass we do not know is opaque)."""
+        performed = cv.performed(self)
+        if performed is not None:
+            return performed
         name = type(self).__name__
         cv.unmodeled(f"substitution {name} is not modelled; its value is unknown",
                      getattr(self, "_span", None) or caller_span())

@@ -268,11 +268,11 @@ class _Session:
                             deprecated=description.deprecated_reason,
                             lookups=tuple(self.lookups))
 
-    def converter(self) -> PythonConverter:
-        """Return a converter reporting into this session."""
+    def converter(self, context: Any = None) -> PythonConverter:
+        """Return a converter reporting into this session (``context``: an OpaqueFunction's)."""
         return PythonConverter(self.unmodeled, self.opaque_function, Span.of_file(self.path),
                                fail=lambda message, span: self.sink.evaluation(  # noqa: PLW0108
-                                   message, span))
+                                   message, span), context=context)
 
     def _builtins(self) -> dict[str, Any]:
         namespace = dict(vars(builtins))
@@ -336,7 +336,7 @@ class _Session:
         try:
             with self.environment():  # conversion may call the user's code (__fspath__)
                 entities = model.call(context)
-                actions = self.converter().actions(entities or [])
+                actions = self.converter(context).actions(entities or [])
         except BaseException as error:  # the user's code
             self.failure(error)
         finally:

@@ -13,6 +13,7 @@ import os
 from collections.abc import Callable, Mapping
 from typing import Any
 
+from launchverify.frontends.python.sandbox import TimeLimitExceeded
 from launchverify.ir import actions as a
 from launchverify.ir import conditions as c
 from launchverify.ir import subst as s
@@ -51,8 +52,9 @@ class PythonConverter:
     """Implements ``launch_api.base.Converter`` for one launch file."""
 
     def __init__(self, unmodeled: Unmodeled, opaque_function: Callable[[Any], a.Action],
-                 fallback: Span, fail: Unmodeled | None = None) -> None:
+                 fallback: Span, fail: Unmodeled | None = None, context: Any = None) -> None:
         self._unmodeled = unmodeled
+        self.context = context  # the concrete LaunchContext, inside an OpaqueFunction
         self._fail = fail or unmodeled
         self._fallback = fallback  # where to point when an object knows no line
         self._claimed: set[int] = set()  # description sources already used by an include
@@ -80,6 +82,22 @@ class PythonConverter:
         if value is None:
             return s.Text("")
         return placeholder_sub(str(value))
+
+    def performed(self, value: base.Substitution) -> s.Sub | None:
+        """Perform a launch file's own Substitution subclass, where a context is concrete.
+
+        Inside an OpaqueFunction the configurations have values, so the subclass's
+        ``perform`` gives the text launch would use; elsewhere it stays unknown.
+        """
+        if self.context is None or type(value).perform is base.Substitution.perform:
+            return None
+        try:
+            result = value.perform(self.context)
+        except TimeLimitExceeded:
+            raise
+        except Exception:  # the user's code: what it would give is unknown here
+            return None
+        return placeholder_sub(result) if isinstance(result, str) else None
 
     def opt_sub(self, value: Any) -> s.Sub | None:
         return None if value is None else self.sub(value)
