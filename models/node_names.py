@@ -67,21 +67,23 @@ INNER_NODES: dict[tuple[str, str], tuple[InnerNode, ...]] = {
     ("nav2_bt_navigator", "bt_navigator"): (InnerNode("", "{node}_*_rclcpp_node"),),
 }
 
-# Processes that start a node per controller listed as ``<controller>.type`` in their
-# parameters (the manager itself, and the simulator plugins that embed it).
+# Processes that start a node per controller: listed as ``<controller>.type`` in the
+# manager's parameters, or (jazzy on) a block of the controller's own holding ``type``.
 CONTROLLER_MANAGERS = frozenset({
     ("controller_manager", "ros2_control_node"),
 })
 
 
 def inner_nodes(package: str | None, executable: str | None,
-                parameters: Iterable[str] = ()) -> tuple[InnerNode, ...]:
-    """Return the nodes a process creates inside, given the parameter names it loads.
+                parameters: Iterable[tuple[str, str]] = ()) -> tuple[InnerNode, ...]:
+    """Return the nodes a process creates inside, given the parameters its files hold.
+
+    ``parameters`` are ``(block's node name, parameter name)`` pairs.
 
     Examples:
         >>> [n.name for n in inner_nodes("controller_manager", "ros2_control_node",
-        ...                              ["update_rate", "arm_controller.type"])]
-        ['arm_controller']
+        ...     [("controller_manager", "arm_controller.type"), ("gripper", "type")])]
+        ['arm_controller', 'gripper']
         >>> inner_nodes("demo_nodes_cpp", "talker")
         ()
     """
@@ -93,7 +95,15 @@ def inner_nodes(package: str | None, executable: str | None,
     return found
 
 
-def controller_names(parameters: Iterable[str]) -> list[str]:
-    """Return the controllers a manager's parameters list (``<name>.type``), in order."""
-    names = (p.removesuffix(".type") for p in parameters if p.endswith(".type"))
-    return list(dict.fromkeys(name for name in names if name and "." not in name))
+def controller_names(parameters: Iterable[tuple[str, str]]) -> list[str]:
+    """Return the controllers parameter files declare, in order.
+
+    A manager's ``<name>.type``, or a block of the controller's own with ``type`` in it.
+    """
+    names = []
+    for node, parameter in parameters:
+        if parameter == "type" and node not in ("*", "**"):
+            names.append(node)
+        elif parameter.endswith(".type") and "." not in parameter.removesuffix(".type"):
+            names.append(parameter.removesuffix(".type"))
+    return list(dict.fromkeys(name for name in names if name))

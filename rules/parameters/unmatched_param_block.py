@@ -9,9 +9,9 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from launchverify.frontends.param_file import ParamFile
+from launchverify.frontends.param_file import ParamBlock, ParamFile
 from launchverify.graph import LaunchGraph, NodeRecord
-from launchverify.models.node_names import InnerNode, inner_nodes
+from launchverify.models.node_names import BUILTIN_NAMES, InnerNode, inner_nodes
 from launchverify.models.ros_names import node_key_matches
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
@@ -119,9 +119,11 @@ class UnmatchedParamBlock(Rule):
     manager's controllers (one per `<name>.type` it lists), and names found in the
     package's own sources when they are in the workspace. A block in a namespace where
     none of the loading nodes runs is more likely for an inner node launchverify does not
-    know than a slip, and is only an info. Files that reach something launchverify cannot
-    see into (an include outside the workspace, a node whose name is unknown) are not
-    judged.
+    know than a slip, and is only an info; so is a block for a node that some launch of the
+    check starts (or a well-known node) without this file, when no loading node has a
+    close name: one parameter file shared by a whole stack. Files that reach something
+    launchverify cannot see into (an include outside the workspace, a node whose name is
+    unknown) are not judged.
 
     ## Why it matters
     ROS ignores the block without a word: the node starts with its default parameters,
@@ -146,6 +148,10 @@ class UnmatchedParamBlock(Rule):
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         uses = ctx.memo_for(self.code)
+        started = ctx.memo_for(self.code + ":started")  # node names any launch starts
+        for node in graph.nodes:
+            if (fqn := graph.base(node.fqn)) is not None:
+                started[fqn.rpartition("/")[2]] = True
         for path, param_file in graph.param_files.items():
             use = uses.get(path)
             if not isinstance(use, _FileUse):
@@ -163,6 +169,7 @@ class UnmatchedParamBlock(Rule):
         return iter(())
 
     def finish(self, ctx: RuleContext) -> Iterator[Finding]:
+        started = set(ctx.memo_for(self.code + ":started")) | set(BUILTIN_NAMES.values())
         for path, use in ctx.memo_for(self.code).items():
             assert isinstance(use, _FileUse) and isinstance(path, Path)
             if use.undecided or not use.receivers:
@@ -171,25 +178,28 @@ class UnmatchedParamBlock(Rule):
                      if r.fqn is not None}
             for receiver in use.receivers.values():
                 names.update(receiver.inner_names())
+            shown = sorted(use.receivers)
+            listed = ", ".join(shown[:6]) + (", ..." if len(shown) > 6 else "")
+            loaded_by = Related(use.receivers[shown[0]].node.origin.span, f"loaded by {listed}")
             for index, block in enumerate(use.param_file.blocks):
-                if index in use.matched:
-                    continue
-                namespace = _foreign_namespace(block.key, use.receivers.values())
-                hint = _closest(block.key, names) if namespace is None else (
-                    f" (none of them runs in {namespace}: a node one of them creates "
-                    "inside itself?)")
-                shown = sorted(use.receivers)
-                listed = ", ".join(shown[:6]) + (", ..." if len(shown) > 6 else "")
-                first = use.receivers[shown[0]].node
-                finding = self.finding(
-                    block.span,
-                    related=(Related(first.origin.span, f"loaded by {listed}"),),
-                    key=block.key, file=path.name, hint=hint,
-                )
-                if namespace is not None:  # more likely a node we do not model than a slip
-                    finding = dataclasses.replace(finding, severity=Severity.INFO)
-                yield finding
+                if index not in use.matched:
+                    yield self._unmatched(block, path, use, names, started, loaded_by)
 
+    def _unmatched(self, block: ParamBlock, path: Path, use: _FileUse, names: dict[str, str],
+                   started: set[str], loaded_by: Related) -> Finding:
+        """Report a block for no node: a warning for a likely slip, else an info."""
+        hint = _closest(block.key, names)
+        namespace = _foreign_namespace(block.key, use.receivers.values())
+        name = block.key.rpartition("/")[2]
+        if namespace is not None:  # more likely a node we do not model than a slip
+            hint = f" (none of them runs in {namespace}: a node one of them creates inside?)"
+        elif not hint and name in started:  # a shared file: the block is for another launch
+            hint = f" ({name} is a node these launches do not start with it)"
+        finding = self.finding(block.span, related=(loaded_by,), key=block.key,
+                               file=path.name, hint=hint)
+        if namespace is not None or hint.startswith(f" ({name} is"):
+            finding = dataclasses.replace(finding, severity=Severity.INFO)
+        return finding
 
 def receivers_of(graph: LaunchGraph, path: Path,
                  packages: PackageIndex | None) -> list[Receiver] | None:
@@ -242,11 +252,11 @@ def _receiver(graph: LaunchGraph, node: NodeRecord,
     return Receiver(node, None, unnamed[0], unnamed[1], inner, created)
 
 
-def _loaded_names(graph: LaunchGraph, node: NodeRecord) -> list[str]:
-    """Return the parameter names of every file a node loads (a manager's controllers)."""
+def _loaded_names(graph: LaunchGraph, node: NodeRecord) -> list[tuple[str, str]]:
+    """Return (block's node name, parameter) of every file a node loads (controllers)."""
     files = [graph.param_files.get(param.source) for param in node.parameters
              if param.source is not None]
-    return [name for loaded in files if loaded is not None
+    return [(block.key.rpartition("/")[2], name) for loaded in files if loaded is not None
             for block in loaded.blocks for name in block.parameters]
 
 
