@@ -169,7 +169,8 @@ class UnmatchedParamBlock(Rule):
         return iter(())
 
     def finish(self, ctx: RuleContext) -> Iterator[Finding]:
-        started = set(ctx.memo_for(self.code + ":started")) | set(BUILTIN_NAMES.values())
+        started = {str(name) for name in ctx.memo_for(self.code + ":started")}
+        started |= set(BUILTIN_NAMES.values())
         for path, use in ctx.memo_for(self.code).items():
             assert isinstance(use, _FileUse) and isinstance(path, Path)
             if use.undecided or not use.receivers:
