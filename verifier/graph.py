@@ -125,6 +125,7 @@ class IncludeRecord:
     static_arguments: tuple[StaticArgument, ...] = ()
     declared: set[str] = field(default_factory=set)
     reads: set[str] = field(default_factory=set)
+    mentioned: set[str] = field(default_factory=set)  # by OpaqueFunctions (see LaunchGraph)
     files: set[Path] = field(default_factory=set)
     complete: bool = True
     note: str = ""
@@ -368,6 +369,8 @@ class LaunchGraph:
     # OpaqueFunctions stopped at a configuration nobody set (name, where): their reads before
     # that point are known (LV201 judges them), what they would read or start after is not.
     stops: list[tuple[str, Origin]] = field(default_factory=list)
+    # Strings OpaqueFunctions' code holds: configurations they may read on paths not taken.
+    mentioned: set[str] = field(default_factory=set)
     # Reads a workspace file for values that depend on file content (set by the evaluator).
     file_reader: Callable[[str], str | None] | None = field(default=None, repr=False)
     # What is computed from the records once and asked for again (effective parameters).

@@ -50,7 +50,7 @@ class UnknownIncludeArgument(Rule):
         for include in graph.includes:
             if include.status != "loaded" or not include.complete or include.target is None:
                 continue
-            known = include.declared | include.reads | {
+            known = include.declared | include.reads | include.mentioned | {
                 a.name for a in include.static_arguments
             }
             for path in include.files:  # reads on branches this evaluation did not take
@@ -69,7 +69,7 @@ class UnknownIncludeArgument(Rule):
         """Arguments given as name:=value that the launch never declares nor reads."""
         if not graph.pinned or not graph.complete or graph.stopped_early:
             return
-        known = graph.declared_names() | graph.read_names()
+        known = graph.declared_names() | graph.read_names() | graph.mentioned
         for loaded in graph.files.values():
             if loaded.launch is not None:
                 known |= configuration_names(loaded.launch)

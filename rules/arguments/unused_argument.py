@@ -51,7 +51,7 @@ class UnusedArgument(Rule):
             return  # a part we cannot see may read it
         if any(r.problem.kind is ProblemKind.PARSE for r in graph.problems):
             return  # reads may sit in what could not be parsed
-        used = set(IMPLICIT_READS) | graph.read_names()
+        used = set(IMPLICIT_READS) | graph.read_names() | graph.mentioned
         for loaded in graph.files.values():
             if loaded.launch is not None:
                 used |= configuration_names(loaded.launch)

@@ -694,6 +694,9 @@ class Walker:
             for record in self.include_stack:
                 record.complete = False
         self.record_lookups(result.lookups, ctx)
+        self.graph.mentioned.update(result.mentions)
+        for record in self.include_stack:
+            record.mentioned.update(result.mentions)
         for problem in result.problems:
             assert isinstance(problem, Problem)
             self.problem(problem.kind, problem.message, problem.span, ctx,

@@ -499,6 +499,7 @@ class OpaqueResult:
     # name, found, has a default [, where the read failed]
     reads: tuple[tuple[str, bool, bool] | tuple[str, bool, bool, Span], ...] = ()
     lookups: tuple[tuple[str, Span], ...] = ()  # packages looked up by Python code
+    mentions: tuple[str, ...] = ()  # strings its code holds: reads on untaken paths
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)

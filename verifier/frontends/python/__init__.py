@@ -22,6 +22,7 @@ from typing import Any
 from launchverify.frontends.python.concrete import SubstitutionFailure
 from launchverify.frontends.python.convert import PythonConverter
 from launchverify.frontends.python.importer import Opaque, import_context
+from launchverify.frontends.python.mentions import mentioned_strings
 from launchverify.frontends.python.sandbox import (
     SandboxViolation,
     TimeLimitExceeded,
@@ -349,7 +350,8 @@ class _Session:
             name, span = self.failed_read
             reads = (*reads, (name, False, False, span))
         return a.OpaqueResult(actions=actions, problems=tuple(sink.problems), reads=reads,
-                              lookups=lookups)
+                              lookups=lookups,
+                              mentions=tuple(sorted(mentioned_strings(model.function))))
 
 
 class _Performer:
