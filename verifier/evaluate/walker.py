@@ -424,7 +424,8 @@ class Walker:
         record.arguments = tuple(arguments)
         # Re-entering a file with the same arguments can only recurse forever; with other
         # arguments it may terminate (a recursion guarded by a condition), up to a depth.
-        key = (target, tuple(sorted((name, value.describe()) for name, value, _ in arguments)))
+        key = (target, tuple(sorted(((name, value.describe()) for name, value, _ in arguments),
+                                    key=lambda pair: (pair[0] or "", pair[1]))))
         if key in self.file_stack or len(self.file_stack) >= MAX_INCLUDE_DEPTH:
             record.status = "cycle"
             return

@@ -1,0 +1,12 @@
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot_ip'),
+        Node(package='demo_nodes_cpp', executable='talker', name='driver',
+             parameters=[{'robot_ip': LaunchConfiguration('robot_ip')}]),
+    ])
