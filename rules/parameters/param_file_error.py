@@ -20,9 +20,11 @@ class ParamFileError(Rule):
     `ros__parameters` or `ros__parameters` without a node name (rcl rejects the file);
     lists mixing types such as `[0.05, 0]` (rcl: "Sequence should be of same type") and
     lists of lists; parameters without a value; node keys with no `ros__parameters`
-    under them (ignored); duplicate keys (YAML keeps the last one silently). Files that
-    only components loaded into a container read are read by launch_ros, not rcl: for
-    them only what YAML itself gets wrong is reported.
+    under them (ignored); duplicate keys (the last value wins; a node key or mapping
+    written twice is merged by rcl but replaced by launch_ros). Files that only components
+    loaded into a container read are read by launch_ros with `yaml.safe_load`, not rcl:
+    for them only what YAML itself gets wrong is reported, and a file without any
+    `ros__parameters` is one flat set of parameters, as launch_ros takes it.
 
     ## Why it matters
     rcl refuses the whole file and the node does not start (`Couldn't parse params file`),
@@ -48,10 +50,8 @@ class ParamFileError(Rule):
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         for path, param_file in graph.param_files.items():
-            problems = list(param_file.sink.problems)
-            if not only_components(graph, path):
-                problems += param_file.rcl_sink.problems
-            for problem in problems:
+            reader = "launch_ros" if only_components(graph, path) else "rcl"
+            for problem in param_file.problems_for(reader):
                 yield self.finding(problem.span, text=problem.message)
 
 

@@ -8,6 +8,12 @@ a double; quoted values are strings) and rejects what it cannot represent: a val
 nested sequences, empty values. We record those as problems (the file would stop the node
 from starting) together with what PyYAML would hide: duplicate keys, of which it keeps
 the last, and node keys with no ``ros__parameters`` under them, which ROS ignores.
+
+Who reads the file matters. rcl (``--params-file``, for nodes) parses events, so a node key
+or a nested mapping written twice is merged; launch_ros (for loaded components) uses
+``yaml.safe_load``, which keeps only the last, and takes a file without any
+``ros__parameters`` as one flat set of parameters. ``ParamFile.problems_for`` answers per
+reader.
 """
 
 from __future__ import annotations
@@ -20,7 +26,7 @@ from pathlib import Path
 import yaml
 
 from launchverify.frontends.yaml_reader import YamlLoadError, compose, span_of
-from launchverify.problems import ProblemSink
+from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
 from launchverify.workspace.reading import long_number, long_number_message, read_file
 
@@ -65,7 +71,21 @@ class ParamFile:
     sink: ProblemSink = field(default_factory=ProblemSink)
     # What only rcl rejects: launch_ros reads files for loaded components itself.
     rcl_sink: ProblemSink = field(default_factory=ProblemSink)
+    # What only launch_ros's yaml.safe_load loses (a mapping written twice: rcl merges).
+    yaml_sink: ProblemSink = field(default_factory=ProblemSink)
+    # Node keys without ros__parameters: ignored, unless launch_ros reads a flat file.
+    ignored_sink: ProblemSink = field(default_factory=ProblemSink)
     readable: bool = True
+
+    def problems_for(self, reader: str) -> list[Problem]:
+        """Return what is wrong with the file for ``"rcl"`` or ``"launch_ros"``."""
+        problems = list(self.sink.problems)
+        if reader == "rcl":
+            return problems + self.rcl_sink.problems + self.ignored_sink.problems
+        problems += self.yaml_sink.problems
+        if self.blocks:  # without any ros__parameters, launch_ros takes the whole file
+            problems += self.ignored_sink.problems
+        return problems
 
 
 def load_param_file(path: Path) -> ParamFile:
@@ -139,6 +159,9 @@ class _Reader:
     def rcl_problem(self, message: str, node: yaml.Node) -> None:
         self.result.rcl_sink.parse(message, span_of(self.path, node))
 
+    def yaml_problem(self, message: str, node: yaml.Node) -> None:
+        self.result.yaml_sink.parse(message, span_of(self.path, node))
+
     def enter(self, node: yaml.Node) -> None:
         """Mark a collection as being read; meeting it again inside itself is a cycle."""
         if id(node) in self.open:
@@ -146,8 +169,12 @@ class _Reader:
         self.open.add(id(node))
 
     def pairs(self, mapping: yaml.MappingNode) -> list[tuple[str, yaml.Node, yaml.Node]]:
-        """Return (key, key node, value node); duplicate keys are reported, last wins."""
-        seen: dict[str, yaml.Node] = {}
+        """Return (key, key node, value node), duplicate keys as rcl reads them.
+
+        A mapping written twice is merged by rcl and replaced by ``yaml.safe_load``; a
+        value written twice is the last one for both.
+        """
+        seen: dict[str, tuple[yaml.Node, yaml.Node]] = {}
         out: list[tuple[str, yaml.Node, yaml.Node]] = []
         self.count += len(mapping.value)
         if self.count > MAX_NODES:
@@ -163,10 +190,19 @@ class _Reader:
                 continue
             key = str(key_node.value) if isinstance(key_node, yaml.ScalarNode) else ""
             if key in seen:
-                self.problem(f"duplicate key {key!r}: only the last one is used (the first "
-                             f"is at line {seen[key].start_mark.line + 1})", key_node)
-                out = [item for item in out if item[0] != key]
-            seen[key] = key_node
+                first_key, first_value = seen[key]
+                line = first_key.start_mark.line + 1
+                if isinstance(first_value, yaml.MappingNode) and isinstance(
+                        value_node, yaml.MappingNode):
+                    self.yaml_problem(f"duplicate key {key!r}: launch_ros reads this file "
+                                      "with yaml.safe_load, which keeps only the last one "
+                                      f"(the first is at line {line}; rcl would merge them)",
+                                      key_node)
+                else:
+                    self.problem(f"duplicate key {key!r}: only the last one is used (the "
+                                 f"first is at line {line})", key_node)
+                    out = [item for item in out if item[0] != key]
+            seen[key] = (key_node, value_node)
             out.append((key, key_node, value_node))
         return out
 
@@ -200,8 +236,9 @@ class _Reader:
                 if self.node_level(value, [*names, (key, key_node)]):
                     found = True
                 else:
-                    self.problem(f"no ros__parameters under {key!r}: ROS ignores this "
-                                 "block", key_node)
+                    self.result.ignored_sink.parse(f"no ros__parameters under {key!r}: ROS "
+                                                   "ignores this block",
+                                                   span_of(self.path, key_node))
             else:
                 self.rcl_problem(f"{key!r} holds a value before any ros__parameters (rcl "
                                  "rejects the file)", key_node)
