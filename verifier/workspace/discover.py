@@ -24,20 +24,27 @@ _PYTHON_ENTRY = re.compile(
 def is_launch_file(path: Path) -> bool:
     """Return whether a file looks like a launch file.
 
-    Names ending in ``launch.xml``/``launch.yaml`` count; ``*launch.py`` files count when
-    they define ``generate_launch_description`` (what ``ros2 launch`` runs; launch tests
-    are left to ``launch_test``); other ``.xml``/``.yaml`` files count when
+    Names ending in ``launch.xml``/``launch.yaml`` count; ``*launch.py`` files, and any
+    ``.py`` file in a ``launch`` folder (``launch/include/control.py``,
+    ``bringup_launch_distributed.py``), count when they define
+    ``generate_launch_description`` (what ``ros2 launch`` runs, whatever the file's name;
+    launch tests are left to ``launch_test``); other ``.xml``/``.yaml`` files count when
     they sit in a ``launch`` folder and their root is ``launch``.
     """
     name = path.name.lower()
     if name.endswith(LAUNCH_SUFFIXES):
         return True
-    if name.endswith(PYTHON_SUFFIX):
+    if name.endswith(PYTHON_SUFFIX) or (name.endswith(".py") and _in_launch_folder(path)):
         return _PYTHON_ENTRY.search(_head(path, 256 * 1024)) is not None
     if not name.endswith(FRONTEND_SUFFIXES) or "launch" not in path.parent.name.lower():
         return False
     pattern = _XML_ROOT if name.endswith(".xml") else _YAML_ROOT
     return pattern.search(_head(path, 8192)) is not None
+
+
+def _in_launch_folder(path: Path) -> bool:
+    """Return whether a file sits in (or just below) a folder named for launch files."""
+    return any("launch" in part.lower() for part in path.parent.parts[-2:])
 
 
 def _head(path: Path, size: int) -> bytes:

@@ -1,0 +1,12 @@
+# Meant to be included: 'params_file' comes from its includer, bringup_distributed.py,
+# whose name does not end in launch.py but which ros2 launch runs all the same.
+from launch import LaunchDescription
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='planner',
+             parameters=[LaunchConfiguration('params_file')]),  # expect-not: LV201
+    ])
