@@ -160,7 +160,8 @@ def run_check(options: CheckOptions) -> Report:
     with distros.checking(options.distro), reading.size_limit(options.max_file_size), \
             IsolatedPython(index, workspace, jobs=options.jobs or default_jobs(),
                            limits=limits, distro=options.distro,
-                           environment=options.environment) as python:
+                           environment=options.environment,
+                           arguments=options.arguments) as python:
         loader = FileCache(index, workspace, python)
         python.prefetch(canonical(f) for f in files if launch_format(f) == "python")
         for done, file in enumerate(files):

@@ -84,6 +84,8 @@ def _resolve(graph: LaunchGraph, node: NodeRecord) -> EffectiveParameters:
     table: dict[str, list[tuple[str, Contribution]]] = {}  # key -> [(name, value)] in order
     own_key = fqn if fqn is not None else EVERY_NODE
     for param in node.parameters:
+        if param.scope and graph.runs(param.origin) is False:
+            continue  # a SetParameter under a condition these arguments make false
         if param.file is not None:
             _add_file(graph, param, table, result)
         else:

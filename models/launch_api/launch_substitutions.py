@@ -65,11 +65,18 @@ class LaunchConfiguration(Substitution):
         return f"LaunchConfig({described(self._variable_name)})"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        default = None if self._default is None else cv.sub(
-            self._default if not isinstance(self._default, (list, tuple)) or self._default
-            else ""
-        )
+        default = None if self._default is None else cv.sub(_default_items(self._default))
         return s.LaunchConfig(cv.sub(self._variable_name), default)
+
+
+def _default_items(default: Any) -> list[Any]:
+    """Return a default as launch keeps it: items that are not text become ``str(item)``.
+
+    So ``default=True`` is ``'True'``, not ``'true'``, as ``PythonExpression`` then sees it.
+    """
+    items = default if isinstance(default, (list, tuple)) else [default]
+    return [item if isinstance(item, (str, Substitution)) or _unknown(item) else str(item)
+            for item in items]
 
 
 class EnvironmentVariable(Substitution):

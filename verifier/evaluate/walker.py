@@ -106,8 +106,19 @@ class Walker:
 
     def problem(self, kind: ProblemKind, message: str, span: Span, ctx: Ctx | None,
                 *, contextual: bool = False) -> None:
-        """Record an evaluation problem (``contextual``: an includer might prevent it)."""
+        """Record an evaluation problem (``contextual``: an includer might prevent it).
+
+        A failure in a part that does not run with the values it was evaluated with (an
+        OpaqueFunction or include under a condition false by default) says nothing about
+        what launch does: that part is not judged (LV003), and the evaluation is incomplete.
+        """
         chain = ctx.chain if ctx else ()
+        if (kind is ProblemKind.EVALUATION and ctx is not None and ctx.path
+                and self.graph.runs(ctx.origin(span)) is False):
+            kind = ProblemKind.UNMODELED
+            message = (f"{message}, in a part evaluated with argument values under which it "
+                       "does not run: not judged (give the arguments that switch it on to "
+                       "check it)")
         self.graph.problems.append(ProblemRecord(Problem(kind, message, span, contextual),
                                                  chain, ctx.path if ctx else ()))
         if kind is ProblemKind.UNMODELED:

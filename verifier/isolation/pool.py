@@ -80,10 +80,12 @@ class IsolatedPython:
 
     def __init__(self, index: PackageIndex, workspace: Path, *, jobs: int = 1,
                  limits: Limits | None = None, distro: str | None = None,
-                 environment: dict[str, str] | None = None) -> None:
+                 environment: dict[str, str] | None = None,
+                 arguments: dict[str, str] | None = None) -> None:
         self.limits = limits or Limits()
         self.setting = Setting(index, workspace, readable_folders(index, workspace),
                                self.limits, distro, dict(environment or {}),
+                               dict(arguments or {}),
                                debug=bool(os.environ.get("LAUNCHVERIFY_DEBUG_WORKERS")))
         self.jobs = max(1, jobs)
         self.protections: str | None = None  # as the first worker reported them

@@ -14,7 +14,7 @@ import contextlib
 import os
 import traceback
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, NoReturn
 
@@ -38,6 +38,7 @@ class Setting:
     limits: Limits
     distro: str | None
     environment: dict[str, str]  # --env: the machine's variables a launch file may read
+    arguments: dict[str, str] = field(default_factory=dict)  # name:=value on the command line
     debug: bool = False  # keep stderr and print our own failures (LAUNCHVERIFY_DEBUG_WORKERS)
 
 
@@ -95,7 +96,8 @@ class _Worker:
     def load(self, request: dict[str, Any]) -> dict[str, Any]:
         path = Path(request["path"])
         sink = ProblemSink()
-        frontend = PythonFrontend(self.setting.index, self.setting.workspace)
+        frontend = PythonFrontend(self.setting.index, self.setting.workspace,
+                                  self.setting.arguments)
         launch = frontend.load(path, sink)
         encoder = Encoder(self.register)
         data = encoder.encode((launch, tuple(sink.problems)))

@@ -12,6 +12,7 @@ import builtins
 import errno
 import inspect
 import io
+import sys
 import traceback
 from collections.abc import Iterator, Mapping
 from contextlib import contextmanager
@@ -57,9 +58,21 @@ class UnknownInput(Exception):
 class PythonFrontend:
     """Loads Python launch files for one run (one package index, one workspace)."""
 
-    def __init__(self, index: PackageIndex, workspace: Path) -> None:
+    def __init__(self, index: PackageIndex, workspace: Path,
+                 arguments: Mapping[str, str] | None = None) -> None:
         self.index = index
         self.workspace = workspace
+        self.arguments = dict(arguments or {})  # name:=value given on the command line
+
+    def argv(self, path: Path) -> list[str]:
+        """Return ``sys.argv`` as ``ros2 launch`` leaves it for a launch file.
+
+        ``ros2 launch PACKAGE FILE name:=value``, or ``ros2 launch PATH name:=value`` for a
+        file outside any package; launchverify's own command line is never shown.
+        """
+        owner = self.index.owner(path)
+        where = [owner.name, path.name] if owner is not None else [str(path)]
+        return ["ros2", "launch", *where, *(f"{k}:={v}" for k, v in self.arguments.items())]
 
     def load(self, path: Path, sink: ProblemSink) -> a.LaunchFile | None:
         """Run a Python launch file and return its IR, recording problems in ``sink``."""
@@ -195,11 +208,13 @@ class _Session:
                                           self.path, context_tools=self._context_tools,
                                           lookups=self.lookups, fallback=self.fallback)
         take_refusals()
+        saved_argv, sys.argv = sys.argv, frontend.argv(self.path)
         try:
             with import_context([self.path.parent], frontend.index, self.module_unmodeled,
                                 self.name_unmodeled), sandbox(), _yaml_knows_opaque_files():
                 yield
         finally:
+            sys.argv = saved_argv
             runtime.current = None
             for message, where in take_refusals():
                 span = Span(Path(where[0]), where[1]) if where else Span.of_file(self.path)
