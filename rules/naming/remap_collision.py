@@ -5,6 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph, NodeRecord, RemapRecord
+from launchverify.ir.subst import walk
+from launchverify.ir.symbolic import Arg
 from launchverify.models.ros_names import expand_topic_name
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 
@@ -20,7 +22,9 @@ class RemapCollision(Rule):
     - a source remapped again to another target: the first rule wins, the later one never
       applies;
     - two different sources remapped to the same target: two topics merged into one.
-    The same rule written twice is not reported.
+    The same rule written twice is not reported, nor a collision of targets taken from
+    arguments in a file meant to be included (its defaults are placeholders that the
+    includers replace; every includer's own evaluation is judged).
 
     ## Why it matters
     The node silently keeps using the name the author meant to change, or publishes and
@@ -44,6 +48,9 @@ class RemapCollision(Rule):
     slug = "remap-collision"
     severity = Severity.WARNING
     message = "{text}"
+    # Targets often come from arguments: a collision of defaults that every includer
+    # overrides is no collision (autoware's input and output trajectory defaults).
+    every_context = True
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         for node in graph.nodes:
@@ -80,7 +87,8 @@ class RemapCollision(Rule):
                 continue
             by_source[source] = (target, remap)
             merged = by_target.get(target)
-            if merged is not None and merged[0] != source:
+            if merged is not None and merged[0] != source and not (
+                    _from_arguments(remap, merged[1]) and not graph.launchable_alone()):
                 yield self.finding(
                     remap.origin,
                     related=(Related(merged[1].origin.span, f"{merged[0]} -> {target}"),),
@@ -88,3 +96,8 @@ class RemapCollision(Rule):
                          f"{merged[0]} already goes: two names become one")
                 continue
             by_target.setdefault(target, (source, remap))
+
+
+def _from_arguments(*remaps: RemapRecord) -> bool:
+    """Return whether remap targets come from arguments (their defaults, checked alone)."""
+    return any(isinstance(part, Arg) for remap in remaps for part in walk(remap.dst))
