@@ -15,9 +15,14 @@ FRONTEND_SUFFIXES = (".xml", ".yaml", ".yml")
 _XML_ROOT = re.compile(rb"<launch[\s>/]")
 _YAML_ROOT = re.compile(rb"^launch\s*:", re.MULTILINE)
 # What ros2 launch runs: a generate_launch_description function (any spelling close to it,
-# so a misspelt one is checked and reported) or a name bound to one.
+# so a misspelt one in a file named for launch is checked and reported) or a name bound to one.
 _PYTHON_ENTRY = re.compile(
     rb"^\s*(def\s+generate_launch_description\w*\s*\(|generate_launch_description\s*=)",
+    re.MULTILINE)
+# A .py file not named for launch counts only with the function at module level, exactly
+# spelt: a test that nests one, or a helper whose docstring shows one, is not a launch file.
+_MODULE_ENTRY = re.compile(
+    rb"^(def\s+generate_launch_description\s*\(|generate_launch_description\s*=)",
     re.MULTILINE)
 
 
@@ -28,14 +33,17 @@ def is_launch_file(path: Path) -> bool:
     ``.py`` file in a ``launch`` folder (``launch/include/control.py``,
     ``bringup_launch_distributed.py``), count when they define
     ``generate_launch_description`` (what ``ros2 launch`` runs, whatever the file's name;
-    launch tests are left to ``launch_test``); other ``.xml``/``.yaml`` files count when
+    outside ``*launch.py`` only a module-level definition counts, and launch tests are
+    left to ``launch_test``); other ``.xml``/``.yaml`` files count when
     they sit in a ``launch`` folder and their root is ``launch``.
     """
     name = path.name.lower()
     if name.endswith(LAUNCH_SUFFIXES):
         return True
-    if name.endswith(PYTHON_SUFFIX) or (name.endswith(".py") and _in_launch_folder(path)):
+    if name.endswith(PYTHON_SUFFIX):
         return _PYTHON_ENTRY.search(_head(path, 256 * 1024)) is not None
+    if name.endswith(".py") and _in_launch_folder(path):
+        return _MODULE_ENTRY.search(_head(path, 256 * 1024)) is not None
     if not name.endswith(FRONTEND_SUFFIXES) or "launch" not in path.parent.name.lower():
         return False
     pattern = _XML_ROOT if name.endswith(".xml") else _YAML_ROOT
@@ -52,9 +60,6 @@ def _head(path: Path, size: int) -> bytes:
         return read_file(path, prefix=size)
     except OSError:
         return b""  # a FIFO, a device, unreadable: the loader says why
-
-
-
 
 
 def discover(paths: list[Path], *, filter_files: bool = False) -> list[Path]:
