@@ -30,6 +30,9 @@ class Problem:
     message: str
     span: Span
     contextual: bool = False  # may be caused by what an includer would provide
+    # The rule that names this failure (LV207 for a condition launch rejects): it reports
+    # it, with its explanation and severity; LV002 takes only failures no rule names.
+    rule: str | None = None
 
 
 class ProblemSink:

@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import Truthy
 from launchverify.models.booleans import InvalidBoolean, condition_truth
+from launchverify.problems import ProblemKind
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.smt import reasoner_for
 
@@ -19,8 +20,9 @@ class InvalidConditionValue(Rule):
     ignored); any other value makes `ros2 launch` raise. This rule tries every
     combination of the launch's switches (arguments with `choices` or a boolean default;
     other arguments keep their defaults) and reports a condition that one of them makes
-    invalid, with that value and those arguments. Under the arguments as given, the same
-    mistake is LV002.
+    invalid, with that value and those arguments. It reports too a condition invalid
+    under the arguments as given: a literal where a `LaunchConfiguration` was meant
+    (`IfCondition('use_rviz')`), a ROS 1 habit such as `default="yes"` for a switch.
 
     ## Why it matters
     The launch works with the defaults and crashes the day someone picks another choice:
@@ -39,10 +41,10 @@ class InvalidConditionValue(Rule):
     code = "LV207"
     slug = "invalid-condition-value"
     severity = Severity.ERROR
-    message = ("`{condition}` is {value!r} with {arguments}, which is not a boolean: "
-               "launch raises")
+    message = "`{condition}` is {value!r}{arguments}, which is not a boolean: launch raises"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        yield from self.rejected(graph)
         for record in graph.conditions:
             if record.verdict is not None or not isinstance(record.guard, Truthy):
                 continue
@@ -56,7 +58,25 @@ class InvalidConditionValue(Rule):
             if not witness.values:
                 continue  # under the arguments as given: LV002 says so
             yield self.finding(record.origin, witness=witness.values, condition=record.text,
-                               value=value, arguments=witness.describe())
+                               value=value, arguments=f" with {witness.describe()}")
+
+    def rejected(self, graph: LaunchGraph) -> Iterator[Finding]:
+        """Yield the conditions that evaluation found invalid under the arguments as given."""
+        conditions = {record.origin.span: record for record in graph.conditions}
+        for record in graph.problems:
+            problem = record.problem
+            if problem.rule != self.code or problem.kind is not ProblemKind.EVALUATION:
+                continue
+            if problem.contextual and not graph.launchable_alone():
+                continue  # an includer of this root may pass a valid value
+            condition = conditions.get(problem.span)
+            if condition is None or not isinstance(condition.guard, Truthy):
+                continue
+            value = graph.base(condition.guard.expression)
+            arguments = ("" if condition.literal else " with the default arguments"
+                         if problem.contextual else " with the arguments as given")
+            yield self.finding(record.origin, condition=condition.text, value=value,
+                               arguments=arguments)
 
 
 def is_boolean(value: str) -> bool:

@@ -18,7 +18,9 @@ class EvaluationError(Rule):
     expressions Python rejects, boolean substitutions on non-booleans, a `for` loop length
     that is not an integer, and a `$(param)` with no `set_parameter` in scope (in files
     reached through includes: a file checked on its own may get it from its includer).
-    Values that depend on arguments are checked with the default arguments too.
+    Values that depend on arguments are checked with the default arguments too. A failure
+    that a rule names is that rule's: a condition launch rejects is LV207, a process that
+    event handlers run again is LV501.
 
     ## Why it matters
     launch logs `Caught exception in launch` and shuts everything down; on a robot this
@@ -46,5 +48,7 @@ class EvaluationError(Rule):
         for record in graph.problems:
             if record.problem.contextual and not graph.launchable_alone():
                 continue  # what an includer of this root provides is unknown here
+            if record.problem.rule is not None:
+                continue  # a rule names this failure, and reports it
             if record.problem.kind is ProblemKind.EVALUATION:
                 yield self.finding(record.origin, text=record.problem.message)

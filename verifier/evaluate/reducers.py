@@ -71,10 +71,10 @@ class _Located:
         self.ctx, self.span = ctx, span
         return self
 
-    def fail(self, message: str) -> None:
+    def fail(self, message: str, rule: str | None = None) -> None:
         assert self.span is not None
         self.walker.problem(ProblemKind.EVALUATION, self.prefix + message, self.span, self.ctx,
-                            contextual=self.contextual)
+                            contextual=self.contextual, rule=rule)
 
     def unmodeled(self, message: str) -> None:
         assert self.span is not None

@@ -111,7 +111,7 @@ class Reducer:
         try:
             return booleans.condition_truth(value)
         except booleans.InvalidBoolean as error:
-            self.fail(str(error))
+            self.fail(str(error), rule="LV207")
             return None
 
     def guard(self, guard: Guard) -> bool | None:
@@ -186,8 +186,11 @@ class Reducer:
     def probe(self, residual: s.Sub) -> None:
         """Look at a residual expression under the default arguments (hook)."""
 
-    def fail(self, message: str) -> None:
-        """Record that launch would raise while evaluating the current action."""
+    def fail(self, message: str, rule: str | None = None) -> None:
+        """Record that launch would raise while evaluating the current action.
+
+        ``rule``: the rule that names this failure, when one does (see ``Problem.rule``).
+        """
 
     def unmodeled(self, message: str) -> None:
         """Record that a construct is not modelled."""

@@ -105,7 +105,7 @@ class Walker:
     # ------------------------------------------------------------------ recording
 
     def problem(self, kind: ProblemKind, message: str, span: Span, ctx: Ctx | None,
-                *, contextual: bool = False) -> None:
+                *, contextual: bool = False, rule: str | None = None) -> None:
         """Record an evaluation problem (``contextual``: an includer might prevent it).
 
         A failure in a part that does not run with the values it was evaluated with (an
@@ -119,7 +119,7 @@ class Walker:
             message = (f"{message}, in a part evaluated with argument values under which it "
                        "does not run: not judged (give the arguments that switch it on to "
                        "check it)")
-        self.graph.problems.append(ProblemRecord(Problem(kind, message, span, contextual),
+        self.graph.problems.append(ProblemRecord(Problem(kind, message, span, contextual, rule),
                                                  chain, ctx.path if ctx else ()))
         if kind is ProblemKind.UNMODELED:
             self.mark_incomplete()

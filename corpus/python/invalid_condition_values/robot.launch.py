@@ -17,7 +17,7 @@ def generate_launch_description():
         Node(package='demo_nodes_cpp', executable='talker', name='lidar_driver',
              condition=IfCondition(lidar)),  # expect: LV207
         Node(package='demo_nodes_cpp', executable='talker', name='base',
-             condition=IfCondition(LaunchConfiguration('robot'))),  # expect: LV002
+             condition=IfCondition(LaunchConfiguration('robot'))),  # expect: LV207
         Node(package='demo_nodes_cpp', executable='talker', name='lidar_auto',
              condition=IfCondition(EqualsSubstitution(lidar, 'auto'))),  # expect-not: LV207
         Node(package='demo_nodes_cpp', executable='talker', name='sim',
