@@ -6,7 +6,8 @@ from an action to each handler that its events fire (``OnProcessExit``/``OnProce
 target listens to every action of its kind), and an edge from a handler to each action
 its entities execute. Actions are identified as launch identifies them: by the action
 object, so re-running an action is a loop back to it. A cycle whose handlers are all
-registered without ``handle_once`` re-triggers without bound.
+registered without ``handle_once`` re-triggers without bound; one that runs a process
+object again makes launch raise (``executed more than once``), once or not.
 
 The same links order actions in time: what a handler runs starts after the handler's
 event, so after its target executed and, for ``OnProcessExit``, after the target's
@@ -19,7 +20,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from launchverify.graph import HandlerRecord, LaunchGraph
+from launchverify.graph import HandlerRecord, LaunchGraph, RerunRecord
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import PathCondition, Truthy
@@ -63,7 +64,23 @@ def event_graph(graph: LaunchGraph) -> nx.DiGraph:
     for record in graph.executed:
         if record.within is not None:
             events.add_edge(("handler", record.within), ("action", id(record.action)))
+    for rerun in graph.reruns:  # launch refuses these, but the loop is there
+        events.add_edge(("handler", rerun.within), ("action", id(rerun.action)))
     return events
+
+
+def closes_loop(graph: LaunchGraph, rerun: RerunRecord) -> bool:
+    """Return whether a refused rerun is reached from its own action's events."""
+    import networkx as nx
+
+    events = event_graph(graph)
+    action = ("action", id(rerun.action))
+    return action in events and nx.has_path(events, action, ("handler", rerun.within))
+
+
+def rerun_edges(graph: LaunchGraph) -> set[tuple[int, int]]:
+    """Return the (handler, action) pairs of refused reruns."""
+    return {(rerun.within, id(rerun.action)) for rerun in graph.reruns}
 
 
 # Order in time: which processes ended before an action executes.
@@ -208,12 +225,20 @@ def unbounded_cycles(graph: LaunchGraph, limit: int = 20) -> Iterator[Cycle]:
         sub = events.subgraph(component)
         for cycle in nx.simple_cycles(sub):
             handlers = [graph.handlers[i] for kind, i in cycle if kind == "handler"]
-            if handlers and not any(h.once for h in handlers):
+            if handlers and (not any(h.once for h in handlers) or refuses(graph, cycle)):
                 yield Cycle(tuple(cycle))
                 found += 1
                 if found >= limit:
                     return
                 break  # one cycle per strongly connected part is enough to show
+
+
+def refuses(graph: LaunchGraph, steps: list[tuple[str, int]] | tuple[tuple[str, int], ...]
+             ) -> bool:
+    """Return whether a loop runs a process object again (launch raises, once or not)."""
+    reruns = rerun_edges(graph)
+    return any(kind == "handler" and (key, steps[(p + 1) % len(steps)][1]) in reruns
+               for p, (kind, key) in enumerate(steps))
 
 
 def describe_action(action: object) -> str:
@@ -223,6 +248,8 @@ def describe_action(action: object) -> str:
             if part is not None:
                 return part.describe()
         return "a node"
+    if isinstance(action, a.ExecuteProcess) and action.process.name is not None:
+        return action.process.name.describe()
     if isinstance(action, a.ExecuteProcess) and action.cmd:
         return action.cmd[0].describe()
     return f"the {getattr(action, 'kind', 'action')}"

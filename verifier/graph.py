@@ -270,6 +270,20 @@ class ExecutedRecord:
 
 
 @dataclass(frozen=True, slots=True)
+class RerunRecord:
+    """A process object that the handler ``within`` runs again, which launch refuses.
+
+    ``problem`` indexes the ``executed more than once`` failure in ``LaunchGraph.problems``:
+    when the rerun closes a loop of handlers, LV501 names it instead of LV002.
+    """
+
+    origin: Origin
+    action: object
+    within: int
+    problem: int
+
+
+@dataclass(frozen=True, slots=True)
 class TransitionRequest:
     """A request that lifecycle nodes change state, as the launch makes it.
 
@@ -360,6 +374,7 @@ class LaunchGraph:
     param_files: dict[Path, ParamFile] = field(default_factory=dict)
     handlers: list[HandlerRecord] = field(default_factory=list)
     executed: list[ExecutedRecord] = field(default_factory=list)
+    reruns: list[RerunRecord] = field(default_factory=list)
     requests: list[TransitionRequest] = field(default_factory=list)
     launches: list[LaunchRecord] = field(default_factory=list)  # what ``run`` starts
     logs: dict[int, tuple[str, Sub]] = field(default_factory=dict)  # execution: level, text

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launchverify.events import Cycle, describe_action, unbounded_cycles
+from launchverify.events import Cycle, describe_action, refuses, unbounded_cycles
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
@@ -19,13 +19,16 @@ class EventCycle(Rule):
     fires which handler, and which actions each handler runs) and reports a loop through
     handlers that are not `handle_once`: two processes whose exits start each other, an
     `OnProcessExit` that restarts its own target, an `OnProcessStart` that starts the
-    process it listens to. The message follows the loop. Loops whose conditions cannot
+    process it listens to. A loop that runs one process object again makes launch raise
+    (`executed more than once`) the moment it closes, even through `handle_once`
+    handlers: that failure is reported here, not as LV002. The message follows the loop. Loops whose conditions cannot
     hold together are not reported; `respawn` (bounded or not) is how ROS 2 restarts a
     process and is not a loop here.
 
     ## Why it matters
     The launch never settles: processes restart forever, each restart spawning the next,
-    and a crash loop is hidden behind logs that scroll by. Supervision belongs to
+    and a crash loop is hidden behind logs that scroll by; or, when the loop comes back to
+    the same process object, launch stops with `Caught exception in launch`. Supervision belongs to
     `respawn=True` with `respawn_max_retries`, which is bounded and visible.
 
     ## Example
@@ -41,8 +44,8 @@ class EventCycle(Rule):
 
     code = "LV501"
     slug = "event-cycle"
-    severity = Severity.WARNING
-    message = "event handlers re-trigger each other without end: {loop}"
+    severity = Severity.ERROR
+    message = "event handlers re-trigger each other {outcome}: {loop}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         for found in unbounded_cycles(graph):
@@ -56,6 +59,8 @@ class EventCycle(Rule):
                 related=tuple(Related(graph.handlers[i].origin.span, "part of the loop")
                               for kind, i in cycle.steps if kind == "handler" and i != first),
                 loop=describe(graph, cycle),
+                outcome=("and launch raises when the loop closes ('executed more than once')"
+                         if refuses(graph, cycle.steps) else "without end"),
             )
 
 

@@ -20,6 +20,7 @@ from typing import Any
 import yaml
 
 from launchverify.evaluate.files import FileCache
+from launchverify.events import closes_loop
 from launchverify.evaluate.nodes import NodeBuilder
 from launchverify.evaluate.reducers import Ctx, DefaultsReducer, ScopeReducer, fill_unset
 from launchverify.evaluate.scope import (
@@ -49,6 +50,7 @@ from launchverify.graph import (
     PackageRef,
     ProblemRecord,
     ProcessSettings,
+    RerunRecord,
     SkippedAction,
     StaticArgument,
     TransitionRequest,
@@ -98,7 +100,8 @@ class Walker:
         self.executing: list[int] = []  # graph.executed indices of the actions being run
         self.delays: list[float] = []  # periods of the timers around (since launch/handler)
         self.at_shutdown = False  # walking an OnShutdown handler: no process starts
-        self.executed_processes: set[tuple[object, ...]] = set()  # (action, file, loop)
+        # (action, file, loop) -> the handler its first execution ran in (None: at launch)
+        self.executed_processes: dict[tuple[object, ...], int | None] = {}
         self.file_stack: list[tuple[Path, tuple[tuple[str | None, str], ...]]] = []
         self.incomplete = False  # something before this point was not understood
 
@@ -187,6 +190,15 @@ class Walker:
         self.record_lookups(loaded.launch.lookups, ctx)
         self.visit_all(loaded.launch.actions, ctx)
         self.file_stack.pop()
+        self.name_rerun_loops()
+
+    def name_rerun_loops(self) -> None:
+        """Give LV501 the reruns that close a loop of handlers (it explains the loop)."""
+        for rerun in self.graph.reruns:
+            if closes_loop(self.graph, rerun):
+                record = self.graph.problems[rerun.problem]
+                self.graph.problems[rerun.problem] = dataclasses.replace(
+                    record, problem=dataclasses.replace(record.problem, rule="LV501"))
 
     def load(self, path: Path, ctx: Ctx, *, root: bool = False) -> LoadedFile:
         """Load a file (cached by the loader) and record its problems once.
@@ -645,14 +657,19 @@ class Walker:
         if isinstance(action, (a.ExecuteProcess, a.Node)):
             key = (id(action), instance, ctx.loop)
             if key in self.executed_processes:
+                if within is None:  # what launch runs first; a handler's run comes later
+                    within = self.executed_processes[key]
                 when = "" if within is None else (
                     f" when the {self.graph.handlers[within].event.replace('_', ' ')} "
                     f"handler at {self.graph.handlers[within].origin.span.short()} runs it")
                 self.problem(ProblemKind.EVALUATION, "this process is executed a second "
                              f"time{when}: ros2 launch raises ('executed more than once')",
                              action.span, ctx)
+                if within is not None:
+                    self.graph.reruns.append(RerunRecord(
+                        ctx.origin(action.span), action, within, len(self.graph.problems) - 1))
                 return False
-            self.executed_processes.add(key)
+            self.executed_processes[key] = within
         self.graph.executed.append(ExecutedRecord(
             ctx.origin(action.span), action, within, instance, ctx.loop,
             sum(self.delays) if self.delays else None))

@@ -25,8 +25,8 @@ def start_helper(context):
 
 def generate_launch_description():
     use_sim = LaunchConfiguration('use_sim')
-    driver = Node(package='acme_driver', executable='driver', name='driver')  # expect: LV002
-    ping = ExecuteProcess(cmd=['ping_a'])  # expect: LV002
+    driver = Node(package='acme_driver', executable='driver', name='driver')  # expect-not: LV002
+    ping = ExecuteProcess(cmd=['ping_a'])  # expect-not: LV002
     pong = ExecuteProcess(cmd=['ping_b'])
     camera = ExecuteProcess(cmd=['camera_daemon'])
     recorder = ExecuteProcess(cmd=['recorder'])
@@ -39,12 +39,13 @@ def generate_launch_description():
     return LaunchDescription([
         DeclareLaunchArgument('use_sim', default_value='false'),
         driver,
-        # restarts its own target: the same object, so launch raises the second time
-        RegisterEventHandler(OnProcessExit(  # expect-not: LV501
+        # restarts its own target: the same object, so launch raises the second time (the
+        # loop explains it: LV501, not LV002)
+        RegisterEventHandler(OnProcessExit(  # expect: LV501
             target_action=driver, on_exit=[driver])),
         ping,
         # ping's exit starts pong, whose exit starts ping again: raises there
-        RegisterEventHandler(OnProcessExit(target_action=ping, on_exit=[pong])),
+        RegisterEventHandler(OnProcessExit(target_action=ping, on_exit=[pong])),  # expect: LV501
         RegisterEventHandler(OnProcessExit(target_action=pong, on_exit=[ping])),
         # every process exit starts a new worker, whose exit starts another one
         RegisterEventHandler(OnProcessExit(  # expect: LV501
