@@ -203,7 +203,9 @@ class ConditionRecord:
     ``guard`` is what must hold for the action to run; ``verdict`` is ``True``/``False``
     when evaluation decided it (a constant, or a value the path condition fixes), else
     ``None``. ``literal`` marks a condition written without any input (``if="true"``,
-    ``$(eval '1 < 2')``).
+    ``$(eval '1 < 2')``). ``override``: the verdict comes from a ``<let>`` (or
+    ``SetLaunchConfiguration``) that replaced, after its declaration, an argument the
+    condition reads, so the user's value no longer counts.
     """
 
     origin: Origin
@@ -211,6 +213,8 @@ class ConditionRecord:
     guard: Guard
     verdict: bool | None
     literal: bool
+    # decided by a <let>/SetLaunchConfiguration that replaced the argument it reads: where
+    override: Origin | None = None
 
     @property
     def symbolic(self) -> bool:

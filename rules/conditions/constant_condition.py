@@ -4,9 +4,9 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from launchverify.graph import LaunchGraph
+from launchverify.graph import ConditionRecord, LaunchGraph
 from launchverify.ir.symbolic import describe_placed
-from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 from launchverify.smt import reasoner_for
 
 
@@ -19,7 +19,9 @@ class ConstantCondition(Rule):
     conditions of the groups and includes around it (a group `if="$(var sim)"` holding a
     node `if="$(var sim)"`). Arguments range over every value `ros2 launch` accepts. A
     condition in a file reached through several launches is reported only when it is
-    always true in all of them.
+    always true in all of them. It reports too a condition on an argument that a `<let>`
+    (`SetLaunchConfiguration`, YAML `let`) replaced after the argument's declaration:
+    true or false, it no longer depends on what the user gives (the override is named).
 
     ## Why it matters
     The condition does nothing, which is rarely what its author meant: often a copy of
@@ -32,22 +34,33 @@ class ConstantCondition(Rule):
     </group>
     ```
 
+    ```xml
+    <arg name="use_rviz" default="true"/>
+    <let name="use_rviz" value="false"/>  <!-- left from debugging -->
+    <node pkg="rviz2" exec="rviz2" if="$(var use_rviz)"/>  <!-- use_rviz:=true: no rviz -->
+    ```
+
     ## Fix
-    Remove the condition, or write the one that was meant.
+    Remove the condition, or write the one that was meant; remove the override, or
+    scope it in a `<group>` around the actions it is for.
     """
 
     code = "LV206"
     slug = "constant-condition"
     severity = Severity.INFO
-    message = "`{condition}` is always true{where}"
+    message = "`{condition}` is always {value}{where}"
     every_context = True
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         varying = ctx.settled_for(self.code)
         for record in graph.conditions:
+            if record.override is not None:
+                yield self.overridden(record)
+                continue
             if not record.symbolic:
                 if record.verdict is True and record.literal:
-                    yield self.finding(record.origin, condition=record.text, where="")
+                    yield self.finding(record.origin, condition=record.text, value="true",
+                                       where="")
                 continue
             if record.verdict is False or record.origin.span in varying:
                 continue
@@ -58,4 +71,13 @@ class ConstantCondition(Rule):
             alone = reasoner.always((), record.guard)
             where = "" if alone else " under " + " and ".join(
                 describe_placed(g) for g in record.origin.path)
-            yield self.finding(record.origin, condition=record.text, where=where)
+            yield self.finding(record.origin, condition=record.text, value="true", where=where)
+
+    def overridden(self, record: ConditionRecord) -> Finding:
+        """Return the finding for a condition an override decides."""
+        assert record.override is not None
+        where = (f": the argument it reads is replaced at {record.override.span.short()}, "
+                 "after its declaration, so the value the user gives no longer counts")
+        return self.finding(record.origin, condition=record.text,
+                            value="true" if record.verdict else "false", where=where,
+                            related=(Related(record.override.span, "the value is set here"),))

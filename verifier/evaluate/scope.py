@@ -86,18 +86,24 @@ class Scopes:
         self.env: dict[str, Sub | None] = {}
         self._config_stack: list[dict[str, Any]] = []
         self._env_stack: list[dict[str, Sub | None]] = []
+        # arguments whose value a later <let>/SetLaunchConfiguration replaced: where
+        self.overrides: dict[str, Any] = {}
+        self._override_stack: list[dict[str, Any]] = []
 
     # launch's PushLaunchConfigurations / PopLaunchConfigurations
     def push_configs(self) -> None:
         """Enter a scope: the new scope starts as a shallow copy."""
         self._config_stack.append(self.configs)
         self.configs = dict(self.configs)
+        self._override_stack.append(self.overrides)
+        self.overrides = dict(self.overrides)
 
     def pop_configs(self) -> bool:
         """Leave a scope; return ``False`` if there was none (launch raises)."""
         if not self._config_stack:
             return False
         self.configs = self._config_stack.pop()
+        self.overrides = self._override_stack.pop()
         return True
 
     def push_env(self) -> None:

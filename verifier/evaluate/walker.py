@@ -298,8 +298,13 @@ class Walker:
         verdict = reducer.guard(guard)
         if isinstance(guard, Truthy) and verdict is None and text_of(guard.expression) is not None:
             verdict = False  # an invalid constant condition: launch raises (recorded)
+        override = None
+        if verdict is not None and not literal:  # the same file: in others, includers decide
+            override = next((found for name in read_names(condition)
+                             if (found := self.scopes.overrides.get(name)) is not None
+                             and found.span.file == span.file), None)
         self.graph.conditions.append(ConditionRecord(
-            ctx.origin(span), condition.describe(), guard, verdict, literal))
+            ctx.origin(span), condition.describe(), guard, verdict, literal, override))
         if verdict is True:
             return ctx
         if verdict is False:
@@ -334,6 +339,7 @@ class Walker:
             if existing is not None:
                 value = fill_unset(existing, value)
             self.scopes.set(action.name, value, ctx.path)
+            self.scopes.overrides.pop(action.name, None)
         current = self.scopes.get(action.name) or Unset(action.name)
         given = text_of(current)
         if action.choices is not None and given is not None and given not in action.choices:
@@ -358,7 +364,14 @@ class Walker:
             self.problem(ProblemKind.UNMODELED, "a configuration whose name is computed is "
                          "not modelled", action.span, ctx)
             return
+        previous = self.scopes.get(name)
         self.scopes.set(name, value, ctx.path)
+        current = self.scopes.get(name)
+        if (previous is not None and depends_on_argument(previous, name)
+                and current is not None and not depends_on_argument(current, name)):
+            self.scopes.overrides[name] = ctx.origin(action.span)
+        else:
+            self.scopes.overrides.pop(name, None)
         for record in self.include_stack:
             record.declared.add(name)
 
@@ -444,6 +457,7 @@ class Walker:
             arguments.append((name, value, argument.span))
             if name is not None:
                 self.scopes.set(name, value, ctx.path)
+                self.scopes.overrides.pop(name, None)  # what the includer passes counts
         record.arguments = tuple(arguments)
         # Re-entering a file with the same arguments can only recurse forever; with other
         # arguments it may terminate (a recursion guarded by a condition), up to a depth.
@@ -860,3 +874,31 @@ _LITERAL_PARTS = (s.Text, s.Concat, s.PythonExpr, s.NotSub, s.AndSub, s.OrSub, s
 def is_literal(expression: s.Sub) -> bool:
     """Return whether a condition is written without any input (``if="true"``)."""
     return all(isinstance(part, _LITERAL_PARTS) for part in s.walk(expression))
+
+
+def depends_on_argument(value: s.Sub, name: str) -> bool:
+    """Return whether a configuration's value is (or includes) the argument ``name``."""
+    stack = [value]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Arg) and item.name == name:
+            return True
+        stack.extend(item.children())
+    return False
+
+
+def read_names(condition: c.Condition) -> list[str]:
+    """Return the configurations a condition reads by a literal name."""
+    if isinstance(condition, c.ConfigEquals):
+        stack: list[s.Sub] = [s.LaunchConfig(condition.name)]
+    elif isinstance(condition, (c.IfCondition, c.UnlessCondition)):
+        stack = [condition.expression]
+    else:
+        return []
+    names: list[str] = []
+    while stack:
+        item = stack.pop()
+        if isinstance(item, s.LaunchConfig) and isinstance(item.name, s.Text):
+            names.append(item.name.text)
+        stack.extend(item.children())
+    return names
