@@ -71,7 +71,7 @@ class _Recording(BaseReducer):
 
     failed = False
 
-    def fail(self, message: str) -> None:
+    def fail(self, message: str, rule: str | None = None) -> None:
         self.failed = True
 
     def unmodeled(self, message: str) -> None:

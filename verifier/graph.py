@@ -24,11 +24,16 @@ from launchverify.span import Span
 
 @dataclass(frozen=True, slots=True)
 class Origin:
-    """Where a record comes from: span, include chain (root first), path condition."""
+    """Where a record comes from: span, include chain (root first), path condition.
+
+    ``call``: the action written around ``span`` when ``span`` is a piece of it (the
+    ``LaunchConfiguration(...)`` inside a ``Node(...)``); findings show it as related.
+    """
 
     span: Span
     chain: tuple[Span, ...] = ()
     path: PathCondition = ()
+    call: Span | None = field(default=None, compare=False)
 
     def condition_text(self) -> str | None:
         """Return the path condition as text, or ``None`` when unconditional."""

@@ -41,6 +41,8 @@ class Related:
     message: str
 
 
+IN_CALL = "in this call"  # the related call around a finding's expression
+
 @dataclass(frozen=True, slots=True)
 class Finding:
     """One reported problem, with everything reporters need."""
@@ -144,6 +146,8 @@ class Rule:
         """Build a finding from the message template at a record's origin (or a span)."""
         span, chain, path = ((origin.span, origin.chain, origin.path)
                              if isinstance(origin, Origin) else (origin, (), ()))
+        if isinstance(origin, Origin) and origin.call is not None:
+            related = (*related, Related(origin.call, IN_CALL))
         return Finding(
             code=self.code,
             slug=self.slug,

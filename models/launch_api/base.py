@@ -92,6 +92,9 @@ class Converter(Protocol):
     def pairs(self, value: Any) -> tuple[tuple[s.Sub, s.Sub], ...]:
         """Return ``(name, value)`` expressions for a dict or iterable of pairs."""
 
+    def keyword_keys(self, call: Span, keyword: str) -> dict[str, Span]:
+        """Return where each literal key of the call's ``keyword=`` dict or pairs is written."""
+
     def unmodeled(self, what: str, span: Span) -> None:
         """Record that something was not modelled (LV003)."""
 

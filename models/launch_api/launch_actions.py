@@ -343,8 +343,10 @@ class IncludeLaunchDescription(Action):
         return [description] if description is not None else []
 
     def to_ir(self, cv: Converter) -> a.Action:
+        keys = cv.keyword_keys(self._span, "launch_arguments")
         arguments = tuple(
-            a.IncludeArg(name=cv.sub(name), value=cv.sub(value), span=self._span)
+            a.IncludeArg(name=cv.sub(name), value=cv.sub(value),
+                         span=keys.get(name, self._span) if isinstance(name, str) else self._span)
             for name, value in self._arguments
         )
         source = self._source

@@ -66,7 +66,7 @@ class LaunchConfiguration(Substitution):
 
     def to_sub(self, cv: Converter) -> s.Sub:
         default = None if self._default is None else cv.sub(_default_items(self._default))
-        return s.LaunchConfig(cv.sub(self._variable_name), default)
+        return s.LaunchConfig(cv.sub(self._variable_name), default, where=self._span)
 
 
 def _default_items(default: Any) -> list[Any]:

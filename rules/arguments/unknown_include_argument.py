@@ -61,7 +61,8 @@ class UnknownIncludeArgument(Rule):
             for name, _value, span in include.arguments:
                 if name is None or name in known:
                     continue
-                origin = Origin(span, include.origin.chain, include.origin.path)
+                call = include.origin.span if span != include.origin.span else None
+                origin = Origin(span, include.origin.chain, include.origin.path, call=call)
                 yield self.finding(origin, name=name, target=include.target.name,
                                    hint=did_you_mean(name, known))
 

@@ -88,13 +88,18 @@ class ScopeReducer(_Located, Reducer):
         Reducer.__init__(self)
         _Located.__init__(self, walker)
 
-    def _origin(self) -> Origin:
+    def _origin(self, where: Span | None = None) -> Origin:
+        """Return the origin of a record: ``where`` it was written in the action's file,
+        else the action (the action's span is then the origin's ``call``)."""
         assert self.ctx is not None and self.span is not None
-        return self.ctx.origin(self.span)
+        if where is None or where.file != self.span.file or where == self.span:
+            return self.ctx.origin(self.span)
+        return Origin(where, self.ctx.chain, self.ctx.path, call=self.span)
 
-    def config(self, name: str, default: s.Sub | None) -> s.Sub:
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
         value = self.walker.scopes.get(name)
-        self.walker.record_read(name, self._origin(), value is not None, default is not None)
+        self.walker.record_read(name, self._origin(where), value is not None,
+                                default is not None)
         if value is None:
             return Unset(name) if default is None else self.reduce(default)
         if default is not None and is_unset(value):

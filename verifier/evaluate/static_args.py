@@ -17,6 +17,7 @@ from launchverify.frontends import LoadedFile
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import Unknown
+from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
 
 Loader = Callable[[Path], LoadedFile]
@@ -30,7 +31,7 @@ class ContextFreeReducer(Reducer):
         super().__init__()
         self.index = index
 
-    def config(self, name: str, default: s.Sub | None) -> s.Sub:
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
         if default is not None:
             return self.reduce(default)
         return Unknown(f"configuration {name}")

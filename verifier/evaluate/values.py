@@ -35,6 +35,7 @@ from launchverify.models.python_expression import (
     evaluate_expression,
 )
 from launchverify.models.ros_names import make_absolute, prefix_namespace
+from launchverify.span import Span
 
 
 def text_of(sub: s.Sub | None) -> str | None:
@@ -135,8 +136,8 @@ class Reducer:
 
     # ------------------------------------------------------------------ hooks
 
-    def config(self, name: str, default: s.Sub | None) -> s.Sub:
-        """Return the value of a launch configuration."""
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
+        """Return the value of a launch configuration (read at ``where``, if known)."""
         raise NotImplementedError
 
     def environment(self, name: str, default: s.Sub | None) -> s.Sub:
@@ -209,7 +210,7 @@ class Reducer:
         name = self._name(sub.name)
         if name is None:
             return Unknown(f"configuration named by {sub.name.describe()}")
-        return self.config(name, sub.default)
+        return self.config(name, sub.default, sub.where)
 
     def _env(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.EnvVar)
@@ -475,7 +476,7 @@ class BaseReducer(Reducer):
         text = self.read(path) if self.read is not None else None
         return Unknown(f"content of {path}") if text is None else s.Text(text)
 
-    def config(self, name: str, default: s.Sub | None) -> s.Sub:
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
         return Unknown(f"configuration {name}")
 
     def arg(self, sub: Arg) -> s.Sub:

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from launchverify.registry import RegistryError, resolve
-from launchverify.rule import Finding
+from launchverify.rule import IN_CALL, Finding
 from launchverify.span import Span
 from launchverify.workspace.sources import source_lines
 
@@ -34,8 +34,15 @@ class Suppression:
     unknown: tuple[str, ...] = ()  # selectors that name no rule
 
     def covers(self, finding: Finding) -> bool:
-        """Return whether this comment silences a finding."""
-        return finding.span.line in self.lines and (
+        """Return whether this comment silences a finding.
+
+        A finding inside a call (a ``LaunchConfiguration`` in ``Node(...)``'s parameters) is
+        also covered by a comment on the call's first line, where it used to point.
+        """
+        lines = {finding.span.line}
+        lines.update(r.span.line for r in finding.related
+                     if r.message == IN_CALL and r.span.file == finding.span.file)
+        return not self.lines.isdisjoint(lines) and (
             not self.selectors or finding.code in self.codes)
 
 

@@ -8,7 +8,9 @@ and launch_ros; ``describe()`` prints the frontend spelling used in messages.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, field
+
+from launchverify.span import Span
 
 
 class Sub:
@@ -80,10 +82,15 @@ class Concat(Sub):
 
 @dataclass(frozen=True, slots=True)
 class LaunchConfig(Sub):
-    """``$(var name [default])`` / ``LaunchConfiguration``."""
+    """``$(var name [default])`` / ``LaunchConfiguration``.
+
+    ``where``: the expression that created it in a Python file (a finding about the read
+    points there, not at the action using it); not part of the value.
+    """
 
     name: Sub
     default: Sub | None = None
+    where: Span | None = field(default=None, compare=False, repr=False)
 
     def describe(self) -> str:
         return _call("var", self.name, self.default)

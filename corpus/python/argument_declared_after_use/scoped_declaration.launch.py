@@ -12,6 +12,6 @@ def generate_launch_description():
             Node(package='demo_nodes_cpp', executable='talker', name='talker',
                  parameters=[{'frame_id': LaunchConfiguration('frame')}]),
         ]),
-        Node(package='demo_nodes_cpp', executable='listener', name='listener',  # expect: LV201
-             parameters=[{'frame_id': LaunchConfiguration('frame')}]),
+        Node(package='demo_nodes_cpp', executable='listener', name='listener',
+             parameters=[{'frame_id': LaunchConfiguration('frame')}]),  # expect: LV201
     ])

@@ -13,9 +13,9 @@ def include_sensors(context, sensors_file, *, extra=()):
     sensors = context.perform_substitution(LaunchConfiguration('sensors')).split(',')
     actions = []
     for sensor in sensors + list(extra):
-        actions.append(IncludeLaunchDescription(  # expect: LV204
+        actions.append(IncludeLaunchDescription(
             PythonLaunchDescriptionSource(os.path.join(HERE, sensors_file)),
-            launch_arguments={'robot': robot, 'sensor': sensor, 'rate': '10'}.items()))
+            launch_arguments={'robot': robot, 'sensor': sensor, 'rate': '10'}.items()))  # expect: LV204
     return actions
 
 

@@ -21,8 +21,8 @@ def generate_launch_description():
              condition=IfCondition(PythonExpression([rate, ' > 5']))),
         Node(package='demo_nodes_cpp', executable='talker', name='talker',
              parameters=[{'period': PythonExpression(['1.0 / ', rate])}]),
-        ExecuteProcess(  # expect: LV201
-            cmd=['ros2', 'bag', 'record', '-o', LaunchConfiguration('bag_nme'), '/scan'],
+        ExecuteProcess(
+            cmd=['ros2', 'bag', 'record', '-o', LaunchConfiguration('bag_nme'), '/scan'],  # expect: LV201
             condition=IfCondition(PythonExpression(["'", mode, "' == 'mapping'"]))),
         # the quotes are missing: eval("mapping == 'mapping'") raises NameError
         Node(package='demo_nodes_cpp', executable='listener', name='map_saver',

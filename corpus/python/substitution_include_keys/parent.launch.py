@@ -12,8 +12,8 @@ def generate_launch_description():
     robot_ip = LaunchConfiguration('robot_ip')
     return LaunchDescription([
         DeclareLaunchArgument('robot_ip'),
-        IncludeLaunchDescription(  # expect: LV208  # expect: LV204  # expect-not: LV005
+        IncludeLaunchDescription(  # expect: LV208  # expect-not: LV005
             PythonLaunchDescriptionSource(os.path.join(os.path.dirname(__file__),
                                                        'child.launch.py')),
-            launch_arguments={robot_ip: robot_ip, 'use_fake_hardware': 'false'}.items()),
+            launch_arguments={robot_ip: robot_ip, 'use_fake_hardware': 'false'}.items()),  # expect: LV204
     ])

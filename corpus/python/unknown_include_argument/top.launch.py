@@ -6,11 +6,11 @@ from launch.substitutions import PathJoinSubstitution, ThisLaunchFileDir
 
 def generate_launch_description():
     return LaunchDescription([
-        IncludeLaunchDescription(  # expect: LV204
+        IncludeLaunchDescription(
             PythonLaunchDescriptionSource(
                 PathJoinSubstitution([ThisLaunchFileDir(), 'robot.launch.py'])),
             launch_arguments={
-                'use_sim_tme': 'true',
+                'use_sim_tme': 'true',  # expect: LV204
                 'robot': 'r2',
                 'camera_rate': '30',
             }.items(),

@@ -11,6 +11,7 @@ from launchverify.ir import subst as s
 from launchverify.ir.symbolic import EnvInput
 from launchverify.models import booleans
 from launchverify.models.launch_api.placeholders import placeholder
+from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
 
 
@@ -33,7 +34,7 @@ class ConcreteReducer(Reducer):
         self.current = current
         self.reads: list[tuple[str, bool, bool]] = []  # name, found, has a default
 
-    def config(self, name: str, default: s.Sub | None) -> s.Sub:
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
         self.reads.append((name, name in self.configurations, default is not None))
         if name in self.configurations:
             return s.Text(self.configurations[name])

@@ -13,6 +13,7 @@ import os
 from collections.abc import Callable, Mapping
 from typing import Any
 
+from launchverify.frontends.python.locate import CallLocator
 from launchverify.frontends.python.sandbox import TimeLimitExceeded
 from launchverify.ir import actions as a
 from launchverify.ir import conditions as c
@@ -61,6 +62,7 @@ class PythonConverter:
         self._opaque_function = opaque_function
         self._memo: dict[int, a.Action | None] = {}
         self._keep: list[Any] = []  # keep converted objects alive while their id is a key
+        self._locator = CallLocator()
 
     # ------------------------------------------------------------------ values
 
@@ -108,6 +110,9 @@ class PythonConverter:
         if isinstance(value, base.Condition):
             return value.to_condition(self)
         return c.OpaqueCondition(f"condition {type(value).__name__}")
+
+    def keyword_keys(self, call: Span, keyword: str) -> dict[str, Span]:
+        return self._locator.keyword_keys(call, keyword)
 
     def pairs(self, value: Any) -> tuple[tuple[s.Sub, s.Sub], ...]:
         items = value.items() if isinstance(value, Mapping) else value

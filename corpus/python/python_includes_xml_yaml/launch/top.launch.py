@@ -16,10 +16,10 @@ def generate_launch_description():
         IncludeLaunchDescription(
             XMLLaunchDescriptionSource(os.path.join(here, 'camera.launch.xml')),
             launch_arguments={'camera_name': 'front'}.items()),
-        IncludeLaunchDescription(  # expect: LV204
+        IncludeLaunchDescription(
             YAMLLaunchDescriptionSource(
                 PathJoinSubstitution([ThisLaunchFileDir(), 'lidar.launch.yaml'])),
-            launch_arguments={'frame': 'laser', 'scan_rate': '10'}.items()),
+            launch_arguments={'frame': 'laser', 'scan_rate': '10'}.items()),  # expect: LV204
         IncludeLaunchDescription(  # expect: LV302
             AnyLaunchDescriptionSource(os.path.join(here, 'imu.launch.xml'))),
     ])

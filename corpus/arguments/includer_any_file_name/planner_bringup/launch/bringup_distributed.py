@@ -12,8 +12,8 @@ def generate_launch_description():
     here = os.path.dirname(__file__)
     return LaunchDescription([
         DeclareLaunchArgument('params_file', default_value=os.path.join(here, 'planner.yaml')),
-        IncludeLaunchDescription(  # expect: LV204
+        IncludeLaunchDescription(
             PythonLaunchDescriptionSource(os.path.join(here, 'planner_launch.py')),
             launch_arguments={'params_file': LaunchConfiguration('params_file'),
-                              'default_bt_xml_filename': 'tree.xml'}.items()),
+                              'default_bt_xml_filename': 'tree.xml'}.items()),  # expect: LV204
     ])

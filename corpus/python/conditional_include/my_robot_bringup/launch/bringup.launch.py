@@ -25,8 +25,8 @@ def generate_launch_description():
             launch_arguments={'robot_name': LaunchConfiguration('robot_name'),
                               'world': 'warehouse'}.items()),
         # a typo: robot_name stays unset (the includes before do not count for the check)
-        IncludeLaunchDescription(  # expect: LV204 LV208
+        IncludeLaunchDescription(  # expect: LV208
             PythonLaunchDescriptionSource(os.path.join(launch_dir, 'driver.launch.py')),
             condition=IfCondition(LaunchConfiguration('with_spare')),
-            launch_arguments={'robot_nmae': 'spare'}.items()),
+            launch_arguments={'robot_nmae': 'spare'}.items()),  # expect: LV204
     ])

@@ -1,0 +1,40 @@
+"""Python findings point at the expression that causes them (line and column)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from launchverify.engine import CheckOptions, run_check
+from launchverify.rule import IN_CALL
+
+TREE = Path(__file__).resolve().parent.parent / "corpus" / "python" / "finding_locations"
+
+
+def test_findings_point_at_the_expression_and_name_the_call() -> None:
+    report = run_check(CheckOptions(paths=[TREE], workspace=TREE))
+    found = {(f.code, f.span.line, f.span.column, f.span.end_column): f for f in report.findings}
+    # LaunchConfiguration('frame') in the Node's parameters dict, not `Node(` on line 21
+    read = found[("LV201", 27, 29, 57)]
+    assert [(r.message, r.span.line, r.span.column) for r in read.related] == [
+        (IN_CALL, 21, 9)]
+    # the key of a dict bound to a name and passed as launch_arguments=robot_arguments.items()
+    assert ("LV204", 17, 9, 22) in found
+    # the first item of a pair in a list of pairs
+    pair = found[("LV204", 38, 18, 28)]
+    assert [(r.message, r.span.line) for r in pair.related] == [(IN_CALL, 34)]
+    assert len(report.findings) == 3
+
+
+def test_a_suppression_on_the_call_still_covers_a_finding_inside_it(tmp_path: Path) -> None:
+    launch = tmp_path / "talker.launch.py"
+    launch.write_text(
+        "from launch import LaunchDescription\n"
+        "from launch.substitutions import LaunchConfiguration\n"
+        "from launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='demo_nodes_cpp', executable='talker',  # launchverify: ignore[LV201]\n"
+        "             parameters=[{'rate': LaunchConfiguration('rate')}]),\n"
+        "    ])\n")
+    report = run_check(CheckOptions(paths=[launch], workspace=tmp_path))
+    assert not [f for f in report.findings if f.code in ("LV201", "LV004")]

@@ -1,0 +1,103 @@
+"""Where a launch file writes the pieces of a call: the keys of a keyword's dict or pairs.
+
+Python values do not know where they were written: the string ``'robot_nam'`` in
+``launch_arguments={'robot_nam': 'r1'}.items()`` is just a string. A finding about that
+one argument belongs at its key, not at ``IncludeLaunchDescription(`` (ruff points at the
+expression; so do we). The models record where each call was made (line and columns);
+the file's syntax tree says what is written inside it. Only reading: nothing runs.
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+from launchverify.span import Span
+
+MAX_SOURCE_BYTES = 2 << 20  # a launch file, not a generated blob
+
+
+class CallLocator:
+    """Finds the keys written in a keyword argument of a call, by the call's position."""
+
+    def __init__(self) -> None:
+        self._calls: dict[Path, dict[tuple[int, int], ast.Call] | None] = {}
+        self._assignments: dict[Path, dict[str, list[ast.expr]]] = {}
+
+    def keyword_keys(self, call: Span, keyword: str) -> dict[str, Span]:
+        """Return the span of each literal key of ``keyword=`` in the call at ``call``.
+
+        The value may be a dict, ``{...}.items()``, a list or tuple of pairs, or a name
+        bound to one of those in the same file. Keys computed at run time are left out.
+
+        Examples:
+            >>> import tempfile, textwrap
+            >>> folder = Path(tempfile.mkdtemp())
+            >>> file = folder / "x.launch.py"
+            >>> _ = file.write_text(textwrap.dedent('''
+            ...     f(launch_arguments={'a': 1,
+            ...                         'bb': 2}.items())
+            ... '''))
+            >>> spans = CallLocator().keyword_keys(Span(file, 2, 1), "launch_arguments")
+            >>> [(k, s.line, s.column) for k, s in spans.items()]
+            [('a', 2, 21), ('bb', 3, 21)]
+        """
+        node = self._call(call)
+        if node is None:
+            return {}
+        value = next((k.value for k in node.keywords if k.arg == keyword), None)
+        return {} if value is None else self._keys(call.file, value, depth=0)
+
+    def _keys(self, file: Path, value: ast.expr, depth: int) -> dict[str, Span]:
+        if (isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute)
+                and value.func.attr == "items" and not value.args):
+            value = value.func.value  # {...}.items()
+        if isinstance(value, ast.Dict):
+            return {key.value: _span(file, key) for key in value.keys
+                    if isinstance(key, ast.Constant) and isinstance(key.value, str)}
+        if isinstance(value, (ast.List, ast.Tuple)):
+            found: dict[str, Span] = {}
+            for item in value.elts:
+                if (isinstance(item, ast.Tuple) and len(item.elts) == 2
+                        and isinstance(key := item.elts[0], ast.Constant)
+                        and isinstance(key.value, str)):
+                    found.setdefault(key.value, _span(file, key))
+            return found
+        if isinstance(value, ast.Name) and depth < 3:
+            bound = self._assignments.get(file, {}).get(value.id, [])
+            if len(bound) == 1:  # one binding in the file: no guessing which one ran
+                return self._keys(file, bound[0], depth + 1)
+        return {}
+
+    def _call(self, where: Span) -> ast.Call | None:
+        if where.file not in self._calls:
+            self._calls[where.file] = self._index(where.file)
+        calls = self._calls[where.file]
+        return None if calls is None else calls.get((where.line, where.column))
+
+    def _index(self, file: Path) -> dict[tuple[int, int], ast.Call] | None:
+        """Parse a file once; index its calls by position and its simple assignments."""
+        try:
+            source = file.read_bytes()
+            if len(source) > MAX_SOURCE_BYTES:
+                return None
+            tree = ast.parse(source, filename=str(file))
+        except (OSError, SyntaxError, ValueError, RecursionError, MemoryError):
+            return None
+        calls: dict[tuple[int, int], ast.Call] = {}
+        assignments: dict[str, list[ast.expr]] = {}
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Call):
+                calls[(node.lineno, node.col_offset + 1)] = node
+            elif isinstance(node, ast.Assign):
+                for target in node.targets:
+                    if isinstance(target, ast.Name):
+                        assignments.setdefault(target.id, []).append(node.value)
+        self._assignments[file] = assignments
+        return calls
+
+
+def _span(file: Path, node: ast.expr) -> Span:
+    """Return the span of a node (columns 1-based, as every span)."""
+    end_column = node.end_col_offset + 1 if node.end_col_offset is not None else None
+    return Span(file, node.lineno, node.col_offset + 1, node.end_lineno, end_column)
