@@ -343,3 +343,140 @@ def test_ros_distro_of_a_sourced_installation_is_the_default(
           "json", "--select", "LV002"])
     messages = [f["message"] for f in json.loads(capsys.readouterr().out)["findings"]]
     assert messages and "is not in humble (since jazzy)" in messages[0]
+
+
+# ----------------------------------------------------------------------------- handler labels
+
+
+def test_the_events_are_those_rcl_publishes() -> None:
+    pairs = {(e.start, e.goal) for e in lc.EVENTS}
+    assert ("configuring", "inactive") in pairs and ("unconfigured", "inactive") not in pairs
+    assert ("errorprocessing", "unconfigured") in pairs
+    assert not any(e.start in ("finalized", "unknown") or e.goal == "unknown"
+                   for e in lc.EVENTS)
+    assert {e.transition for e in lc.EVENTS} == set(lc.EVENT_TRANSITION_LABELS)
+
+
+@pytest.mark.parametrize(("filters", "field", "hint"), [
+    ({"goal_state": "activated"}, "goal_state", "goal_state='active'"),
+    ({"goal_state": "configured"}, "goal_state", "goal_state='inactive'"),
+    ({"goal_state": "Active"}, "goal_state", "goal_state='active'"),
+    ({"goal_state": "PRIMARY_STATE_INACTIVE"}, "goal_state", "goal_state='inactive'"),
+    ({"start_state": "cleaning_up"}, "start_state", "start_state='cleaningup'"),
+    ({"goal_state": "unknown"}, "goal_state", None),
+    ({"start_state": "finalized"}, "start_state", "goal_state='finalized'"),
+    ({"transition": "activating"}, "transition", "transition='activate'"),
+    ({"transition": "on_configure_success"}, "transition", "transition='transition_success'"),
+    ({"start_state": "unconfigured", "goal_state": "inactive"}, "start_state",
+     "start_state='configuring'"),
+    ({"start_state": "active", "goal_state": "unconfigured"}, "start_state", None),
+    ({"transition": "configure", "goal_state": "inactive"}, "transition",
+     "leave out transition='configure'"),
+    ({"goal_state": lc.NOT_TEXT}, "goal_state", None),
+])
+def test_labels_no_event_carries_are_named_with_the_one_meant(
+        filters: dict[str, str], field: str, hint: str | None) -> None:
+    problem = lc.never_matches(tuple(filters.items()))
+    assert problem is not None and problem.field == field and problem.hint == hint
+
+
+@pytest.mark.parametrize("filters", [
+    {"goal_state": "inactive"}, {"start_state": "configuring", "goal_state": "inactive"},
+    {"start_state": "activating", "goal_state": "active"}, {"goal_state": "finalized"},
+    {"goal_state": "errorprocessing"}, {"transition": "configure"},
+    {"transition": "transition_success", "goal_state": "active"},
+])
+def test_labels_rcl_publishes_match(filters: dict[str, str]) -> None:
+    assert lc.never_matches(tuple(filters.items())) is None
+
+
+@given(st.dictionaries(st.sampled_from(lc.FILTER_FIELDS),
+                       st.sampled_from([*lc.STATE_LABELS, *lc.EVENT_TRANSITION_LABELS])))
+def test_a_filter_never_matches_exactly_when_no_event_passes_it(
+        filters: dict[str, str]) -> None:
+    values = [{"transition": e.transition, "start_state": e.start, "goal_state": e.goal}
+              for e in lc.EVENTS]
+    some = any(all(v[k] == label for k, label in filters.items()) for v in values)
+    assert (lc.never_matches(tuple(filters.items()), "rolling") is None) == some
+    if "transition" in filters:  # before rolling the events carry no transition label
+        assert lc.never_matches(tuple(filters.items()), "humble") is not None
+
+
+def test_transition_labels_follow_the_distribution() -> None:
+    assert [lc.transition_labels(d) for d in distros.DISTROS] == [
+        False, False, False, False, True]
+    problem = lc.never_matches((("transition", "configure"),), "kilted")
+    assert problem is not None and "ros2/rcl#1019" in problem.reason
+    assert problem.hint == "goal_state='configuring'"
+
+
+def codes_at(path: Path, distro: str | None = None) -> list[tuple[int, str]]:
+    report = run_check(CheckOptions(paths=[path], workspace=path.parent, distro=distro,
+                                    select=["LV503", "LV504"]))
+    return sorted((f.span.line, f.code) for f in report.findings)
+
+
+def test_a_transition_filter_never_fires_before_rolling() -> None:
+    path = CORPUS / "handler_labels_clean" / "localization.launch.py"
+    line = next(i for i, text in enumerate(path.read_text().splitlines(), 1)
+                if "transition='configure'" in text)
+    assert codes_at(path) == codes_at(path, "rolling") == []
+    assert codes_at(path, "jazzy") == codes_at(path, "humble") == [(line, "LV504")]
+
+
+GATED = """
+def generate_launch_description():
+    a = LifecycleNode(package='p', executable='a', name='a', namespace='')
+    on_inactive = OnStateTransition(
+        target_lifecycle_node=a, transition='transition_success',
+        goal_state='inactive', entities=[change(a, Transition.TRANSITION_ACTIVATE)])
+    return LaunchDescription([
+        a, change(a, Transition.TRANSITION_CONFIGURE),
+        RegisterEventHandler(on_inactive),
+    ])
+"""
+
+
+def test_a_dead_handler_gates_the_activation_in_the_search(tmp_path: Path) -> None:
+    path = write(tmp_path, GATED)
+    assert "active" in reached(path)["/a"]  # any distribution: rolling's events have labels
+    with distros.checking("jazzy"):
+        graph = graph_of(path)
+        assert "active" not in {s for s in analyse(graph).exploration.reached[0]}
+        assert not analyse(graph).exploration.fired
+    # LV504 at the argument, though the handler is built apart from its registration;
+    # LV503 at the registration, naming the activation that is never sent
+    lines = (HEADER + GATED).splitlines()
+    label = next(i for i, text in enumerate(lines, 1) if "transition=" in text)
+    register = next(i for i, text in enumerate(lines, 1) if "RegisterEventHandler(" in text)
+    assert codes_at(path, "jazzy") == [(label, "LV504"), (register, "LV503")]
+    report = run_check(CheckOptions(paths=[path], workspace=tmp_path, distro="jazzy",
+                                    select=["LV503"]))
+    assert "/a is never asked to activate and stays inactive" in report.findings[0].message
+
+
+WAITING = """
+def generate_launch_description():
+    a = LifecycleNode(package='p', executable='a', name='a', namespace='')
+    return LaunchDescription([
+        a, change(a, Transition.TRANSITION_CONFIGURE),
+        RegisterEventHandler(OnStateTransition(
+            target_lifecycle_node=a, goal_state='inactve',
+            entities=[change(a, Transition.TRANSITION_ACTIVATE)])),
+        RegisterEventHandler(OnStateTransition(
+            target_lifecycle_node=a, goal_state='active',
+            entities=[Node(package='p', executable='b', name='b')])),
+    ])
+"""
+
+
+def test_what_waits_on_a_dead_handler_is_not_reported_apart(tmp_path: Path) -> None:
+    path = write(tmp_path, WAITING)
+    lines = (HEADER + WAITING).splitlines()
+    label = next(i for i, text in enumerate(lines, 1) if "'inactve'" in text)
+    report = run_check(CheckOptions(paths=[path], workspace=tmp_path,
+                                    select=["LV503", "LV504"]))
+    found = sorted((f.span.line, f.code) for f in report.findings)
+    assert found == [(label - 1, "LV503"), (label, "LV504")]  # not the 'active' handler
+    assert "did you mean goal_state='inactive'?" in next(
+        f.message for f in report.findings if f.code == "LV504")

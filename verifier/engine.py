@@ -175,7 +175,8 @@ def run_check(options: CheckOptions) -> Report:
     includers = Includers.of_workspace(index.workspaces)
     for graph in graphs:
         graph.included_elsewhere = graph.root in included or includers.included(graph.root)
-    findings = run_rules(graphs, rules, RuleContext(packages=index))
+    with distros.checking(options.distro):  # rules judge for it too (lifecycle labels)
+        findings = run_rules(graphs, rules, RuleContext(packages=index))
     loaded = {path for g in graphs for path in g.files}
     findings, suppressed = _suppress(findings, loaded, rules)
     findings = _configured(findings, config)

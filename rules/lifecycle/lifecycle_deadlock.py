@@ -24,6 +24,12 @@ class LifecycleDeadlock(PollingRule):
       for `/a` to become active, and the one that activates `/a` waits for `/b`);
     - a handler waiting for a bring-up state (configuring, inactive, activating, active)
       that its node never reaches, because nothing in the launch moves it on;
+    - a handler that never fires because its labels match no lifecycle event
+      (`goal_state='activated'`, `'Active'`, `start_state='unconfigured',
+      goal_state='inactive'`, `transition=` before rolling: see LV504), when the bring-up
+      needed what it runs: a `configure`/`activate` its node would have accepted, a node
+      it starts. Handlers that wait for what only such a handler would do are its
+      consequence, not reported apart;
     - a nav2 lifecycle manager that never gets to configure its nodes, because one of
       them is started only by something that never happens.
 
@@ -43,11 +49,15 @@ class LifecycleDeadlock(PollingRule):
     RegisterEventHandler(OnStateTransition(target_lifecycle_node=b, goal_state='active',
         entities=[EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(a),
                                               transition_id=Transition.TRANSITION_ACTIVATE))])),
+    # 'Active' is no label rcl publishes: the planner never starts
+    RegisterEventHandler(OnStateTransition(target_lifecycle_node=a, goal_state='Active',
+        entities=[Node(package='nav2_planner', executable='planner_server')])),
     ```
 
     ## Fix
     Break the cycle: activate one node unconditionally (when it reaches `inactive`), or
-    let one lifecycle manager bring the nodes up in order.
+    let one lifecycle manager bring the nodes up in order. A handler that never fires
+    needs the label LV504 names.
     """
 
     code = "LV503"

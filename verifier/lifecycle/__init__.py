@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from launchverify.graph import LaunchGraph
 from launchverify.lifecycle.explore import Exploration, Where, explore
 from launchverify.lifecycle.system import System, build_system
+from launchverify.models import distros
 
 __all__ = ["Analysis", "Where", "analyse", "bringup"]
 
@@ -25,14 +26,18 @@ class Analysis:
 
 
 def analyse(graph: LaunchGraph) -> Analysis:
-    """Return the lifecycle analysis of a graph (computed once)."""
+    """Return the lifecycle analysis of a graph (computed once per distribution checked).
+
+    The distribution matters: before rolling, lifecycle events carry no transition label,
+    so a handler filtering on one never fires (``labels.py``).
+    """
     cache = graph.derived.setdefault("lifecycle", {})
-    found = cache.get(0)
+    found = cache.get(distros.current())
     if isinstance(found, Analysis):
         return found
     system = build_system(graph)
     analysis = Analysis(system, explore(system) if not system.empty else Exploration())
-    cache[0] = analysis
+    cache[distros.current()] = analysis
     return analysis
 
 

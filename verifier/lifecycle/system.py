@@ -9,7 +9,8 @@ Built from the evaluator's records, under the arguments as given (``graph.base``
 - requests: ``ChangeState``, ``LifecycleTransition``, ``autostart`` and ``ros2 lifecycle
   set`` commands, each made by the block its action executes in;
 - reactions: the handlers whose entities matter to the bring-up and that fire on a
-  lifecycle event (``OnStateTransition``), a process start or exit, or an action's end;
+  lifecycle event (``OnStateTransition``; one whose labels no event carries never fires,
+  see ``labels.py``), a process start or exit, or an action's end;
 - managers: nav2 lifecycle managers with the nodes they wait for.
 
 What the launch asks but can never deliver is found here, before any search: a
@@ -24,6 +25,7 @@ from dataclasses import dataclass, field
 
 from launchverify.graph import ExecutedRecord, LaunchGraph, NodeRecord, Origin
 from launchverify.ir import actions as a
+from launchverify.lifecycle.labels import never_fires
 from launchverify.lifecycle.managers import ManagerSpec, is_manager, manager_spec
 from launchverify.models import lifecycle as lc
 from launchverify.suggest import typo_of
@@ -73,9 +75,12 @@ class Reaction:
     once: bool
     registered: Block
     origin: Origin
+    never: lc.NeverMatches | None = None  # labels no event carries: it never fires
 
     def matches(self, event: lc.TransitionEvent) -> bool:
         """Return whether a transition event passes the handler's label filters."""
+        if self.never is not None:
+            return False  # e.g. transition labels, which events carry only since rolling
         values = {"transition": event.transition, "start_state": event.start,
                   "goal_state": event.goal}
         return all(values[name] == label for name, label in self.filters)
@@ -387,7 +392,7 @@ class _Builder:
                     targets = frozenset(runs)
             self.system.reactions[key] = Reaction(
                 key, handler.event, nodes, targets, handler.filters, handler.once, registered,
-                handler.origin)
+                handler.origin, never_fires(handler))
         for index, record in enumerate(self.graph.executed):
             block = (record.within, record.delay)
             if isinstance(record.action, PROCESS_ACTIONS):

@@ -9,6 +9,7 @@ file (``rule.Poll``): a file evaluated alone may lack what an includer supplies.
 
 from __future__ import annotations
 
+import dataclasses
 from collections import Counter
 from dataclasses import dataclass
 from typing import NamedTuple
@@ -17,6 +18,7 @@ from launchverify.findings.trace import Step
 from launchverify.graph import LaunchGraph, Origin
 from launchverify.lifecycle import Analysis
 from launchverify.lifecycle.explore import Source, Where, verb
+from launchverify.lifecycle.labels import dead_handlers
 from launchverify.lifecycle.system import Block, Reaction
 from launchverify.models import lifecycle as lc
 from launchverify.models.ros_names import node_fqn
@@ -93,6 +95,26 @@ def unanswerable_requests(graph: LaunchGraph,
                  Verdict(refusal.origin, f"{refusal.label}: {refusal.reason}"))
                 for refusal in system.refusals]
     return answers
+
+
+def dead_handler_labels(graph: LaunchGraph) -> list[Verdict]:
+    """``OnStateTransition`` labels no lifecycle event carries: the handler never fires.
+
+    Reported at the argument to change, with the label the author most likely meant.
+    """
+    out = []
+    for dead in dead_handlers(graph):
+        problem = dead.problem
+        message = (f"{problem.argument} matches no lifecycle event, so this handler never "
+                   f"fires and what it runs never starts: {problem.reason}")
+        if problem.hint is not None:
+            message += (f" ({problem.hint})" if problem.hint.startswith("leave out") else
+                        f" (did you mean {problem.hint}?)")
+        related = (() if dead.span == dead.handler.origin.span else
+                   ((dead.handler.origin.span, "the handler that never fires"),))
+        out.append(Verdict(dataclasses.replace(dead.handler.origin, span=dead.span), message,
+                           related))
+    return out
 
 
 class _Case(NamedTuple):
@@ -228,12 +250,18 @@ def deadlocks(graph: LaunchGraph, analysis: Analysis) -> list[tuple[Question, Ve
     refused_nodes = {node for (_, node, _) in exploration.refused}
     driven = _driven_nodes(analysis)
     waiting: dict[int, int] = {}  # never-firing bring-up handler -> the node it waits for
+    dead: list[int] = []  # handlers whose labels no event carries
     asked: dict[int, Question] = {}
     ask = Questions()
     for key, reaction in system.reactions.items():
         if (reaction.event != "state_transition"
-                or reaction.registered not in exploration.happened
-                or reaction.nodes is None or len(reaction.nodes) != 1
+                or reaction.registered not in exploration.happened):
+            continue
+        if reaction.never is not None:
+            asked[key] = ask(reaction.origin, "handler")
+            dead.append(key)
+            continue
+        if (reaction.nodes is None or len(reaction.nodes) != 1
                 or not any(reaction.matches(e) for e in BRINGUP_EVENTS)):
             continue
         asked[key] = ask(reaction.origin, "handler")
@@ -244,8 +272,14 @@ def deadlocks(graph: LaunchGraph, analysis: Analysis) -> list[tuple[Question, Ve
                 or node in refused_nodes):
             continue
         waiting[key] = node
-    needs = {key: _needs(analysis, key, node, waiting) for key, node in waiting.items()}
     verdicts: dict[int, Verdict] = {}
+    for key in dead:
+        found = _dead_verdict(graph, analysis, key)
+        if found is not None:
+            verdicts[key] = found
+    # a handler waiting for what only a dead handler would do is that one's consequence
+    blockers = set(waiting) | set(verdicts)
+    needs = {key: _needs(analysis, key, node, blockers) for key, node in waiting.items()}
     in_cycle: set[int] = set()
     for cycle in _cycles(needs):
         in_cycle.update(cycle)
@@ -272,7 +306,7 @@ def _driven_nodes(analysis: Analysis) -> set[int]:
     return driven
 
 
-def _needs(analysis: Analysis, key: int, node: int, waiting: dict[int, int]) -> set[int]:
+def _needs(analysis: Analysis, key: int, node: int, blockers: set[int]) -> set[int]:
     """Return the never-firing handlers whose blocks hold what would move ``node`` on.
 
     Only requests rcl would accept where the node stops count (an ``activate`` does not
@@ -288,9 +322,85 @@ def _needs(analysis: Analysis, key: int, node: int, waiting: dict[int, int]) -> 
     if node not in exploration.reached:
         blocks.append(system.nodes[node].block)
     for block in blocks:
-        if block not in exploration.happened and block[0] in waiting and block[0] != key:
+        if block not in exploration.happened and block[0] in blockers and block[0] != key:
             found.add(block[0])
     return found
+
+
+def _furthest(analysis: Analysis, node: int) -> str | None:
+    """Return the furthest bring-up state a node reaches (``None``: never started)."""
+    reached = analysis.exploration.reached.get(node, {})
+    return max((s for s in reached if s in ORDER), key=ORDER.index, default=None)
+
+
+def _nested(graph: LaunchGraph, key: int) -> set[int]:
+    """Return a handler and every handler registered, directly or not, by what it runs."""
+    out = set()
+    for index in range(len(graph.handlers)):
+        within: int | None = index
+        while within is not None and within != key:
+            within = graph.handlers[within].within
+        if within == key:
+            out.add(index)
+    return out
+
+
+def _dead_verdict(graph: LaunchGraph, analysis: Analysis, key: int) -> Verdict | None:
+    """What a handler that never fires would bring up, and so never happens (or ``None``).
+
+    Counted: a ``configure``/``activate`` request its node would accept where it stops,
+    a lifecycle node it starts that never starts, and any other process it starts. Nodes
+    a lifecycle manager waits for are left to the manager's finding, which names the
+    handler.
+    """
+    from launchverify.events import describe_action
+    from launchverify.ir import actions as a
+
+    system, exploration = analysis.system, analysis.exploration
+    reaction = system.reactions[key]
+    assert reaction.never is not None
+    nested = _nested(graph, key)
+    blocks = [b for b in system.blocks if b[0] in nested and b not in exploration.happened]
+    managed = {n for m in system.managers for n in m.nodes if n is not None}
+    by_execution = {node.record.execution: index for index, node in enumerate(system.nodes)
+                    if node.record.execution is not None}
+    lost: dict[tuple[str, int], str] = {}
+    related: list[tuple[Span, str]] = []
+    trace: tuple[Step, ...] = ()
+    for request in system.requests:
+        node = request.node
+        if request.block not in blocks or node in exploration.incomplete_nodes:
+            continue
+        wanted = request.transitions[0]
+        furthest = _furthest(analysis, node)
+        if (furthest is None or verb(wanted) not in ("configure", "activate")
+                or lc.resolve(furthest, wanted) is None or ("node", node) in lost):
+            continue
+        fqn = system.nodes[node].fqn
+        lost[("node", node)] = f"{fqn} is never asked to {verb(wanted)} and stays {furthest}"
+        related.append((request.origin.span, f"never sent: asks {fqn} to {verb(wanted)}"))
+        if not trace:
+            trace = exploration.trace(exploration.reached[node][furthest])
+    for block in blocks:
+        for execution in system.blocks[block].processes:
+            record = system.executions[execution]
+            started = by_execution.get(execution)
+            if started is not None:
+                if (started in exploration.reached or started in managed
+                        or started in exploration.incomplete_nodes):
+                    continue
+                words = f"{system.nodes[started].fqn} is never started"
+            else:
+                kind = "node" if isinstance(record.action, a.Node) else "process"
+                words = f"{kind} '{describe_action(record.action)}' never starts"
+            if ("process", execution) not in lost:
+                lost[("process", execution)] = words
+                related.append((record.origin.span, "never started"))
+    if not lost:
+        return None
+    return Verdict(reaction.origin, f"this handler never fires ({reaction.never.argument} "
+                   "matches no lifecycle event), so the bring-up it drives never happens: "
+                   + "; ".join(lost.values()), tuple(related), trace)
 
 
 def _cycles(needs: dict[int, set[int]]) -> list[list[int]]:
@@ -367,8 +477,12 @@ def _stuck_managers(analysis: Analysis) -> dict[int, Verdict]:
         if missing:
             node = system.nodes[missing[0]]
             starter = node.block[0]
+            never = (system.reactions[starter].never
+                     if starter is not None and starter in system.reactions else None)
             why = (f"{node.fqn} is started only by the handler at "
                    f"{system.reactions[starter].origin.span.short()}, which never fires"
+                   + ("" if never is None else
+                      f" ({never.argument} matches no lifecycle event)")
                    if starter is not None and starter in system.reactions else
                    f"{node.fqn} never starts")
         else:
