@@ -15,12 +15,14 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from launchverify.engine import CheckOptions, run_check
 from launchverify.frontends import LoadedFile, launch_format, load_launch_file
 from launchverify.frontends.tags import TAGS, TagParser
 from launchverify.frontends.xml_reader import read_xml
 from launchverify.frontends.yaml_reader import read_yaml
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
+from launchverify.models import distros
 from launchverify.problems import ProblemKind, ProblemSink
 from launchverify.span import Span
 
@@ -274,6 +276,10 @@ TAG_EXAMPLES: dict[str, tuple[type[a.Action], dict[str, str], dict[str, list[dic
     "set_parameters_from_file": (a.SetParametersFromFile, {"filename": "p.yaml"}, {}),
     "set_use_sim_time": (a.SetUseSimTime, {"value": "true"}, {}),
     "set_ros_log_dir": (a.SetRosLogDir, {"new_log_dir": "/tmp/logs"}, {}),
+    # ros_gz's launch extensions: what each starts, in the scope it runs in
+    "gz_server": (a.Group, {}, {}),
+    "gz_spawn_model": (a.Group, {}, {}),
+    "ros_gz_bridge": (a.Group, {"bridge_name": "b"}, {}),
 }
 
 
@@ -427,6 +433,212 @@ def test_sniffed_launch_suffix_is_read(tmp_path: Path) -> None:
     assert loaded.format == "xml"
     assert loaded.launch is not None
     assert len(loaded.launch.actions) == 1
+
+
+# --------------------------------------------------------------------------- ros_gz tags
+
+
+def only_group(tmp_path: Path, body: str, name: str = "gz.launch.xml") -> a.Group:
+    loaded = load(tmp_path, name, f"<launch>\n  {body}\n</launch>\n")
+    assert parse_problems(loaded) == []
+    assert loaded.launch is not None
+    (group,) = loaded.launch.actions
+    assert isinstance(group, a.Group)
+    assert not group.scoped  # what an action's execute returns runs in its own scope
+    return group
+
+
+def params(entries: tuple[a.ParamEntry, ...]) -> dict[str, object]:
+    out: dict[str, object] = {}
+    for entry in entries:
+        assert isinstance(entry, a.ParamDict)
+        for item in entry.items:
+            assert isinstance(item.name, s.Text)
+            out[item.name.text] = item.value.value
+    return out
+
+
+def test_gz_server_starts_gzserver_with_its_world(tmp_path: Path) -> None:
+    group = only_group(tmp_path, '<gz_server world_sdf_file="$(var w)" if="$(var sim)"/>')
+    assert group.condition is not None and group.condition.describe() == "if $(var sim)"
+    plugins, resources, node = group.actions
+    assert isinstance(plugins, a.SetEnv) and plugins.name == s.Text("GZ_SIM_SYSTEM_PLUGIN_PATH")
+    assert isinstance(resources, a.SetEnv) and resources.name == s.Text("GZ_SIM_RESOURCE_PATH")
+    assert type(node) is a.Node
+    assert (node.package, node.executable, node.name) == (
+        s.Text("ros_gz_sim"), s.Text("gzserver"), None)  # its code calls it gzserver
+    assert node.condition is None
+    assert params(node.parameters) == {"world_sdf_file": s.LaunchConfig(s.Text("w")),
+                                       "world_sdf_string": s.Text("")}
+
+
+def test_gz_server_composed_in_its_own_container(tmp_path: Path) -> None:
+    group = only_group(tmp_path, '<gz_server use_composition="True" container_name="c" '
+                                 'create_own_container="true"/>')
+    container = group.actions[-1]
+    assert isinstance(container, a.ComposableNodeContainer)
+    assert (container.package, container.executable, container.name, container.namespace) == (
+        s.Text("rclcpp_components"), s.Text("component_container"), s.Text("c"), s.Text(""))
+    (component,) = container.composable_nodes
+    assert (component.plugin, component.name) == (s.Text("ros_gz_sim::GzServer"),
+                                                  s.Text("gz_server"))
+    assert [item.name for item in component.extra_arguments] == [
+        s.Text("use_intra_process_comms")]
+
+
+def test_composition_from_an_argument_conditions_each_setup(tmp_path: Path) -> None:
+    group = only_group(tmp_path, '<ros_gz_bridge bridge_name="b" '
+                                 'use_composition="$(var comp)" container_name="sim"/>')
+    node, load_nodes = group.actions
+    assert isinstance(node, a.Node) and node.condition is not None
+    assert node.condition.describe() == "if $(not $(var comp))"
+    assert isinstance(load_nodes, a.LoadComposableNodes) and load_nodes.condition is not None
+    assert load_nodes.condition.describe() == "if $(var comp)"
+    assert load_nodes.target == s.Text("sim")
+    group = only_group(tmp_path, '<ros_gz_bridge bridge_name="b" use_composition="$(var c)" '
+                                 'create_own_container="$(var own)"/>')
+    assert [x.condition.describe() for x in group.actions if x.condition is not None] == [
+        "if $(not $(var c))", "if $(and $(var c) $(var own))",
+        "if $(and $(var c) $(not $(var own)))"]
+    assert [type(x) for x in group.actions] == [
+        a.Node, a.ComposableNodeContainer, a.LoadComposableNodes]
+
+
+def test_ros_gz_bridge_node_and_parameters(tmp_path: Path) -> None:
+    group = only_group(tmp_path, """<ros_gz_bridge bridge_name="clock" namespace="r1"
+        config_file="/c.yaml" use_respawn="true" log_level="debug"
+        bridge_params="{'qos.depth': '5', 'x': 'y'}">
+      <topic ros_topic_name="/clock" gz_topic_name="/clock" ros_type_name="rosgraph_msgs/msg/Clock"
+             gz_type_name="gz.msgs.Clock" publisher_queue="7"/>
+      <service service_name="/s" ros_type_name="a/srv/B" gz_req_type_name="gz.msgs.A"
+               gz_rep_type_name="gz.msgs.B"/>
+    </ros_gz_bridge>""")
+    (node,) = group.actions
+    assert isinstance(node, a.Node)
+    assert (node.package, node.executable, node.name, node.namespace) == (
+        s.Text("ros_gz_bridge"), s.Text("bridge_node"), s.Text("clock"), s.Text("r1"))
+    assert node.arguments == (s.Text("--ros-args"), s.Text("--log-level"), s.Text("debug"))
+    assert (node.process.respawn, node.process.respawn_delay) == (True, 2.0)
+    assert params(node.parameters) == {
+        "config_file": s.Text("/c.yaml"), "qos.depth": "5", "x": "y",
+        "bridges.bridge_0.ros_topic_name": s.Text("/clock"),
+        "bridges.bridge_0.ros_type_name": s.Text("rosgraph_msgs/msg/Clock"),
+        "bridges.bridge_0.gz_topic_name": s.Text("/clock"),
+        "bridges.bridge_0.gz_type_name": s.Text("gz.msgs.Clock"),
+        "bridges.bridge_0.publisher_queue": 7,
+        "bridges.bridge_1.service_name": s.Text("/s"),
+        "bridges.bridge_1.ros_type_name": s.Text("a/srv/B"),
+        "bridges.bridge_1.gz_req_type_name": s.Text("gz.msgs.A"),
+        "bridges.bridge_1.gz_rep_type_name": s.Text("gz.msgs.B"),
+        "bridge_names": ("bridge_0", "bridge_1"),
+    }
+
+
+def test_gz_spawn_model_sets_its_include_arguments(tmp_path: Path) -> None:
+    group = only_group(tmp_path, '<gz_spawn_model file="/m.sdf" x="1" roll="0.5"/>')
+    *sets, create = group.actions
+    assert all(isinstance(x, a.SetConfig) for x in sets)
+    given = {x.name: x.value for x in sets if isinstance(x, a.SetConfig)}
+    assert given[s.Text("file")] == s.Text("/m.sdf")
+    assert given[s.Text("roll")] == s.Text("0.5")
+    assert given[s.Text("topic")] == s.Text("")  # omitted: empty (ros_gz#909)
+    assert isinstance(create, a.Node)
+    assert (create.package, create.executable, create.name) == (
+        s.Text("ros_gz_sim"), s.Text("create"), None)
+    values = params(create.parameters)
+    assert values["string"] == s.LaunchConfig(s.Text("model_string"))
+    # the included file reads R, not the roll the action passes
+    assert values["R"] == s.LaunchConfig(s.Text("R"), s.Text("0.0"))
+
+
+@pytest.mark.parametrize(("text", "fragment"), [
+    ('<ros_gz_bridge config_file="/c.yaml"/>', "requires the attribute `bridge_name`"),
+    ('<ros_gz_bridge bridge_name="b" config="/c.yaml"/>', "unexpected attribute `config`"),
+    ('<ros_gz_bridge bridge_name="b"><topic ros_topic_name="/a"/></ros_gz_bridge>',
+     "`topic` requires the attribute `ros_type_name`"),
+    ('<gz_server world="empty.sdf"/>', "unexpected attribute `world`"),
+    ("<gzserver/>", "ros_gz_sim's tag is <gz_server>"),
+])
+def test_ros_gz_tags_refuse_what_their_parse_refuses(text: str, fragment: str,
+                                                     tmp_path: Path) -> None:
+    loaded = load(tmp_path, "bad.launch.xml", f"<launch>{text}</launch>")
+    assert any(fragment in m for m in parse_problems(loaded)), parse_problems(loaded)
+
+
+@pytest.mark.parametrize("value", ["a:b:c", "$(var extra)"])
+def test_bridge_params_not_read_here_are_unknown(value: str, tmp_path: Path) -> None:
+    loaded = load(tmp_path, "p.launch.xml",
+                  f'<launch><ros_gz_bridge bridge_name="b" bridge_params="{value}"/></launch>')
+    (problem,) = loaded.problems
+    assert problem.kind is ProblemKind.UNMODELED
+    assert "the bridge parameters it adds are unknown" in problem.message
+
+
+@pytest.mark.parametrize(("distro", "known"), [("humble", False), ("iron", False),
+                                               ("jazzy", True), ("rolling", True)])
+def test_ros_gz_tags_exist_from_jazzy(distro: str, known: bool, tmp_path: Path) -> None:
+    with distros.checking(distro):
+        loaded = load(tmp_path, "d.launch.xml", '<launch><gz_server/></launch>')
+    messages = parse_problems(loaded)
+    assert (messages == []) is known, messages
+    if not known:
+        assert f"not in {distro} (since jazzy)" in messages[0]
+
+
+ROS_GZ_PYTHON = """
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from ros_gz_bridge.actions import RosGzBridge
+from ros_gz_sim.actions import GzServer, GzSpawnModel
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('comp', default_value='false'),
+        GzServer(world_sdf_file='empty.sdf', use_composition=LaunchConfiguration('comp'),
+                 create_own_container=True),
+        RosGzBridge(bridge_name='bridge', config_file='/c.yaml', namespace='r1',
+                    use_composition=LaunchConfiguration('comp'), bridge_params="'a': 'b'",
+                    extra_bridge_params={'expand_gz_topic_names': True}),
+        GzSpawnModel(world='empty', file='/m.sdf', entity_name='robot'),
+    ])
+"""
+
+
+def _python_nodes(tmp_path: Path, *arguments: str, distro: str | None = None
+                  ) -> tuple[list[tuple[str | None, str | None, str | None]], list[str]]:
+    path = tmp_path / "gz.launch.py"
+    path.write_text(ROS_GZ_PYTHON)
+    report = run_check(CheckOptions(paths=[path], workspace=tmp_path, distro=distro,
+                                    arguments=dict(a.split(":=") for a in arguments)))
+    codes = [f.code for f in report.findings if f.code != "LV003"]
+    if not report.graphs:
+        return [], codes
+    graph = report.graphs[0]
+    nodes = [(graph.base(n.fqn) if n.fqn is not None else None, graph.base(n.package),
+              graph.base(n.executable)) for n in graph.nodes
+             if graph.runs(n.origin) is not False]
+    return nodes, codes
+
+
+def test_python_actions_start_the_same_nodes(tmp_path: Path) -> None:
+    nodes, codes = _python_nodes(tmp_path)
+    assert codes == []
+    assert nodes == [(None, "ros_gz_sim", "gzserver"),
+                     ("/r1/bridge", "ros_gz_bridge", "bridge_node"),
+                     (None, "ros_gz_sim", "create")]
+    nodes, codes = _python_nodes(tmp_path, "comp:=true")
+    assert codes == []
+    assert nodes == [("/ros_gz_container", "rclcpp_components", "component_container"),
+                     ("/gz_server", "ros_gz_sim", "ros_gz_sim::GzServer"),
+                     ("/r1/bridge", "ros_gz_bridge", "ros_gz_bridge::RosGzBridge"),
+                     (None, "ros_gz_sim", "create")]
+
+
+def test_python_actions_are_missing_before_jazzy(tmp_path: Path) -> None:
+    _, codes = _python_nodes(tmp_path, distro="humble")
+    assert codes == ["LV002"]
 
 
 # --------------------------------------------------------------------------- hostile input

@@ -24,6 +24,7 @@ from launchverify.models.launch_api import (
     launch_events,
     launch_ros,
     moveit,
+    ros_gz,
 )
 from launchverify.models.launch_api import launch_actions as la
 from launchverify.models.launch_api import launch_substitutions as ls
@@ -194,6 +195,10 @@ MODULES: dict[str, dict[str, Any]] = {
     "launch_testing_ros": {},
     "lifecycle_msgs": {},
     "lifecycle_msgs.msg": {"State": State, "Transition": Transition},
+    "ros_gz_sim": {},
+    "ros_gz_sim.actions": _exports(ros_gz, "GzServer", "GzSpawnModel"),
+    "ros_gz_bridge": {},
+    "ros_gz_bridge.actions": _exports(ros_gz, "RosGzBridge"),
 }
 
 

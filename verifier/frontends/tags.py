@@ -20,6 +20,7 @@ from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.ir.conditions import Condition
 from launchverify.models import distros
+from launchverify.models.launch_api import ros_gz
 from launchverify.problems import Problem, ProblemKind, ProblemSink
 from launchverify.span import Span
 
@@ -58,13 +59,16 @@ TAG_HINTS = {
     "composable_node": "only allowed inside <node_container> or <load_composable_node>",
     "push_namespace": "use <push_ros_namespace>",
     "pop_ros_namespace": "namespaces end with the enclosing <group>; there is no pop",
+    "gzserver": "ros_gz_sim's tag is <gz_server>",
+    "gz_bridge": "ros_gz_bridge's tag is <ros_gz_bridge>",
+    "ros_gz_spawn_model": "ros_gz_sim's tag is <gz_spawn_model>",
 }
 
 
 # Tags that launch extensions of other packages add; not modelled, so they are opaque.
+# (ros_gz's tags are modelled below: `<gz_server>`, `<gz_spawn_model>`, `<ros_gz_bridge>`.)
 EXTENSION_TAGS = {
-    "gz_server": "ros_gz_sim", "gzserver": "ros_gz_sim", "gz_spawn_model": "ros_gz_sim",
-    "ros_gz_bridge": "ros_gz_bridge", "trace": "tracetools_launch",
+    "trace": "tracetools_launch",
 }
 
 
@@ -554,6 +558,105 @@ def _set_use_sim_time(p: TagParser, e: Entity) -> a.Action:
 @tag("set_ros_log_dir")
 def _set_ros_log_dir(p: TagParser, e: Entity) -> a.Action:
     return a.SetRosLogDir(**p.common(e), new_log_dir=p.req(e, "new_log_dir"))
+
+
+# ---------------------------------------------------------------------- ros_gz (jazzy on)
+# The tags ros_gz_sim and ros_gz_bridge expose; what they start is modelled in
+# models/launch_api/ros_gz.py, shared with the Python actions.
+
+
+def _ros_gz(p: TagParser, e: Entity, package: str) -> ros_gz.Written:
+    """Report the tag where the checked distribution lacks it; return where it is written."""
+    if why := ros_gz.missing(f"the <{e.tag}> tag of {package}"):
+        p.sink.parse(f"unknown tag `{e.tag}` (ros2 launch: Unrecognized entity): {why}",
+                     e.span)
+    common = p.common(e)
+    return ros_gz.Written(common["span"], common["condition"], common["attr_spans"])
+
+
+def _flag(p: TagParser, e: Entity, name: str, default: bool) -> ros_gz.Flag:
+    """Read a boolean attribute the action coerces when it runs (substitutions allowed)."""
+    value = p.sub(e, name)
+    return default if value is None else value
+
+
+def _text(p: TagParser, e: Entity, name: str, default: str) -> s.Sub:
+    """Read a text attribute, or the default the action's constructor has."""
+    value = p.sub(e, name)
+    return s.Text(default) if value is None else value
+
+
+@tag("gz_server")
+def _gz_server(p: TagParser, e: Entity) -> a.Action:
+    where = _ros_gz(p, e, "ros_gz_sim")
+    values = {name: a.ParamValue(value=_text(p, e, name, ""))
+              for name in ("world_sdf_file", "world_sdf_string")}
+    return ros_gz.gz_server(
+        where, container_name=_text(p, e, "container_name", ros_gz.DEFAULT_CONTAINER),
+        create_own_container=_flag(p, e, "create_own_container", False),
+        use_composition=_flag(p, e, "use_composition", False),
+        parameters=(ros_gz.param_dict(values, e.span),))
+
+
+@tag("gz_spawn_model")
+def _gz_spawn_model(p: TagParser, e: Entity) -> a.Action:
+    where = _ros_gz(p, e, "ros_gz_sim")
+    return ros_gz.gz_spawn_model(where, {name: p.sub(e, name)
+                                         for name in ros_gz.SPAWN_ARGUMENTS})
+
+
+# Attributes of <topic> and <service> under <ros_gz_bridge>: required, then optional (with
+# the type launch reads them as).
+_BRIDGE_ENTRIES: dict[str, tuple[tuple[str, ...], tuple[tuple[str, type], ...]]] = {
+    "topic": (("ros_topic_name", "ros_type_name", "gz_topic_name", "gz_type_name"),
+              (("direction", str), ("lazy", str), ("publisher_queue", int),
+               ("subscriber_queue", int))),
+    "service": (("service_name", "ros_type_name", "gz_req_type_name", "gz_rep_type_name"), ()),
+}
+
+
+def _bridge_entries(p: TagParser, e: Entity) -> dict[str, a.ParamValue]:
+    """Read nested ``<topic>``/``<service>`` as ``bridges.bridge_N.*`` and ``bridge_names``."""
+    out: dict[str, a.ParamValue] = {}
+    names: list[str] = []
+    for nested, (required, optional) in _BRIDGE_ENTRIES.items():
+        for item in e.get_nested(nested) or []:
+            key = f"bridge_{len(names)}"
+            names.append(key)
+            for name in required:
+                with contextlib.suppress(MissingAttribute):
+                    out[f"bridges.{key}.{name}"] = a.ParamValue(value=p.req(item, name))
+            for name, kind in optional:
+                value = p.sub(item, name) if kind is str else p.number(item, name, kind)
+                if value is not None:
+                    out[f"bridges.{key}.{name}"] = a.ParamValue(value=value)
+            p.finish(item)
+    if names:
+        out["bridge_names"] = a.ParamValue(value=tuple(sorted(names)), value_type="str")
+    return out
+
+
+@tag("ros_gz_bridge")
+def _ros_gz_bridge(p: TagParser, e: Entity) -> a.Action:
+    where = _ros_gz(p, e, "ros_gz_bridge")
+    bridge_name = p.req(e, "bridge_name")
+    values = {"config_file": a.ParamValue(value=_text(p, e, "config_file", ""))}
+    bridge_params = p.sub(e, "bridge_params")
+    if bridge_params is not None:
+        problem = ros_gz.bridge_params_problem(bridge_params)
+        if problem is not None:
+            p.sink.unmodeled(problem, e.attrs["bridge_params"].span)
+        elif isinstance(bridge_params, s.Text):
+            values.update((k, a.ParamValue(value=v))
+                          for k, v in ros_gz.bridge_param_pairs(bridge_params.text).items())
+    values.update(_bridge_entries(p, e))
+    return ros_gz.ros_gz_bridge(
+        where, bridge_name=bridge_name, namespace=_text(p, e, "namespace", ""),
+        container_name=_text(p, e, "container_name", ros_gz.DEFAULT_CONTAINER),
+        create_own_container=_flag(p, e, "create_own_container", False),
+        use_composition=_flag(p, e, "use_composition", False),
+        use_respawn=_flag(p, e, "use_respawn", False), log_level=_text(p, e, "log_level", "info"),
+        parameters=(ros_gz.param_dict(values, e.span),))
 
 
 # ---------------------------------------------------------------------- ROS 1 files
