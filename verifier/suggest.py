@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Iterable
 from functools import lru_cache
 
@@ -72,3 +73,130 @@ def typo_of(name: str, candidates: Iterable[str]) -> str | None:
         if distance <= limit and (best is None or (distance, candidate) < best):
             best = (distance, candidate)
     return None if best is None else best[1]
+
+
+SUGGESTION_THRESHOLD = 0.75  # below this, a suggestion would more likely mislead than help
+
+
+def _words(name: str) -> tuple[str, ...]:
+    return tuple(word for word in re.split(r"[_\-]+", name.lower()) if word)
+
+
+def _is_abbreviation(short: str, long: str) -> bool:
+    """Return whether ``short`` keeps the first letter and, in order, letters of ``long``."""
+    if short[0] != long[0]:
+        return False
+    letters = iter(long)
+    return all(letter in letters for letter in short)
+
+
+def _one_slip_apart(first: str, second: str) -> bool:
+    """Return whether one edit turns one word into the other (cheap test first)."""
+    if first[0] != second[0] and first[-1] != second[-1]:
+        return False  # a single edit leaves the first or the last letter in place
+    return edit_distance(first, second, 1) <= 1
+
+
+def word_similarity(word: str, other: str) -> float:
+    """Return how alike two words of a package name are: 1 when equal, 0 when unrelated.
+
+    A shortened word (``sim`` for ``simulator``, ``nav2`` for ``navigation2``) counts for
+    more the more of the long word it keeps; a one-letter slip counts for almost a match.
+    Words under three letters only match exactly: ``gz`` is too short to abbreviate safely.
+
+    Examples:
+        >>> word_similarity("description", "descriptions") > word_similarity("sim", "simulator")
+        True
+        >>> word_similarity("sim", "simulator") > word_similarity("nav2", "navigation2") > 0
+        True
+        >>> word_similarity("driver", "description")
+        0.0
+    """
+    if word == other:
+        return 1.0
+    short, long = sorted((word, other), key=len)
+    if len(short) < 3:
+        return 0.0
+    kept = len(short) / len(long)
+    scores = [0.0]
+    if len(short) >= 4 and _one_slip_apart(short, long):
+        scores.append(0.9)
+    if long.startswith(short):
+        scores.append(0.6 + 0.4 * kept)
+    elif _is_abbreviation(short, long):
+        scores.append(0.5 + 0.4 * kept)
+    return max(scores)
+
+
+def name_similarity(name: str, other: str) -> float:
+    """Return how alike two package names are, from 0 to 1, word by word (split on ``_``).
+
+    The words of both names are aligned in order, so a name that is the start or the end
+    of the other (``my_robot`` in ``my_robot_description``) shares all its words; the score
+    is twice the matched weight over the number of words of both names (Dice).
+
+    Examples:
+        >>> round(name_similarity("ros_gz_sim", "ros_gz_simulator"), 2)
+        0.91
+        >>> round(name_similarity("nav2_bringup", "navigation2_bringup"), 2)
+        0.82
+        >>> round(name_similarity("robot_description", "my_robot_description"), 2)
+        0.8
+        >>> round(name_similarity("my_robot_driver", "my_robot_description"), 2)
+        0.67
+    """
+    return _aligned_words(_words(name), _words(other))
+
+
+def _aligned_words(first: tuple[str, ...], second: tuple[str, ...]) -> float:
+    """Return the Dice score of the best in-order pairing of two names' words."""
+    if not first or not second:
+        return 0.0
+    previous = [0.0] * (len(second) + 1)
+    for word in first:
+        current = [0.0]
+        for j, candidate in enumerate(second, 1):
+            paired = previous[j - 1] + word_similarity(word, candidate)
+            current.append(max(previous[j], current[j - 1], paired))
+        previous = current
+    return 2 * previous[-1] / (len(first) + len(second))
+
+
+@lru_cache(maxsize=8)
+def _word_index(candidates: frozenset[str]) -> tuple[tuple[str, tuple[str, ...]], ...]:
+    return tuple((c, _words(c)) for c in sorted(candidates))
+
+
+def _could_reach_threshold(first: int, second: int) -> bool:
+    """Return whether names of these word counts can score enough, every word matched."""
+    return 2 * min(first, second) / (first + second) >= SUGGESTION_THRESHOLD
+
+
+def closest_package(name: str, candidates: Iterable[str]) -> str | None:
+    """Return the one candidate clearly most like ``name``, or ``None``.
+
+    ``None`` also when nothing reaches ``SUGGESTION_THRESHOLD`` or when two candidates are
+    equally close (``my_robot`` with ``my_robot_bringup`` and ``my_robot_description``):
+    a guess between them would be a coin toss.
+
+    Examples:
+        >>> workspace = ["my_robot_descriptions", "ros_gz_simulator", "navigation2_bringup"]
+        >>> [closest_package(n, workspace) for n in ("nav2_bringup", "ros_gz_sim")]
+        ['navigation2_bringup', 'ros_gz_simulator']
+        >>> closest_package("my_robot_description", workspace)
+        'my_robot_descriptions'
+        >>> closest_package("acme_private_driver", workspace) is None
+        True
+    """
+    pool = candidates if isinstance(candidates, frozenset) else frozenset(candidates)
+    words = _words(name)
+    scored = sorted(((_aligned_words(words, candidate_words), candidate)
+                     for candidate, candidate_words in _word_index(pool)
+                     if candidate != name
+                     and _could_reach_threshold(len(words), len(candidate_words))),
+                    reverse=True)
+    if not scored or scored[0][0] < SUGGESTION_THRESHOLD:
+        return None
+    if len(scored) > 1 and scored[1][0] == scored[0][0]:
+        return None
+    return scored[0][1]

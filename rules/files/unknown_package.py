@@ -2,34 +2,53 @@
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterator
 
-from launchverify.graph import LaunchGraph
+from launchverify.graph import LaunchGraph, PackageRef
 from launchverify.models.known_packages import is_released, released_packages
 from launchverify.rule import Finding, Rule, RuleContext, Severity
-from launchverify.suggest import typo_of
+from launchverify.suggest import closest_package, typo_of
 
 
 class UnknownPackage(Rule):
     """A package named in the launch exists nowhere.
 
     ## What it does
-    Looks up every package a launch file names (`pkg=`, `$(find-pkg-share)`,
-    `$(find-pkg-prefix)`, `$(exec-in-pkg)`) in the workspace and, when ROS 2 is installed,
-    in `AMENT_PREFIX_PATH`. Without an installation, a package missing from the workspace
-    may still be installed on the robot; it is reported only when it is not a released
-    ROS 2 package and is one or two edits away from a package that exists: a typo.
+    Looks up every package a launch file names (`pkg=`, `package=`, `$(find-pkg-share)`,
+    `FindPackageShare`, `get_package_share_directory`, `$(find-pkg-prefix)`,
+    `$(exec-in-pkg)`) in the workspace and, when ROS 2 is installed, in
+    `AMENT_PREFIX_PATH`, including packages used only under a condition false by default.
+    With an installation, a package found nowhere is an error.
+
+    Without one, a package missing from the workspace may still be installed where the
+    launch runs, so it is weighed against the packages ROS 2 distributions release:
+
+    - a released package (`nav2_bringup`, `rviz2`) is a dependency to install: quiet;
+    - an unreleased package within one or two edits of a workspace or released package
+      is a typo: an error;
+    - any other unreleased package is a warning, since only something outside the
+      workspace could provide it (loose launch files, outside any package, are not
+      judged).
+
+    The message names the package most likely meant: a typo's target, else the one
+    workspace package whose name shares the most words, whole or shortened
+    (`acme_simulation` for `acme_sim`, `acme_navigation2_bringup` for `acme_nav2_bringup`).
+    It names none when no package is that close, or when two are equally close.
 
     ## Why it matters
     ros2 launch stops with `PackageNotFoundError` when it reaches the reference.
 
     ## Example
     ```xml
-    <node pkg="demo_node_cpp" exec="talker"/>
+    <node pkg="demo_node_cpp" exec="talker"/>  <!-- error: did you mean demo_nodes_cpp? -->
+    <!-- warning when the workspace has acme_simulation and no acme_sim -->
+    <include file="$(find-pkg-share acme_sim)/launch/world.launch.xml"/>
     ```
 
     ## Fix
-    Correct the package name, or add the package to the workspace or the system.
+    Correct the package name, or add the package to the workspace. A package installed
+    apart from the workspace is found through `AMENT_PREFIX_PATH` or `package-paths`.
     """
 
     code = "LV303"
@@ -37,21 +56,42 @@ class UnknownPackage(Rule):
     severity = Severity.ERROR
     message = "package {name!r} is {where}{hint}"
 
+    def __init__(self) -> None:
+        # one check's suggestions: every graph asks again, and installed packages are many
+        self._suggested: dict[str, tuple[str | None, str | None]] = {}
+
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         installed = ctx.packages is not None and ctx.packages.has_install
-        local = ctx.packages.names() if ctx.packages is not None else []
+        local = frozenset(ctx.packages.names() if ctx.packages is not None else ())
         seen: set[object] = set()
         for ref in graph.packages:
             key = (ref.name, ref.origin.span)
             if ref.found or key in seen:
                 continue
             seen.add(key)
-            typo = typo_of(ref.name, frozenset(local)) or typo_of(ref.name, released_packages())
-            if installed:
-                where = "neither in the workspace nor installed"
-            elif is_released(ref.name) or typo is None:
-                continue  # may be installed on the robot; only a near miss is a sure typo
-            else:
-                where = "not in the workspace and not a released ROS 2 package"
-            hint = f" (did you mean {typo!r}?)" if typo else ""
-            yield self.finding(ref.origin, name=ref.name, where=where, hint=hint)
+            finding = self._judge(ref, local, installed)
+            if finding is not None:
+                yield finding
+
+    def _judge(self, ref: PackageRef, local: frozenset[str], installed: bool
+               ) -> Finding | None:
+        """Report a package found nowhere: an error when surely wrong, else a warning."""
+        if not installed and is_released(ref.name):
+            return None  # a dependency to install, not a mistake
+        typo, hint = self._suggestions(ref.name, local)
+        if not installed and typo is None and not local:
+            return None  # loose launch files: no workspace to miss it from
+        where = ("neither in the workspace nor installed" if installed
+                 else "not in the workspace and not a released ROS 2 package")
+        finding = self.finding(ref.origin, name=ref.name, where=where,
+                               hint=f" (did you mean {hint!r}?)" if hint else "")
+        if installed or typo is not None:
+            return finding
+        return dataclasses.replace(finding, severity=Severity.WARNING)
+
+    def _suggestions(self, name: str, local: frozenset[str]) -> tuple[str | None, str | None]:
+        """Return the package ``name`` misspells and the one it most likely means."""
+        if name not in self._suggested:
+            typo = typo_of(name, local) or typo_of(name, released_packages())
+            self._suggested[name] = (typo, typo or closest_package(name, local))
+        return self._suggested[name]

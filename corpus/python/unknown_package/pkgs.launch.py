@@ -10,7 +10,7 @@ def generate_launch_description():
     return LaunchDescription([
         Node(package='demo_node_cpp', executable='talker', name='talker'),  # expect: LV303
         Node(package='demo_nodes_cpp', executable='listener', name='listener'),
-        Node(package='acme_private_driver', executable='driver', name='driver'),
+        Node(package='acme_private_driver', executable='driver', name='driver'),  # expect: LV303
         Node(package='local_tools', executable='tool', name='tool'),
         IncludeLaunchDescription(PythonLaunchDescriptionSource(  # expect: LV303
             PathJoinSubstitution([FindPackageShare('local_tool'), 'launch', 'tool.launch.py']))),
