@@ -33,7 +33,8 @@ def test_a_suppression_on_the_call_still_covers_a_finding_inside_it(tmp_path: Pa
         "from launch_ros.actions import Node\n\n\n"
         "def generate_launch_description():\n"
         "    return LaunchDescription([\n"
-        "        Node(package='demo_nodes_cpp', executable='talker',  # launchverify: ignore[LV201]\n"
+        "        Node(package='demo_nodes_cpp', executable='talker',"
+        "  # launchverify: ignore[LV201]\n"
         "             parameters=[{'rate': LaunchConfiguration('rate')}]),\n"
         "    ])\n")
     report = run_check(CheckOptions(paths=[launch], workspace=tmp_path))

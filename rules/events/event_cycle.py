@@ -21,9 +21,9 @@ class EventCycle(Rule):
     `OnProcessExit` that restarts its own target, an `OnProcessStart` that starts the
     process it listens to. A loop that runs one process object again makes launch raise
     (`executed more than once`) the moment it closes, even through `handle_once`
-    handlers: that failure is reported here, not as LV002. The message follows the loop. Loops whose conditions cannot
-    hold together are not reported; `respawn` (bounded or not) is how ROS 2 restarts a
-    process and is not a loop here.
+    handlers: that failure is reported here, not as LV002. The message follows the loop.
+    Loops whose conditions cannot hold together are not reported; `respawn` (bounded or
+    not) is how ROS 2 restarts a process and is not a loop here.
 
     ## Why it matters
     The launch never settles: processes restart forever, each restart spawning the next,

@@ -89,8 +89,10 @@ class ScopeReducer(_Located, Reducer):
         _Located.__init__(self, walker)
 
     def _origin(self, where: Span | None = None) -> Origin:
-        """Return the origin of a record: ``where`` it was written in the action's file,
-        else the action (the action's span is then the origin's ``call``)."""
+        """Return where a record comes from: ``where``, if in the action's file, else the action.
+
+        (The action's span is then the origin's ``call``.)
+        """
         assert self.ctx is not None and self.span is not None
         if where is None or where.file != self.span.file or where == self.span:
             return self.ctx.origin(self.span)

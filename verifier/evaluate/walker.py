@@ -20,7 +20,6 @@ from typing import Any
 import yaml
 
 from launchverify.evaluate.files import FileCache
-from launchverify.events import closes_loop
 from launchverify.evaluate.nodes import NodeBuilder
 from launchverify.evaluate.reducers import Ctx, DefaultsReducer, ScopeReducer, fill_unset
 from launchverify.evaluate.scope import (
@@ -34,6 +33,7 @@ from launchverify.evaluate.scope import (
 )
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
 from launchverify.evaluate.values import is_unset, machine_dependent, ns_prefix, text_of
+from launchverify.events import closes_loop
 from launchverify.frontends import LoadedFile
 from launchverify.graph import (
     ArgumentRecord,
