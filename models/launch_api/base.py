@@ -95,6 +95,9 @@ class Converter(Protocol):
     def keyword_keys(self, call: Span, keyword: str) -> dict[str, Span]:
         """Return where each literal key of the call's ``keyword=`` dict or pairs is written."""
 
+    def keyword_values(self, call: Span) -> dict[str, Span]:
+        """Return where the value of each keyword argument of the call is written."""
+
     def unmodeled(self, what: str, span: Span) -> None:
         """Record that something was not modelled (LV003)."""
 
@@ -268,6 +271,23 @@ class LaunchDescriptionEntity(Modelled):
         return None
 
 
+# Python keywords and the XML attributes IR actions know them by (``Action.at``).
+ATTRIBUTE_OF_KEYWORD = {"package": "pkg", "executable": "exec", "name": "name",
+                        "namespace": "namespace", "plugin": "plugin", "filename": "filename",
+                        "src": "from", "dst": "to", "condition": "if"}
+
+
+def attribute_spans(cv: Converter, call: Span) -> dict[str, Span]:
+    """Return where the call's keyword values are written, by IR attribute name.
+
+    Findings about one attribute (a misspelt package, an invalid name) point at its value,
+    as they point at the attribute in XML.
+    """
+    written = cv.keyword_values(call)
+    return {ATTRIBUTE_OF_KEYWORD[k]: span for k, span in written.items()
+            if k in ATTRIBUTE_OF_KEYWORD}
+
+
 class Action(LaunchDescriptionEntity):
     """``launch.Action``: an entity with an optional condition."""
 
@@ -284,9 +304,10 @@ class Action(LaunchDescriptionEntity):
         """Return the keyword arguments every IR action takes."""
         common: dict[str, Any] = {"span": self._span,
                                   "condition": cv.condition(self.__condition)}
+        common["attr_spans"] = attribute_spans(cv, self._span)
         where = getattr(self.__condition, "_span", None)
         if where is not None:  # findings about the condition point at it
-            common["attr_spans"] = {"if": where}
+            common["attr_spans"]["if"] = where
         return common
 
     def describe(self) -> str:

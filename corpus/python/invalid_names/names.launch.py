@@ -7,10 +7,10 @@ def generate_launch_description():
     return LaunchDescription([
         Node(package='demo_nodes_cpp', executable='talker', name='front-camera'),  # expect: LV102
         Node(package='demo_nodes_cpp', executable='talker', name='2nd_talker'),  # expect: LV102
-        Node(package='demo_nodes_cpp', executable='talker', name='ok_talker',  # expect: LV102
-             namespace='robot 1'),
-        Node(package='demo_nodes_cpp', executable='talker', name='t3',  # expect: LV102
-             namespace='/robot//arm'),
+        Node(package='demo_nodes_cpp', executable='talker', name='ok_talker',
+             namespace='robot 1'),  # expect: LV102
+        Node(package='demo_nodes_cpp', executable='talker', name='t3',
+             namespace='/robot//arm'),  # expect: LV102
         GroupAction([
             PushRosNamespace('9lives'),  # expect: LV102
         ]),

@@ -114,6 +114,9 @@ class PythonConverter:
     def keyword_keys(self, call: Span, keyword: str) -> dict[str, Span]:
         return self._locator.keyword_keys(call, keyword)
 
+    def keyword_values(self, call: Span) -> dict[str, Span]:
+        return self._locator.keyword_values(call)
+
     def pairs(self, value: Any) -> tuple[tuple[s.Sub, s.Sub], ...]:
         items = value.items() if isinstance(value, Mapping) else value
         return tuple((self.sub(k), self.sub(v)) for k, v in items)

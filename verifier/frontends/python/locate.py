@@ -48,6 +48,22 @@ class CallLocator:
         value = next((k.value for k in node.keywords if k.arg == keyword), None)
         return {} if value is None else self._keys(call.file, value, depth=0)
 
+    def keyword_values(self, call: Span) -> dict[str, Span]:
+        """Return the span of each keyword argument's value in the call at ``call``.
+
+        Examples:
+            >>> import tempfile
+            >>> file = Path(tempfile.mkdtemp()) / "x.launch.py"
+            >>> _ = file.write_text("Node(package='a',"  + chr(10) + "     name='b')")
+            >>> {k: (s.line, s.column) for k, s in CallLocator().keyword_values(
+            ...     Span(file, 1, 1)).items()}
+            {'package': (1, 14), 'name': (2, 11)}
+        """
+        node = self._call(call)
+        if node is None:
+            return {}
+        return {k.arg: _span(call.file, k.value) for k in node.keywords if k.arg is not None}
+
     def _keys(self, file: Path, value: ast.expr, depth: int) -> dict[str, Span]:
         if (isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute)
                 and value.func.attr == "items" and not value.args):
