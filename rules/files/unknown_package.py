@@ -27,9 +27,12 @@ class UnknownPackage(Rule):
     - a released package (`nav2_bringup`, `rviz2`) is a dependency to install: quiet;
     - an unreleased package within one or two edits of a workspace or released package
       is a typo: an error;
-    - any other unreleased package is a warning, since only something outside the
-      workspace could provide it (loose launch files, outside any package, are not
-      judged).
+    - a package that the launch file's own package declares in its `package.xml`
+      (`<exec_depend>`...) comes from elsewhere (a `.repos` file, another overlay):
+      quiet;
+    - any other unreleased package is a warning: nothing declares it, so only luck
+      outside the workspace could provide it (a renamed package, an optional demo
+      dependency; loose launch files, outside any package, are not judged).
 
     The message names the package most likely meant: a typo's target, else the one
     workspace package whose name shares the most words, whole or shortened
@@ -69,18 +72,21 @@ class UnknownPackage(Rule):
             if ref.found or key in seen:
                 continue
             seen.add(key)
-            finding = self._judge(ref, local, installed)
+            finding = self._judge(ref, local, installed, ctx)
             if finding is not None:
                 yield finding
 
-    def _judge(self, ref: PackageRef, local: frozenset[str], installed: bool
-               ) -> Finding | None:
+    def _judge(self, ref: PackageRef, local: frozenset[str], installed: bool,
+               ctx: RuleContext) -> Finding | None:
         """Report a package found nowhere: an error when surely wrong, else a warning."""
         if not installed and is_released(ref.name):
             return None  # a dependency to install, not a mistake
         typo, hint = self._suggestions(ref.name, local)
         if not installed and typo is None and not local:
             return None  # loose launch files: no workspace to miss it from
+        if (not installed and typo is None and ctx.packages is not None
+                and ctx.packages.declares(ref.origin.span.file, ref.name)):
+            return None  # a declared dependency from elsewhere (.repos): not here yet
         where = ("neither in the workspace nor installed" if installed
                  else "not in the workspace and not a released ROS 2 package")
         finding = self.finding(ref.origin, name=ref.name, where=where,

@@ -10,6 +10,7 @@ sources are present: first at the same relative path, then by file name.
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
 import re
 from collections.abc import Iterable, Iterator
@@ -48,6 +49,20 @@ class Package:
     def installed(self) -> bool:
         """Return whether an install prefix is known."""
         return self.prefix is not None
+
+
+_DEPEND = re.compile(rb"<(?:build_|exec_|test_|build_export_|buildtool_)?depend(?:\s[^>]*)?>"
+                     rb"\s*([^<\s]+)\s*</")
+
+
+@functools.lru_cache(maxsize=4096)
+def package_dependencies(package_xml: Path) -> frozenset[str]:
+    """Return the packages a manifest declares it depends on (any ``*depend`` tag)."""
+    try:
+        data = read_file(package_xml, prefix=200_000)
+    except OSError:
+        return frozenset()
+    return frozenset(m.decode("utf-8", "replace") for m in _DEPEND.findall(data))
 
 
 def package_name(package_xml: Path) -> str | None:
@@ -167,6 +182,19 @@ class PackageIndex:
     def find(self, name: str) -> Package | None:
         """Return the package called ``name``, if any."""
         return self._packages.get(name)
+
+    def declares(self, path: Path, dependency: str) -> bool:
+        """Return whether the package owning ``path`` declares ``dependency`` in package.xml.
+
+        Such a package comes from elsewhere (a ``.repos`` file, another overlay): the
+        workspace at hand is incomplete, the launch file is not wrong.
+        """
+        owner = self.owner(path)
+        if owner is None:
+            return False
+        folders = [f for f in (owner.source, owner.share) if f is not None]
+        return any(dependency in package_dependencies(folder / "package.xml")
+                   for folder in folders)
 
     def names(self) -> list[str]:
         """Return every known package name, sorted."""
