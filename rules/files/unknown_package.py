@@ -34,6 +34,7 @@ class UnknownPackage(Rule):
       outside the workspace could provide it (a renamed package, an optional demo
       dependency; loose launch files, outside any package, are not judged).
 
+    A warning is given once per file and package (its first use), errors at every use.
     The message names the package most likely meant: a typo's target, else the one
     workspace package whose name shares the most words, whole or shortened
     (`acme_simulation` for `acme_sim`, `acme_navigation2_bringup` for `acme_nav2_bringup`).
@@ -67,14 +68,20 @@ class UnknownPackage(Rule):
         installed = ctx.packages is not None and ctx.packages.has_install
         local = frozenset(ctx.packages.names() if ctx.packages is not None else ())
         seen: set[object] = set()
+        warned: set[tuple[str, object]] = set()  # a missing dependency: once per file
         for ref in graph.packages:
             key = (ref.name, ref.origin.span)
             if ref.found or key in seen:
                 continue
             seen.add(key)
             finding = self._judge(ref, local, installed, ctx)
-            if finding is not None:
-                yield finding
+            if finding is None:
+                continue
+            if finding.severity is Severity.WARNING:
+                if (ref.name, ref.origin.span.file) in warned:
+                    continue
+                warned.add((ref.name, ref.origin.span.file))
+            yield finding
 
     def _judge(self, ref: PackageRef, local: frozenset[str], installed: bool,
                ctx: RuleContext) -> Finding | None:
