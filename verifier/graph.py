@@ -253,6 +253,7 @@ class HandlerRecord:
     execution: int | None = None
     filters: tuple[tuple[str, str], ...] = ()
     custom: bool = False
+    filter_spans: tuple[tuple[str, Span], ...] = ()  # where each label is written
 
 
 @dataclass(frozen=True, slots=True)

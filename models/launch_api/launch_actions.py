@@ -8,7 +8,7 @@ produces the IR the XML and YAML frontends produce for the same action.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
 from launchverify.ir import actions as a
@@ -23,6 +23,7 @@ from launchverify.models.launch_api.base import (
     normalized,
     typed,
 )
+from launchverify.span import Span
 
 
 class LaunchDescription(LaunchDescriptionEntity):
@@ -906,8 +907,20 @@ class RegisterEventHandler(Action):
             # a label given as a substitution is compared as an object: it never matches
             filters=tuple((field, value if isinstance(value, str) else "<substitution>")
                           for field, value in getattr(handler, "filters", ())),
+            filter_spans=tuple(label_spans(handler, cv)),
             custom_matcher=getattr(handler, "matcher", None) is not None,
         ))
+
+
+def label_spans(handler: Any, cv: Converter) -> Iterator[tuple[str, Span]]:
+    """Yield where each label of an ``OnStateTransition`` is written (LV504 points there)."""
+    call = getattr(handler, "_span", None)
+    if not isinstance(call, Span):
+        return
+    written = cv.keyword_values(call)
+    for field, _value in getattr(handler, "filters", ()):
+        if field in written:
+            yield field, written[field]
 
 
 class UnregisterEventHandler(NoGraphEffect):

@@ -649,7 +649,7 @@ class Walker:
         handler = action.handler
         index = self.record_handler(ctx.origin(action.span), handler.event, handler.target,
                                     handler.handle_once, handler.filters,
-                                    handler.custom_matcher)
+                                    handler.custom_matcher, handler.filter_spans)
         if handler.event == "shutdown":  # runs when the launch ends: logs, cleanup
             at_shutdown, self.at_shutdown = self.at_shutdown, True
             try:
@@ -691,11 +691,12 @@ class Walker:
 
     def record_handler(self, origin: Origin, event: str, target: object | None,
                        once: bool, filters: tuple[tuple[str, str], ...] = (),
-                       custom: bool = False) -> int:
+                       custom: bool = False,
+                       filter_spans: tuple[tuple[str, Span], ...] = ()) -> int:
         """Record an event handler; return its index in ``graph.handlers``."""
         self.graph.handlers.append(HandlerRecord(
             origin, event, target, once, self.handler_stack[-1] if self.handler_stack else None,
-            self.execution, filters, custom))
+            self.execution, filters, custom, filter_spans))
         return len(self.graph.handlers) - 1
 
     def run_handler(self, index: int, entities: tuple[a.Action, ...], ctx: Ctx) -> None:

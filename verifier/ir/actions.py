@@ -458,6 +458,7 @@ class EventHandler:
     handle_once: bool = False
     # OnStateTransition: the labels it compares (transition, start_state, goal_state)
     filters: tuple[tuple[str, str], ...] = ()
+    filter_spans: tuple[tuple[str, Span], ...] = ()  # where each label is written
     custom_matcher: bool = False  # a matcher function launchverify cannot read
 
 
