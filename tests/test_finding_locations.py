@@ -39,3 +39,25 @@ def test_a_suppression_on_the_call_still_covers_a_finding_inside_it(tmp_path: Pa
         "    ])\n")
     report = run_check(CheckOptions(paths=[launch], workspace=tmp_path))
     assert not [f for f in report.findings if f.code in ("LV201", "LV004")]
+
+
+def test_parameters_point_at_their_list_item_and_dict_key(tmp_path: Path) -> None:
+    launch = tmp_path / "params.launch.py"
+    launch.write_text(
+        "import os\n"
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    here = os.path.dirname(__file__)\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='demo_nodes_cpp', executable='talker', name='talker',\n"
+        "             parameters=[\n"
+        "                 os.path.join(here, 'missing.yaml'),\n"
+        "                 {'rate': 10},\n"
+        "                 {'rate': 'fast'},\n"
+        "             ]),\n"
+        "    ])\n")
+    report = run_check(CheckOptions(paths=[launch], workspace=tmp_path))
+    where = {f.code: (f.span.line, f.span.column) for f in report.findings}
+    assert where["LV302"] == (11, 18)  # the path item, not `Node(` on line 9
+    assert where["LV403"] == (13, 19)  # the key whose value disagrees

@@ -96,7 +96,9 @@ class ScopeReducer(_Located, Reducer):
         assert self.ctx is not None and self.span is not None
         if where is None or where.file != self.span.file or where == self.span:
             return self.ctx.origin(self.span)
-        return Origin(where, self.ctx.chain, self.ctx.path, call=self.span)
+        call = self.walker.calls[-1] if self.walker.calls else self.span
+        return Origin(where, self.ctx.chain, self.ctx.path,
+                      call=call if call.file == where.file else self.span)
 
     def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
         value = self.walker.scopes.get(name)

@@ -101,6 +101,7 @@ class Walker:
         self.delays: list[float] = []  # periods of the timers around (since launch/handler)
         self.at_shutdown = False  # walking an OnShutdown handler: no process starts
         # (action, file, loop) -> the handler its first execution ran in (None: at launch)
+        self.calls: list[Span] = []  # the actions being visited, innermost last
         self.executed_processes: dict[tuple[object, ...], int | None] = {}
         self.file_stack: list[tuple[Path, tuple[tuple[str | None, str], ...]]] = []
         self.incomplete = False  # something before this point was not understood
@@ -247,6 +248,13 @@ class Walker:
 
     def visit(self, action: a.Action, ctx: Ctx) -> None:
         """Visit one action: evaluate its condition, then execute it."""
+        self.calls.append(action.span)
+        try:
+            self._visit(action, ctx)
+        finally:
+            self.calls.pop()
+
+    def _visit(self, action: a.Action, ctx: Ctx) -> None:
         where = action.attr_spans.get("if") or action.attr_spans.get("unless") or action.span
         inner = self.apply_condition(action.condition, where, ctx)
         if inner is None:

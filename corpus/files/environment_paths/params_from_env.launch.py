@@ -12,6 +12,6 @@ def generate_launch_description():
     return LaunchDescription([
         Node(package='nav2_bt_navigator', executable='bt_navigator',  # expect-not: LV302
              name='bt_navigator', parameters=[params, {'default_bt_xml_filename': bt}]),
-        Node(package='nav2_amcl', executable='amcl', name='amcl',  # expect: LV302
-             parameters=[os.path.join(os.path.dirname(__file__), 'config', 'amcl.yaml')]),
+        Node(package='nav2_amcl', executable='amcl', name='amcl',
+             parameters=[os.path.join(os.path.dirname(__file__), 'config', 'amcl.yaml')]),  # expect: LV302
     ])

@@ -171,16 +171,21 @@ class PythonConverter:
 
     def parameters(self, value: Any, span: Span) -> tuple[a.ParamEntry, ...]:
         out: list[a.ParamEntry] = []
-        for item in value or []:
+        items = list(value or [])
+        written = self._locator.keyword_items(span, "parameters")
+        if len(written) != len(items):
+            written = [(span, {})] * len(items)  # not written out: the call it is in
+        for item, (item_span, keys) in zip(items, written, strict=True):
             own = getattr(item, "_span", None)
-            where = own if isinstance(own, Span) else span
+            where = own if isinstance(own, Span) else item_span
             if isinstance(item, launch_ros.ParameterFile):
                 allow = item.allow_substs
                 out.append(a.ParamFile(path=self.sub(item.param_file), span=item._span,
                                        allow_substs=allow if isinstance(allow, bool)
                                        else self.sub(allow)))
             elif isinstance(item, Mapping):
-                out.append(a.ParamDict(items=tuple(self._items(item, (), where)), span=where))
+                out.append(a.ParamDict(items=tuple(self._items(item, (), where, keys)),
+                                       span=where))
             elif isinstance(item, launch_ros.Parameter):
                 out.append(a.ParamDict(items=(a.ParamItem(
                     name=self.sub(item.name), value=self.param_value(item.value),
@@ -190,12 +195,14 @@ class PythonConverter:
         return tuple(out)
 
     def _items(self, mapping: Mapping[Any, Any], prefix: tuple[s.Sub, ...],
-               span: Span) -> list[a.ParamItem]:
+               span: Span, keys: Mapping[str, Span] | None = None) -> list[a.ParamItem]:
+        """Flatten a parameter dict; ``keys``: where its top-level keys are written."""
         out: list[a.ParamItem] = []
         for key, value in mapping.items():
             name = (*prefix, self.sub(key))
+            here = (keys or {}).get(key, span) if isinstance(key, str) else span
             if isinstance(value, Mapping):
-                out.extend(self._items(value, name, span))
+                out.extend(self._items(value, name, here))
                 continue
             dotted: list[s.Sub] = []
             for index, part in enumerate(name):
@@ -203,7 +210,7 @@ class PythonConverter:
                     dotted.append(s.Text("."))
                 dotted.append(part)
             out.append(a.ParamItem(name=s.concat(dotted), value=self.param_value(value),
-                                   span=span))
+                                   span=here))
         return out
 
     def param_value(self, value: Any) -> a.ParamValue:

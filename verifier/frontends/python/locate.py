@@ -64,6 +64,26 @@ class CallLocator:
             return {}
         return {k.arg: _span(call.file, k.value) for k in node.keywords if k.arg is not None}
 
+    def keyword_items(self, call: Span, keyword: str) -> list[tuple[Span, dict[str, Span]]]:
+        """Return each item of the literal list given as ``keyword=``, with its dict keys.
+
+        ``parameters=[path, {'rate': 10}]`` gives the span of ``path``, and of the dict
+        with the span of ``'rate'``. A list that is not written out (built at run time)
+        gives nothing.
+        """
+        node = self._call(call)
+        value = None if node is None else next(
+            (k.value for k in node.keywords if k.arg == keyword), None)
+        if isinstance(value, ast.Name):
+            bound = self._assignments.get(call.file, {}).get(value.id, [])
+            value = bound[0] if len(bound) == 1 else None
+        if not isinstance(value, (ast.List, ast.Tuple)):
+            return []
+        if any(isinstance(item, ast.Starred) for item in value.elts):
+            return []
+        return [(_span(call.file, item), self._keys(call.file, item, depth=3))
+                for item in value.elts]
+
     def _keys(self, file: Path, value: ast.expr, depth: int) -> dict[str, Span]:
         if (isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute)
                 and value.func.attr == "items" and not value.args):

@@ -11,10 +11,10 @@ def generate_launch_description():
     config = os.path.join(get_package_share_directory('robot_bringup'), 'config')
     return LaunchDescription([
         SetParameter(name='use_sim_time', value=True),
-        # Python values point at the Node call (a dict's items have no lines of their own)
-        Node(package='demo_nodes_cpp', executable='talker', name='controller', parameters=[  # expect: LV403
+        # a parameter given in a dict points at its key
+        Node(package='demo_nodes_cpp', executable='talker', name='controller', parameters=[
             os.path.join(config, 'controller.yaml'),
-            {'max_vel': 1,
+            {'max_vel': 1,  # expect: LV403
              'frame': 'base_link',  # expect-not: LV403
              'rate': 10.0,  # expect-not: LV403
              'limits': [3.0, 4.0]},  # expect-not: LV403
