@@ -10,6 +10,7 @@ the file's syntax tree says what is written inside it. Only reading: nothing run
 from __future__ import annotations
 
 import ast
+import functools
 from pathlib import Path
 
 from launchverify.span import Span
@@ -17,12 +18,19 @@ from launchverify.span import Span
 MAX_SOURCE_BYTES = 2 << 20  # a launch file, not a generated blob
 
 
+Calls = dict[tuple[int, int], ast.Call]
+Assignments = dict[str, list[ast.expr]]
+
+
 class CallLocator:
-    """Finds the keys written in a keyword argument of a call, by the call's position."""
+    """Finds the keys written in a keyword argument of a call, by the call's position.
+
+    Every locator of a process shares the parsed files (an OpaqueFunction's converter
+    asks about the same file as the launch file's).
+    """
 
     def __init__(self) -> None:
-        self._calls: dict[Path, dict[tuple[int, int], ast.Call] | None] = {}
-        self._assignments: dict[Path, dict[str, list[ast.expr]]] = {}
+        self._assignments: dict[Path, Assignments] = {}
 
     def keyword_keys(self, call: Span, keyword: str) -> dict[str, Span]:
         """Return the span of each literal key of ``keyword=`` in the call at ``call``.
@@ -106,31 +114,34 @@ class CallLocator:
         return {}
 
     def _call(self, where: Span) -> ast.Call | None:
-        if where.file not in self._calls:
-            self._calls[where.file] = self._index(where.file)
-        calls = self._calls[where.file]
-        return None if calls is None else calls.get((where.line, where.column))
-
-    def _index(self, file: Path) -> dict[tuple[int, int], ast.Call] | None:
-        """Parse a file once; index its calls by position and its simple assignments."""
         try:
-            source = file.read_bytes()
-            if len(source) > MAX_SOURCE_BYTES:
-                return None
-            tree = ast.parse(source, filename=str(file))
-        except (OSError, SyntaxError, ValueError, RecursionError, MemoryError):
+            stat = where.file.stat()
+        except OSError:
             return None
-        calls: dict[tuple[int, int], ast.Call] = {}
-        assignments: dict[str, list[ast.expr]] = {}
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Call):
-                calls[(node.lineno, node.col_offset + 1)] = node
-            elif isinstance(node, ast.Assign):
-                for target in node.targets:
-                    if isinstance(target, ast.Name):
-                        assignments.setdefault(target.id, []).append(node.value)
-        self._assignments[file] = assignments
-        return calls
+        calls, assignments = _index(where.file, stat.st_mtime_ns, stat.st_size)
+        self._assignments[where.file] = assignments
+        return calls.get((where.line, where.column))
+
+
+@functools.lru_cache(maxsize=32)
+def _index(file: Path, mtime_ns: int, size: int) -> tuple[Calls, Assignments]:
+    """Parse one version of a file; index its calls by position and its simple assignments."""
+    if size > MAX_SOURCE_BYTES:
+        return {}, {}
+    try:
+        tree = ast.parse(file.read_bytes(), filename=str(file))
+    except (OSError, SyntaxError, ValueError, RecursionError, MemoryError):
+        return {}, {}
+    calls: Calls = {}
+    assignments: Assignments = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call):
+            calls[(node.lineno, node.col_offset + 1)] = node
+        elif isinstance(node, ast.Assign):
+            for target in node.targets:
+                if isinstance(target, ast.Name):
+                    assignments.setdefault(target.id, []).append(node.value)
+    return calls, assignments
 
 
 def _span(file: Path, node: ast.expr) -> Span:
