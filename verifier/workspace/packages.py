@@ -137,6 +137,7 @@ class PackageIndex:
 
     def __init__(self, workspaces: Iterable[Path] = (), prefixes: Iterable[Path] = ()) -> None:
         self._packages: dict[str, Package] = {}
+        self._roots: dict[Path, Package] | None = None  # share/source folder -> package
         self.sources: dict[str, list[Path]] = {}  # every source folder of each name
         self.workspaces = [resolved(w) for w in workspaces]
         self.prefixes = [resolved(p) for p in prefixes]
@@ -201,16 +202,24 @@ class PackageIndex:
         return sorted(self._packages)
 
     def owner(self, path: Path) -> Package | None:
-        """Return the package whose share or source folder contains ``path``."""
-        best: Package | None = None
-        best_len = -1
-        for package in self._packages.values():
-            for root in (package.share, package.source):
-                if root is None:
-                    continue
-                if path.is_relative_to(root) and len(root.parts) > best_len:
-                    best, best_len = package, len(root.parts)
-        return best
+        """Return the package whose share or source folder contains ``path``.
+
+        The deepest such folder wins (a package nested in another's folder owns its
+        files). A lookup walks ``path``'s parents in a map of the folders, not every
+        package: rules and the evaluator ask this for every file they meet.
+        """
+        if self._roots is None:
+            roots: dict[Path, Package] = {}
+            for package in self._packages.values():
+                for root in (package.share, package.source):
+                    if root is not None:
+                        roots.setdefault(root, package)
+            self._roots = roots
+        for folder in (path, *path.parents):
+            found = self._roots.get(folder)
+            if found is not None:
+                return found
+        return None
 
     def locate(self, path: Path) -> Path | None:
         """Find a file as ros2 launch would, falling back from install layout to sources.
