@@ -73,6 +73,9 @@ class InvalidConditionValue(Rule):
             if condition is None or not isinstance(condition.guard, Truthy):
                 continue
             value = graph.base(condition.guard.expression)
+            if value is None:  # known only where it was evaluated: the failure says it
+                said = problem.message.rpartition(" but got ")[2]
+                value = said[1:-1] if said[:1] in "'\"" and len(said) > 1 else said
             arguments = ("" if condition.literal else " with the default arguments"
                          if problem.contextual else " with the arguments as given")
             yield self.finding(record.origin, condition=condition.text, value=value,

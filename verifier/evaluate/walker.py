@@ -100,8 +100,8 @@ class Walker:
         self.executing: list[int] = []  # graph.executed indices of the actions being run
         self.delays: list[float] = []  # periods of the timers around (since launch/handler)
         self.at_shutdown = False  # walking an OnShutdown handler: no process starts
-        # (action, file, loop) -> the handler its first execution ran in (None: at launch)
         self.calls: list[Span] = []  # the actions being visited, innermost last
+        # (action, file, loop) -> the handler its first execution ran in (None: at launch)
         self.executed_processes: dict[tuple[object, ...], int | None] = {}
         self.file_stack: list[tuple[Path, tuple[tuple[str | None, str], ...]]] = []
         self.incomplete = False  # something before this point was not understood
