@@ -4,8 +4,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
 from launchverify.engine import CheckOptions, run_check
+from launchverify.frontends.python.locate import CallLocator
 from launchverify.rule import IN_CALL
+from launchverify.span import Span
 
 TREE = Path(__file__).resolve().parent.parent / "corpus" / "python" / "finding_locations"
 
@@ -61,3 +66,27 @@ def test_parameters_point_at_their_list_item_and_dict_key(tmp_path: Path) -> Non
     where = {f.code: (f.span.line, f.span.column) for f in report.findings}
     assert where["LV302"] == (11, 18)  # the path item, not `Node(` on line 9
     assert where["LV403"] == (13, 19)  # the key whose value disagrees
+
+
+@settings(max_examples=40, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(keys=st.lists(st.from_regex(r"[a-z_][a-z0-9_/.]{0,12}", fullmatch=True),
+                     min_size=1, max_size=6, unique=True),
+       indent=st.integers(min_value=0, max_value=12), as_pairs=st.booleans())
+def test_located_keys_are_where_the_text_says(tmp_path: Path, keys: list[str], indent: int,
+                                               as_pairs: bool) -> None:
+    """Whatever the layout, each key's span covers exactly its quoted text."""
+    pad = " " * (4 + indent)  # inside a function, as launch files write it
+    items = ",\n".join(f"{pad}    ('{k}', '1')" if as_pairs else f"{pad}    '{k}': '1'"
+                       for k in keys)
+    opening, closing = ("[", "]") if as_pairs else ("{", "}")
+    source = (f"def g():\n{pad}f(\n{pad}  launch_arguments={opening}\n{items}\n"
+              f"{pad}  {closing})\n")
+    file = tmp_path / "keys.launch.py"
+    file.write_text(source)
+    lines = source.splitlines()
+    found = CallLocator().keyword_keys(Span(file, 2, len(pad) + 1), "launch_arguments")
+    assert set(found) == set(keys)
+    for key, span in found.items():
+        assert span.end_column is not None
+        assert lines[span.line - 1][span.column - 1:span.end_column - 1] == f"'{key}'"
