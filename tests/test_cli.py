@@ -38,6 +38,7 @@ def test_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
     document = json.loads(out)
     assert document["tool"] == {"name": "launchverify", "version": __version__}
     assert set(document["summary"]) == {"files", "errors", "warnings", "infos", "seconds"}
+    assert document["not_judged"] == []
     finding = document["findings"][0]
     assert set(finding) == {"code", "slug", "severity", "message", "file", "line", "column",
                             "end_line", "end_column", "related", "include_chain", "witness",

@@ -207,6 +207,11 @@ def test_explain_says_what_was_not_judged(capsys: pytest.CaptureFixture[str]) ->
     assert "setup.launch.py:15: an OpaqueFunction stopped at configuration 'robot'" in out
     main(["check", str(DUPLICATE), "--explain"])
     assert "Not judged" not in capsys.readouterr().out
+    main(["check", str(setup), "--format", "json"])  # the same list for machines
+    listed = json.loads(capsys.readouterr().out)["not_judged"]
+    assert {"file": str(setup), "line": 15,
+            "reason": "an OpaqueFunction stopped at configuration 'robot', which nothing "
+                      "sets here"} in listed
 
 
 def test_rules_and_explain_commands(capsys: pytest.CaptureFixture[str]) -> None:

@@ -40,12 +40,26 @@ def finding_dict(finding: Finding, report: Report) -> dict[str, Any]:
     }
 
 
+def not_judged(report: Report) -> list[dict[str, Any]]:
+    """Return where evaluations were incomplete: absence claims are not made through these."""
+    seen: set[tuple[str, str, int]] = set()
+    out = []
+    for graph in report.graphs:
+        for reason, span in graph.unseen():
+            key = (reason, report.display_path(span.file), span.line)
+            if key not in seen:
+                seen.add(key)
+                out.append({"file": key[1], "line": span.line, "reason": reason})
+    return sorted(out, key=lambda item: (item["file"], item["line"], item["reason"]))
+
+
 def render_json(report: Report, out: TextIO) -> None:
     """Write the report as one JSON object."""
     counts = {s: sum(1 for f in report.findings if f.severity is s) for s in Severity}
     document = {
         "tool": {"name": "launchverify", "version": __version__},
         "findings": [finding_dict(f, report) for f in report.findings],
+        "not_judged": not_judged(report),
         "summary": {
             "files": report.files,
             "errors": counts[Severity.ERROR],
