@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from launchverify.evaluate.static_args import StaticSubtree
 from launchverify.frontends import LoadedFile, PythonLoader, load_launch_file
 from launchverify.frontends.param_file import ParamFile, load_param_file
 from launchverify.graph import StaticArgument
@@ -25,6 +26,7 @@ class FileCache:
         self._files: dict[Path, LoadedFile] = {}
         self._param_files: dict[Path, ParamFile] = {}
         self.static_arguments: dict[Path, tuple[StaticArgument, ...]] = {}
+        self.static_subtrees: dict[Path, StaticSubtree] = {}  # what each included file declares
         self._owned = (IsolatedPython(index, workspace, environment=environment)
                        if python is None else None)
         self.python: PythonLoader = python or self._owned  # type: ignore[assignment]

@@ -10,6 +10,7 @@ wins.
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 
 from launchverify.evaluate.values import Reducer, text_of
@@ -41,42 +42,84 @@ class ContextFreeReducer(Reducer):
         return Unknown(name) if package is None else s.Text(str(package.share))
 
 
-def static_arguments(
-    launch: a.LaunchFile, loader: Loader, index: PackageIndex
-) -> list[tuple[a.DeclareArgument, tuple[a.Include, ...], bool]]:
-    """Return ``(declaration, nested includes, conditional)`` in discovery order."""
-    reducer = ContextFreeReducer(index)
-    found: list[tuple[a.DeclareArgument, tuple[a.Include, ...], bool]] = []
-    seen: set[str] = set()
-    visiting: set[Path] = set()
+Found = tuple[a.DeclareArgument, tuple[a.Include, ...], bool]
 
-    def walk(actions: tuple[a.Action, ...], conditional: bool,
-             includes: tuple[a.Include, ...], depth: int) -> None:
+
+@dataclass(frozen=True)
+class StaticSubtree:
+    """What one file's actions declare, includes followed (relative to that file).
+
+    ``height``: how deep its includes go; ``cut``: whether a cycle or the depth limit cut
+    it short, so the answer depends on where the file was reached and is not reused.
+    """
+
+    found: tuple[Found, ...]
+    height: int
+    cut: bool
+
+
+def static_arguments(launch: a.LaunchFile, loader: Loader, index: PackageIndex,
+                     memo: dict[Path, StaticSubtree] | None = None) -> list[Found]:
+    """Return ``(declaration, nested includes, conditional)`` in discovery order.
+
+    ``memo`` keeps each included file's answer between calls (every root of a check asks
+    about the same included files): a file is walked once, not once per includer.
+    """
+    reducer = ContextFreeReducer(index)
+    memo = {} if memo is None else memo
+
+    def subtree(target: Path, stack: frozenset[Path], depth: int) -> StaticSubtree | None:
+        known = memo.get(target)
+        if known is not None and depth + known.height < MAX_DEPTH:
+            return known
+        loaded = loader(target)
+        if loaded.launch is None:
+            return None
+        found = walk(loaded.launch.actions, False, stack | {target}, depth + 1)
+        if not found.cut:
+            memo[target] = found
+        return found
+
+    def walk(actions: tuple[a.Action, ...], conditional: bool, stack: frozenset[Path],
+             depth: int) -> StaticSubtree:
+        out: list[Found] = []
+        height, cut = 0, False
         for action in actions:
-            if isinstance(action, a.DeclareArgument) and action.name not in seen:
-                seen.add(action.name)
-                found.append((action, includes, conditional or action.condition is not None))
+            if isinstance(action, a.DeclareArgument):
+                out.append((action, (), conditional or action.condition is not None))
             if isinstance(action, a.ResetConfigs):
-                return
-            nested_conditional = conditional or action.condition is not None
+                break
+            nested = conditional or action.condition is not None
+            inner: StaticSubtree | None = None
             if isinstance(action, a.Group):
                 if action.scoped and not action.forwarding:
                     continue  # the group's actions come after a reset
-                walk(action.actions, nested_conditional, includes, depth)
+                inner = walk(action.actions, nested, stack, depth)
             elif isinstance(action, a.Include):
                 target = _resolve(action, reducer, index)
-                if target is None or target in visiting or depth >= MAX_DEPTH:
+                if target is None:
                     continue
-                loaded = loader(target)
-                if loaded.launch is None:
+                if target in stack or depth >= MAX_DEPTH:
+                    cut = True
                     continue
-                visiting.add(target)
-                walk(loaded.launch.actions, nested_conditional, (*includes, action), depth + 1)
-                visiting.discard(target)
+                child = subtree(target, stack, depth)
+                if child is None:
+                    continue
+                out.extend((d, (action, *via), c or nested) for d, via, c in child.found)
+                height, cut = max(height, child.height + 1), cut or child.cut
             elif isinstance(action, (a.Timer, a.RegisterEventHandler, a.ForLoop, a.ForEach)):
-                walk(action.sub_actions(), True, includes, depth)
+                inner = walk(action.sub_actions(), True, stack, depth)
+            if inner is not None:
+                out.extend(inner.found)
+                height, cut = max(height, inner.height), cut or inner.cut
+        return StaticSubtree(tuple(out), height, cut)
 
-    walk(launch.actions, False, (), 0)
+    found: list[Found] = []
+    seen: set[str] = set()
+    for declaration, via, conditional in walk(launch.actions, False, frozenset(), 0).found:
+        if declaration.name not in seen:  # the first declaration of a name wins
+            seen.add(declaration.name)
+            found.append((declaration, via, conditional))
     return found
 
 

@@ -229,7 +229,7 @@ class Walker:
             return cache[loaded.path]
         out = []
         for declaration, includes, conditional in static_arguments(
-            loaded.launch, self.loader, self.index
+            loaded.launch, self.loader, self.index, self.loader.static_subtrees
         ):
             via = tuple(frozenset(include_argument_names(i, self.index)) for i in includes)
             out.append(StaticArgument(
