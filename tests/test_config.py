@@ -184,6 +184,8 @@ def test_statistics_quiet_and_output(tmp_path: Path,
     counts = [int(line.split()[0]) for line in out.splitlines() if line.split()[1:2]
               and line.split()[1].startswith("LV")]
     assert counts == sorted(counts, reverse=True)  # most frequent first
+    assert any(line.startswith("solver: ") and "z3 queries" in line
+               for line in out.splitlines())
     assert main(["check", str(DUPLICATE), "-q"]) == 1
     assert "Found" not in capsys.readouterr().out
     target = tmp_path / "out.json"

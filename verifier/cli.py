@@ -133,7 +133,8 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("-q", "--quiet", action="store_true",
                        help="print findings only: no summary, no progress")
     check.add_argument("--statistics", action="store_true",
-                       help="print how many findings each rule has, instead of them")
+                       help="print how many findings each rule has, instead of them, and how "
+                       "many questions went to the solver")
     check.add_argument("--write-baseline", type=Path, metavar="FILE",
                        help="record the findings in FILE (then use --baseline FILE)")
     check.add_argument("--xunit-file", type=Path, metavar="FILE",

@@ -138,4 +138,8 @@ def render_statistics(report: Report, out: TextIO, *, quiet: bool = False) -> No
                                                 key=lambda item: (-item[1], item[0])):
         out.write(f"{count:>5}  {code}  {slug:<32} {severity}\n")
     if not quiet:
+        from launchverify.smt import solver_queries
+
+        out.write(f"solver: {solver_queries(report.graphs)} z3 queries (the rest settled "
+                  "by concrete search)\n")
         out.write(summary_line(report) + "\n")

@@ -8,6 +8,7 @@ and never see z3, which is imported only when the first question is asked.
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from typing import TYPE_CHECKING
 
 from launchverify.smt.types import Contradiction, Witness
@@ -17,6 +18,12 @@ if TYPE_CHECKING:
     from launchverify.smt.reasoner import Reasoner
 
 __all__ = ["Contradiction", "Witness", "reasoner_for"]
+
+
+def solver_queries(graphs: Iterable[LaunchGraph]) -> int:
+    """Return how many times z3 was asked about these graphs (``check --statistics``)."""
+    return sum(found.queries for graph in graphs
+               if (found := getattr(graph, "_reasoner", None)) is not None)
 
 
 def reasoner_for(graph: LaunchGraph) -> Reasoner:
