@@ -182,6 +182,20 @@ class Modelled:
             return unmodelled_attribute(self, name)
 
 
+def launch_getter(attribute: str, doc: str) -> Any:
+    """Return a read-only property like launch's getters (``normalized(attribute)``).
+
+    Launch's classes expose what their constructor took as lists of substitutions; the
+    models keep the value as given and normalise it when a launch file reads it.
+    """
+
+    def read(self: Any) -> Any:
+        return normalized(getattr(self, attribute))
+
+    read.__doc__ = doc
+    return property(read)
+
+
 def normalized(value: Any) -> Any:
     """``normalize_to_list_of_substitutions``, for what models return to launch files.
 

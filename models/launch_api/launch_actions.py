@@ -20,6 +20,7 @@ from launchverify.models.launch_api.base import (
     Modelled,
     check_substitutions,
     flatten,
+    launch_getter,
     normalized,
     typed,
 )
@@ -144,10 +145,8 @@ class DeclareLaunchArgument(Action):
         """Return the argument's name (launch's API)."""
         return self._name
 
-    @property
-    def default_value(self) -> list[Any] | None:
-        """Return the default as substitutions, or ``None`` (launch's API)."""
-        return normalized(self._default_value)  # type: ignore[no-any-return]
+    default_value = launch_getter(
+        "_default_value", "Return the default as substitutions, or ``None`` (launch's API).")
 
     @property
     def description(self) -> str:
@@ -181,15 +180,10 @@ class SetLaunchConfiguration(Action):
         super().__init__(**kwargs)
         self._name, self._value = check_substitutions(name), check_substitutions(value)
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the configuration's name as substitutions (launch's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name",
+                         "Return the configuration's name as substitutions (launch's API).")
 
-    @property
-    def value(self) -> list[Any]:
-        """Return the value as substitutions (launch's API)."""
-        return normalized(self._value)  # type: ignore[no-any-return]
+    value = launch_getter("_value", "Return the value as substitutions (launch's API).")
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.SetConfig(**cv_common(self, cv), name=cv.sub(self._name),
@@ -203,10 +197,8 @@ class UnsetLaunchConfiguration(Action):
         super().__init__(**kwargs)
         self._name = name
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the configuration's name as substitutions (launch's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name",
+                         "Return the configuration's name as substitutions (launch's API).")
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.UnsetConfig(**cv_common(self, cv), name=cv.sub(self._name))
@@ -470,10 +462,8 @@ class ForEach(OpaqueFunction):
         super().__init__(function=function, **kwargs)
         self._input_values = input_values
 
-    @property
-    def input_values(self) -> list[Any]:
-        """Return the input values as substitutions (launch's API)."""
-        return normalized(self._input_values)  # type: ignore[no-any-return]
+    input_values = launch_getter("_input_values",
+                                 "Return the input values as substitutions (launch's API).")
 
     def call(self, context: Any) -> Any:
         import yaml
@@ -502,10 +492,8 @@ class ForLoop(OpaqueFunction):
         self._length = length
         self._name = name
 
-    @property
-    def length(self) -> list[Any]:
-        """Return the number of iterations as substitutions (launch's API)."""
-        return normalized(self._length)  # type: ignore[no-any-return]
+    length = launch_getter("_length",
+                           "Return the number of iterations as substitutions (launch's API).")
 
     @property
     def name(self) -> Any:
@@ -711,15 +699,9 @@ class SetEnvironmentVariable(Action):
         super().__init__(**kwargs)
         self._name, self._value = name, value
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the variable's name as substitutions (launch's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name", "Return the variable's name as substitutions (launch's API).")
 
-    @property
-    def value(self) -> list[Any]:
-        """Return the value as substitutions (launch's API)."""
-        return normalized(self._value)  # type: ignore[no-any-return]
+    value = launch_getter("_value", "Return the value as substitutions (launch's API).")
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.SetEnv(**cv_common(self, cv), name=cv.sub(self._name),
@@ -733,10 +715,7 @@ class UnsetEnvironmentVariable(Action):
         super().__init__(**kwargs)
         self._name = name
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the variable's name as substitutions (launch's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name", "Return the variable's name as substitutions (launch's API).")
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.UnsetEnv(**cv_common(self, cv), name=cv.sub(self._name))
@@ -750,25 +729,17 @@ class AppendEnvironmentVariable(Action):
         super().__init__(**kwargs)
         self._name, self._value, self._prepend, self._separator = name, value, prepend, separator
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the variable's name as substitutions (launch's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name", "Return the variable's name as substitutions (launch's API).")
 
-    @property
-    def value(self) -> list[Any]:
-        """Return the value as substitutions (launch's API)."""
-        return normalized(self._value)  # type: ignore[no-any-return]
+    value = launch_getter("_value", "Return the value as substitutions (launch's API).")
 
     @property
     def prepend(self) -> Any:
         """Return whether to prepend: a bool, or substitutions (launch's API)."""
         return typed(self._prepend)
 
-    @property
-    def separator(self) -> list[Any]:
-        """Return the separator as substitutions (launch's API)."""
-        return normalized(self._separator)  # type: ignore[no-any-return]
+    separator = launch_getter("_separator",
+                              "Return the separator as substitutions (launch's API).")
 
     def to_ir(self, cv: Converter) -> a.Action:
         prepend = self._prepend if isinstance(self._prepend, bool) else cv.sub(self._prepend)
@@ -809,15 +780,9 @@ class LogInfo(Action):
         self._msg = msg
         self._level: Any = "INFO"
 
-    @property
-    def msg(self) -> list[Any]:
-        """Return the message as substitutions (launch's API)."""
-        return normalized(self._msg)  # type: ignore[no-any-return]
+    msg = launch_getter("_msg", "Return the message as substitutions (launch's API).")
 
-    @property
-    def level(self) -> list[Any]:
-        """Return the level as substitutions (launch's API)."""
-        return normalized(self._level)  # type: ignore[no-any-return]
+    level = launch_getter("_level", "Return the level as substitutions (launch's API).")
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.Log(**cv_common(self, cv), message=cv.sub(self._msg))

@@ -22,6 +22,7 @@ from launchverify.models.launch_api.base import (
     Substitution,
     caller_span,
     described,
+    launch_getter,
     normalized,
     typed,
 )
@@ -116,25 +117,16 @@ class ComposableNode(Modelled):
         self._parameters, self._remappings = parameters, remappings
         self._extra_arguments, self._condition = extra_arguments, condition
 
-    @property
-    def package(self) -> list[Any]:
-        """Return the package as substitutions (launch_ros's API)."""
-        return normalized(self._package)  # type: ignore[no-any-return]
+    package = launch_getter("_package", "Return the package as substitutions (launch_ros's API).")
 
-    @property
-    def node_plugin(self) -> list[Any]:
-        """Return the plugin as substitutions (launch_ros's API)."""
-        return normalized(self._plugin)  # type: ignore[no-any-return]
+    node_plugin = launch_getter("_plugin",
+                                "Return the plugin as substitutions (launch_ros's API).")
 
-    @property
-    def node_name(self) -> list[Any] | None:
-        """Return the name as substitutions, or ``None`` (launch_ros's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    node_name = launch_getter("_name",
+                              "Return the name as substitutions, or ``None`` (launch_ros's API).")
 
-    @property
-    def node_namespace(self) -> list[Any] | None:
-        """Return the namespace as substitutions, or ``None`` (launch_ros's API)."""
-        return normalized(self._namespace)  # type: ignore[no-any-return]
+    node_namespace = launch_getter(
+        "_namespace", "Return the namespace as substitutions, or ``None`` (launch_ros's API).")
 
     @property
     def parameters(self) -> Any:
@@ -350,10 +342,8 @@ class PushRosNamespace(Action):
         super().__init__(**kwargs)
         self._namespace = namespace
 
-    @property
-    def namespace(self) -> list[Any]:
-        """Return the namespace as substitutions (launch_ros's API)."""
-        return normalized(self._namespace)  # type: ignore[no-any-return]
+    namespace = launch_getter("_namespace",
+                              "Return the namespace as substitutions (launch_ros's API).")
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.PushNamespace(**cv_common(self, cv), namespace=cv.sub(self._namespace))
@@ -369,15 +359,10 @@ class SetRemap(Action):
         super().__init__(**kwargs)
         self._src, self._dst = src, dst
 
-    @property
-    def src(self) -> list[Any]:
-        """Return what is remapped, as substitutions (launch_ros's API)."""
-        return normalized(self._src)  # type: ignore[no-any-return]
+    src = launch_getter("_src", "Return what is remapped, as substitutions (launch_ros's API).")
 
-    @property
-    def dst(self) -> list[Any]:
-        """Return what it is remapped to, as substitutions (launch_ros's API)."""
-        return normalized(self._dst)  # type: ignore[no-any-return]
+    dst = launch_getter("_dst",
+                        "Return what it is remapped to, as substitutions (launch_ros's API).")
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.SetRemap(**cv_common(self, cv), src=cv.sub(self._src), dst=cv.sub(self._dst))
@@ -440,10 +425,8 @@ class SetROSLogDir(Action):
         super().__init__(**kwargs)
         self._new_log_dir = new_log_dir
 
-    @property
-    def log_dir(self) -> list[Any]:
-        """Return the new log folder as substitutions (launch_ros's API)."""
-        return normalized(self._new_log_dir)  # type: ignore[no-any-return]
+    log_dir = launch_getter("_new_log_dir",
+                            "Return the new log folder as substitutions (launch_ros's API).")
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.SetRosLogDir(**cv_common(self, cv), new_log_dir=cv.sub(self._new_log_dir))
@@ -499,10 +482,7 @@ class _FindPackageBase(PathJoinSubstitution):
         super().__init__([self])
         self._package = package
 
-    @property
-    def package(self) -> list[Any]:
-        """Return the package as substitutions (launch_ros's API)."""
-        return normalized(self._package)  # type: ignore[no-any-return]
+    package = launch_getter("_package", "Return the package as substitutions (launch_ros's API).")
 
     def describe(self) -> str:
         return f"{type(self).__name__}(pkg={described(self._package)})"
@@ -545,10 +525,8 @@ class ExecutableInPackage(FindPackagePrefix):
         super().__init__(package)
         self._executable = executable
 
-    @property
-    def executable(self) -> list[Any]:
-        """Return the executable as substitutions (launch_ros's API)."""
-        return normalized(self._executable)  # type: ignore[no-any-return]
+    executable = launch_getter("_executable",
+                               "Return the executable as substitutions (launch_ros's API).")
 
     def describe(self) -> str:
         return (f"ExecInPkg(pkg={described(self._package)}, "
@@ -565,10 +543,8 @@ class ParameterSubstitution(Substitution):
         super().__init__()
         self._name, self._default = name, default
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the parameter's name as substitutions (launch_ros's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name",
+                         "Return the parameter's name as substitutions (launch_ros's API).")
 
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.RosParameter(cv.sub(self._name), cv.opt_sub(self._default))

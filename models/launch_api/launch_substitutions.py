@@ -19,6 +19,7 @@ from launchverify.models.launch_api.base import (
     _unknown,
     check_substitutions,
     described,
+    launch_getter,
     normalized,
 )
 from launchverify.models.launch_api.placeholders import placeholder
@@ -56,10 +57,8 @@ class LaunchConfiguration(Substitution):
         self._variable_name = variable_name
         self._default = default
 
-    @property
-    def variable_name(self) -> list[Any]:
-        """Return the name as a list of substitutions (launch's API)."""
-        return normalized(self._variable_name)  # type: ignore[no-any-return]
+    variable_name = launch_getter("_variable_name",
+                                  "Return the name as a list of substitutions (launch's API).")
 
     def describe(self) -> str:
         return f"LaunchConfig({described(self._variable_name)})"
@@ -87,15 +86,10 @@ class EnvironmentVariable(Substitution):
         self._name = name
         self._default_value = default_value
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the variable's name as substitutions (launch's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name", "Return the variable's name as substitutions (launch's API).")
 
-    @property
-    def default_value(self) -> list[Any] | None:
-        """Return the default as substitutions, or ``None`` (launch's API)."""
-        return normalized(self._default_value)  # type: ignore[no-any-return]
+    default_value = launch_getter(
+        "_default_value", "Return the default as substitutions, or ``None`` (launch's API).")
 
     def describe(self) -> str:
         return f"EnvVar({described(self._name)})"
@@ -112,10 +106,8 @@ class PythonExpression(Substitution):
         self._expression = expression
         self._python_modules = python_modules
 
-    @property
-    def expression(self) -> list[Any]:
-        """Return the expression as substitutions (launch's API)."""
-        return normalized(self._expression)  # type: ignore[no-any-return]
+    expression = launch_getter("_expression",
+                               "Return the expression as substitutions (launch's API).")
 
     @property
     def python_modules(self) -> list[Any]:
@@ -149,15 +141,10 @@ class Command(Substitution):
         self._command = command
         self._on_stderr = on_stderr
 
-    @property
-    def command(self) -> list[Any]:
-        """Return the command line as substitutions (launch's API)."""
-        return normalized(self._command)  # type: ignore[no-any-return]
+    command = launch_getter("_command", "Return the command line as substitutions (launch's API).")
 
-    @property
-    def on_stderr(self) -> list[Any]:
-        """Return what to do with output on stderr, as substitutions (launch's API)."""
-        return normalized(self._on_stderr)  # type: ignore[no-any-return]
+    on_stderr = launch_getter(
+        "_on_stderr", "Return what to do with output on stderr, as substitutions (launch's API).")
 
     def describe(self) -> str:
         return f"Command({described(self._command)})"
@@ -176,10 +163,7 @@ class FindExecutable(Substitution):
         super().__init__()
         self._name = name
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the executable's name as substitutions (launch's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name", "Return the executable's name as substitutions (launch's API).")
 
     def describe(self) -> str:
         return f"FindExec({described(self._name)})"
@@ -262,10 +246,7 @@ class AnonName(Substitution):
         super().__init__()
         self._name = name
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the name as substitutions (launch's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name", "Return the name as substitutions (launch's API).")
 
     def describe(self) -> str:
         return f"AnonName({described(self._name)})"
@@ -311,10 +292,7 @@ class NotSubstitution(Substitution):
         super().__init__()
         self._value = value
 
-    @property
-    def value(self) -> list[Any]:
-        """Return the operand as substitutions (launch's API)."""
-        return normalized(self._value)  # type: ignore[no-any-return]
+    value = launch_getter("_value", "Return the operand as substitutions (launch's API).")
 
     def describe(self) -> str:
         return f"NotSubstitution({self.value})"
@@ -332,15 +310,9 @@ class _BinarySubstitution(Substitution):
         super().__init__()
         self._left, self._right = left, right
 
-    @property
-    def left(self) -> list[Any]:
-        """Return the left operand as substitutions (launch's API)."""
-        return normalized(self._left)  # type: ignore[no-any-return]
+    left = launch_getter("_left", "Return the left operand as substitutions (launch's API).")
 
-    @property
-    def right(self) -> list[Any]:
-        """Return the right operand as substitutions (launch's API)."""
-        return normalized(self._right)  # type: ignore[no-any-return]
+    right = launch_getter("_right", "Return the right operand as substitutions (launch's API).")
 
     def describe(self) -> str:
         return f"{type(self).__name__}({self.left} {self.right})"
@@ -407,15 +379,9 @@ class EqualsSubstitution(Substitution):
         super().__init__()
         self._left, self._right = _equals_text(left), _equals_text(right)
 
-    @property
-    def left(self) -> list[Any]:
-        """Return the left operand as substitutions (launch's API)."""
-        return normalized(self._left)  # type: ignore[no-any-return]
+    left = launch_getter("_left", "Return the left operand as substitutions (launch's API).")
 
-    @property
-    def right(self) -> list[Any]:
-        """Return the right operand as substitutions (launch's API)."""
-        return normalized(self._right)  # type: ignore[no-any-return]
+    right = launch_getter("_right", "Return the right operand as substitutions (launch's API).")
 
     def describe(self) -> str:
         return f"{type(self).__name__}({self.left} {self.right})"
@@ -451,20 +417,14 @@ class IfElseSubstitution(Substitution):
             raise RuntimeError("One of if_value and else_value must be specified")
         self._condition, self._if_value, self._else_value = condition, if_value, else_value
 
-    @property
-    def condition(self) -> list[Any]:
-        """Return the condition as substitutions (launch's API)."""
-        return normalized(self._condition)  # type: ignore[no-any-return]
+    condition = launch_getter("_condition",
+                              "Return the condition as substitutions (launch's API).")
 
-    @property
-    def if_value(self) -> list[Any]:
-        """Return the value when true, as substitutions (launch's API)."""
-        return normalized(self._if_value)  # type: ignore[no-any-return]
+    if_value = launch_getter("_if_value",
+                             "Return the value when true, as substitutions (launch's API).")
 
-    @property
-    def else_value(self) -> list[Any]:
-        """Return the value when false, as substitutions (launch's API)."""
-        return normalized(self._else_value)  # type: ignore[no-any-return]
+    else_value = launch_getter("_else_value",
+                               "Return the value when false, as substitutions (launch's API).")
 
     def describe(self) -> str:
         return f"IfElseSubstitution({self.condition}, {self.if_value}, {self.else_value})"
@@ -481,10 +441,7 @@ class FileContent(Substitution):
         super().__init__()
         self._path = path
 
-    @property
-    def path(self) -> list[Any]:
-        """Return the file's path as substitutions (launch's API)."""
-        return normalized(self._path)  # type: ignore[no-any-return]
+    path = launch_getter("_path", "Return the file's path as substitutions (launch's API).")
 
     def describe(self) -> str:
         return f"FileContent({', '.join(sub.describe() for sub in self.path)})"
@@ -506,10 +463,8 @@ class StringJoinSubstitution(Substitution):
         """Return the parts, each a list of substitutions (launch's API)."""
         return [normalized(part) for part in self._parts]
 
-    @property
-    def delimiter(self) -> list[Any]:
-        """Return the delimiter as substitutions (launch's API)."""
-        return normalized(self._delimiter)  # type: ignore[no-any-return]
+    delimiter = launch_getter("_delimiter",
+                              "Return the delimiter as substitutions (launch's API).")
 
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.StringJoin(cv.sub(self._delimiter),
@@ -523,15 +478,10 @@ class ForEachVar(Substitution):
         super().__init__()
         self._name, self._default_value = name, default_value
 
-    @property
-    def name(self) -> list[Any]:
-        """Return the variable's name as substitutions (launch's API)."""
-        return normalized(self._name)  # type: ignore[no-any-return]
+    name = launch_getter("_name", "Return the variable's name as substitutions (launch's API).")
 
-    @property
-    def default_value(self) -> list[Any] | None:
-        """Return the default as substitutions, or ``None`` (launch's API)."""
-        return normalized(self._default_value)  # type: ignore[no-any-return]
+    default_value = launch_getter(
+        "_default_value", "Return the default as substitutions, or ``None`` (launch's API).")
 
     @classmethod
     def get_local_arg_name(cls, name: str) -> str:
