@@ -23,14 +23,14 @@ Assignments = dict[str, list[ast.expr]]
 
 
 class CallLocator:
-    """Finds the keys written in a keyword argument of a call, by the call's position.
+    """Finds what is written inside a call, by the call's position.
 
-    Every locator of a process shares the parsed files (an OpaqueFunction's converter
-    asks about the same file as the launch file's).
+    Parsed files are shared by every locator of a process (an OpaqueFunction's converter
+    asks about the same file as the launch file's); each locator looks a file up once.
     """
 
     def __init__(self) -> None:
-        self._assignments: dict[Path, Assignments] = {}
+        self._files: dict[Path, tuple[Calls, Assignments]] = {}
 
     def keyword_keys(self, call: Span, keyword: str) -> dict[str, Span]:
         """Return the span of each literal key of ``keyword=`` in the call at ``call``.
@@ -50,11 +50,7 @@ class CallLocator:
             >>> [(k, s.line, s.column) for k, s in spans.items()]
             [('a', 2, 21), ('bb', 3, 21)]
         """
-        node = self._call(call)
-        if node is None:
-            return {}
-        value = next((k.value for k in node.keywords if k.arg == keyword), None)
-        return {} if value is None else self._keys(call.file, value, depth=0)
+        return self._keys(call.file, self._keyword(call, keyword))
 
     def keyword_values(self, call: Span) -> dict[str, Span]:
         """Return the span of each keyword argument's value in the call at ``call``.
@@ -79,48 +75,67 @@ class CallLocator:
         with the span of ``'rate'``. A list that is not written out (built at run time)
         gives nothing.
         """
-        node = self._call(call)
-        value = None if node is None else next(
-            (k.value for k in node.keywords if k.arg == keyword), None)
-        if isinstance(value, ast.Name):
-            bound = self._assignments.get(call.file, {}).get(value.id, [])
-            value = bound[0] if len(bound) == 1 else None
-        if not isinstance(value, (ast.List, ast.Tuple)):
+        value = self._bound(call.file, self._keyword(call, keyword))
+        if not isinstance(value, (ast.List, ast.Tuple)) or any(
+                isinstance(item, ast.Starred) for item in value.elts):
             return []
-        if any(isinstance(item, ast.Starred) for item in value.elts):
-            return []
-        return [(_span(call.file, item), self._keys(call.file, item, depth=3))
+        return [(_span(call.file, item), self._keys(call.file, item, follow=False))
                 for item in value.elts]
 
-    def _keys(self, file: Path, value: ast.expr, depth: int) -> dict[str, Span]:
+    def _keys(self, file: Path, value: ast.expr | None, *, follow: bool = True
+              ) -> dict[str, Span]:
+        """Return the literal keys of a dict (or ``.items()`` of one) or of a list of pairs.
+
+        ``follow``: a name stands for the value the file binds it to (not for an item of
+        a list, whose findings stay at the item).
+        """
+        if follow:
+            value = self._bound(file, value)
         if (isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute)
                 and value.func.attr == "items" and not value.args):
             value = value.func.value  # {...}.items()
+            if follow:
+                value = self._bound(file, value)
         if isinstance(value, ast.Dict):
             return {key.value: _span(file, key) for key in value.keys
                     if isinstance(key, ast.Constant) and isinstance(key.value, str)}
+        found: dict[str, Span] = {}
         if isinstance(value, (ast.List, ast.Tuple)):
-            found: dict[str, Span] = {}
             for item in value.elts:
                 if (isinstance(item, ast.Tuple) and len(item.elts) == 2
                         and isinstance(key := item.elts[0], ast.Constant)
                         and isinstance(key.value, str)):
                     found.setdefault(key.value, _span(file, key))
-            return found
-        if isinstance(value, ast.Name) and depth < 3:
-            bound = self._assignments.get(file, {}).get(value.id, [])
-            if len(bound) == 1:  # one binding in the file: no guessing which one ran
-                return self._keys(file, bound[0], depth + 1)
-        return {}
+        return found
+
+    def _bound(self, file: Path, value: ast.expr | None) -> ast.expr | None:
+        """Follow a name to the one value the file binds it to (no guessing among several)."""
+        for _ in range(3):
+            if not isinstance(value, ast.Name):
+                return value
+            bound = self._parsed(file)[1].get(value.id, [])
+            value = bound[0] if len(bound) == 1 else None
+        return None if isinstance(value, ast.Name) else value
+
+    def _keyword(self, call: Span, keyword: str) -> ast.expr | None:
+        node = self._call(call)
+        return None if node is None else next(
+            (k.value for k in node.keywords if k.arg == keyword), None)
 
     def _call(self, where: Span) -> ast.Call | None:
-        try:
-            stat = where.file.stat()
-        except OSError:
-            return None
-        calls, assignments = _index(where.file, stat.st_mtime_ns, stat.st_size)
-        self._assignments[where.file] = assignments
-        return calls.get((where.line, where.column))
+        return self._parsed(where.file)[0].get((where.line, where.column))
+
+    def _parsed(self, file: Path) -> tuple[Calls, Assignments]:
+        found = self._files.get(file)
+        if found is None:
+            try:
+                stat = file.stat()
+            except OSError:
+                found = ({}, {})
+            else:
+                found = _index(file, stat.st_mtime_ns, stat.st_size)
+            self._files[file] = found
+        return found
 
 
 @functools.lru_cache(maxsize=32)
