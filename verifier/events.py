@@ -69,13 +69,16 @@ def event_graph(graph: LaunchGraph) -> nx.DiGraph:
     return events
 
 
-def closes_loop(graph: LaunchGraph, rerun: RerunRecord) -> bool:
-    """Return whether a refused rerun is reached from its own action's events."""
+def loop_closing_reruns(graph: LaunchGraph) -> list[RerunRecord]:
+    """Return the refused reruns that their own action's events lead back to (loops)."""
+    if not graph.reruns:
+        return []
     import networkx as nx
 
     events = event_graph(graph)
-    action = ("action", id(rerun.action))
-    return action in events and nx.has_path(events, action, ("handler", rerun.within))
+    return [rerun for rerun in graph.reruns
+            if ("action", id(rerun.action)) in events
+            and nx.has_path(events, ("action", id(rerun.action)), ("handler", rerun.within))]
 
 
 def rerun_edges(graph: LaunchGraph) -> set[tuple[int, int]]:

@@ -33,7 +33,7 @@ from launchverify.evaluate.scope import (
 )
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
 from launchverify.evaluate.values import is_unset, machine_dependent, ns_prefix, text_of
-from launchverify.events import closes_loop
+from launchverify.events import loop_closing_reruns
 from launchverify.frontends import LoadedFile
 from launchverify.graph import (
     ArgumentRecord,
@@ -195,11 +195,10 @@ class Walker:
 
     def name_rerun_loops(self) -> None:
         """Give LV501 the reruns that close a loop of handlers (it explains the loop)."""
-        for rerun in self.graph.reruns:
-            if closes_loop(self.graph, rerun):
-                record = self.graph.problems[rerun.problem]
-                self.graph.problems[rerun.problem] = dataclasses.replace(
-                    record, problem=dataclasses.replace(record.problem, rule="LV501"))
+        for rerun in loop_closing_reruns(self.graph):
+            record = self.graph.problems[rerun.problem]
+            self.graph.problems[rerun.problem] = dataclasses.replace(
+                record, problem=dataclasses.replace(record.problem, rule="LV501"))
 
     def load(self, path: Path, ctx: Ctx, *, root: bool = False) -> LoadedFile:
         """Load a file (cached by the loader) and record its problems once.
