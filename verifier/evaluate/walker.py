@@ -886,27 +886,16 @@ def is_literal(expression: s.Sub) -> bool:
 
 def depends_on_argument(value: s.Sub, name: str) -> bool:
     """Return whether a configuration's value is (or includes) the argument ``name``."""
-    stack = [value]
-    while stack:
-        item = stack.pop()
-        if isinstance(item, Arg) and item.name == name:
-            return True
-        stack.extend(item.children())
-    return False
+    return any(isinstance(part, Arg) and part.name == name for part in s.walk(value))
 
 
 def read_names(condition: c.Condition) -> list[str]:
     """Return the configurations a condition reads by a literal name."""
     if isinstance(condition, c.ConfigEquals):
-        stack: list[s.Sub] = [s.LaunchConfig(condition.name)]
+        expression: s.Sub = s.LaunchConfig(condition.name)
     elif isinstance(condition, (c.IfCondition, c.UnlessCondition)):
-        stack = [condition.expression]
+        expression = condition.expression
     else:
         return []
-    names: list[str] = []
-    while stack:
-        item = stack.pop()
-        if isinstance(item, s.LaunchConfig) and isinstance(item.name, s.Text):
-            names.append(item.name.text)
-        stack.extend(item.children())
-    return names
+    return [part.name.text for part in s.walk(expression)
+            if isinstance(part, s.LaunchConfig) and isinstance(part.name, s.Text)]
