@@ -30,6 +30,7 @@ from launchverify.isolation.pool import IsolatedPython
 from launchverify.models import distros
 from launchverify.registry import select as select_rules
 from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.span import Span
 from launchverify.workspace import reading
 from launchverify.workspace.discover import discover
 from launchverify.workspace.includers import Includers
@@ -82,6 +83,20 @@ class Report:
     def display_path(self, path: Path) -> str:
         """Return a path as the user gave it, else relative to the working directory."""
         return self.display.get(path) or display_path(path)
+
+    def not_judged(self) -> list[tuple[str, Span]]:
+        """Return where evaluations were incomplete (reason, place), each once, as met.
+
+        Claims that something is absent are not made on a launch that reaches these.
+        """
+        seen: set[tuple[str, Path, int]] = set()
+        out = []
+        for graph in self.graphs:
+            for reason, span in graph.unseen():
+                if (reason, span.file, span.line) not in seen:
+                    seen.add((reason, span.file, span.line))
+                    out.append((reason, span))
+        return out
 
 
 def parse_arguments(tokens: list[str]) -> tuple[list[str], dict[str, str]]:

@@ -42,14 +42,8 @@ def finding_dict(finding: Finding, report: Report) -> dict[str, Any]:
 
 def not_judged(report: Report) -> list[dict[str, Any]]:
     """Return where evaluations were incomplete: absence claims are not made through these."""
-    seen: set[tuple[str, str, int]] = set()
-    out = []
-    for graph in report.graphs:
-        for reason, span in graph.unseen():
-            key = (reason, report.display_path(span.file), span.line)
-            if key not in seen:
-                seen.add(key)
-                out.append({"file": key[1], "line": span.line, "reason": reason})
+    out = [{"file": report.display_path(span.file), "line": span.line, "reason": reason}
+           for reason, span in report.not_judged()]
     return sorted(out, key=lambda item: (item["file"], item["line"], item["reason"]))
 
 

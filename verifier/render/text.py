@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from pathlib import Path
 from typing import TextIO
 
 from rich.console import Console
@@ -98,14 +97,8 @@ def _explanation(console: Console, finding: Finding) -> None:
 
 def _unjudged(console: Console, report: Report) -> None:
     """Say which launch files were too incomplete for claims that something is absent."""
-    shown: set[tuple[str, Path, int]] = set()
-    lines = []
-    for graph in report.graphs:
-        for reason, span in graph.unseen():
-            if (reason, span.file, span.line) in shown:
-                continue
-            shown.add((reason, span.file, span.line))
-            lines.append(f"  {report.display_path(span.file)}:{span.line}: {reason}")
+    lines = [f"  {report.display_path(span.file)}:{span.line}: {reason}"
+             for reason, span in report.not_judged()]
     if not lines:
         return
     console.print("Not judged where the evaluation is incomplete: claims that something is "
