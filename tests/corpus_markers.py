@@ -1,8 +1,10 @@
 """Expected-finding markers written inside corpus launch files.
 
 ``expect: LV101 LV102`` marks findings on the line of the comment (or, when the comment
-stands alone on its line, on the next line with content); ``expect-not: LV101`` marks a
-deliberate near miss that must stay quiet.
+stands alone on its line, on the next line with content); ``expect-info: LV204`` (or
+``-warning``, ``-error``) marks one that must also have that severity (where a rule reports
+a lesser case as an info); ``expect-not: LV101`` marks a deliberate near miss that must
+stay quiet.
 """
 
 from __future__ import annotations
@@ -12,7 +14,8 @@ from collections import Counter
 from dataclasses import dataclass, field
 from pathlib import Path
 
-MARKER = re.compile(r"(?:<!--|#)\s*(expect(?:-not)?):\s*((?:LV\d{3}\s*)+)")
+MARKER = re.compile(
+    r"(?:<!--|#)\s*(expect(?:-not|-info|-warning|-error)?):\s*((?:LV\d{3}\s*)+)")
 MARKED_SUFFIXES = (".xml", ".yaml", ".yml", ".py")
 
 
@@ -22,6 +25,7 @@ class Expectations:
 
     expected: Counter[tuple[str, int, str]] = field(default_factory=Counter)
     forbidden: set[tuple[str, int, str]] = field(default_factory=set)
+    severities: dict[tuple[str, int, str], str] = field(default_factory=dict)  # if marked
 
 
 def read_markers(tree: Path) -> Expectations:
@@ -42,8 +46,10 @@ def read_markers(tree: Path) -> Expectations:
                     )
                 for code in match.group(2).split():
                     key = (relative, target, code)
-                    if match.group(1) == "expect":
-                        result.expected[key] += 1
-                    else:
+                    if match.group(1) == "expect-not":
                         result.forbidden.add(key)
+                        continue
+                    result.expected[key] += 1
+                    if match.group(1) != "expect":
+                        result.severities[key] = match.group(1).removeprefix("expect-")
     return result

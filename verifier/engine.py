@@ -34,6 +34,7 @@ from launchverify.span import Span
 from launchverify.workspace import reading
 from launchverify.workspace.discover import discover
 from launchverify.workspace.includers import Includers
+from launchverify.workspace.interfaces import interfaces_of
 from launchverify.workspace.packages import PackageIndex, find_workspace
 from launchverify.workspace.paths import display_path, relative_file
 
@@ -191,7 +192,8 @@ def run_check(options: CheckOptions) -> Report:
     for graph in graphs:
         graph.included_elsewhere = graph.root in included or includers.included(graph.root)
     with distros.checking(options.distro):  # rules judge for it too (lifecycle labels)
-        findings = run_rules(graphs, rules, RuleContext(packages=index))
+        findings = run_rules(graphs, rules,
+                             RuleContext(packages=index, interfaces=interfaces_of(graphs)))
     loaded = {path for g in graphs for path in g.files}
     findings, suppressed = _suppress(findings, loaded, rules)
     findings = _configured(findings, config)

@@ -18,6 +18,7 @@ from launchverify.frontends.param_file import ParamFile
 from launchverify.ir import actions as a
 from launchverify.ir.subst import Sub, Text
 from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy, describe_path
+from launchverify.ir.walk import configuration_names
 from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
 
@@ -519,3 +520,14 @@ class LaunchGraph:
     def read_names(self) -> set[str]:
         """Return every configuration name read anywhere in the evaluation."""
         return {read.name for read in self.reads}
+
+    def written_names(self) -> set[str]:
+        """Return every configuration name the loaded files read, on any branch.
+
+        (Reads on branches this evaluation did not take, and OpaqueFunctions' strings.)
+        """
+        names = set(self.mentioned)
+        for loaded in self.files.values():
+            if loaded.launch is not None:
+                names |= configuration_names(loaded.launch)
+        return names

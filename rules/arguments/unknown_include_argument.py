@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterator
 
-from launchverify.graph import LaunchGraph, Origin
+from launchverify.graph import IncludeRecord, LaunchGraph, Origin
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
+from launchverify.ir.subst import Sub
 from launchverify.ir.walk import configuration_names, iter_subs
+from launchverify.models.parameter_values import typed_parameter
+from launchverify.parameters import effective_parameters
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.span import Span
 from launchverify.suggest import did_you_mean
@@ -37,13 +41,17 @@ class UnknownIncludeArgument(Rule):
     Use the name the included file declares, or declare the argument there.
 
     An argument that later arguments of the same include read (`$(var common_dir)/a.yaml`)
-    is a helper the includer computes with, and is not reported.
+    is a helper the includer computes with, and is not reported. An argument named like a
+    ROS parameter that the included nodes already set to the same value themselves
+    (`use_sim_time:=true` into a file whose nodes hard-code `use_sim_time: true`) loses
+    nothing: it is an info, and a warning again as soon as the values differ.
     """
 
     code = "LV204"
     slug = "unknown-include-argument"
     severity = Severity.WARNING
     message = "argument {name!r} is not declared by {target}{hint}"
+    applied = "; its nodes already set {name} to {value!r} themselves"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         yield from self.command_line(graph)
@@ -58,26 +66,54 @@ class UnknownIncludeArgument(Rule):
                 if launch is not None:
                     known |= configuration_names(launch)
             known |= helper_names(include.action)
-            for name, _value, span in include.arguments:
+            for name, value, span in include.arguments:
                 if name is None or name in known:
                     continue
                 call = include.origin.span if span != include.origin.span else None
                 origin = Origin(span, include.origin.chain, include.origin.path, call=call)
-                yield self.finding(origin, name=name, target=include.target.name,
-                                   hint=did_you_mean(name, known))
+                same = applied_inside(graph, include, name, value)
+                hint = (self.applied.format(name=name, value=same) if same is not None
+                        else did_you_mean(name, known))
+                finding = self.finding(origin, name=name, target=include.target.name,
+                                       hint=hint)
+                yield (finding if same is None
+                       else dataclasses.replace(finding, severity=Severity.INFO))
 
     def command_line(self, graph: LaunchGraph) -> Iterator[Finding]:
         """Arguments given as name:=value that the launch never declares nor reads."""
         if not graph.pinned or not graph.complete or graph.stopped_early:
             return
-        known = graph.declared_names() | graph.read_names() | graph.mentioned
-        for loaded in graph.files.values():
-            if loaded.launch is not None:
-                known |= configuration_names(loaded.launch)
+        known = graph.declared_names() | graph.read_names() | graph.written_names()
         for name in sorted(set(graph.pinned) - known):
             yield self.finding(Span.of_file(graph.root), name=f"{name}:={graph.pinned[name]}",
                                target=graph.root.name + " (given on the command line)",
                                hint=did_you_mean(name, known))
+
+
+def applied_inside(graph: LaunchGraph, include: IncludeRecord, name: str,
+                   value: Sub) -> object | None:
+    """Return the value passed for ``name`` when the included nodes set that parameter so.
+
+    Every node of the include's subtree that receives a parameter ``name`` receives the
+    value passed (typed as a parameter), and at least one does: the argument restates what
+    the target does anyway. ``None`` otherwise, or when a value is not known.
+    """
+    text = graph.base(value)
+    if text is None:
+        return None
+    wanted = typed_parameter(text)
+    inside = (*include.origin.chain, include.origin.span)
+    seen = False
+    for node in graph.nodes:
+        if node.origin.chain[:len(inside)] != inside:
+            continue
+        winner = effective_parameters(graph, node).winner(name)
+        if winner is None:
+            continue
+        if type(winner.value) is not type(wanted) or winner.value != wanted:
+            return None
+        seen = True
+    return wanted if seen else None
 
 
 def helper_names(include: a.Include) -> set[str]:

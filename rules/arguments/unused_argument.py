@@ -2,12 +2,13 @@
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
-from launchverify.ir.walk import configuration_names
 from launchverify.problems import ProblemKind
-from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+from launchverify.workspace.interfaces import mirrored
 
 # Configurations launch and launch_ros read by themselves, without a $(var).
 IMPLICIT_READS = frozenset({
@@ -38,12 +39,18 @@ class UnusedArgument(Rule):
     ## Fix
     Use the argument where it was meant to apply (`<param name="use_sim_time"
     value="$(var use_sim_time)"/>`), or delete the declaration.
+
+    A file that mirrors the interface of another of its family (a stand-in in the same
+    folder, or the same file name in another package, sharing most of its declared
+    arguments) declares that family's arguments on purpose: an argument the other file
+    uses is an info there.
     """
 
     code = "LV202"
     slug = "unused-argument"
     severity = Severity.WARNING
-    message = "argument {name!r} is declared but never used"
+    message = "argument {name!r} is declared but never used{note}"
+    mirror = "; it keeps the interface of {other}, which uses it"
     every_context = True
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
@@ -51,14 +58,18 @@ class UnusedArgument(Rule):
             return  # a part we cannot see may read it
         if any(r.problem.kind is ProblemKind.PARSE for r in graph.problems):
             return  # reads may sit in what could not be parsed
-        used = set(IMPLICIT_READS) | graph.read_names() | graph.mentioned
-        for loaded in graph.files.values():
-            if loaded.launch is not None:
-                used |= configuration_names(loaded.launch)
+        used = set(IMPLICIT_READS) | graph.read_names() | graph.written_names()
         reported: set[object] = set()
         for argument in graph.arguments:
             span = argument.action.span
             if argument.name in used or span in reported:
                 continue
             reported.add(span)
-            yield self.finding(argument.origin, name=argument.name)
+            other = mirrored(ctx.interfaces, span.file, argument.name)
+            if other is None:
+                yield self.finding(argument.origin, name=argument.name, note="")
+                continue
+            finding = self.finding(argument.origin, name=argument.name,
+                                   note=self.mirror.format(other=other.file.name),
+                                   related=(Related(other, "declared and used"),))
+            yield dataclasses.replace(finding, severity=Severity.INFO)

@@ -214,6 +214,9 @@ class PackageIndex:
                 for root in (package.share, package.source):
                     if root is not None:
                         roots.setdefault(root, package)
+            for name, folders in self.sources.items():
+                for folder in folders:  # a duplicated name: each copy owns its own files
+                    roots.setdefault(folder, Package(name, source=folder))
             self._roots = roots
         for folder in (path, *path.parents):
             found = self._roots.get(folder)
