@@ -30,9 +30,13 @@ class UnknownPackage(Rule):
     - a package that the launch file's own package declares in its `package.xml`
       (`<exec_depend>`...) comes from elsewhere (a `.repos` file, another overlay):
       quiet;
-    - any other unreleased package is a warning: nothing declares it, so only luck
-      outside the workspace could provide it (a renamed package, an optional demo
-      dependency; loose launch files, outside any package, are not judged).
+    - another unreleased package whose name is close to a workspace package's (shares
+      most words, whole or shortened) is a warning: nothing declares it, and a renamed or
+      mistyped package is likely;
+    - any other is an info: nothing declares it, but its name is like nothing here, so
+      it is most likely an outside dependency (an optional demo's driver, a vendor's
+      package) that `package.xml` should declare. Loose launch files, outside any
+      package, are not judged.
 
     A warning is given once per file and package (its first use), errors at every use.
     The message names the package most likely meant: a typo's target, else the one
@@ -46,7 +50,8 @@ class UnknownPackage(Rule):
     ## Example
     ```xml
     <node pkg="demo_node_cpp" exec="talker"/>  <!-- error: did you mean demo_nodes_cpp? -->
-    <!-- warning when the workspace has acme_simulation and no acme_sim -->
+    <!-- warning when the workspace has acme_simulation and no acme_sim; an info for
+         vendor_lidar_driver, like nothing in the workspace -->
     <include file="$(find-pkg-share acme_sim)/launch/world.launch.xml"/>
     ```
 
@@ -59,6 +64,7 @@ class UnknownPackage(Rule):
     slug = "unknown-package"
     severity = Severity.ERROR
     message = "package {name!r} is {where}{hint}"
+    outside = " (an outside dependency? package.xml does not declare it)"
 
     def __init__(self) -> None:
         # one check's suggestions: every graph asks again, and installed packages are many
@@ -100,6 +106,9 @@ class UnknownPackage(Rule):
                                hint=f" (did you mean {hint!r}?)" if hint else "")
         if installed or typo is not None:
             return finding
+        if hint is None:
+            return dataclasses.replace(finding, severity=Severity.INFO,
+                                       message=finding.message + self.outside)
         return dataclasses.replace(finding, severity=Severity.WARNING)
 
     def _suggestions(self, name: str, local: frozenset[str]) -> tuple[str | None, str | None]:

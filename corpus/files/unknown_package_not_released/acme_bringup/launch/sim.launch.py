@@ -13,8 +13,8 @@ def generate_launch_description():
         DeclareLaunchArgument('use_sim', default_value='false'),
         # Bugs: a shortened workspace package (did you mean 'acme_simulation'?) under a
         # condition false by default, and a private package that is nowhere.
-        Node(package='acme_sim', executable='world', condition=IfCondition(use_sim)),  # expect: LV303
-        Node(package='acme_private_tools', executable='tool', name='tool'),  # expect: LV303
+        Node(package='acme_sim', executable='world', condition=IfCondition(use_sim)),  # expect-warning: LV303
+        Node(package='acme_private_tools', executable='tool', name='tool'),  # expect-info: LV303
         # Twins: a workspace package spelled right, released packages not installed here.
         Node(package='acme_simulation', executable='world', name='world',  # expect-not: LV303
              condition=IfCondition(use_sim)),
