@@ -150,14 +150,21 @@ def generate_controllers_spawner_launch_description(
         LaunchDescription,
     )
     from launchverify.models.launch_api.launch_ros import Node
-    from launchverify.models.launch_api.launch_substitutions import LaunchConfiguration
+    from launchverify.models.launch_api.launch_substitutions import (
+        LaunchConfiguration,
+        PythonExpression,
+    )
 
     arguments: list[Any] = [*controller_names, "--controller-manager",
                             LaunchConfiguration("controller_manager_name")]
     files = controller_params_files
     for file in (files if isinstance(files, (list, tuple)) else [files] if files else []):
-        arguments += ["--param-file", file]
-    arguments += list(extra_spawner_args or [])
+        if file:
+            arguments += ["--param-file", file]
+    # "--unload-on-kill" when the unload_on_kill argument is "true", else an empty word
+    unload = PythonExpression(['"--unload-on-kill" if "true" == "',
+                               LaunchConfiguration("unload_on_kill"), '" else ""'])
+    arguments += [unload, *(extra_spawner_args or [])]
     return LaunchDescription([
         DeclareLaunchArgument("controller_manager_name", default_value="controller_manager"),
         DeclareLaunchArgument("unload_on_kill", default_value="false"),
