@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Iterator
+from pathlib import Path
 
 from launchverify.graph import LaunchGraph
 from launchverify.problems import ProblemKind
@@ -40,7 +41,9 @@ class UnusedArgument(Rule):
     Use the argument where it was meant to apply (`<param name="use_sim_time"
     value="$(var use_sim_time)"/>`), or delete the declaration.
 
-    A file that mirrors the interface of another of its family (a stand-in in the same
+    `use_sim_time` in a file that starts no ROS node (a world launch file running only the
+    simulator) is the usual interface kept for includers, with nothing to give it to: an
+    info. A file that mirrors the interface of another of its family (a stand-in in the same
     folder, or the same file name in another package, sharing most of its declared
     arguments) declares that family's arguments on purpose: an argument the other file
     uses is an info there.
@@ -51,6 +54,7 @@ class UnusedArgument(Rule):
     severity = Severity.WARNING
     message = "argument {name!r} is declared but never used{note}"
     mirror = "; it keeps the interface of {other}, which uses it"
+    no_node = "; no ROS node starts here to take it"
     every_context = True
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
@@ -65,6 +69,10 @@ class UnusedArgument(Rule):
             if argument.name in used or span in reported:
                 continue
             reported.add(span)
+            if argument.name == "use_sim_time" and not starts_nodes(graph, span.file):
+                finding = self.finding(argument.origin, name=argument.name, note=self.no_node)
+                yield dataclasses.replace(finding, severity=Severity.INFO)
+                continue
             other = mirrored(ctx.interfaces, span.file, argument.name)
             if other is None:
                 yield self.finding(argument.origin, name=argument.name, note="")
@@ -73,3 +81,10 @@ class UnusedArgument(Rule):
                                    note=self.mirror.format(other=other.file.name),
                                    related=(Related(other, "declared and used"),))
             yield dataclasses.replace(finding, severity=Severity.INFO)
+
+
+def starts_nodes(graph: LaunchGraph, file: Path) -> bool:
+    """Return whether a file starts a ROS node, itself or through what it includes."""
+    return any(node.origin.span.file == file
+               or any(span.file == file for span in node.origin.chain)
+               for node in graph.nodes)
