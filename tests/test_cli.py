@@ -37,7 +37,8 @@ def test_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
     code, out, _ = run(capsys, "check", str(DUPLICATE), "--format", "json")
     document = json.loads(out)
     assert document["tool"] == {"name": "launchverify", "version": __version__}
-    assert set(document["summary"]) == {"files", "errors", "warnings", "infos", "seconds"}
+    assert set(document["summary"]) == {"files", "errors", "warnings", "infos", "seconds",
+                                           "cached"}
     assert document["not_judged"] == []
     finding = document["findings"][0]
     assert set(finding) == {"code", "slug", "severity", "message", "file", "line", "column",

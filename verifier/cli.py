@@ -28,8 +28,10 @@ from launchverify.engine import (
     parse_arguments,
     parse_environment,
     run_check,
+    run_check_cached,
 )
 from launchverify.findings.baseline import BaselineError, write_baseline
+from launchverify.findings.cache import ResultCache, default_cache_dir, disabled_by_environment
 from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.rule import Rule, Severity
@@ -139,6 +141,12 @@ def build_parser() -> argparse.ArgumentParser:
                        help="record the findings in FILE (then use --baseline FILE)")
     check.add_argument("--xunit-file", type=Path, metavar="FILE",
                        help="also write JUnit XML to FILE (what colcon test-result reads)")
+    check.add_argument("--no-cache", action="store_true",
+                       help="check everything again: neither read nor write the cache of "
+                       "results (also LAUNCHVERIFY_NO_CACHE=1)")
+    check.add_argument("--cache-dir", type=Path, metavar="DIR",
+                       help="where results are kept between runs (default: "
+                       "$XDG_CACHE_HOME/launchverify, else ~/.cache/launchverify)")
 
     report = commands.add_parser(
         "report", help="write a self-contained HTML report",
@@ -264,7 +272,7 @@ def _ros_distro() -> str | None:
 
 def _check(args: argparse.Namespace) -> int:
     options, config = check_options(args, progress=not args.quiet and sys.stderr.isatty())
-    report = run_check(options)
+    report = run_check_cached(options, _result_cache(args))
     if args.write_baseline is not None:
         write_baseline(args.write_baseline, report.findings)
     if args.xunit_file is not None:
@@ -284,6 +292,13 @@ def _check(args: argparse.Namespace) -> int:
     if args.exit_zero:
         return EXIT_OK
     return EXIT_FINDINGS if fails(report, args, config) else EXIT_OK
+
+
+def _result_cache(args: argparse.Namespace) -> ResultCache | None:
+    """Return the cache of results a check uses, or ``None`` when asked for none."""
+    if args.no_cache or disabled_by_environment():
+        return None
+    return ResultCache(args.cache_dir or default_cache_dir())
 
 
 def _say_protections(report: Report, verbose: bool) -> None:

@@ -21,6 +21,7 @@ from launchverify.config import Config, matches
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
 from launchverify.findings.baseline import apply_baseline
+from launchverify.findings.cache import Entry, ResultCache, key_of, options_text, stamps_of
 from launchverify.findings.suppressions import apply_suppressions
 from launchverify.frontends import launch_format
 from launchverify.graph import LaunchGraph
@@ -35,7 +36,7 @@ from launchverify.workspace import reading
 from launchverify.workspace.discover import discover
 from launchverify.workspace.includers import Includers
 from launchverify.workspace.interfaces import interfaces_of
-from launchverify.workspace.packages import PackageIndex, find_workspace
+from launchverify.workspace.packages import PackageIndex, find_workspace, workspace_prefixes
 from launchverify.workspace.paths import display_path, relative_file
 
 DEFAULT_TIME_LIMIT = 10.0
@@ -80,16 +81,42 @@ class Report:
     baselined: int = 0  # findings dropped because the baseline records them
     python_files: int = 0  # Python launch files evaluated, each in a confined process
     protections: str | None = None  # which confinement layers held, as workers said
+    # What reporters would derive from the graphs, kept when a cached report has none.
+    unseen: list[tuple[str, Span]] | None = None
+    queries: int | None = None
+    loaded: set[Path] | None = None
+    cached: bool = False  # read from the cache between runs, not checked again
 
     def display_path(self, path: Path) -> str:
         """Return a path as the user gave it, else relative to the working directory."""
         return self.display.get(path) or display_path(path)
+
+    def loaded_files(self) -> set[Path]:
+        """Return every launch file the check loaded (roots and what they include)."""
+        if self.loaded is not None:
+            return self.loaded
+        return {path for graph in self.graphs for path in graph.files}
+
+    def solver_queries(self) -> int:
+        """Return how many times z3 was asked (``check --statistics``)."""
+        if self.queries is not None:
+            return self.queries
+        from launchverify.smt import solver_queries
+
+        return solver_queries(self.graphs)
+
+    def detached(self) -> Report:
+        """Return this report without its graphs, what reporters need kept (to store)."""
+        return dataclasses.replace(self, graphs=[], unseen=self.not_judged(),
+                                   queries=self.solver_queries(), loaded=self.loaded_files())
 
     def not_judged(self) -> list[tuple[str, Span]]:
         """Return where evaluations were incomplete (reason, place), each once, as met.
 
         Claims that something is absent are not made on a launch that reaches these.
         """
+        if self.unseen is not None:
+            return self.unseen
         seen: set[tuple[str, Path, int]] = set()
         out = []
         for graph in self.graphs:
@@ -204,6 +231,52 @@ def run_check(options: CheckOptions) -> Report:
                   time.perf_counter() - started, display, graphs,
                   checked=[canonical(f) for f in files], suppressed=suppressed,
                   baselined=baselined, python_files=python_files, protections=protections)
+
+
+def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report:
+    """Check, or return the stored report when nothing it rests on has changed."""
+    if cache is None:
+        return run_check(options)
+    started = time.perf_counter()
+    for path in options.paths:
+        if not path.exists():
+            raise UsageError(f"no such file or folder: {str(path)!r}")
+    folders, files = _inputs(options)
+    key = key_of([options_text(options, skip=("progress", "jobs")), folders, files])
+    entry = cache.load(key)
+    if entry is not None and isinstance(entry.report, Report):
+        return dataclasses.replace(entry.report, seconds=time.perf_counter() - started,
+                                   cached=True)
+    now = time.time()
+    report = run_check(options)
+    read = {str(path) for graph in report.graphs
+            for path in (*graph.files, *graph.param_files)}
+    cache.store(key, Entry(report.detached(), folders,
+                           stamps_of(folders, [*files, *read], now, skip=str(cache.folder))))
+    return report
+
+
+def _inputs(options: CheckOptions) -> tuple[list[str], list[str]]:
+    """Return the folders a check may read anything below, and single files it reads.
+
+    The workspace and the package paths are walked whole; of install prefixes (the
+    workspace's and ``AMENT_PREFIX_PATH``'s) only the ament index, whose folder changes
+    when a package is installed or removed; the baseline and configuration files.
+    """
+    workspace = (canonical(options.workspace) if options.workspace is not None
+                 else find_workspace(options.paths[0]))
+    folders = [workspace, *(canonical(p) for p in options.config.package_paths)]
+    files: list[Path] = []
+    for path in options.paths:
+        target = canonical(path)
+        if not any(target.is_relative_to(folder) for folder in folders):
+            (folders if target.is_dir() else files).append(target)
+    raw = os.environ.get("AMENT_PREFIX_PATH", "")
+    prefixes = [*workspace_prefixes(workspace), *(Path(p) for p in raw.split(os.pathsep) if p)]
+    files += [prefix / "share" / "ament_index" / "resource_index" / "packages"
+              for prefix in prefixes]
+    files += [p for p in (options.baseline, options.config.path) if p is not None]
+    return [str(f) for f in folders], [str(canonical(f)) for f in files]
 
 
 def default_jobs() -> int:

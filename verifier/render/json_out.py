@@ -60,6 +60,7 @@ def render_json(report: Report, out: TextIO) -> None:
             "warnings": counts[Severity.WARNING],
             "infos": counts[Severity.INFO],
             "seconds": round(report.seconds, 3),
+            "cached": report.cached,
         },
     }
     json.dump(document, out, indent=2)

@@ -48,8 +48,7 @@ def case_files(report: Report, checked: list[Path] | None) -> list[Path]:
     if checked is not None:
         files = _unique(Path(os.path.realpath(path)) for path in checked)
     else:
-        loaded = {path for graph in report.graphs for path in graph.files}
-        files = sorted(loaded, key=report.display_path)
+        files = sorted(report.loaded_files(), key=report.display_path)
     extra = {f.span.file for f in report.findings} - set(files)
     return [*files, *sorted(extra, key=report.display_path)]
 

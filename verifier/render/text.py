@@ -112,13 +112,14 @@ def summary_line(report: Report) -> str:
     """Return the one-line summary."""
     counts = {s: sum(1 for f in report.findings if f.severity is s) for s in Severity}
     files = f"{report.files} file{'s' if report.files != 1 else ''}"
+    took = f"{report.seconds:.2f}s{', unchanged since the cached run' if report.cached else ''}"
     if not report.findings:
-        return f"No findings in {files} ({report.seconds:.2f}s)."
+        return f"No findings in {files} ({took})."
     parts = [f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity
              if counts[s]]
     total = len(report.findings)
     return (f"Found {total} finding{'s' if total != 1 else ''} ({', '.join(parts)}) in "
-            f"{files} ({report.seconds:.2f}s).")
+            f"{files} ({took}).")
 
 
 def render_statistics(report: Report, out: TextIO, *, quiet: bool = False) -> None:
@@ -131,8 +132,6 @@ def render_statistics(report: Report, out: TextIO, *, quiet: bool = False) -> No
                                                 key=lambda item: (-item[1], item[0])):
         out.write(f"{count:>5}  {code}  {slug:<32} {severity}\n")
     if not quiet:
-        from launchverify.smt import solver_queries
-
-        out.write(f"solver: {solver_queries(report.graphs)} z3 queries (the rest settled "
+        out.write(f"solver: {report.solver_queries()} z3 queries (the rest settled "
                   "by concrete search)\n")
         out.write(summary_line(report) + "\n")

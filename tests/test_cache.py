@@ -1,0 +1,132 @@
+"""The result cache between runs: an unchanged tree is not checked again, a change is seen."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+
+from launchverify.cli import main
+
+TOP = """<launch>
+  <include file="$(dirname)/robot.launch.xml">
+    <arg name="use_sim_time" value="true"/>
+  </include>
+</launch>
+"""
+ROBOT = """<launch>
+  <arg name="robot" default="r1"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker">
+    <param from="$(dirname)/params.yaml"/>
+    <param name="robot" value="$(var robot)"/>
+  </node>
+</launch>
+"""
+PARAMS = """talker:
+  ros__parameters:
+    rate: 10
+"""
+
+
+@pytest.fixture
+def tree(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    monkeypatch.delenv("LAUNCHVERIFY_NO_CACHE", raising=False)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    root = tmp_path / "ws"
+    root.mkdir()
+    (root / "top.launch.xml").write_text(TOP)
+    (root / "robot.launch.xml").write_text(ROBOT)
+    (root / "params.yaml").write_text(PARAMS)
+    return root
+
+
+def check(capsys: pytest.CaptureFixture[str], root: Path, *extra: str) -> tuple[set[str], bool]:
+    """Return the findings (code and line) and whether the report came from the cache."""
+    main(["check", str(root), "--workspace", str(root), "--format", "json", "--exit-zero",
+          *extra])
+    document = json.loads(capsys.readouterr().out)
+    codes = {f"{f['code']}:{Path(f['file']).name}:{f['line']}" for f in document["findings"]}
+    return codes, document["summary"].get("cached", False)
+
+
+def test_unchanged_tree_is_read_from_the_cache(tree: Path,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    first, cached = check(capsys, tree)
+    assert first == {"LV204:top.launch.xml:3"} and not cached
+    second, cached = check(capsys, tree)
+    assert second == first and cached
+    assert list((tree.parent / "cache" / "launchverify").glob("*.pickle"))
+
+
+def test_an_edited_included_file_is_checked_again(tree: Path,
+                                                  capsys: pytest.CaptureFixture[str]) -> None:
+    check(capsys, tree)
+    # at once, within the clock's resolution: the content hash tells
+    (tree / "robot.launch.xml").write_text(ROBOT.replace('"robot"', '"use_sim_time"', 1)
+                                           .replace("$(var robot)", "$(var use_sim_time)"))
+    findings, cached = check(capsys, tree)
+    assert not cached and "LV204:top.launch.xml:3" not in findings
+
+
+def test_an_edited_parameter_file_of_the_same_size_is_seen(
+        tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    check(capsys, tree)
+    (tree / "params.yaml").write_text(PARAMS.replace("talker:", "talkex:"))
+    findings, cached = check(capsys, tree)
+    assert not cached and "LV402:params.yaml:1" in findings
+
+
+def test_a_new_file_is_seen(tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    check(capsys, tree)
+    (tree / "other.launch.xml").write_text(
+        '<launch><node pkg="demo_nodes_cpp" exec="talker" name="a"/>'
+        '<node pkg="demo_nodes_cpp" exec="talker" name="a"/></launch>\n')
+    findings, cached = check(capsys, tree)
+    assert not cached and "LV101:other.launch.xml:1" in findings
+
+
+def test_other_options_are_another_result(tree: Path,
+                                          capsys: pytest.CaptureFixture[str]) -> None:
+    check(capsys, tree)
+    findings, cached = check(capsys, tree, "--ignore", "LV204")
+    assert not cached and not findings
+
+
+def test_no_cache_neither_reads_nor_writes(tree: Path,
+                                           capsys: pytest.CaptureFixture[str],
+                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    check(capsys, tree, "--no-cache")
+    assert not (tree.parent / "cache").exists()
+    monkeypatch.setenv("LAUNCHVERIFY_NO_CACHE", "1")
+    check(capsys, tree)
+    assert not (tree.parent / "cache").exists()
+    monkeypatch.delenv("LAUNCHVERIFY_NO_CACHE")
+    check(capsys, tree)
+    assert check(capsys, tree)[1]
+
+
+def test_a_damaged_cache_is_recomputed(tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    elsewhere = tree.parent / "elsewhere"
+    check(capsys, tree, "--cache-dir", str(elsewhere))
+    for stored in elsewhere.glob("*.pickle"):
+        stored.write_bytes(b"not a pickle")
+    findings, cached = check(capsys, tree, "--cache-dir", str(elsewhere))
+    assert findings == {"LV204:top.launch.xml:3"} and not cached
+    assert check(capsys, tree, "--cache-dir", str(elsewhere))[1]
+
+
+def test_a_cache_folder_inside_the_workspace_does_not_invalidate_itself(
+        tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    inside = tree / "lvcache"
+    check(capsys, tree, "--cache-dir", str(inside))
+    assert check(capsys, tree, "--cache-dir", str(inside))[1]
+
+
+def test_text_summary_says_the_result_is_cached(tree: Path,
+                                                capsys: pytest.CaptureFixture[str]) -> None:
+    main(["check", str(tree), "--workspace", str(tree), "--exit-zero"])
+    capsys.readouterr()
+    main(["check", str(tree), "--workspace", str(tree), "--exit-zero"])
+    assert "unchanged since the cached run" in capsys.readouterr().out

@@ -1,0 +1,227 @@
+"""Results between runs: a tree that has not changed is not checked again.
+
+As ruff does, a check's report is kept in the user's cache folder
+(``$XDG_CACHE_HOME/launchverify``, else ``~/.cache/launchverify``; ``--cache-dir``,
+``--no-cache``, ``LAUNCHVERIFY_NO_CACHE=1``). Its key is everything the check was asked:
+the options and configuration, the working directory (messages hold paths relative to
+it), the environment that finds packages, and launchverify's own code. It stays valid
+while everything the check could have read is unchanged: every file below the workspace
+folders (launch and parameter files, the Python modules launch files import, package.xml,
+the sources unnamed nodes are named in) and every file it read outside them (installed
+packages' launch and parameter files, the ament index of each prefix).
+
+A file is compared by size and modification time; one modified within
+``RACY_SECONDS`` of the check (it could change again within the clock's resolution
+without its time changing) by its content hash too, as git does. Any change invalidates
+the whole result: never stale, at the price of checking everything again.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import os
+import pickle
+import sys
+import tempfile
+import time
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field, fields
+from pathlib import Path
+
+import launchverify
+from launchverify.workspace.packages import SKIP_DIRS
+
+FORMAT = 1  # bump when what is stored changes shape
+RACY_SECONDS = 2.0
+MAX_AGE_DAYS = 30  # cache files unused for longer are removed
+Stamp = tuple[int, int, str | None]  # size, mtime_ns, content hash for racy files
+
+
+def default_cache_dir() -> Path:
+    """Return ``$XDG_CACHE_HOME/launchverify``, else ``~/.cache/launchverify``."""
+    base = os.environ.get("XDG_CACHE_HOME") or str(Path.home() / ".cache")
+    return Path(base) / "launchverify"
+
+
+def disabled_by_environment() -> bool:
+    """Return whether ``LAUNCHVERIFY_NO_CACHE`` asks for no cache."""
+    return os.environ.get("LAUNCHVERIFY_NO_CACHE", "").strip().lower() not in ("", "0", "false")
+
+
+@dataclass
+class Entry:
+    """One stored result: the report and what it rested on."""
+
+    report: object
+    folders: list[str]  # walked whole: any change below them counts
+    stamps: dict[str, Stamp] = field(default_factory=dict)
+    format: int = FORMAT
+
+
+def key_of(parts: Iterable[object]) -> str:
+    """Return a digest of everything a check was asked (its options, as text)."""
+    digest = hashlib.blake2b(digest_size=20)
+    for part in (FORMAT, launchverify.__version__, own_code_stamp(), sys.version,
+                 str(Path.cwd()), os.environ.get("AMENT_PREFIX_PATH", ""),
+                 os.environ.get("PYTHONPATH", ""), *parts):
+        digest.update(repr(part).encode("utf-8", "replace"))
+        digest.update(b"\0")
+    return digest.hexdigest()
+
+
+def own_code_stamp() -> str:
+    """Return a stamp of launchverify's installed code (an edited checkout changes it)."""
+    import launchverify.models
+    import launchverify.rules
+
+    # an editable install maps the three packages to three folders of the checkout
+    roots = {str(Path(module.__file__).parent) for module in (
+        launchverify, launchverify.rules, launchverify.models) if module.__file__}
+    digest = hashlib.blake2b(digest_size=16)
+    for path, stamp in sorted(_walk(sorted(roots)).items()):
+        if path.endswith((".py", ".txt", ".json")):
+            digest.update(f"{path}:{stamp[0]}:{stamp[1]}".encode())
+    return digest.hexdigest()
+
+
+def _walk(folders: Iterable[str], skip: str | None = None) -> dict[str, Stamp]:
+    """Return the size and modification time of every file below the folders.
+
+    ``skip``: a folder left out (the cache's own, when it lies in the workspace). Paths
+    stay strings: this runs on every check, over every file of the workspace.
+    """
+    found: dict[str, Stamp] = {}
+    pending = list(folders)
+    while pending:
+        folder = pending.pop()
+        try:
+            entries = list(os.scandir(folder))
+        except OSError:
+            continue
+        for entry in entries:
+            try:
+                if entry.is_dir(follow_symlinks=True):
+                    if (entry.name not in SKIP_DIRS and not entry.name.startswith(".")
+                            and entry.path != skip):
+                        pending.append(entry.path)
+                    continue
+                info = entry.stat(follow_symlinks=True)
+            except OSError:
+                continue
+            found[entry.path] = (info.st_size, info.st_mtime_ns, None)
+    return found
+
+
+def _stat(path: str) -> Stamp | None:
+    try:
+        info = os.stat(path)  # noqa: PTH116 (string paths: see _walk)
+    except OSError:
+        return None
+    return (info.st_size, info.st_mtime_ns, None)
+
+
+def _hash(path: str) -> str | None:
+    try:
+        with open(path, "rb") as handle:  # noqa: PTH123 (a string path, read once)
+            return hashlib.blake2b(handle.read(), digest_size=16).hexdigest()
+    except OSError:
+        return None
+
+
+def stamps_of(folders: list[str], files: Iterable[str], now: float,
+              skip: str | None = None) -> dict[str, Stamp]:
+    """Return the stamps a result rests on; racy files carry their content hash."""
+    stamps = _walk(folders, skip)
+    for path in files:
+        if path not in stamps and (stamp := _stat(path)) is not None:
+            stamps[path] = stamp
+    racy = int((now - RACY_SECONDS) * 1e9)
+    for path, (size, mtime, _) in stamps.items():
+        if mtime >= racy:
+            stamps[path] = (size, mtime, _hash(path))
+    return stamps
+
+
+def unchanged(entry: Entry, skip: str | None = None) -> bool:
+    """Return whether every file the result rests on is as it was."""
+    now = _walk(entry.folders, skip)
+    for path in entry.stamps:
+        if path not in now and (stamp := _stat(path)) is not None:
+            now[path] = stamp  # a file outside the folders
+    if now.keys() != entry.stamps.keys():
+        return False  # a file appeared or went away
+    for path, (size, mtime, content) in entry.stamps.items():
+        if now[path][:2] != (size, mtime):
+            return False
+        if content is not None and _hash(path) != content:
+            return False
+    return True
+
+
+class ResultCache:
+    """A folder of stored results, one file per key."""
+
+    def __init__(self, folder: Path) -> None:
+        self.folder = Path(os.path.realpath(folder))
+
+    def _file(self, key: str) -> Path:
+        return self.folder / f"{key}.pickle"
+
+    def load(self, key: str) -> Entry | None:
+        """Return the stored entry for a key if it is still valid (else ``None``)."""
+        path = self._file(key)
+        try:
+            with path.open("rb") as handle:
+                entry = pickle.load(handle)
+        except Exception:  # missing, unreadable, or from another version: recompute
+            return None
+        if (not isinstance(entry, Entry) or entry.format != FORMAT
+                or not unchanged(entry, str(self.folder))):
+            return None
+        with contextlib.suppress(OSError):
+            os.utime(path)  # recently used: kept by the pruning
+        return entry
+
+    def store(self, key: str, entry: Entry) -> None:
+        """Write an entry atomically; a cache that cannot be written is no error."""
+        with contextlib.suppress(OSError):
+            self.folder.mkdir(parents=True, exist_ok=True)
+            _write_tag(self.folder)
+            handle, temporary = tempfile.mkstemp(dir=self.folder, suffix=".tmp")
+            try:
+                with os.fdopen(handle, "wb") as out:
+                    pickle.dump(entry, out, protocol=pickle.HIGHEST_PROTOCOL)
+                Path(temporary).replace(self._file(key))
+            except Exception:
+                with contextlib.suppress(OSError):
+                    Path(temporary).unlink()
+                return
+            self.prune()
+
+    def prune(self) -> None:
+        """Remove results not used for ``MAX_AGE_DAYS`` days."""
+        limit = time.time() - MAX_AGE_DAYS * 86400
+        for path in self._stored():
+            with contextlib.suppress(OSError):
+                if path.stat().st_mtime < limit:
+                    path.unlink()
+
+    def _stored(self) -> Iterator[Path]:
+        with contextlib.suppress(OSError):
+            yield from self.folder.glob("*.pickle")
+
+
+def _write_tag(folder: Path) -> None:
+    """Mark the folder as a cache (backup tools skip it), as ruff and pip do."""
+    tag = folder / "CACHEDIR.TAG"
+    if not tag.exists():
+        tag.write_text("Signature: 8a477f597d28d172789f06886806bc55\n"
+                       "# This file is a cache directory tag created by launchverify.\n")
+
+
+def options_text(options: object, skip: Iterable[str] = ()) -> str:
+    """Return a dataclass's fields as text for a key, leaving some out."""
+    left_out = set(skip)
+    return repr([(f.name, getattr(options, f.name)) for f in fields(options)  # type: ignore[arg-type]
+                 if f.name not in left_out])
