@@ -7,6 +7,7 @@ coerce with YAML rules instead (``yes``/``on`` are true), plus ``'1'``/``'0'``.
 
 from __future__ import annotations
 
+import functools
 import math
 
 import yaml
@@ -46,13 +47,20 @@ def typed_truth(value: str) -> bool:
         return True
     if value == "0":
         return False
+    loaded = _yaml_bool(value)
+    if loaded is not None:
+        return loaded
+    raise InvalidBoolean(f"cannot convert value {value!r} to a boolean")
+
+
+@functools.lru_cache(maxsize=1024)
+def _yaml_bool(value: str) -> bool | None:
+    """Return what YAML makes of a value when it is a boolean (a few values, asked often)."""
     try:
         loaded = yaml.safe_load(value) if value else None
     except yaml.YAMLError:
-        loaded = None
-    if isinstance(loaded, bool):
-        return loaded
-    raise InvalidBoolean(f"cannot convert value {value!r} to a boolean")
+        return None
+    return loaded if isinstance(loaded, bool) else None
 
 
 def _as_bool(text: str) -> bool | None:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import ast
 import builtins
+import functools
 import math
 import operator
 import re
@@ -63,6 +64,32 @@ _COMBINATORIAL = {math.factorial, math.comb, math.perm}
 
 
 def evaluate_expression(text: str, modules: list[str] | None = None) -> str:
+    """Evaluate ``text`` as launch's ``PythonExpression`` would (see ``_evaluate``).
+
+    The result depends on the text and modules only: the reasoner asks the same
+    expressions again and again under different arguments, so answers are kept.
+
+    Examples:
+        >>> evaluate_expression("'a' + 'b' == 'ab'")
+        'True'
+    """
+    result, error = _remembered(text, tuple(modules) if modules is not None else None)
+    if error is not None:
+        raise error.with_traceback(None)  # one kept instance, raised afresh
+    assert result is not None
+    return result
+
+
+@functools.lru_cache(maxsize=4096)
+def _remembered(text: str, modules: tuple[str, ...] | None
+                ) -> tuple[str | None, Exception | None]:
+    try:
+        return _evaluate(text, list(modules) if modules is not None else None), None
+    except (ExpressionError, Unsupported) as error:
+        return None, error
+
+
+def _evaluate(text: str, modules: list[str] | None = None) -> str:
     """Evaluate ``text`` as launch's ``PythonExpression`` would and return ``str(result)``.
 
     Raises:

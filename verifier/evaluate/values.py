@@ -9,6 +9,7 @@ known, and otherwise into a residual expression whose leaves are inputs (``Arg``
 
 from __future__ import annotations
 
+import functools
 import os
 from collections.abc import Callable
 
@@ -36,6 +37,8 @@ from launchverify.models.python_expression import (
 )
 from launchverify.models.ros_names import make_absolute, prefix_namespace
 from launchverify.span import Span
+
+_SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
 def text_of(sub: s.Sub | None) -> str | None:
@@ -396,11 +399,10 @@ class Reducer:
         unknown = s.Rewritten(sub.source, (path, s.Text(node or "")), sub.description)
         if text is None or node is None:
             return unknown  # the base view may read the file later
-        try:
-            data = yaml.safe_load(text)
-        except yaml.YAMLError:
+        keys = top_level_keys(text)
+        if keys is None:
             return unknown
-        return s.Text("True" if isinstance(data, dict) and node in data else "False")
+        return s.Text("True" if node in keys else "False")
 
     def _as_bool(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.AsBool)
@@ -517,3 +519,17 @@ __all__ = [
     "ns_prefix",
     "text_of",
 ]
+
+
+@functools.lru_cache(maxsize=64)
+def top_level_keys(text: str) -> frozenset[object] | None:
+    """Return a YAML document's top-level keys (empty: not a mapping; ``None``: not YAML).
+
+    nav2 launch files ask this of one large parameter file for every server: parsed once
+    per content, with libyaml when PyYAML has it.
+    """
+    try:
+        data = yaml.load(text, Loader=_SAFE_LOADER)
+    except yaml.YAMLError:
+        return None
+    return frozenset(data) if isinstance(data, dict) else frozenset()

@@ -44,7 +44,7 @@ class Reasoner:
         self.domains: dict[str, ArgumentDomain] = argument_domains(graph)
         self.search = Search(self.domains, graph.inputs())
         self._backend: Z3Backend | None = None
-        self._together: dict[tuple[PathCondition, ...], Witness | None] = {}
+        self._together: dict[PathCondition, Witness | None] = {}
         self._names: dict[tuple[object, ...], tuple[Witness, str] | None] = {}
         self._never: dict[tuple[PathCondition, Guard], Contradiction | None] = {}
         self._always: dict[tuple[PathCondition, Guard], bool] = {}
@@ -67,15 +67,20 @@ class Reasoner:
     # ------------------------------------------------------------------ questions
 
     def together(self, *paths: PathCondition) -> Witness | None:
-        """Return an assignment of the switches under which every path holds, if any."""
-        if paths not in self._together:
-            guards = [g for p in paths for g in p]
+        """Return an assignment of the switches under which every path holds, if any.
+
+        Asked as one path of the guards of all, each once: a handler and its target in
+        one scope share their guards, and the question is then the one already answered.
+        """
+        merged = tuple(dict.fromkeys(g for p in paths for g in p))
+        if merged not in self._together:
+            guards = list(merged)
             tried = self.search.run(Mode.SWITCHES, guards, lambda r: all_hold(r, guards))
             if tried.found is not None or tried.exhaustive:
-                self._together[paths] = self._tried(tried.found)
+                self._together[merged] = self._tried(tried.found)
             else:
-                self._together[paths] = self.z3.together(paths)
-        return self._together[paths]
+                self._together[merged] = self.z3.together((merged,))
+        return self._together[merged]
 
     def unreachable(self, path: PathCondition) -> bool:
         """Return whether a path holds under no value the user can give the arguments.

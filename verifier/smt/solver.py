@@ -12,7 +12,7 @@ from collections.abc import Iterable
 import z3
 
 from launchverify.ir.subst import Sub
-from launchverify.ir.symbolic import Guard, PathCondition, Truthy
+from launchverify.ir.symbolic import Arg, Guard, PathCondition, StrEquals, Truthy
 from launchverify.smt.domains import ArgumentDomain, Mode
 from launchverify.smt.encode import Encoder
 from launchverify.smt.types import Contradiction, Witness
@@ -42,7 +42,9 @@ class Z3Backend:
         encoder = self.encoder(Mode.SWITCHES)
         formula = z3.And(*[encoder.path(p) for p in paths])
         model = self._model(encoder, [formula])
-        return None if model is None else self._assignment(encoder, model, [formula])
+        if model is None:
+            return None
+        return self._assignment(encoder, model, argument_names([g for p in paths for g in p]))
 
     def same_name(self, first: Sub, first_path: PathCondition, second: Sub,
                   second_path: PathCondition) -> tuple[Witness, str] | None:
@@ -53,7 +55,8 @@ class Z3Backend:
         found = self._model(encoder, [formula])
         if found is None:
             return None
-        return (self._assignment(encoder, found, [formula]),
+        names = argument_names([first, second, *first_path, *second_path])
+        return (self._assignment(encoder, found, names),
                 _text(found.eval(left, model_completion=True)))
 
     def never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
@@ -98,7 +101,7 @@ class Z3Backend:
         if found is None:
             return None
         return (_text(found.eval(value, model_completion=True)),
-                self._assignment(encoder, found, formulas))
+                self._assignment(encoder, found, argument_names([*path, guard])))
 
     # ------------------------------------------------------------------ machinery
 
@@ -124,11 +127,8 @@ class Z3Backend:
         model: z3.ModelRef = solver.model()
         return model
 
-    def _assignment(self, encoder: Encoder, model: z3.ModelRef,
-                    formulas: list[z3.BoolRef]) -> Witness:
+    def _assignment(self, encoder: Encoder, model: z3.ModelRef, names: set[str]) -> Witness:
         """Return the arguments a question depends on that the model gives a new value."""
-        names = {v.decl().name().partition(":")[2] for f in formulas for v in _variables(f)
-                 if _is_argument(v)}
         values: dict[str, str] = {}
         for name in sorted(names):
             domain = self.domains.get(name)
@@ -157,6 +157,33 @@ def _variables(term: z3.ExprRef) -> list[z3.ExprRef]:
             continue
         stack.extend(item.children())
     return list(found.values())
+
+
+def argument_names(items: Iterable[Sub | Guard]) -> set[str]:
+    """Return the launch arguments expressions and guards read (what a witness may set).
+
+    Walks launchverify's own expressions, each shared part once: the same answer as the
+    arguments among the free constants of their z3 encoding, without a walk through z3.
+    """
+    names: set[str] = set()
+    seen: set[int] = set()
+    stack: list[Sub] = []
+    for item in items:
+        if isinstance(item, Truthy):
+            stack.append(item.expression)
+        elif isinstance(item, StrEquals):
+            stack.extend(s for s in (item.left, item.right) if s is not None)
+        elif isinstance(item, Sub):
+            stack.append(item)
+    while stack:
+        sub = stack.pop()
+        if id(sub) in seen:
+            continue
+        seen.add(id(sub))
+        if isinstance(sub, Arg):
+            names.add(sub.name)
+        stack.extend(sub.children())
+    return names
 
 
 def _is_argument(variable: z3.ExprRef) -> bool:
