@@ -1,0 +1,137 @@
+"""Time launchverify on real repositories against the real launch library.
+
+The repositories come from the real-world corpus that ``../shared/realworld`` builds
+(``extract_corpus.py``: the launch files, packages and configuration of 41 public
+repositories laid out like a workspace; never committed). For each repository asked for,
+this runs
+
+- ``launchverify check REPO --workspace CORPUS`` with no cache (cold), then twice with a
+  cache folder of its own (the second run is the warm one), and reports wall seconds and
+  the peak resident memory of the process tree;
+- when the oracle's environment is set (``ORACLE``, ``ORACLE_PY``, ``ORACLE_PYTHONPATH``,
+  ``ORACLE_HELPER_PACKAGE_PATH``, as ``../shared/oracle/README.md`` assembles it), the real
+  launch library on the same repository's launch files, one process per file as
+  ``ros2 launch`` would run them (``run_oracle.py --jobs 1``), and the ratio.
+
+    python bench/realrepos.py --corpus /tmp/lv-corpus \\
+        --repo ros-navigation/navigation2 --repo autowarefoundation/autoware_launch
+
+The commit of each repository is printed from the corpus manifest, so figures can be
+compared between runs. Standard library only.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+
+DEFAULT_REPOS = ("ros-navigation/navigation2", "autowarefoundation/autoware_launch")
+
+
+def launchverify() -> list[str]:
+    """Return the command of the launchverify next to the running Python."""
+    found = Path(sys.executable).with_name("launchverify")
+    return [str(found)] if found.exists() else [sys.executable, "-m", "launchverify"]
+
+
+def timed(command: list[str], env: dict[str, str] | None = None) -> tuple[float, int]:
+    """Run a command; return wall seconds and the peak RSS (MB) of its process tree."""
+    wrapper = [sys.executable, "-c", _MEASURE, *command]
+    started = time.perf_counter()
+    done = subprocess.run(wrapper, env=env, capture_output=True, text=True, check=False)
+    seconds = time.perf_counter() - started
+    if done.returncode not in (0, 1):
+        raise SystemExit(f"failed ({done.returncode}): {' '.join(command)}\n{done.stderr}")
+    peak = int(done.stderr.strip().splitlines()[-1])
+    return seconds, peak
+
+
+# Runs the command as a child and prints the largest resident size among its descendants
+# (ru_maxrss of RUSAGE_CHILDREN: the largest single process, in kB on Linux).
+_MEASURE = """
+import resource, subprocess, sys
+code = subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL).returncode
+print(resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss // 1024, file=sys.stderr)
+sys.exit(code)
+"""
+
+
+def check_times(corpus: Path, folder: Path, repeat: int) -> dict[str, object]:
+    """Time cold and warm checks of one repository folder."""
+    base = [*launchverify(), "check", str(folder), "--workspace", str(corpus),
+            "--format", "json", "--exit-zero", "-q"]
+    cold = [timed([*base, "--no-cache"]) for _ in range(repeat)]
+    cache = Path(tempfile.mkdtemp(prefix="lv-bench-cache-"))
+    try:
+        warm = []
+        for _ in range(repeat):
+            shutil.rmtree(cache, ignore_errors=True)
+            timed([*base, "--cache-dir", str(cache)])  # fills the cache
+            warm.append(timed([*base, "--cache-dir", str(cache)]))
+    finally:
+        shutil.rmtree(cache, ignore_errors=True)
+    out = subprocess.run([*base, "--no-cache"], capture_output=True, text=True, check=False)
+    summary = json.loads(out.stdout)["summary"]
+    return {
+        "files": summary["files"],
+        "cold": statistics.median(s for s, _ in cold),
+        "warm": statistics.median(s for s, _ in warm),
+        "peak_mb": max(m for _, m in cold),
+    }
+
+
+def oracle_seconds(corpus: Path, repo: str) -> tuple[float, int] | None:
+    """Time the real launch library over a repository's launch files, one process each."""
+    needed = ("ORACLE", "ORACLE_PY", "ORACLE_PYTHONPATH")
+    if any(name not in os.environ for name in needed):
+        return None
+    out = Path(tempfile.mkdtemp(prefix="lv-bench-oracle-")) / "results.jsonl"
+    command = [sys.executable, str(Path(os.environ["ORACLE"]) / "run_oracle.py"),
+               "--corpus", str(corpus), "--out", str(out), "--jobs", "1", "--repo", repo]
+    started = time.perf_counter()
+    subprocess.run(command, capture_output=True, check=False,
+                   env={**os.environ, "CORPUS": str(corpus)})
+    seconds = time.perf_counter() - started
+    files = sum(1 for _ in out.open()) if out.exists() else 0
+    shutil.rmtree(out.parent, ignore_errors=True)
+    return seconds, files
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--corpus", type=Path, required=True,
+                        help="the corpus ../shared/realworld/extract_corpus.py built")
+    parser.add_argument("--repo", action="append", metavar="OWNER/NAME",
+                        help=f"a repository of the corpus (default: {', '.join(DEFAULT_REPOS)})")
+    parser.add_argument("--repeat", type=int, default=3, help="runs per figure (median)")
+    args = parser.parse_args()
+    manifest = json.loads((args.corpus / "manifest.json").read_text())
+    commits = {r.get("repo", r.get("name")): r.get("commit", "?")
+               for r in manifest.get("repos", []) if isinstance(r, dict)}
+    print(f"{'repository':<42} {'files':>5} {'cold s':>7} {'warm s':>7} {'peak MB':>7} "
+          f"{'oracle s':>8} {'ratio':>6}")
+    for repo in args.repo or DEFAULT_REPOS:
+        folder = args.corpus / repo.replace("/", "+")
+        if not folder.is_dir():
+            print(f"{repo}: not in the corpus", file=sys.stderr)
+            continue
+        figures = check_times(args.corpus, folder, args.repeat)
+        oracle = oracle_seconds(args.corpus, repo)
+        ratio = f"{oracle[0] / figures['cold']:.1f}x" if oracle else "-"
+        print(f"{repo:<42} {figures['files']:>5} {figures['cold']:>7.2f} "
+              f"{figures['warm']:>7.2f} {figures['peak_mb']:>7} "
+              f"{(f'{oracle[0]:.1f}' if oracle else '-'):>8} {ratio:>6}"
+              f"   commit {str(commits.get(repo, '?'))[:12]}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
