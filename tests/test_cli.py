@@ -131,12 +131,6 @@ def test_version_and_module_entry_point() -> None:
     assert result.stdout.strip() == f"launchverify {__version__}"
 
 
-def test_folder_without_launch_files(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
-    (tmp_path / "notes.txt").write_text("nothing here")
-    code, out, _ = run(capsys, "check", str(tmp_path))
-    assert code == 0 and "No findings in 0 files" in out
-
-
 def test_checking_never_writes_into_the_tree(tmp_path: Path,
                                              capsys: pytest.CaptureFixture[str]) -> None:
     launch = tmp_path / "a.launch.xml"
@@ -176,3 +170,63 @@ def test_graph_says_whether_the_file_is_launched_directly(tmp_path: Path,
     assert view["launched_directly"] is False and "includes it" in view["why"]
     assert main(["graph", str(tmp_path / "top.launch.xml"), "--format", "text"]) == 0
     assert capsys.readouterr().out.startswith("launched directly: ")
+
+
+# ---------------------------------------------------------------- issue 16: no surprises
+
+def test_no_color_is_honoured_for_findings(capsys: pytest.CaptureFixture[str],
+                                           monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv("FORCE_COLOR", "1")  # as a terminal would get
+    monkeypatch.delenv("NO_COLOR", raising=False)
+    assert "\x1b[" in run(capsys, "check", str(DUPLICATE))[1]
+    monkeypatch.setenv("NO_COLOR", "1")
+    assert "\x1b[" not in run(capsys, "check", str(DUPLICATE))[1]
+    assert "\x1b[" in run(capsys, "check", str(DUPLICATE), "--color", "always")[1]
+
+
+def test_a_folder_without_launch_files_is_a_usage_error(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "notes.txt").write_text("nothing to launch\n")
+    code, _, err = run(capsys, "check", str(tmp_path))
+    assert code == 2 and f"no launch files found in {tmp_path}" in err
+
+
+@pytest.mark.parametrize("option", ["-o", "--write-baseline", "--xunit-file"])
+def test_output_into_a_missing_folder_is_refused_up_front(
+        option: str, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    target = tmp_path / "missing" / "out.txt"
+    code, _, err = run(capsys, "check", str(DUPLICATE), option, str(target))
+    assert code == 2 and "no folder" in err and "internal error" not in err
+    code, _, err = run(capsys, "report", str(DUPLICATE), "-o", str(target))
+    assert code == 2 and "no folder" in err
+
+
+def test_repeated_selection_flags_add_up(capsys: pytest.CaptureFixture[str]) -> None:
+    tree = CORPUS / "arguments" / "unknown_include_argument"
+    both = run(capsys, "check", str(tree), "--format", "json", "--select", "LV204",
+               "--select", "LV101")[1]
+    codes = {f["code"] for f in json.loads(both)["findings"]}
+    assert codes == {"LV204"}
+    dup = run(capsys, "check", str(DUPLICATE), "--format", "json", "--select", "LV204",
+              "--select", "LV101")[1]
+    assert {f["code"] for f in json.loads(dup)["findings"]} == {"LV101"}
+    ignored = run(capsys, "check", str(DUPLICATE), "--format", "json", "--ignore", "LV204",
+                  "--ignore", "LV101")[1]
+    assert json.loads(ignored)["findings"] == []
+
+
+def test_paths_may_follow_options(capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, "check", str(CLEAN), "--format", "json", str(DUPLICATE))
+    document = json.loads(out)
+    assert code == 1 and {Path(f["file"]).name for f in document["findings"]} == {
+        DUPLICATE.name}
+    assert document["summary"]["files"] == 2
+
+
+def test_graph_of_a_file_that_does_not_parse_exits_1(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    broken = tmp_path / "broken.launch.xml"
+    broken.write_text('<launch>\n  <node pkg="a" exec="b"\n</launch>\n')
+    code, _, err = run(capsys, "graph", str(broken))
+    assert code == 1 and "invalid XML" in err and "incomplete" in err
+    assert run(capsys, "graph", str(CLEAN))[0] == 0

@@ -32,10 +32,12 @@ from launchverify.engine import (
 )
 from launchverify.findings.baseline import BaselineError, write_baseline
 from launchverify.findings.cache import ResultCache, default_cache_dir, disabled_by_environment
+from launchverify.graph import LaunchGraph
 from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.rule import Rule, Severity
 from launchverify.workspace.includers import Includers
+from launchverify.workspace.paths import display_path
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 
@@ -43,10 +45,11 @@ EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 FORMATS = ("text", "json", "sarif", "junit", "github")
 
 
-def _codes(text: str | None) -> list[str] | None:
-    if text is None:
+def _codes(given: list[str] | None) -> list[str] | None:
+    """Return the selectors of a repeatable comma-separated option (all of them)."""
+    if given is None:
         return None
-    return [part.strip() for part in text.split(",") if part.strip()]
+    return [part.strip() for text in given for part in text.split(",") if part.strip()]
 
 
 def _add_check_options(command: argparse.ArgumentParser) -> None:
@@ -54,8 +57,10 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
     command.add_argument("targets", nargs="+", metavar="PATH|name:=value")
     command.add_argument("--workspace", type=Path, help="folder to search for packages "
                          "(default: the nearest colcon workspace or git root)")
-    command.add_argument("--select", help="comma-separated codes, slugs or prefixes to run")
-    command.add_argument("--ignore", help="comma-separated codes, slugs or prefixes to skip")
+    command.add_argument("--select", action="append", metavar="CODES",
+                         help="comma-separated codes, slugs or prefixes to run (repeatable)")
+    command.add_argument("--ignore", action="append", metavar="CODES",
+                         help="comma-separated codes, slugs or prefixes to skip (repeatable)")
     command.add_argument("--exclude", action="append", default=[], metavar="GLOB",
                          help="leave out discovered files matching GLOB (repeatable)")
     command.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
@@ -202,9 +207,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return the exit status."""
     parser = build_parser()
     args, extra = parser.parse_known_args(argv)
-    # name:=value may follow options (`check f.xml --format json x:=1`); argparse leaves
-    # those as unknown tokens.
-    unknown = [token for token in extra if ":=" not in token or token.startswith("-")]
+    # Paths and name:=value may follow options (`check a --select LV1 b x:=1`); argparse
+    # leaves those as unknown tokens.
+    unknown = [token for token in extra if token.startswith("-")]
     if unknown or (extra and not hasattr(args, "targets")):
         parser.error(f"unrecognized arguments: {' '.join(unknown or extra)}")
     if extra:
@@ -270,7 +275,20 @@ def _ros_distro() -> str | None:
     return distro if distro in DISTROS else None
 
 
+def _writable(*paths: Path | None) -> None:
+    """Refuse, before any work, to write into a folder that does not exist."""
+    for path in paths:
+        if path is None:
+            continue
+        if path.is_dir():
+            raise UsageError(f"cannot write {str(path)!r}: it is a folder")
+        folder = path.parent
+        if not folder.is_dir():
+            raise UsageError(f"cannot write {str(path)!r}: no folder {str(folder)!r}")
+
+
 def _check(args: argparse.Namespace) -> int:
+    _writable(args.output, args.write_baseline, args.xunit_file)
     options, config = check_options(args, progress=not args.quiet and sys.stderr.isatty())
     report = run_check_cached(options, _result_cache(args))
     if args.write_baseline is not None:
@@ -286,6 +304,8 @@ def _check(args: argparse.Namespace) -> int:
     else:
         with _output_may_close():
             color = {"auto": None, "always": True, "never": False}[args.color]
+            if color is None and os.environ.get("NO_COLOR"):  # no-color.org: plain text
+                color = False
             _render(args, report, sys.stdout, color=color)
     sys.stdout.flush()
     _say_protections(report, args.verbose)
@@ -350,6 +370,7 @@ def _render(args: argparse.Namespace, report: Report, out: TextIO,
 def _report(args: argparse.Namespace) -> int:
     from launchverify.render.html_report import render_html
 
+    _writable(args.output)
     options, _ = check_options(args, progress=sys.stderr.isatty())
     report = run_check(options)
     _say_protections(report, args.verbose)
@@ -471,7 +492,29 @@ def _graph(args: argparse.Namespace) -> int:
             render_graph_json(graph, sys.stdout, symbolic=args.symbolic)
         else:
             render_graph_text(graph, sys.stdout, symbolic=args.symbolic)
-    return EXIT_OK
+    return _graph_stopped(graph, args.format)
+
+
+def _graph_stopped(graph: LaunchGraph, output_format: str) -> int:
+    """Exit 1 when the launch could not be read or failed: say where, on stderr.
+
+    A graph of a file that does not parse, or whose evaluation raised, is empty or cut
+    short: printing it alone would pass for "nothing to start".
+    """
+    from launchverify.problems import ProblemKind
+
+    stoppers = [record.problem for record in graph.problems
+                if record.problem.kind in (ProblemKind.PARSE, ProblemKind.EVALUATION)]
+    if not stoppers:
+        return EXIT_OK
+    for problem in stoppers:
+        span = problem.span
+        print(f"{display_path(span.file)}:{span.line}:{span.column}: {problem.message}",
+              file=sys.stderr)
+    what = "graph" if output_format == "json" else "the graph above"
+    print(f"launchverify: {what} is incomplete: the launch stops at the error(s) above",
+          file=sys.stderr)
+    return EXIT_FINDINGS
 
 
 @contextmanager

@@ -192,7 +192,11 @@ def run_check(options: CheckOptions) -> Report:
             raise UsageError(f"no such file or folder: {str(path)!r}")
     rules = select_rules(options.select, options.ignore)
     config = options.config
-    files = [f for f in discover(options.paths, filter_files=options.launch_files_only)
+    found = discover(options.paths, filter_files=options.launch_files_only)
+    if not found and not options.launch_files_only:  # pre-commit may pass none: quiet
+        given = ", ".join(str(p) for p in options.paths)
+        raise UsageError(f"no launch files found in {given}")
+    files = [f for f in found
              if not config.excludes(f) and not _excluded(f, options.exclude)]
     display = {canonical(f): str(f) for f in files}
     if not files:

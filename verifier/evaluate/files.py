@@ -27,6 +27,8 @@ class FileCache:
         self._param_files: dict[Path, ParamFile] = {}
         self.static_arguments: dict[Path, tuple[StaticArgument, ...]] = {}
         self.static_subtrees: dict[Path, StaticSubtree] = {}  # what each included file declares
+        # the names each include action passes, by action (actions live as long as the files)
+        self.include_names: dict[int, frozenset[str]] = {}
         self._owned = (IsolatedPython(index, workspace, environment=environment)
                        if python is None else None)
         self.python: PythonLoader = python or self._owned  # type: ignore[assignment]

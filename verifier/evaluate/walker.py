@@ -230,13 +230,21 @@ class Walker:
         for declaration, includes, conditional in static_arguments(
             loaded.launch, self.loader, self.index, self.loader.static_subtrees
         ):
-            via = tuple(frozenset(include_argument_names(i, self.index)) for i in includes)
+            via = tuple(self.include_names(i) for i in includes)
             out.append(StaticArgument(
                 declaration.name, declaration.default is not None, conditional,
                 declaration.span, declaration.description, via,
             ))
         cache[loaded.path] = tuple(out)
         return cache[loaded.path]
+
+    def include_names(self, include: a.Include) -> frozenset[str]:
+        """Return the argument names an include passes, without context (cached per run)."""
+        cache = self.loader.include_names
+        found = cache.get(id(include))
+        if found is None:
+            found = cache[id(include)] = frozenset(include_argument_names(include, self.index))
+        return found
 
     # ------------------------------------------------------------------ visiting
 

@@ -36,8 +36,9 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
     ``explain`` adds, under each finding, the related source lines, the trace, why the
     rule matters and how to fix it; ``quiet`` leaves out the summary.
     """
-    console = Console(file=out, highlight=False, soft_wrap=True,
-                      force_terminal=color, no_color=color is False)
+    # --color always/never decide; auto follows the terminal and NO_COLOR (rich reads it)
+    console = Console(file=out, highlight=False, soft_wrap=True, force_terminal=color,
+                      no_color=None if color is None else not color)
     for finding in report.findings:
         span = finding.span
         where = f"{report.display_path(span.file)}:{span.line}:{span.column}"
