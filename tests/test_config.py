@@ -139,6 +139,19 @@ def test_find_config_ignores_pyproject_without_the_table(tmp_path: Path) -> None
     assert load_config(found).select is None
 
 
+def test_a_malformed_launchverify_table_in_pyproject_is_an_error(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    shutil.copy(DUPLICATE / "dup.launch.xml", tmp_path / "dup.launch.xml")
+    (tmp_path / "pyproject.toml").write_text(
+        '[project]\nname = "x"\n\n[tool.launchverify]\nselect = ["LV1"\nignore = []\n')
+    assert main(["check", str(tmp_path)]) == 2
+    err = capsys.readouterr().err
+    assert "pyproject.toml: invalid TOML" in err and "line 6" in err
+    # someone else's broken pyproject is not ours: the check runs with the defaults
+    (tmp_path / "pyproject.toml").write_text('[project\nname = "x"\n')
+    assert main(["check", str(tmp_path)]) == 1
+
+
 @pytest.mark.parametrize(("path", "pattern", "expected"), [
     ("test/a/dup.launch.xml", "test/**", True),
     ("test/a/dup.launch.xml", "test/", True),

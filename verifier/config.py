@@ -23,6 +23,7 @@ not count), as ruff and mypy find theirs. Relative paths in it are relative to i
 from __future__ import annotations
 
 import fnmatch
+import re
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -37,6 +38,7 @@ else:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
 CONFIG_NAMES = ("launchverify.toml", "pyproject.toml")
+_TABLE = re.compile(r"^\s*\[\s*tool\s*\.\s*launchverify\b", re.MULTILINE)
 SEVERITIES = ("error", "warning", "info")
 KNOWN_KEYS = frozenset({
     "select", "ignore", "per-file-ignores", "exclude", "arguments", "environment",
@@ -117,9 +119,21 @@ def find_config(start: Path) -> Path | None:
 
 
 def _has_table(pyproject: Path) -> bool:
+    """Return whether a pyproject.toml configures launchverify.
+
+    One that is not valid TOML is someone else's problem, unless it has a
+    ``[tool.launchverify]`` table: then its error is ours to report (file and line), not a
+    reason to check with the defaults.
+    """
     try:
         return "launchverify" in _read(pyproject).get("tool", {})
     except ConfigError:
+        try:
+            text = pyproject.read_text(encoding="utf-8", errors="replace")
+        except OSError:
+            return False
+        if _TABLE.search(text):
+            raise
         return False
 
 
