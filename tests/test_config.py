@@ -181,6 +181,37 @@ def test_baseline_survives_moved_lines_and_catches_new_findings(
     assert status == 1 and len(found) == 1
 
 
+def test_baseline_holds_from_another_working_directory(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """Messages show paths relative to the working directory; fingerprints do not."""
+    tree = tmp_path / "ws" / "src" / "robot"
+    tree.mkdir(parents=True)
+    (tree / "robot.launch.xml").write_text(
+        '<launch>\n  <node pkg="demo_nodes_cpp" exec="talker" name="talker">\n'
+        '    <param from="$(dirname)/config/missing.yaml"/>\n  </node>\n</launch>\n')
+    baseline = tmp_path / "ws" / "baseline.json"
+    monkeypatch.chdir(tmp_path / "ws")
+    assert main(["check", "src", "--write-baseline", str(baseline), "-q"]) == 1
+    capsys.readouterr()
+    monkeypatch.chdir(tree)  # as the ament_cmake recipe runs it, from the package
+    status, found = codes(capsys, ".", "--baseline", str(baseline))
+    assert (status, found) == (0, [])
+
+
+def test_a_legacy_baseline_still_matches(tmp_path: Path,
+                                         capsys: pytest.CaptureFixture[str]) -> None:
+    from launchverify.engine import CheckOptions, run_check
+    from launchverify.findings.fingerprint import fingerprints
+
+    shutil.copytree(DUPLICATE, tmp_path / "tree")
+    findings = run_check(CheckOptions(paths=[tmp_path / "tree"])).findings
+    baseline = tmp_path / "baseline.json"
+    baseline.write_text(json.dumps({"findings": [
+        {"fingerprint": f} for f in fingerprints(findings, tmp_path, legacy=True)]}))
+    assert codes(capsys, str(tmp_path / "tree"), "--baseline", str(baseline)) == (0, [])
+
+
 def test_a_broken_baseline_is_a_clear_error(tmp_path: Path,
                                             capsys: pytest.CaptureFixture[str]) -> None:
     (tmp_path / "b.json").write_text("[]")

@@ -44,10 +44,13 @@ def apply_baseline(path: Path, findings: list[Finding]) -> tuple[list[Finding], 
     except (ValueError, KeyError, TypeError) as error:
         raise BaselineError(f"{str(path)!r} is not a launchverify baseline") from error
     kept = []
-    for finding, print_ in zip(findings, fingerprints(findings, resolved(path).parent),
-                               strict=True):
-        if recorded[print_] > 0:
-            recorded[print_] -= 1
+    base = resolved(path).parent
+    for finding, print_, old in zip(findings, fingerprints(findings, base),
+                                    fingerprints(findings, base, legacy=True), strict=True):
+        for candidate in (print_, old):  # an older baseline holds the legacy ones
+            if recorded[candidate] > 0:
+                recorded[candidate] -= 1
+                break
         else:
             kept.append(finding)
     return kept, len(findings) - len(kept)
