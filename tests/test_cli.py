@@ -169,7 +169,9 @@ def test_graph_says_whether_the_file_is_launched_directly(tmp_path: Path,
     view = json.loads(capsys.readouterr().out)["view"]
     assert view["launched_directly"] is False and "includes it" in view["why"]
     assert main(["graph", str(tmp_path / "top.launch.xml"), "--format", "text"]) == 0
-    assert capsys.readouterr().out.startswith("launched directly: ")
+    text = capsys.readouterr().out
+    assert text.startswith("launched directly: ")
+    assert "includes:\n" in text and "part.launch.xml  (" in text  # the includes too
 
 
 # ---------------------------------------------------------------- issue 16: no surprises

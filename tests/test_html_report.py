@@ -197,3 +197,15 @@ def test_empty_report() -> None:
     page = render(Report([], 0, 0.0, {}))
     assert "No findings." in page
     assert parse(page).errors == []
+
+
+def test_one_legend_and_places_that_tell_files_apart() -> None:
+    html = render(check(CORPUS / "naming" / "scoped_namespaces_clean",
+                        CORPUS / "naming" / "duplicate_same_scope"))
+    assert html.count('<ul class="legend">') == 1
+    assert html.count('<section class="system-section"') >= 2
+    places = re.findall(r'<span class="loc" title="([^"]*)">([^<]*)</span>', html)
+    assert places
+    for full, shown in places:
+        tail = shown.removeprefix("\u2026/")
+        assert full.endswith(tail) and tail.count("/") == min(2, full.count("/"))

@@ -235,6 +235,15 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
     for process in doc["processes"]:
         out.write(f"process: {' '.join(str(c) for c in process['cmd'])}  "
                   f"({process['file']}:{process['line']})\n")
+    if doc["includes"]:
+        out.write("includes:\n")
+        for include in doc["includes"]:
+            status = "" if include["status"] == "loaded" else f" [{include['status']}]"
+            out.write(f"    {include['target']}{status}  ({include['file']}:{include['line']})\n")
+            if include["condition"]:
+                out.write(f"        when {include['condition']}\n")
+            for name, value in include["arguments"].items():
+                out.write(f"        {name} := {value}\n")
     if doc["arguments"]:
         out.write("arguments:\n")
         for argument in doc["arguments"]:

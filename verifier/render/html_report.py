@@ -21,7 +21,7 @@ from launchverify.render.html_findings import (
 )
 from launchverify.render.html_style import CONTENT_SECURITY_POLICY, SCRIPT, STYLE
 from launchverify.render.html_text import esc
-from launchverify.render.system_html import render_system_section, roots_to_show
+from launchverify.render.system_html import LEGEND, render_system_section, roots_to_show
 from launchverify.rule import Severity
 
 NAVIGATION_SYSTEMS = 6  # more systems than this are listed in the summary, not the header
@@ -43,6 +43,8 @@ def render_html(report: Report, out: TextIO, *, title: str = "launchverify repor
               "</header><main>")
     out.write(_summary(report, [report.display_path(g.root) for g in roots]))
     out.write(render_rule_index(report))
+    if systems:
+        out.write(LEGEND)  # once for every picture below
     out.writelines(systems)
     out.write(render_file_findings(report))
     out.write(f'</main><footer>Written by launchverify {esc(__version__)}.</footer>'

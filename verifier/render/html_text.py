@@ -37,7 +37,14 @@ def place(report: Report, file: Path, line: int | None) -> str:
     return f'<span class="loc">{esc(text)}</span>'
 
 
-def short_place(text: str) -> str:
-    """Return an escaped ``name:line`` for a ``path:line`` text, the full path on hover."""
-    short = text.replace("\\", "/").rsplit("/", 1)[-1]
+def short_place(text: str, parts: int = 3) -> str:
+    """Return an escaped ``…/pkg/launch/name:line`` for a ``path:line``, all on hover.
+
+    The last ``parts`` components tell files of one name apart (every package has its
+    ``robot.launch.xml``) and keep table columns narrow.
+    """
+    pieces = text.replace("\\", "/").split("/")
+    short = "/".join(pieces[-parts:])
+    if len(pieces) > parts:
+        short = "\u2026/" + short
     return f'<span class="loc" title="{esc(text)}">{esc(short)}</span>'

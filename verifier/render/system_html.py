@@ -1,4 +1,6 @@
-"""One root's part of the HTML report: picture, legend, node table, bring-up, includes.
+"""One root's part of the HTML report: picture, node table, bring-up, includes.
+
+The legend of the pictures (``LEGEND``) is written once, before the first section.
 
 Kept apart from the page skeleton so that a report with several roots simply repeats it.
 """
@@ -56,7 +58,6 @@ def render_system_section(report: Report, graph: LaunchGraph, number: int,
         parts.append('<p class="note">Part of this launch could not be seen into (a missing '
                      "file or package, or a construct launchverify does not model): the "
                      "picture may lack nodes.</p>")
-    parts.append(LEGEND)
     parts.append(f'<div class="picture">{render_system_svg(model, anchor)}</div>')
     parts.append(_lifecycle(model.lifecycle))
     parts.append(_node_table(model, anchor))
