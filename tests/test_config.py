@@ -281,3 +281,28 @@ def test_docs_rules_md_is_up_to_date(capsys: pytest.CaptureFixture[str]) -> None
     expected = (CORPUS.parent / "docs" / "rules.md").read_text(encoding="utf-8")
     assert capsys.readouterr().out == expected, \
         "docs/rules.md is stale: launchverify rules --format markdown > docs/rules.md"
+
+
+def test_each_file_takes_its_nearest_configuration(tmp_path: Path,
+                                                   capsys: pytest.CaptureFixture[str]) -> None:
+    """As ruff: a package's own launchverify.toml holds for its files from the root."""
+    root = tmp_path / "ws"
+    for package in ("robot", "legacy"):
+        shutil.copytree(DUPLICATE, root / "src" / package / "launch")
+    (root / "launchverify.toml").write_text('fail-on = "error"\n')
+    (root / "src" / "legacy" / "launchverify.toml").write_text(
+        '[severity]\n"LV101" = "warning"\n[per-file-ignores]\n"other.launch.xml" = ["LV1"]\n')
+
+    def found(*extra: str) -> list[str]:
+        main(["check", str(root), "--workspace", str(root), "--format", "json", *extra])
+        return sorted({f"{Path(f['file']).parts[-3]}:{f['code']}:{f['severity']}"
+                       for f in json.loads(capsys.readouterr().out)["findings"]})
+
+    assert found() == ["legacy:LV101:warning", "robot:LV101:error"]
+    (root / "src" / "legacy" / "launchverify.toml").write_text('ignore = ["LV101"]\n')
+    assert found() == ["robot:LV101:error"]
+    assert found("--select", "LV101") == ["robot:LV101:error"]  # its ignore still holds
+    # --isolated, or --config FILE: one configuration for every file
+    assert found("--isolated") == ["legacy:LV101:error", "robot:LV101:error"]
+    assert found("--config", str(root / "launchverify.toml")) == [
+        "legacy:LV101:error", "robot:LV101:error"]

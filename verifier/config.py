@@ -249,3 +249,45 @@ class _Reader:
                 raise self.fail(f"{key}.{pattern!r}", "a list of codes")
             out[str(pattern)] = list(codes)
         return out
+
+
+class ConfigTree:
+    """The nearest configuration of each file, as ruff finds it.
+
+    The configuration of the check (``root``: the one nearest the first path, or given
+    with ``--config``) decides what is global: arguments, environment, workspace, package
+    paths, distro, limits. What is about files (``select``, ``ignore``,
+    ``per-file-ignores``, ``severity``, ``exclude``) comes, for each file, from the
+    configuration nearest to it: a package's own ``launchverify.toml`` holds for its files
+    when the check starts at the workspace root. The command line's ``--select`` and
+    ``--ignore`` apply on top of every one.
+    """
+
+    def __init__(self, root: Config, nested: bool = True) -> None:
+        self.root = root
+        self.nested = nested
+        self._by_folder: dict[Path, Config] = {}
+        self._by_path: dict[Path, Config] = {} if root.path is None else {
+            resolved(root.path): root}
+
+    def nearest(self, file: Path) -> Config:
+        """Return the configuration that holds for a file."""
+        if not self.nested:
+            return self.root
+        folder = resolved(file).parent
+        known = self._by_folder.get(folder)
+        if known is None:
+            path = find_config(folder)
+            if path is None:
+                known = self.root
+            else:
+                path = resolved(path)
+                if path not in self._by_path:
+                    self._by_path[path] = load_config(path)
+                known = self._by_path[path]
+            self._by_folder[folder] = known
+        return known
+
+    def others(self) -> list[Config]:
+        """Return the configurations met so far besides the root one."""
+        return [c for c in self._by_path.values() if c is not self.root]

@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
 
-from launchverify.config import Config, matches
+from launchverify.config import Config, ConfigTree, matches
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
 from launchverify.findings.baseline import apply_baseline
@@ -65,6 +65,12 @@ class CheckOptions:
     time_limit: float = DEFAULT_TIME_LIMIT  # seconds per Python evaluation
     max_file_size: int = reading.DEFAULT_LIMIT  # bytes; larger files are not read
     progress: Callable[[int, int], None] | None = None  # (files evaluated, files in all)
+    # For the nearest configuration of each file (ConfigTree): what the command line said
+    # itself, and whether files may have configurations of their own (not with --config
+    # FILE or --isolated).
+    command_select: list[str] | None = None
+    command_ignore: list[str] = field(default_factory=list)
+    nested_configs: bool = False
 
 
 @dataclass
@@ -190,14 +196,16 @@ def run_check(options: CheckOptions) -> Report:
     for path in options.paths:
         if not path.exists():
             raise UsageError(f"no such file or folder: {str(path)!r}")
-    rules = select_rules(options.select, options.ignore)
     config = options.config
+    tree = ConfigTree(config, nested=options.nested_configs)
     found = discover(options.paths, filter_files=options.launch_files_only)
     if not found and not options.launch_files_only:  # pre-commit may pass none: quiet
         given = ", ".join(str(p) for p in options.paths)
         raise UsageError(f"no launch files found in {given}")
     files = [f for f in found
-             if not config.excludes(f) and not _excluded(f, options.exclude)]
+             if not tree.nearest(f).excludes(f) and not _excluded(f, options.exclude)]
+    selection = Selection(options, tree)
+    rules = selection.rules()
     display = {canonical(f): str(f) for f in files}
     if not files:
         return Report([], 0, time.perf_counter() - started, display)
@@ -227,7 +235,7 @@ def run_check(options: CheckOptions) -> Report:
                              RuleContext(packages=index, interfaces=interfaces_of(graphs)))
     loaded = {path for g in graphs for path in g.files}
     findings, suppressed = _suppress(findings, loaded, rules)
-    findings = _configured(findings, config)
+    findings = _configured(findings, tree, selection)
     baselined = 0
     if options.baseline is not None:
         findings, baselined = apply_baseline(options.baseline, findings)
@@ -320,20 +328,57 @@ def _suppress(findings: list[Finding], files: set[Path],
     return kept, suppressed
 
 
-def _configured(findings: list[Finding], config: Config) -> list[Finding]:
-    """Apply the configuration's severity overrides and per-file ignores."""
-    levels = {code: Severity(level) for selector, level in config.severity.items()
-              for code in _codes_of(selector)}
+class Selection:
+    """The rules each configuration selects, the command line's choice applied on top."""
+
+    def __init__(self, options: CheckOptions, tree: ConfigTree) -> None:
+        self.options = options
+        self.tree = tree
+        self._codes: dict[int, frozenset[str]] = {}
+
+    def of(self, config: Config) -> list[type[Rule]]:
+        """Return the rules a configuration selects (the check's own: ``options``)."""
+        if config is self.tree.root:
+            return select_rules(self.options.select, self.options.ignore)
+        chosen = (self.options.command_select if self.options.command_select is not None
+                  else config.select)
+        return select_rules(chosen, [*config.ignore, *self.options.command_ignore])
+
+    def rules(self) -> list[type[Rule]]:
+        """Return the rules to run: those any configuration in play selects."""
+        chosen = {rule: None for rule in self.of(self.tree.root)}
+        for config in self.tree.others():
+            chosen.update({rule: None for rule in self.of(config)})
+        return list(chosen)
+
+    def codes(self, config: Config) -> frozenset[str]:
+        """Return the codes a configuration selects (cached)."""
+        if id(config) not in self._codes:
+            self._codes[id(config)] = frozenset(rule.code for rule in self.of(config))
+        return self._codes[id(config)]
+
+
+def _configured(findings: list[Finding], tree: ConfigTree,
+                selection: Selection) -> list[Finding]:
+    """Apply each file's configuration: its selection, severities and per-file ignores."""
+    levels: dict[int, dict[str, Severity]] = {}
     ignored: dict[Path, set[str]] = {}  # per file: many findings share one
     out = []
     for finding in findings:
         file = finding.span.file
+        config = tree.nearest(file)
+        if finding.code not in selection.codes(config):
+            continue
         if file not in ignored:
             ignored[file] = {code for selector in config.ignored_in(file)
                              for code in _codes_of(selector)}
         if finding.code in ignored[file]:
             continue
-        level = levels.get(finding.code)
+        if id(config) not in levels:
+            levels[id(config)] = {code: Severity(level)
+                                  for selector, level in config.severity.items()
+                                  for code in _codes_of(selector)}
+        level = levels[id(config)].get(finding.code)
         out.append(finding if level is None else dataclasses.replace(finding, severity=level))
     return out
 
