@@ -89,13 +89,16 @@ def _label(graph: LaunchGraph, node: NodeRecord) -> str:
 
 # Nodes whose behaviour does not depend on the clock they use: containers (their
 # components have their own parameters), static transforms (valid at any time), the
-# Gazebo bridge (stamps come from the simulator) and one-shot helpers that spawn models or
-# controllers and exit.
+# Gazebo bridges (stamps come from the simulator), filters that stamp their output with
+# their input's stamps (imu_filter_madgwick's ROS 2 node reads no clock) and one-shot
+# helpers that spawn models or controllers and exit.
 TIMELESS = frozenset({
     ("rclcpp_components", "component_container"),
     ("rclcpp_components", "component_container_mt"),
     ("rclcpp_components", "component_container_isolated"),
     ("ros_gz_bridge", "parameter_bridge"),
+    ("ros_gz_image", "image_bridge"),  # converts gz images, stamps and all
+    ("imu_filter_madgwick", "imu_filter_madgwick_node"),  # stamps from the IMU messages
     ("tf2_ros", "static_transform_publisher"),
     ("ros_gz_sim", "create"),
     ("gazebo_ros", "spawn_entity.py"),
