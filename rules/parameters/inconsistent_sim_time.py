@@ -90,7 +90,9 @@ def _label(graph: LaunchGraph, node: NodeRecord) -> str:
 # Nodes whose behaviour does not depend on the clock they use: containers (their
 # components have their own parameters), static transforms (valid at any time), the
 # Gazebo bridges (stamps come from the simulator), filters that stamp their output with
-# their input's stamps (imu_filter_madgwick's ROS 2 node reads no clock) and one-shot
+# their input's stamps and read no clock for anything else (imu_filter_madgwick's ROS 2
+# node, rtabmap's depth-to-cloud converters; not obstacles_detection, whose TF buffer
+# runs on the node's clock) and one-shot
 # helpers that spawn models or controllers and exit.
 TIMELESS = frozenset({
     ("rclcpp_components", "component_container"),
@@ -99,6 +101,8 @@ TIMELESS = frozenset({
     ("ros_gz_bridge", "parameter_bridge"),
     ("ros_gz_image", "image_bridge"),  # converts gz images, stamps and all
     ("imu_filter_madgwick", "imu_filter_madgwick_node"),  # stamps from the IMU messages
+    ("rtabmap_util", "point_cloud_xyz"),  # clouds stamped as their images; now() only logs
+    ("rtabmap_util", "point_cloud_xyzrgb"),
     ("tf2_ros", "static_transform_publisher"),
     ("ros_gz_sim", "create"),
     ("gazebo_ros", "spawn_entity.py"),
