@@ -232,3 +232,29 @@ def test_graph_of_a_file_that_does_not_parse_exits_1(
     code, _, err = run(capsys, "graph", str(broken))
     assert code == 1 and "invalid XML" in err and "incomplete" in err
     assert run(capsys, "graph", str(CLEAN))[0] == 0
+
+
+def _complete_in_bash(script: Path, words: list[str]) -> list[str]:
+    """Run the bash completion function on a command line; return its candidates."""
+    line = " ".join(words)
+    program = (f'source "{script}"; COMP_WORDS=({line}); COMP_CWORD={len(words) - 1}; '
+               '_launchverify; printf "%s\\n" "${COMPREPLY[@]}"')
+    done = subprocess.run(["bash", "-c", program], capture_output=True, text=True,
+                          check=True)
+    return done.stdout.split()
+
+
+def test_shell_completion(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    code, out, _ = run(capsys, "completion", "bash")
+    script = tmp_path / "lv.bash"
+    script.write_text(out)
+    assert code == 0
+    assert "check" in _complete_in_bash(script, ["launchverify", "ch"])
+    assert _complete_in_bash(script, ["launchverify", "check", "--form"]) == ["--format"]
+    assert "sarif" in _complete_in_bash(script, ["launchverify", "check", "--format", "s"])
+    assert "LV101" in _complete_in_bash(script, ["launchverify", "check", "--select", "LV1"])
+    assert "LV404" in _complete_in_bash(script, ["launchverify", "explain", "LV4"])
+    code, out, _ = run(capsys, "completion", "zsh")
+    assert code == 0 and "bashcompinit" in out and "--no-cache" in out
+    code, out, _ = run(capsys, "completion", "fish")
+    assert code == 0 and "-l no-cache" in out and "-a 'text json sarif junit github'" in out

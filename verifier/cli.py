@@ -200,6 +200,14 @@ def build_parser() -> argparse.ArgumentParser:
 
     explain = commands.add_parser("explain", help="print a rule's documentation")
     explain.add_argument("rule", metavar="CODE|SLUG")
+
+    completion = commands.add_parser(
+        "completion", help="print a shell completion script",
+        description="Print a completion script: eval \"$(launchverify completion bash)\" "
+        "in ~/.bashrc, the same with zsh in ~/.zshrc, or launchverify completion fish | "
+        "source in fish's config.",
+    )
+    completion.add_argument("shell", choices=("bash", "zsh", "fish"))
     return parser
 
 
@@ -218,7 +226,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.print_help()
         return EXIT_ERROR
     handlers = {"check": _check, "report": _report, "graph": _graph, "rules": _rules,
-                "explain": _explain, "run": _run}
+                "explain": _explain, "run": _run, "completion": _completion}
     try:
         return handlers[args.command](args)
     except (UsageError, RegistryError, ConfigError, BaselineError) as error:
@@ -437,6 +445,15 @@ def rules_markdown(rules: Sequence[type[Rule]]) -> str:
         parts.append(f"\n## {rule.code} {rule.slug}\n\nSeverity: {rule.severity.value}\n\n"
                      f"{body}\n")
     return "".join(parts)
+
+
+def _completion(args: argparse.Namespace) -> int:
+    from launchverify.registry import all_rules
+    from launchverify.render.completion import completion_script
+
+    codes = [rule.code for rule in all_rules()]
+    sys.stdout.write(completion_script(args.shell, build_parser(), codes))
+    return EXIT_OK
 
 
 def _explain(args: argparse.Namespace) -> int:
