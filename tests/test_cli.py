@@ -258,3 +258,48 @@ def test_shell_completion(tmp_path: Path, capsys: pytest.CaptureFixture[str]) ->
     assert code == 0 and "bashcompinit" in out and "--no-cache" in out
     code, out, _ = run(capsys, "completion", "fish")
     assert code == 0 and "-l no-cache" in out and "-a 'text json sarif junit github'" in out
+
+
+STDIN_CLEAN = '<launch>\n  <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>\n</launch>\n'
+STDIN_DUPLICATE = ('<launch>\n  <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>\n'
+                   '  <node pkg="demo_nodes_cpp" exec="listener" name="talker"/>\n</launch>\n')
+STDIN_PYTHON = '''from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='talker'),
+        Node(package='demo_nodes_cpp', executable='listener', name='talker'),
+    ])
+'''
+
+
+@pytest.mark.parametrize(("name", "buffer", "line"), [
+    ("robot.launch.xml", STDIN_DUPLICATE, 3), ("bringup.launch.py", STDIN_PYTHON, 8)])
+def test_stdin_is_checked_as_the_named_file(name: str, buffer: str, line: int,
+                                            tmp_path: Path) -> None:
+    """What editors call: the unsaved buffer, checked where its file is; nothing written."""
+    saved = tmp_path / name
+    saved.write_text(STDIN_CLEAN if name.endswith(".xml") else
+                     STDIN_PYTHON.replace("        Node(package='demo_nodes_cpp', "
+                                          "executable='listener', name='talker'),\n", ""))
+    before = saved.read_bytes()
+    done = subprocess.run([sys.executable, "-m", "launchverify", "check", "-",
+                           "--stdin-filename", str(saved), "--format", "json"],
+                          input=buffer, capture_output=True, text=True, check=False)
+    findings = json.loads(done.stdout)["findings"]
+    assert done.returncode == 1
+    assert [(f["code"], Path(f["file"]).name, f["line"]) for f in findings] == [
+        ("LV101", name, line)]
+    assert saved.read_bytes() == before
+    on_disk = subprocess.run([sys.executable, "-m", "launchverify", "check", str(saved)],
+                             capture_output=True, text=True, check=False)
+    assert on_disk.returncode == 0
+
+
+def test_stdin_needs_a_file_name(capsys: pytest.CaptureFixture[str]) -> None:
+    code, _, err = run(capsys, "check", "-")
+    assert code == 2 and "--stdin-filename" in err
+    code, _, err = run(capsys, "check", str(CLEAN), "--stdin-filename", str(CLEAN))
+    assert code == 2 and "goes with the path '-'" in err

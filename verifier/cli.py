@@ -146,6 +146,9 @@ def build_parser() -> argparse.ArgumentParser:
                        help="record the findings in FILE (then use --baseline FILE)")
     check.add_argument("--xunit-file", type=Path, metavar="FILE",
                        help="also write JUnit XML to FILE (what colcon test-result reads)")
+    check.add_argument("--stdin-filename", type=Path, metavar="PATH",
+                       help="with the path '-': check standard input as the content of "
+                       "PATH (an editor's unsaved buffer; PATH must exist)")
     check.add_argument("--no-cache", action="store_true",
                        help="check everything again: neither read nor write the cache of "
                        "results (also LAUNCHVERIFY_NO_CACHE=1)")
@@ -217,7 +220,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     args, extra = parser.parse_known_args(argv)
     # Paths and name:=value may follow options (`check a --select LV1 b x:=1`); argparse
     # leaves those as unknown tokens.
-    unknown = [token for token in extra if token.startswith("-")]
+    unknown = [token for token in extra if token.startswith("-") and token != "-"]
     if unknown or (extra and not hasattr(args, "targets")):
         parser.error(f"unrecognized arguments: {' '.join(unknown or extra)}")
     if extra:
@@ -286,6 +289,28 @@ def _ros_distro() -> str | None:
     return distro if distro in DISTROS else None
 
 
+def _read_stdin(args: argparse.Namespace) -> bool:
+    """Read an editor's buffer for ``check - --stdin-filename PATH``; say whether there was.
+
+    The content stands for PATH's for every reader (Python workers included), so findings
+    point into the buffer; nothing is written, and the cache is left alone.
+    """
+    if "-" not in args.targets:
+        if args.stdin_filename is not None:
+            raise UsageError("--stdin-filename goes with the path '-' (standard input)")
+        return False
+    if args.stdin_filename is None:
+        raise UsageError("checking standard input ('-') needs --stdin-filename PATH")
+    if not args.stdin_filename.is_file():
+        raise UsageError(f"--stdin-filename {str(args.stdin_filename)!r}: no such file "
+                         "(the buffer is checked where that file is, with its includes)")
+    from launchverify.workspace.reading import set_unsaved
+
+    set_unsaved(args.stdin_filename, sys.stdin.buffer.read())
+    args.targets = [str(args.stdin_filename) if t == "-" else t for t in args.targets]
+    return True
+
+
 def _writable(*paths: Path | None) -> None:
     """Refuse, before any work, to write into a folder that does not exist."""
     for path in paths:
@@ -300,8 +325,9 @@ def _writable(*paths: Path | None) -> None:
 
 def _check(args: argparse.Namespace) -> int:
     _writable(args.output, args.write_baseline, args.xunit_file)
+    buffered = _read_stdin(args)
     options, config = check_options(args, progress=not args.quiet and sys.stderr.isatty())
-    report = run_check_cached(options, _result_cache(args))
+    report = run_check_cached(options, None if buffered else _result_cache(args))
     if args.write_baseline is not None:
         write_baseline(args.write_baseline, report.findings)
     if args.xunit_file is not None:

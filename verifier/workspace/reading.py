@@ -28,6 +28,23 @@ class Unreadable(OSError):
     """A file launchverify will not read; ``str()`` says why."""
 
 
+# Unsaved contents that stand for files on disk (``check - --stdin-filename PATH``), by
+# real path. Set before Python workers fork, so they read the same.
+_UNSAVED: dict[str, bytes] = {}
+
+
+def set_unsaved(path: Path, data: bytes) -> None:
+    """Make every reader see ``data`` as the content of ``path`` (an editor's buffer)."""
+    _UNSAVED[os.path.realpath(path)] = data
+
+
+def unsaved(path: Path) -> bytes | None:
+    """Return the unsaved content standing for a file, if any."""
+    if not _UNSAVED:
+        return None
+    return _UNSAVED.get(os.path.realpath(path))
+
+
 @contextlib.contextmanager
 def size_limit(limit: int) -> Iterator[None]:
     """Read at most ``limit`` bytes of any file inside the block."""
@@ -49,6 +66,12 @@ def read_file(path: Path, *, prefix: int | None = None) -> bytes:
     ``prefix``: return at most that many bytes of a larger file instead of refusing it
     (for scans that need only the start, like a package manifest's name).
     """
+    buffered = unsaved(path)
+    if buffered is not None:
+        most = limit() if prefix is None else prefix
+        if prefix is None and len(buffered) > most:
+            raise Unreadable(_too_large(most))
+        return buffered[:most]
     try:
         fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0)
                      | getattr(os, "O_NOCTTY", 0))

@@ -9,11 +9,14 @@ from __future__ import annotations
 from functools import lru_cache
 from pathlib import Path
 
-from launchverify.workspace.reading import limit, read_text
+from launchverify.workspace.reading import limit, read_text, unsaved
 
 
 def source_lines(path: Path) -> tuple[str, ...]:
     """Return a file's lines (undecodable bytes replaced; empty when unreadable)."""
+    buffered = unsaved(path)
+    if buffered is not None:  # an editor's buffer: what the findings point into
+        return tuple(buffered.decode("utf-8", "replace").splitlines())
     try:
         stat = path.stat()
     except OSError:

@@ -14,6 +14,7 @@ import functools
 from pathlib import Path
 
 from launchverify.span import Span
+from launchverify.workspace.reading import read_file, unsaved
 
 MAX_SOURCE_BYTES = 2 << 20  # a launch file, not a generated blob
 
@@ -128,12 +129,16 @@ class CallLocator:
     def _parsed(self, file: Path) -> tuple[Calls, Assignments]:
         found = self._files.get(file)
         if found is None:
-            try:
-                stat = file.stat()
-            except OSError:
-                found = ({}, {})
+            buffered = unsaved(file)
+            if buffered is not None:  # an editor's buffer, not the file on disk
+                found = _parse(buffered, file)
             else:
-                found = _index(file, stat.st_mtime_ns, stat.st_size)
+                try:
+                    stat = file.stat()
+                except OSError:
+                    found = ({}, {})
+                else:
+                    found = _index(file, stat.st_mtime_ns, stat.st_size)
             self._files[file] = found
         return found
 
@@ -144,8 +149,18 @@ def _index(file: Path, mtime_ns: int, size: int) -> tuple[Calls, Assignments]:
     if size > MAX_SOURCE_BYTES:
         return {}, {}
     try:
-        tree = ast.parse(file.read_bytes(), filename=str(file))
-    except (OSError, SyntaxError, ValueError, RecursionError, MemoryError):
+        data = read_file(file)
+    except OSError:
+        return {}, {}
+    return _parse(data, file)
+
+
+def _parse(data: bytes, file: Path) -> tuple[Calls, Assignments]:
+    if len(data) > MAX_SOURCE_BYTES:
+        return {}, {}
+    try:
+        tree = ast.parse(data, filename=str(file))
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
         return {}, {}
     calls: Calls = {}
     assignments: Assignments = {}
