@@ -283,3 +283,17 @@ def test_a_worker_that_cannot_start_is_a_finding(tmp_path: Path,
     assert found[0][:2] == ("a.launch.py", "LV002") and "no process could be started" \
         in found[0][2]
     assert found[1][:2] == ("b.launch.xml", "LV101")
+
+
+def test_hundreds_of_python_files_do_not_stall_the_zygote(tmp_path: Path) -> None:
+    """Each worker's end is reported; unread, the reports filled the socket after ~270
+    workers and the zygote, blocked, started no more (every later file timed out)."""
+    launch = tmp_path / "launch"
+    launch.mkdir()
+    for number in range(360):
+        (launch / f"f{number}.launch.py").write_text(
+            "from launch import LaunchDescription\n\n\n"
+            "def generate_launch_description():\n    return LaunchDescription([])\n")
+    report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path, time_limit=2))
+    assert report.python_files == 360
+    assert [f.code for f in report.findings] == []

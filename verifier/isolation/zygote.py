@@ -31,6 +31,7 @@ from launchverify.isolation.confine import Confinement
 from launchverify.isolation.worker import Setting, serve
 
 _PACKET = 1 << 16
+_KEPT_NEWS = 1024  # ended workers remembered for wait()
 
 
 @dataclass
@@ -76,6 +77,7 @@ class Zygote:
 
     def spawn(self, request: dict[str, Any]) -> tuple[int, int]:
         """Start a worker; return its number and launchverify's end of its channel."""
+        self.drain()
         mine, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_STREAM)
         number = self._next
         self._next += 1
@@ -90,8 +92,31 @@ class Zygote:
         mine.setblocking(False)
         return number, mine.detach()
 
+    def drain(self) -> None:
+        """Read the news of ended workers that have come in, without waiting.
+
+        The zygote reports every worker that ends, most of them after answering: news
+        nobody waits for. Left unread, they would fill the socket after a few hundred
+        workers and the zygote, blocked on its report, would start no more.
+        """
+        while select.select([self.control], [], [], 0)[0]:
+            try:
+                packet = self.control.recv(_PACKET)
+            except OSError:
+                return
+            if not packet:
+                return
+            self._record(packet)
+
+    def _record(self, packet: bytes) -> None:
+        news = json.loads(packet)
+        self.ended[news["id"]] = Ended(news["code"], news["signal"])
+        while len(self.ended) > _KEPT_NEWS:  # the oldest: long answered, nobody asks
+            del self.ended[next(iter(self.ended))]
+
     def kill(self, number: int) -> None:
         """Kill a worker (nothing happens if it has ended)."""
+        self.drain()
         with contextlib.suppress(OSError):
             self.control.send(json.dumps({"op": "kill", "id": number}).encode())
 
@@ -108,8 +133,7 @@ class Zygote:
                 return None
             if not packet:
                 return None
-            news = json.loads(packet)
-            self.ended[news["id"]] = Ended(news["code"], news["signal"])
+            self._record(packet)
         return self.ended.pop(number)
 
     def close(self) -> None:
@@ -229,8 +253,8 @@ class _Server:
                 continue
             news = {"id": number, "code": os.WEXITSTATUS(status) if os.WIFEXITED(status) else None,
                     "signal": os.WTERMSIG(status) if os.WIFSIGNALED(status) else None}
-            with contextlib.suppress(OSError):
-                self.control.send(json.dumps(news).encode())
+            with contextlib.suppress(OSError):  # never block: a full socket drops news
+                self.control.send(json.dumps(news).encode(), socket.MSG_DONTWAIT)
 
     def forget(self, pid: int) -> int | None:
         entry = self.workers.pop(pid, None)
