@@ -97,7 +97,8 @@ def measure(path: Path, repeat: int) -> tuple[list[float], dict[str, object]]:
     document: dict[str, object] = {}
     for run in range(repeat + 1):
         started = time.perf_counter()
-        done = subprocess.run([str(LAUNCHVERIFY), "check", str(path), "--format", "json"],
+        done = subprocess.run([str(LAUNCHVERIFY), "check", str(path), "--format", "json",
+                               "--no-cache"],
                               capture_output=True, text=True, check=False)
         elapsed = time.perf_counter() - started
         if done.returncode not in (0, 1):

@@ -46,7 +46,7 @@ def run_once(program: Path, target: Path, jobs: int | None = None
     cpu = children_cpu()
     started = time.perf_counter()
     done = subprocess.run(
-        [str(program), "check", str(target), "--format", "json",
+        [str(program), "check", str(target), "--format", "json", "--no-cache",
          *(["--jobs", str(jobs)] if jobs else [])],
         cwd=REPO, capture_output=True, text=True, check=False,
     )

@@ -38,7 +38,8 @@ class UnknownPackage(Rule):
       package) that `package.xml` should declare. Loose launch files, outside any
       package, are not judged.
 
-    A warning is given once per file and package (its first use), errors at every use.
+    A warning or info is given once per file and package (its first use), errors at every
+    use.
     The message names the package most likely meant: a typo's target, else the one
     workspace package whose name shares the most words, whole or shortened
     (`acme_simulation` for `acme_sim`, `acme_navigation2_bringup` for `acme_nav2_bringup`).
@@ -83,7 +84,7 @@ class UnknownPackage(Rule):
             finding = self._judge(ref, local, installed, ctx)
             if finding is None:
                 continue
-            if finding.severity is Severity.WARNING:
+            if finding.severity is not Severity.ERROR:
                 if (ref.name, ref.origin.span.file) in warned:
                     continue
                 warned.add((ref.name, ref.origin.span.file))
