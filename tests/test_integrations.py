@@ -148,6 +148,54 @@ def test_pre_commit_hook_end_to_end(tmp_path: Path) -> None:
                           cwd=work, capture_output=True, text=True, timeout=600, env=env,
                           check=False)
     assert done.returncode == 0, done.stdout + done.stderr
+    # A change that breaks a file it does not touch: the included file now requires an
+    # argument its includer does not pass. Only the included file is staged.
+    (work / "launch" / "top.launch.xml").write_text(
+        '<launch>\n  <include file="$(dirname)/part.launch.xml"/>\n</launch>\n')
+    (work / "launch" / "part.launch.xml").write_text(CLEAN.replace("talker\"/>", "part\"/>"))
+    _git(work, "add", ".")
+    _git(work, "commit", "-q", "-m", "tree")
+    (work / "launch" / "part.launch.xml").write_text(CLEAN.replace(
+        "<launch>", '<launch>\n  <arg name="robot"/>').replace("talker\"/>",
+                                                              'part" args="$(var robot)"/>'))
+    _git(work, "add", "launch/part.launch.xml")
+    done = subprocess.run([pre_commit, "try-repo", str(hooks), "launchverify"],
+                          cwd=work, capture_output=True, text=True, timeout=600, env=env,
+                          check=False)
+    output = done.stdout + done.stderr
+    assert done.returncode == 1, output
+    assert "top.launch.xml:2:3: error LV208" in output, output
+
+
+def test_affected_launch_files_are_what_a_change_may_break(tmp_path: Path) -> None:
+    """Includers of a changed launch file, users of a changed parameter file, a package's
+    launch files for its package.xml; transitively up the includes."""
+    from launchverify.workspace.affected import affected_launch_files
+
+    package = tmp_path / "src" / "bot"
+    (package / "launch").mkdir(parents=True)
+    (package / "config").mkdir()
+    (package / "package.xml").write_text("<package><name>bot</name></package>")
+    (package / "config" / "params.yaml").write_text("talker:\n  ros__parameters: {}\n")
+    files = {
+        "top.launch.xml": '<launch><include file="$(find-pkg-share bot)/launch/'
+                          'robot.launch.xml"/></launch>',
+        "robot.launch.xml": '<launch><node pkg="a" exec="b" name="talker"><param '
+                            'from="$(find-pkg-share bot)/config/params.yaml"/></node></launch>',
+        "other.launch.xml": '<launch><node pkg="a" exec="b" name="other"/></launch>',
+    }
+    for name, text in files.items():
+        (package / "launch" / name).write_text(text)
+
+    def names(*changed: Path) -> list[str]:
+        return [p.name for p in affected_launch_files(changed, tmp_path)]
+
+    assert names(package / "config" / "params.yaml") == ["robot.launch.xml", "top.launch.xml"]
+    assert names(package / "launch" / "robot.launch.xml") == ["robot.launch.xml",
+                                                              "top.launch.xml"]
+    assert names(package / "launch" / "top.launch.xml") == ["top.launch.xml"]
+    assert names(package / "package.xml") == sorted(files)
+    assert names(tmp_path / "README.md") == []
 
 
 def test_launch_files_only_skips_given_files_that_are_not_launch_files(

@@ -86,6 +86,10 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
                          help="do not read files larger than MB megabytes (default: 10)")
     command.add_argument("-v", "--verbose", action="store_true",
                          help="say how Python launch files were confined")
+    command.add_argument("--affected", action="store_true",
+                         help="the paths are changed files of any kind (launch, parameter, "
+                         "URDF, package.xml): check the launch files they may break, "
+                         "includers too (what the pre-commit hook runs)")
     command.add_argument("--launch-files-only", action="store_true",
                          help="skip given files that do not look like launch files (as in "
                          "folders); for pre-commit, which passes every matching file")
@@ -269,6 +273,7 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         command_select=_codes(args.select),
         command_ignore=_codes(args.ignore) or [],
         nested_configs=not args.isolated and args.config is None,
+        affected=args.affected,
         environment={**config.environment, **parse_environment(args.env)},
         config=config,
         exclude=[*args.exclude, *excluded_by_ament()],

@@ -33,6 +33,7 @@ from launchverify.registry import select as select_rules
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.span import Span
 from launchverify.workspace import reading
+from launchverify.workspace.affected import affected_launch_files
 from launchverify.workspace.discover import discover
 from launchverify.workspace.includers import Includers
 from launchverify.workspace.interfaces import interfaces_of
@@ -71,6 +72,7 @@ class CheckOptions:
     command_select: list[str] | None = None
     command_ignore: list[str] = field(default_factory=list)
     nested_configs: bool = False
+    affected: bool = False  # paths are changed files: check the launch files they affect
 
 
 @dataclass
@@ -198,8 +200,13 @@ def run_check(options: CheckOptions) -> Report:
             raise UsageError(f"no such file or folder: {str(path)!r}")
     config = options.config
     tree = ConfigTree(config, nested=options.nested_configs)
-    found = discover(options.paths, filter_files=options.launch_files_only)
-    if not found and not options.launch_files_only:  # pre-commit may pass none: quiet
+    if options.affected:  # pre-commit: what the changed files may break, or nothing
+        workspace_root = (canonical(options.workspace) if options.workspace is not None
+                          else find_workspace(options.paths[0]))
+        found = affected_launch_files(options.paths, workspace_root)
+    else:
+        found = discover(options.paths, filter_files=options.launch_files_only)
+    if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
         given = ", ".join(str(p) for p in options.paths)
         raise UsageError(f"no launch files found in {given}")
     files = [f for f in found

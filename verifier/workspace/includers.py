@@ -20,7 +20,7 @@ from launchverify.workspace.discover import discover
 from launchverify.workspace.paths import resolved
 from launchverify.workspace.reading import read_file
 
-_NAME = re.compile(rb"[\w.\-]+\.(?:py|xml|yaml|yml|launch)\b")
+_NAME = re.compile(rb"[\w.\-]+\.(?:py|xml|yaml|yml|launch|urdf|xacro|sdf)\b")
 _SCANNED_BYTES = 1 << 20
 
 
@@ -46,3 +46,7 @@ class Includers:
     def included(self, path: Path) -> bool:
         """Return whether another launch file names this one."""
         return bool(self._named_by.get(path.name, set()) - {resolved(path)})
+
+    def naming(self, path: Path) -> set[Path]:
+        """Return the launch files that name this file (itself left out)."""
+        return self._named_by.get(path.name, set()) - {resolved(path)}
