@@ -100,36 +100,43 @@ class Search:
         return out
 
     def inputs(self, item: Guard | s.Sub) -> tuple[frozenset[str], frozenset[str]]:
-        """Return the argument names and short literals an expression or guard holds."""
+        """Return ``inputs_of(item)``, remembered per item (questions share guards)."""
         key = id(item)
         known = self._names.get(key)
-        if known is not None:
-            return known
-        names: set[str] = set()
-        literals: set[str] = set()
-        seen: set[int] = set()
-        stack: list[object] = [item]
-        while stack:
-            current = stack.pop()
-            if id(current) in seen:
-                continue
-            seen.add(id(current))
-            if isinstance(current, Truthy):
-                stack.append(current.expression)
-            elif isinstance(current, StrEquals):
-                stack.extend(x for x in (current.left, current.right) if x is not None)
-            elif isinstance(current, s.Sub):
-                if isinstance(current, Arg):
-                    names.add(current.name)
-                elif isinstance(current, s.Text) and len(current.text) <= 20:
-                    literals.update(_words(current.text))
-                elif isinstance(current, Select):
-                    stack.extend(current.guards)
-                stack.extend(current.children())
-        result = (frozenset(names), frozenset(literals))
-        self._names[key] = result
-        self._keep.append(item)
-        return result
+        if known is None:
+            known = self._names[key] = inputs_of(item)
+            self._keep.append(item)
+        return known
+
+
+def inputs_of(item: Guard | s.Sub) -> tuple[frozenset[str], frozenset[str]]:
+    """Return the argument names and short literals an expression or guard holds.
+
+    Each shared part is visited once; a ``Select``'s guards count, as its encoding reads
+    them.
+    """
+    names: set[str] = set()
+    literals: set[str] = set()
+    seen: set[int] = set()
+    stack: list[object] = [item]
+    while stack:
+        current = stack.pop()
+        if id(current) in seen:
+            continue
+        seen.add(id(current))
+        if isinstance(current, Truthy):
+            stack.append(current.expression)
+        elif isinstance(current, StrEquals):
+            stack.extend(x for x in (current.left, current.right) if x is not None)
+        elif isinstance(current, s.Sub):
+            if isinstance(current, Arg):
+                names.add(current.name)
+            elif isinstance(current, s.Text) and len(current.text) <= 20:
+                literals.update(_words(current.text))
+            elif isinstance(current, Select):
+                stack.extend(current.guards)
+            stack.extend(current.children())
+    return frozenset(names), frozenset(literals)
 
 
 def holds(reducer: BaseReducer, guard: Guard) -> bool | None:

@@ -12,9 +12,10 @@ from collections.abc import Iterable
 import z3
 
 from launchverify.ir.subst import Sub
-from launchverify.ir.symbolic import Arg, Guard, PathCondition, StrEquals, Truthy
+from launchverify.ir.symbolic import Guard, PathCondition, Truthy
 from launchverify.smt.domains import ArgumentDomain, Mode
 from launchverify.smt.encode import Encoder
+from launchverify.smt.search import inputs_of
 from launchverify.smt.types import Contradiction, Witness
 
 TIMEOUT_MS = 2000
@@ -162,28 +163,10 @@ def _variables(term: z3.ExprRef) -> list[z3.ExprRef]:
 def argument_names(items: Iterable[Sub | Guard]) -> set[str]:
     """Return the launch arguments expressions and guards read (what a witness may set).
 
-    Walks launchverify's own expressions, each shared part once: the same answer as the
-    arguments among the free constants of their z3 encoding, without a walk through z3.
+    The same answer as the arguments among the free constants of their z3 encoding,
+    read from launchverify's own expressions instead of a walk through z3's terms.
     """
-    names: set[str] = set()
-    seen: set[int] = set()
-    stack: list[Sub] = []
-    for item in items:
-        if isinstance(item, Truthy):
-            stack.append(item.expression)
-        elif isinstance(item, StrEquals):
-            stack.extend(s for s in (item.left, item.right) if s is not None)
-        elif isinstance(item, Sub):
-            stack.append(item)
-    while stack:
-        sub = stack.pop()
-        if id(sub) in seen:
-            continue
-        seen.add(id(sub))
-        if isinstance(sub, Arg):
-            names.add(sub.name)
-        stack.extend(sub.children())
-    return names
+    return {name for item in items for name in inputs_of(item)[0]}
 
 
 def _is_argument(variable: z3.ExprRef) -> bool:
