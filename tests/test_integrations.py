@@ -171,6 +171,7 @@ def test_affected_launch_files_are_what_a_change_may_break(tmp_path: Path) -> No
     """Includers of a changed launch file, users of a changed parameter file, a package's
     launch files for its package.xml; transitively up the includes."""
     from launchverify.workspace.affected import affected_launch_files
+    from launchverify.workspace.includers import Includers
 
     package = tmp_path / "src" / "bot"
     (package / "launch").mkdir(parents=True)
@@ -188,7 +189,8 @@ def test_affected_launch_files_are_what_a_change_may_break(tmp_path: Path) -> No
         (package / "launch" / name).write_text(text)
 
     def names(*changed: Path) -> list[str]:
-        return [p.name for p in affected_launch_files(changed, tmp_path)]
+        includers = Includers.of_workspace([tmp_path])
+        return [p.name for p in affected_launch_files(changed, includers)]
 
     assert names(package / "config" / "params.yaml") == ["robot.launch.xml", "top.launch.xml"]
     assert names(package / "launch" / "robot.launch.xml") == ["robot.launch.xml",

@@ -192,18 +192,23 @@ def build_index(paths: list[Path], workspace: Path | None,
     return root, PackageIndex.from_environment(sources, prefixes)
 
 
-def run_check(options: CheckOptions) -> Report:
-    """Check launch files and return the findings, de-duplicated and sorted."""
-    started = time.perf_counter()
+def _require_paths(options: CheckOptions) -> None:
+    """Refuse a path that does not exist (a usage error, before any work)."""
     for path in options.paths:
         if not path.exists():
             raise UsageError(f"no such file or folder: {str(path)!r}")
+
+
+def run_check(options: CheckOptions) -> Report:
+    """Check launch files and return the findings, de-duplicated and sorted."""
+    started = time.perf_counter()
+    _require_paths(options)
     config = options.config
     tree = ConfigTree(config, nested=options.nested_configs)
+    workspace, index = build_index(options.paths, options.workspace, config.package_paths)
+    includers = Includers.of_workspace(index.workspaces)
     if options.affected:  # pre-commit: what the changed files may break, or nothing
-        workspace_root = (canonical(options.workspace) if options.workspace is not None
-                          else find_workspace(options.paths[0]))
-        found = affected_launch_files(options.paths, workspace_root)
+        found = affected_launch_files(options.paths, includers)
     else:
         found = discover(options.paths, filter_files=options.launch_files_only)
     if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
@@ -216,7 +221,6 @@ def run_check(options: CheckOptions) -> Report:
     display = {canonical(f): str(f) for f in files}
     if not files:
         return Report([], 0, time.perf_counter() - started, display)
-    workspace, index = build_index(options.paths, options.workspace, config.package_paths)
     limits = Limits(seconds=options.time_limit)
     graphs = []
     with distros.checking(options.distro), reading.size_limit(options.max_file_size), \
@@ -234,7 +238,6 @@ def run_check(options: CheckOptions) -> Report:
                 options.progress(done + 1, len(files))
         python_files, protections = python.evaluated, python.protections
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
-    includers = Includers.of_workspace(index.workspaces)
     for graph in graphs:
         graph.included_elsewhere = graph.root in included or includers.included(graph.root)
     with distros.checking(options.distro):  # rules judge for it too (lifecycle labels)
@@ -257,9 +260,7 @@ def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report
     if cache is None:
         return run_check(options)
     started = time.perf_counter()
-    for path in options.paths:
-        if not path.exists():
-            raise UsageError(f"no such file or folder: {str(path)!r}")
+    _require_paths(options)
     folders, files = _inputs(options)
     key = key_of([options_text(options, skip=("progress", "jobs")), folders, files])
     entry = cache.load(key)
@@ -283,7 +284,7 @@ def _inputs(options: CheckOptions) -> tuple[list[str], list[str]]:
     when a package is installed or removed; the baseline and configuration files.
     """
     workspace = (canonical(options.workspace) if options.workspace is not None
-                 else find_workspace(options.paths[0]))
+                 else find_workspace(options.paths[0]))  # as build_index finds it
     folders = [workspace, *(canonical(p) for p in options.config.package_paths)]
     files: list[Path] = []
     for path in options.paths:

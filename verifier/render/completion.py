@@ -12,7 +12,6 @@ from __future__ import annotations
 import argparse
 from dataclasses import dataclass, field
 
-SHELLS = ("bash", "zsh", "fish")
 RULE_OPTIONS = ("--select", "--ignore")
 
 

@@ -14,15 +14,13 @@ from __future__ import annotations
 from collections.abc import Iterable
 from pathlib import Path
 
-from launchverify.workspace.discover import discover
 from launchverify.workspace.includers import Includers
 from launchverify.workspace.paths import resolved
 
 
-def affected_launch_files(changed: Iterable[Path], workspace: Path) -> list[Path]:
+def affected_launch_files(changed: Iterable[Path], includers: Includers) -> list[Path]:
     """Return the workspace's launch files that a change to ``changed`` may break."""
-    launch_files = {resolved(path) for path in discover([workspace])}
-    includers = Includers(launch_files)
+    launch_files = includers.files
     pending: list[Path] = []
     for path in (resolved(p) for p in changed):
         if path in launch_files:

@@ -28,13 +28,15 @@ class Includers:
     """Which launch files of a workspace other launch files name."""
 
     def __init__(self, files: Iterable[Path]) -> None:
+        self.files: set[Path] = set()  # every launch file scanned, resolved
         self._named_by: dict[str, set[Path]] = {}
         for path in files:
+            where = resolved(path)
+            self.files.add(where)
             try:
                 text = read_file(path, prefix=_SCANNED_BYTES)
             except OSError:
                 continue
-            where = resolved(path)
             for name in set(_NAME.findall(text)):
                 self._named_by.setdefault(name.decode("utf-8", "replace"), set()).add(where)
 
