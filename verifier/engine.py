@@ -36,7 +36,7 @@ from launchverify.workspace import reading
 from launchverify.workspace.affected import affected_launch_files
 from launchverify.workspace.discover import discover
 from launchverify.workspace.includers import Includers
-from launchverify.workspace.interfaces import interfaces_of
+from launchverify.workspace.interfaces import Interfaces
 from launchverify.workspace.packages import PackageIndex, find_workspace, workspace_prefixes
 from launchverify.workspace.paths import display_path, relative_file
 
@@ -242,7 +242,7 @@ def run_check(options: CheckOptions) -> Report:
         graph.included_elsewhere = graph.root in included or includers.included(graph.root)
     with distros.checking(options.distro):  # rules judge for it too (lifecycle labels)
         findings = run_rules(graphs, rules,
-                             RuleContext(packages=index, interfaces=interfaces_of(graphs)))
+                             RuleContext(packages=index, interfaces=Interfaces(graphs)))
     loaded = {path for g in graphs for path in g.files}
     findings, suppressed = _suppress(findings, loaded, rules)
     findings = _configured(findings, tree, selection)

@@ -521,8 +521,8 @@ class LaunchGraph:
         """Return every configuration name read anywhere in the evaluation."""
         return {read.name for read in self.reads}
 
-    def written_names(self) -> set[str]:
-        """Return every configuration name the loaded files read, on any branch.
+    def mentioned_names(self) -> set[str]:
+        """Return every configuration name the loaded files mention, on any branch.
 
         (Reads on branches this evaluation did not take, and OpaqueFunctions' strings.)
         """

@@ -11,14 +11,13 @@ from __future__ import annotations
 import enum
 from collections.abc import Hashable, Iterator, Mapping
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import ClassVar
 
 from launchverify.findings.trace import Step
 from launchverify.graph import LaunchGraph, Origin
 from launchverify.ir.symbolic import PathCondition
 from launchverify.span import Span
-from launchverify.workspace.interfaces import Interface
+from launchverify.workspace.interfaces import Interfaces
 from launchverify.workspace.packages import PackageIndex
 
 
@@ -80,7 +79,7 @@ class RuleContext:
     """
 
     packages: PackageIndex | None = None
-    interfaces: dict[Path, Interface] = field(default_factory=dict)  # of every checked root
+    interfaces: Interfaces = field(default_factory=Interfaces)  # of every checked root
     options: dict[str, object] = field(default_factory=dict)
     settled: dict[str, set[object]] = field(default_factory=dict)
     memo: dict[str, dict[object, object]] = field(default_factory=dict)

@@ -83,7 +83,7 @@ class UnknownIncludeArgument(Rule):
         """Arguments given as name:=value that the launch never declares nor reads."""
         if not graph.pinned or not graph.complete or graph.stopped_early:
             return
-        known = graph.declared_names() | graph.read_names() | graph.written_names()
+        known = graph.declared_names() | graph.read_names() | graph.mentioned_names()
         for name in sorted(set(graph.pinned) - known):
             yield self.finding(Span.of_file(graph.root), name=f"{name}:={graph.pinned[name]}",
                                target=graph.root.name + " (given on the command line)",

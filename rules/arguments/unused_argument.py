@@ -9,7 +9,6 @@ from pathlib import Path
 from launchverify.graph import LaunchGraph
 from launchverify.problems import ProblemKind
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
-from launchverify.workspace.interfaces import mirrored
 
 # Configurations launch and launch_ros read by themselves, without a $(var).
 IMPLICIT_READS = frozenset({
@@ -62,7 +61,7 @@ class UnusedArgument(Rule):
             return  # a part we cannot see may read it
         if any(r.problem.kind is ProblemKind.PARSE for r in graph.problems):
             return  # reads may sit in what could not be parsed
-        used = set(IMPLICIT_READS) | graph.read_names() | graph.written_names()
+        used = set(IMPLICIT_READS) | graph.read_names() | graph.mentioned_names()
         reported: set[object] = set()
         for argument in graph.arguments:
             span = argument.action.span
@@ -73,7 +72,7 @@ class UnusedArgument(Rule):
                 finding = self.finding(argument.origin, name=argument.name, note=self.no_node)
                 yield dataclasses.replace(finding, severity=Severity.INFO)
                 continue
-            other = mirrored(ctx.interfaces, span.file, argument.name)
+            other = ctx.interfaces.mirrored(span.file, argument.name)
             if other is None:
                 yield self.finding(argument.origin, name=argument.name, note="")
                 continue

@@ -92,8 +92,8 @@ def _label(graph: LaunchGraph, node: NodeRecord) -> str:
 # Gazebo bridges (stamps come from the simulator), filters that stamp their output with
 # their input's stamps and read no clock for anything else (imu_filter_madgwick's ROS 2
 # node, rtabmap's depth-to-cloud converters; not obstacles_detection, whose TF buffer
-# runs on the node's clock) and one-shot
-# helpers that spawn models or controllers and exit.
+# runs on the node's clock) and one-shot helpers that spawn models or controllers and
+# exit.
 TIMELESS = frozenset({
     ("rclcpp_components", "component_container"),
     ("rclcpp_components", "component_container_mt"),

@@ -32,32 +32,40 @@ class Interface:
     used: frozenset[str]
 
 
-def interfaces_of(graphs: Iterable[LaunchGraph]) -> dict[Path, Interface]:
-    """Return the interface of each evaluated root."""
-    return {
-        graph.root: Interface(
-            {a.name: a.origin.span for a in graph.arguments if a.origin.span.file == graph.root},
-            frozenset(graph.read_names() | graph.written_names()),
-        )
-        for graph in graphs
-    }
+class Interfaces:
+    """The interfaces of a check's roots, found by folder and by file name."""
 
+    def __init__(self, graphs: Iterable[LaunchGraph] = ()) -> None:
+        self.of: dict[Path, Interface] = {
+            graph.root: Interface(
+                {a.name: a.origin.span for a in graph.arguments
+                 if a.origin.span.file == graph.root},
+                frozenset(graph.read_names() | graph.mentioned_names()),
+            )
+            for graph in graphs
+        }
+        self._by_folder: dict[Path, list[Path]] = {}
+        self._by_name: dict[str, list[Path]] = {}
+        for path in sorted(self.of):
+            self._by_folder.setdefault(path.parent, []).append(path)
+            self._by_name.setdefault(path.name, []).append(path)
 
-def mirrored(interfaces: dict[Path, Interface], file: Path, name: str) -> Span | None:
-    """Return where a file of ``file``'s family declares ``name`` and uses it, if any.
+    def mirrored(self, file: Path, name: str) -> Span | None:
+        """Return where a file of ``file``'s family declares ``name`` and uses it, if any.
 
-    The family: launch files in the same folder, or of the same file name elsewhere (one
-    per package), whose declared arguments ``file`` mostly shares.
-    """
-    own = interfaces.get(file)
-    if own is None:
+        The family: launch files in the same folder, or of the same file name elsewhere
+        (one per package), whose declared arguments ``file`` mostly shares.
+        """
+        own = self.of.get(file)
+        if own is None:
+            return None
+        family = dict.fromkeys([*self._by_folder.get(file.parent, []),
+                                *self._by_name.get(file.name, [])])
+        for other in sorted(family):
+            interface = self.of[other]
+            if other == file or name not in interface.declared or name not in interface.used:
+                continue
+            shared = len(own.declared.keys() & interface.declared.keys())
+            if shared >= MIRROR_SHARED and shared >= MIRROR_SHARE * len(own.declared):
+                return interface.declared[name]
         return None
-    for other, interface in sorted(interfaces.items()):
-        if other == file or (other.parent != file.parent and other.name != file.name):
-            continue
-        if name not in interface.declared or name not in interface.used:
-            continue
-        shared = len(own.declared.keys() & interface.declared.keys())
-        if shared >= MIRROR_SHARED and shared >= MIRROR_SHARE * len(own.declared):
-            return interface.declared[name]
-    return None
