@@ -130,3 +130,12 @@ def test_text_summary_says_the_result_is_cached(tree: Path,
     capsys.readouterr()
     main(["check", str(tree), "--workspace", str(tree), "--exit-zero"])
     assert "unchanged since the cached run" in capsys.readouterr().out
+
+
+def test_linked_folders_are_walked_once(tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """Links back to a parent, two per level, would make the walk exponential."""
+    (tree / "a").mkdir()
+    (tree / "a" / "up").symlink_to(tree)
+    (tree / "a" / "again").symlink_to(tree)
+    first, _ = check(capsys, tree)
+    assert check(capsys, tree) == (first, True)

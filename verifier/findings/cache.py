@@ -88,14 +88,21 @@ def own_code_stamp() -> str:
 def _walk(folders: Iterable[str], skip: str | None = None) -> dict[str, Stamp]:
     """Return the size and modification time of every file below the folders.
 
-    ``skip``: a folder left out (the cache's own, when it lies in the workspace). Paths
-    stay strings: this runs on every check, over every file of the workspace.
+    ``skip``: a folder left out (the cache's own, when it lies in the workspace). Linked
+    folders are followed, as the package index follows them, each real folder once (a
+    link to a parent is no endless walk). Paths stay strings: this runs on every check,
+    over every file of the workspace.
     """
     found: dict[str, Stamp] = {}
     pending = list(folders)
+    visited: set[tuple[int, int]] = set()
     while pending:
         folder = pending.pop()
         try:
+            info = os.stat(folder)  # noqa: PTH116 (string paths)
+            if (info.st_dev, info.st_ino) in visited:
+                continue
+            visited.add((info.st_dev, info.st_ino))
             entries = list(os.scandir(folder))
         except OSError:
             continue
