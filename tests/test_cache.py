@@ -139,3 +139,13 @@ def test_linked_folders_are_walked_once(tree: Path, capsys: pytest.CaptureFixtur
     (tree / "a" / "again").symlink_to(tree)
     first, _ = check(capsys, tree)
     assert check(capsys, tree) == (first, True)
+
+
+def test_a_fifo_in_the_workspace_never_blocks_the_cache(
+        tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A FIFO made just now would be hashed as a racy file: opening it would wait forever."""
+    import os
+
+    os.mkfifo(tree / "pipe.yaml")
+    first, _ = check(capsys, tree)
+    assert check(capsys, tree) == (first, True)

@@ -22,6 +22,7 @@ import contextlib
 import hashlib
 import os
 import pickle
+import stat
 import sys
 import tempfile
 import time
@@ -116,7 +117,8 @@ def _walk(folders: Iterable[str], skip: str | None = None) -> dict[str, Stamp]:
                 info = entry.stat(follow_symlinks=True)
             except OSError:
                 continue
-            found[entry.path] = (info.st_size, info.st_mtime_ns, None)
+            if stat.S_ISREG(info.st_mode):  # FIFOs, devices, sockets hold no content
+                found[entry.path] = (info.st_size, info.st_mtime_ns, None)
     return found
 
 
@@ -125,15 +127,28 @@ def _stat(path: str) -> Stamp | None:
         info = os.stat(path)  # noqa: PTH116 (string paths: see _walk)
     except OSError:
         return None
+    if not stat.S_ISREG(info.st_mode) and not stat.S_ISDIR(info.st_mode):
+        return None  # (an ament index folder counts: its time says what was installed)
     return (info.st_size, info.st_mtime_ns, None)
 
 
 def _hash(path: str) -> str | None:
+    """Return a regular file's content hash; never blocks (a FIFO put in its place)."""
     try:
-        with open(path, "rb") as handle:  # noqa: PTH123 (a string path, read once)
-            return hashlib.blake2b(handle.read(), digest_size=16).hexdigest()
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
     except OSError:
         return None
+    try:
+        if not stat.S_ISREG(os.fstat(fd).st_mode):
+            return None
+        digest = hashlib.blake2b(digest_size=16)
+        while chunk := os.read(fd, 1 << 20):
+            digest.update(chunk)
+        return digest.hexdigest()
+    except OSError:
+        return None
+    finally:
+        os.close(fd)
 
 
 def stamps_of(folders: list[str], files: Iterable[str], now: float,
