@@ -15,5 +15,7 @@ def generate_launch_description():
         actions.append(ExecuteProcess(
             cmd=['python3', WORKER, f'worker{index}', *extra], name=f'worker{index}',
             output='log', respawn=index == 7, respawn_max_retries=1, sigterm_timeout='2'))
-    actions.append(TimerAction(period=4.0, actions=[EmitEvent(event=Shutdown(reason='done'))]))
+    # Long enough for worker7's respawn to be running (signal handlers set) before the
+    # shutdown, even when fifty interpreters start at once on a loaded two-core machine.
+    actions.append(TimerAction(period=6.0, actions=[EmitEvent(event=Shutdown(reason='done'))]))
     return LaunchDescription(actions)

@@ -10,17 +10,32 @@ tests can check that whole process groups are stopped. ``--crash-once`` crashes 
 first start under one parent (a respawned worker then keeps running).
 """
 
-import os
 import signal
-import subprocess
 import sys
-import tempfile
-import time
+
+# Signal handlers first, before the slower imports: a launch stopped while this worker is
+# still starting (a respawn just before a shutdown, on a loaded machine) must still see a
+# clean exit, not Python's KeyboardInterrupt (exit code 1).
+ARGV = sys.argv[1:]
+NAME = ARGV[0] if ARGV else "worker"
+if "--ignore-signals" in ARGV:
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
+else:
+    def bye(number, frame):
+        print(f"bye {NAME} {signal.Signals(number).name}", flush=True)
+        sys.exit(0)
+    signal.signal(signal.SIGINT, bye)
+    signal.signal(signal.SIGTERM, bye)
+
+import os  # noqa: E402
+import subprocess  # noqa: E402
+import tempfile  # noqa: E402
+import time  # noqa: E402
 
 
 def main() -> None:
-    argv = sys.argv[1:]
-    name = argv[0] if argv else "worker"
+    argv, name = ARGV, NAME
 
     def option(flag, default=None):
         return argv[argv.index(flag) + 1] if flag in argv else default
@@ -30,19 +45,11 @@ def main() -> None:
         marker = os.path.join(tempfile.gettempdir(), f"worker-{os.getppid()}-{name}.crashed")
         if os.path.exists(marker):
             crash_after = None
+            os.remove(marker)  # no stale marker for a later parent with the same pid
         else:
             open(marker, "w").close()
     finish_after = option("--finish-after")
     code = int(option("--exit-code", "1"))
-    if "--ignore-signals" in argv:
-        signal.signal(signal.SIGINT, signal.SIG_IGN)
-        signal.signal(signal.SIGTERM, signal.SIG_IGN)
-    else:
-        def bye(number, frame):
-            print(f"bye {name} {signal.Signals(number).name}", flush=True)
-            sys.exit(0)
-        signal.signal(signal.SIGINT, bye)
-        signal.signal(signal.SIGTERM, bye)
     if "--spawn-child" in argv:
         child = subprocess.Popen([sys.executable, "-c", "import time; time.sleep(600)"])
         print(f"child {name} {child.pid}", flush=True)
