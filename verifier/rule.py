@@ -44,6 +44,33 @@ class Related:
 
 IN_CALL = "in this call"  # the related call around a finding's expression
 
+
+class Applicability(enum.Enum):
+    """Whether ``--fix`` applies a fix on its own (safe) or only with ``--unsafe-fixes``."""
+
+    SAFE = "safe"
+    UNSAFE = "unsafe"
+
+
+@dataclass(frozen=True, slots=True)
+class Edit:
+    """Replace the text from ``span``'s start to its end (exclusive) with ``content``.
+
+    The span must carry its end; an empty span (start == end) inserts.
+    """
+
+    span: Span
+    content: str
+
+
+@dataclass(frozen=True, slots=True)
+class Fix:
+    """How to mend a finding: edits to the user's files, said in a few words."""
+
+    message: str  # "rename to 'use_sim_time'"
+    edits: tuple[Edit, ...]
+    applicability: Applicability = Applicability.SAFE
+
 @dataclass(frozen=True, slots=True)
 class Finding:
     """One reported problem, with everything reporters need."""
@@ -57,6 +84,7 @@ class Finding:
     chain: tuple[Span, ...] = ()
     witness: Mapping[str, str] | None = None
     trace: tuple[Step, ...] = ()  # how the launch gets there (lifecycle rules)
+    fix: Fix | None = field(default=None, compare=False)
     # the path condition of where it is (not shown: dead code is dropped by the engine)
     path: PathCondition = field(default=(), compare=False, repr=False)
 
@@ -143,6 +171,7 @@ class Rule:
         related: tuple[Related, ...] = (),
         witness: Mapping[str, str] | None = None,
         trace: tuple[Step, ...] = (),
+        fix: Fix | None = None,
         **values: object,
     ) -> Finding:
         """Build a finding from the message template at a record's origin (or a span)."""
@@ -160,6 +189,7 @@ class Rule:
             chain=chain,
             witness=witness,
             trace=trace,
+            fix=fix,
             path=path,
         )
 
