@@ -287,3 +287,22 @@ def generate_launch_description():
 """
     [(code, line, message)] = findings(write(tmp_path, "world.launch.py", body))
     assert (code, line) == ("LV003", 10) and "only exists at run time" in message
+
+
+def test_a_named_temporary_file_is_written_in_the_scratch_folder(tmp_path: Path) -> None:
+    # rtabmap's zed examples write a parameter override with NamedTemporaryFile: the write
+    # lands in the evaluation's own scratch folder (deleted afterwards), so the evaluation
+    # goes on and no message names a random temporary path
+    body = """
+import tempfile
+
+def generate_launch_description():
+    with tempfile.NamedTemporaryFile(mode='w+t', delete=False) as override:
+        override.write('/**:\\n  ros__parameters:\\n    rate: 100.0\\n')
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='talker'),
+        Node(package='demo_nodes_cpp', executable='talker', name='talker'),
+    ])
+"""
+    assert [code for code, _, _ in findings(write(tmp_path, "override.launch.py", body))
+            ] == ["LV101"]

@@ -136,8 +136,10 @@ def in_scratch(path: Any) -> bool:
 def _in_scratch(path: Any) -> bool:
     if not _scratch or not isinstance(path, (str, bytes, os.PathLike)):
         return False
-    text = os.fsdecode(path)
-    return os.path.abspath(text).startswith(_scratch[-1] + os.sep)  # noqa: PTH100
+    text = os.path.abspath(os.fsdecode(path))  # noqa: PTH100
+    # The folder itself too: NamedTemporaryFile's audit event names the folder it creates
+    # the file in (a folder cannot be opened for writing: nothing escapes through it).
+    return text == _scratch[-1] or text.startswith(_scratch[-1] + os.sep)
 
 
 def _audit(event: str, args: tuple[Any, ...]) -> None:
