@@ -16,6 +16,7 @@ from launchverify.evaluate.values import BaseReducer, describe_value, text_of
 from launchverify.frontends import LoadedFile
 from launchverify.frontends.param_file import ParamFile
 from launchverify.ir import actions as a
+from launchverify.ir.conditions import Condition
 from launchverify.ir.subst import Sub, Text
 from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy, describe_path
 from launchverify.ir.walk import configuration_names
@@ -215,12 +216,17 @@ class ConditionRecord:
     """
 
     origin: Origin
-    text: str
+    condition: Condition
     guard: Guard
     verdict: bool | None
     literal: bool
     # decided by a <let>/SetLaunchConfiguration that replaced the argument it reads: where
     override: Origin | None = None
+
+    @property
+    def text(self) -> str:
+        """Return the condition as written (built when a rule reports it, not before)."""
+        return self.condition.describe()
 
     @property
     def symbolic(self) -> bool:
@@ -405,6 +411,8 @@ class LaunchGraph:
     def __post_init__(self) -> None:
         self._base = BaseReducer(self.inputs(), read=self.read_file)
         self._verdicts: dict[Guard, bool | None] = {}
+        # the same guard objects, by identity: hashing a guard walks its whole expression
+        self._verdicts_by_id: dict[int, tuple[Guard, bool | None]] = {}
 
     def read_file(self, path: str) -> str | None:
         """Return a workspace file's text for the base view (``None``: not readable)."""
@@ -441,10 +449,15 @@ class LaunchGraph:
     def runs(self, origin: Origin) -> bool | None:
         """Return whether a record runs under the given arguments (``None``: unknown)."""
         result: bool | None = True
-        for guard in origin.path:
-            if guard not in self._verdicts:  # many records share guards
-                self._verdicts[guard] = self._base.guard(guard)
-            verdict = self._verdicts[guard]
+        for guard in origin.path:  # many records share guards, most as the same objects
+            known = self._verdicts_by_id.get(id(guard))
+            if known is not None and known[0] is guard:
+                verdict = known[1]
+            else:
+                if guard not in self._verdicts:
+                    self._verdicts[guard] = self._base.guard(guard)
+                verdict = self._verdicts[guard]
+                self._verdicts_by_id[id(guard)] = (guard, verdict)
             if verdict is False:
                 return False
             if verdict is None:

@@ -14,21 +14,25 @@ import sys
 _PACKAGES = ("launchverify", "launchverify.models", "launchverify.rules")
 
 
-_roots: tuple[str, ...] = ()
+_roots: dict[tuple[bool, ...], tuple[str, ...]] = {}
 
 
 def own_roots() -> tuple[str, ...]:
-    """Return the folders (with a trailing separator) of launchverify's imported packages."""
-    global _roots  # noqa: PLW0603 - computed once every package is imported
-    if len(_roots) == len(_PACKAGES):
-        return _roots
-    roots: list[str] = []
-    for name in _PACKAGES:
-        filename = getattr(sys.modules.get(name), "__file__", None)
-        if filename:
-            roots.append(os.path.dirname(os.path.abspath(filename)) + os.sep)  # noqa: PTH100, PTH120
-    _roots = tuple(roots)
-    return _roots
+    """Return the folders (with a trailing separator) of launchverify's imported packages.
+
+    Asked for every frame a model looks at; computed again only when another of the
+    packages has been imported since (a worker never imports the rules).
+    """
+    imported = tuple(name in sys.modules for name in _PACKAGES)
+    found = _roots.get(imported)
+    if found is None:
+        roots: list[str] = []
+        for name in _PACKAGES:
+            filename = getattr(sys.modules.get(name), "__file__", None)
+            if filename:
+                roots.append(os.path.dirname(os.path.abspath(filename)) + os.sep)  # noqa: PTH100, PTH120
+        found = _roots[imported] = tuple(roots)
+    return found
 
 
 def is_own_file(filename: str) -> bool:

@@ -10,12 +10,13 @@ substitutions, lists of them, conditions, parameters.
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
 import sys
 import sysconfig
 from collections.abc import Iterable
 from pathlib import Path
-from types import FrameType
+from types import CodeType, FrameType
 from typing import TYPE_CHECKING, Any, Protocol
 
 from launchverify.ir import subst as s
@@ -44,15 +45,25 @@ def caller_span(skip: int = 1) -> Span:
     return _frame_span(frame)
 
 
+@functools.lru_cache(maxsize=256)
+def _positions(code: CodeType) -> tuple[tuple[int | None, ...], ...] | None:
+    """Return a code object's instruction positions (a loop asks for the same ones often)."""
+    positions = getattr(code, "co_positions", None)
+    if positions is None:
+        return None
+    try:
+        return tuple(positions())
+    except ValueError:
+        return None
+
+
 def _frame_span(frame: FrameType) -> Span:
     path = Path(frame.f_code.co_filename)
     line = frame.f_lineno or 1
-    positions = getattr(frame.f_code, "co_positions", None)
+    positions = _positions(frame.f_code)
     if positions is not None:
-        try:
-            entry = list(positions())[frame.f_lasti // 2]
-        except (IndexError, ValueError):
-            entry = None
+        index = frame.f_lasti // 2
+        entry = positions[index] if 0 <= index < len(positions) else None
         if entry and entry[0] is not None and entry[2] is not None:
             start, end, column, end_column = entry
             return Span(path, start, column + 1, end, (end_column or column) + 1)

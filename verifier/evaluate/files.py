@@ -6,9 +6,15 @@ from pathlib import Path
 
 from launchverify.evaluate.static_args import StaticSubtree
 from launchverify.frontends import LoadedFile, PythonLoader, load_launch_file
-from launchverify.frontends.param_file import ParamFile, load_param_file
+from launchverify.frontends.param_file import (
+    InlineSubstitution,
+    ParamFile,
+    load_param_file,
+    substitutions_in,
+)
 from launchverify.graph import StaticArgument
 from launchverify.workspace.packages import PackageIndex
+from launchverify.workspace.paths import resolved
 
 
 class FileCache:
@@ -25,6 +31,8 @@ class FileCache:
 
         self._files: dict[Path, LoadedFile] = {}
         self._param_files: dict[Path, ParamFile] = {}
+        self._substitutions: dict[Path, tuple[InlineSubstitution, ...]] = {}
+        self._within: dict[tuple[Path, Path], bool] = {}
         self.static_arguments: dict[Path, tuple[StaticArgument, ...]] = {}
         self.static_subtrees: dict[Path, StaticSubtree] = {}  # what each included file declares
         # the names each include action passes, by action (actions live as long as the files)
@@ -53,3 +61,18 @@ class FileCache:
             loaded = load_param_file(path)
             self._param_files[path] = loaded
         return loaded
+
+    def substitutions(self, path: Path) -> tuple[InlineSubstitution, ...]:
+        """Return a parameter file's ``$(...)`` lines, parsing them the first time."""
+        found = self._substitutions.get(path)
+        if found is None:
+            found = self._substitutions[path] = substitutions_in(path)
+        return found
+
+    def within(self, path: Path, folder: Path) -> bool:
+        """Return whether ``path``, its links resolved, lies in ``folder`` (found once per run)."""
+        key = (path, folder)
+        inside = self._within.get(key)
+        if inside is None:
+            inside = self._within[key] = resolved(path).is_relative_to(folder)
+        return inside

@@ -15,7 +15,6 @@ from typing import TYPE_CHECKING
 from launchverify.evaluate.reducers import Ctx, ScopeReducer
 from launchverify.evaluate.scope import GLOBAL_PARAMS, ROS_NAMESPACE, ROS_REMAPS
 from launchverify.evaluate.values import machine_dependent, ns_prefix, text_of
-from launchverify.frontends.subst_parser import SubstitutionSyntaxError, parse_substitution
 from launchverify.graph import (
     FileRef,
     LaunchRecord,
@@ -29,13 +28,9 @@ from launchverify.ir import subst as s
 from launchverify.models import booleans
 from launchverify.problems import ProblemKind
 from launchverify.span import Span
-from launchverify.workspace.paths import resolved
-from launchverify.workspace.reading import read_text
 
 if TYPE_CHECKING:
     from launchverify.evaluate.walker import Walker
-
-MAX_PARAM_FILE = 1024 * 1024
 
 
 class NodeBuilder:
@@ -203,25 +198,16 @@ class NodeBuilder:
         """
         text = text_of(location) or self.walker.graph.base(location)
         located = None if text is None else self.walker.index.locate(Path(text))
-        if located is None or not resolved(located).is_relative_to(self.walker.workspace):
+        if located is None or not self.walker.loader.within(located, self.walker.workspace):
             self.walker.mark_incomplete()  # its reads are unknown
             return
-        try:
-            content = read_text(located, prefix=MAX_PARAM_FILE)
-        except OSError:
-            return
-        for number, line in enumerate(content.splitlines(), 1):
-            column = line.find("$(")
-            if column < 0:
+        for line in self.walker.loader.substitutions(located):
+            if line.expression is None:
+                self.walker.problem(ProblemKind.EVALUATION,
+                                    "invalid substitution in parameter file loaded with "
+                                    f"allow_substs: {line.error}", line.where, ctx)
                 continue
-            where = Span(located, number, column + 1)
-            try:
-                expression = parse_substitution(line)
-            except SubstitutionSyntaxError as error:
-                self.walker.problem(ProblemKind.EVALUATION, "invalid substitution in parameter "
-                                    f"file loaded with allow_substs: {error}", where, ctx)
-                continue
-            self.walker.reducer.at(ctx, where).reduce(expression)
+            self.walker.reducer.at(ctx, line.where).reduce(line.expression)
 
     def read_param_file(self, location: s.Sub) -> Path | None:
         """Read a parameter file of the workspace into the graph; return where it is."""
@@ -229,7 +215,7 @@ class NodeBuilder:
         if not text or not Path(text).is_absolute():
             return None
         located = self.walker.index.locate(Path(os.path.normpath(text)))  # "launch/../config"
-        if located is None or not resolved(located).is_relative_to(self.walker.workspace):
+        if located is None or not self.walker.loader.within(located, self.walker.workspace):
             return None
         if located not in self.walker.graph.param_files:
             self.walker.graph.param_files[located] = self.walker.loader.param_file(located)

@@ -154,7 +154,7 @@ class Walker:
     def workspace_text(self, path: str) -> str | None:
         """Return a workspace file's text (``None`` outside it, missing or too large)."""
         located = self.index.locate(Path(path))
-        if located is None or not resolved(located).is_relative_to(self.workspace):
+        if located is None or not self.loader.within(located, self.workspace):
             return None
         try:
             data = read_file(located, prefix=MAX_FILE_CONTENT + 1)
@@ -171,7 +171,7 @@ class Walker:
             if inside or self.index.owner(Path(path)) is not None:
                 self.graph.file_refs.append(FileRef(path, origin, False, "file-content"))
             return Unknown(f"content of {path}")
-        if not resolved(located).is_relative_to(self.workspace):
+        if not self.loader.within(located, self.workspace):
             return Unknown(f"content of {path}")
         self.graph.file_refs.append(FileRef(path, origin, True, "file-content"))
         text = self.workspace_text(path)
@@ -319,7 +319,7 @@ class Walker:
                              if (found := self.scopes.overrides.get(name)) is not None
                              and found.span.file == span.file), None)
         self.graph.conditions.append(ConditionRecord(
-            ctx.origin(span), condition.describe(), guard, verdict, literal, override))
+            ctx.origin(span), condition, guard, verdict, literal, override))
         if verdict is True:
             return ctx
         if verdict is False:

@@ -25,7 +25,9 @@ from pathlib import Path
 
 import yaml
 
+from launchverify.frontends.subst_parser import SubstitutionSyntaxError, parse_substitution
 from launchverify.frontends.yaml_reader import YamlLoadError, compose, span_of
+from launchverify.ir.subst import Sub
 from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
 from launchverify.workspace.reading import long_number, long_number_message, read_file
@@ -346,3 +348,38 @@ def _empty(node: yaml.Node) -> bool:
 def _node_key(parts: list[str]) -> str:
     joined = "/".join(part.strip("/") for part in parts if part.strip("/"))
     return "/" + joined
+
+
+MAX_SUBSTITUTED_FILE = 1024 * 1024  # bytes read of a file loaded with allow_substs
+
+
+@dataclass(frozen=True, slots=True)
+class InlineSubstitution:
+    """One line of a parameter file holding ``$(...)``: parsed, or why it does not parse."""
+
+    where: Span
+    expression: Sub | None
+    error: str | None = None
+
+
+def substitutions_in(path: Path) -> tuple[InlineSubstitution, ...]:
+    """Return the lines of a parameter file that launch substitutes with ``allow_substs``.
+
+    Parsed once per file and run (the walker caches them): a parameter file shared by a
+    launch's nodes is substituted again for each node, in that node's context.
+    """
+    try:
+        content = read_file(path, prefix=MAX_SUBSTITUTED_FILE).decode("utf-8", "replace")
+    except OSError:
+        return ()
+    found = []
+    for number, line in enumerate(content.splitlines(), 1):
+        column = line.find("$(")
+        if column < 0:
+            continue
+        where = Span(path, number, column + 1)
+        try:
+            found.append(InlineSubstitution(where, parse_substitution(line)))
+        except SubstitutionSyntaxError as error:
+            found.append(InlineSubstitution(where, None, str(error)))
+    return tuple(found)

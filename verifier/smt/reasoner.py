@@ -44,11 +44,13 @@ class Reasoner:
         self.domains: dict[str, ArgumentDomain] = argument_domains(graph)
         self.search = Search(self.domains, graph.inputs())
         self._backend: Z3Backend | None = None
-        self._together: dict[PathCondition, Witness | None] = {}
-        self._names: dict[tuple[object, ...], tuple[Witness, str] | None] = {}
+        shared = _shared_answers(self.domains, graph.inputs())
+        self._together = shared.together
+        self._names = shared.names
+        self._always = shared.always
+        self._invalid = shared.invalid
+        # contradictions name the guards' places, which differ between roots
         self._never: dict[tuple[PathCondition, Guard], Contradiction | None] = {}
-        self._always: dict[tuple[PathCondition, Guard], bool] = {}
-        self._invalid: dict[tuple[PathCondition, Guard], tuple[str, Witness] | None] = {}
 
     @property
     def z3(self) -> Z3Backend:
@@ -211,6 +213,43 @@ class Reasoner:
             return None
         return Witness({name: value for name, value in assignment.items()
                         if self.domains[name].defaults != {value}})
+
+
+@dataclasses.dataclass
+class _Answers:
+    """Answers that depend only on the question and the arguments' domains.
+
+    Roots of one workspace often have the same arguments (a family of launch files, or
+    entry points into one bring-up) and reach the same included files: their reasoners
+    share these answers instead of searching again. Answers naming places in files
+    (contradictions) stay with each reasoner.
+    """
+
+    together: dict[PathCondition, Witness | None] = dataclasses.field(default_factory=dict)
+    names: dict[tuple[object, ...], tuple[Witness, str] | None] = dataclasses.field(
+        default_factory=dict)
+    always: dict[tuple[PathCondition, Guard], bool] = dataclasses.field(default_factory=dict)
+    invalid: dict[tuple[PathCondition, Guard], tuple[str, Witness] | None] = dataclasses.field(
+        default_factory=dict)
+
+
+_SHARED: dict[tuple[object, ...], _Answers] = {}
+MAX_SHARED = 512  # domain signatures remembered in one process (a long-lived server)
+
+
+def _shared_answers(domains: dict[str, ArgumentDomain], inputs: dict[str, str]) -> _Answers:
+    """Return the answers of every reasoner whose domains and fixed inputs are these."""
+    signature = (
+        tuple(sorted((name, d.pinned, d.choices, tuple(sorted(d.defaults)), d.symbolic_default,
+                      d.required, d.exposed) for name, d in domains.items())),
+        tuple(sorted(inputs.items())),
+    )
+    found = _SHARED.get(signature)
+    if found is None:
+        if len(_SHARED) >= MAX_SHARED:
+            _SHARED.clear()
+        found = _SHARED[signature] = _Answers()
+    return found
 
 
 def _opposite(guard: Guard) -> Guard | None:
