@@ -459,7 +459,7 @@ def _finding(path: Path, line: int, column: int, end: int, **extra: Any) -> Any:
 def _lines(*texts: str, python: bool = False) -> Any:
     from launchverify.lsp.positions import Lines
 
-    return Lines(texts, bytes_=python)
+    return Lines(texts, in_bytes=python)
 
 
 def test_positions_count_utf16_units_and_python_bytes() -> None:

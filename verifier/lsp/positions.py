@@ -38,7 +38,7 @@ class Lines:
     """One file's lines as a span was computed against, and how to count in them."""
 
     lines: Sequence[str]
-    bytes_: bool = False  # span columns count UTF-8 bytes
+    in_bytes: bool = False  # span columns count UTF-8 bytes (Python files)
     encoding: str = UTF16  # what the client counts
 
     def _line(self, number: int) -> str:
@@ -47,7 +47,7 @@ class Lines:
     def _index(self, text: str, column: int) -> int:
         """Return the character index of a 1-based span column in a line."""
         offset = max(column - 1, 0)
-        if self.bytes_:
+        if self.in_bytes:
             return len(text.encode("utf-8")[:offset].decode("utf-8", "ignore"))
         return min(offset, len(text))
 
@@ -80,6 +80,6 @@ class Lines:
             counted += _units(text[index], self.encoding)
             index += 1
         prefix = text[:index]
-        width = len(prefix.encode("utf-8")) if self.bytes_ else len(prefix)
+        width = len(prefix.encode("utf-8")) if self.in_bytes else len(prefix)
         return position.line + 1, width + 1
 

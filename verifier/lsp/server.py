@@ -116,17 +116,19 @@ class Session:
             return
         for problem in checked.problems:
             self.say(problem)
+        uris = {path: uri for path, (uri, _, _) in self.open_documents().items()}
         for path in self.results.update(checked):
-            self.publish(path, always=path in paths)
+            self.publish(path, uris.get(path) or uri_of(path), always=path in paths)
 
-    def publish(self, path: Path, *, always: bool = False) -> None:
-        """Send a file's diagnostics when they changed (or ``always``: a checked document)."""
+    def publish(self, path: Path, uri: str, *, always: bool = False) -> None:
+        """Send a file's diagnostics when they changed (or ``always``: a checked document).
+
+        ``uri``: the one the editor opened the file with, if it did (a symbolic link).
+        """
         diagnostics = [diagnostic(f, self.lines_of) for f in self.results.findings[path]]
         if not always and self.published.get(path, []) == diagnostics:
             return
         self.published[path] = diagnostics
-        opened = self.open_documents().get(path)
-        uri = opened[0] if opened is not None else uri_of(path)
         self.server.text_document_publish_diagnostics(
             types.PublishDiagnosticsParams(uri=uri, diagnostics=diagnostics))
 
