@@ -319,6 +319,34 @@ def test_definition_of_an_argument_and_of_an_include(client: Client, tmp_path: P
     assert client.at("textDocument/definition", robot, 0, 1) is None
 
 
+LOADS_PARAMETERS = """\
+<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker">
+    <param from="$(find-pkg-share demo_pkg)/config/params.yaml"/>
+  </node>
+</launch>
+"""
+
+
+def test_a_parameter_file_is_checked_through_the_launch_files_loading_it(
+        client: Client, tmp_path: Path) -> None:
+    launch = workspace(tmp_path, {"robot.launch.xml": LOADS_PARAMETERS})
+    parameters = launch.parent / "config" / "params.yaml"
+    parameters.parent.mkdir()
+    parameters.write_text("talker:\n  ros__parameters:\n    rate: 10\n")
+    client.open(parameters)
+    assert client.diagnostics(parameters) == []
+    client.change(parameters, "talkr:\n  ros__parameters:\n    rate: 10\n", 2)
+    stale = next(d for d in client.diagnostics(parameters, bool)
+                 if d["code"] == "LV402")
+    assert stale["range"]["start"] == {"line": 0, "character": 0}
+    robot = launch / "robot.launch.xml"
+    client.open(robot)
+    client.diagnostics(robot)
+    (loaded,) = client.at("textDocument/definition", robot, 2, 20)
+    assert loaded["uri"] == parameters.as_uri()
+
+
 PYTHON = """\
 from launch import LaunchDescription
 from launch.actions import DeclareLaunchArgument
