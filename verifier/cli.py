@@ -208,6 +208,15 @@ def build_parser() -> argparse.ArgumentParser:
     explain = commands.add_parser("explain", help="print a rule's documentation")
     explain.add_argument("rule", metavar="CODE|SLUG")
 
+    lsp = commands.add_parser(
+        "lsp", help="run the language server (for editors)",
+        description="Speak the Language Server Protocol on standard input and output: "
+        "diagnostics as you type, code actions for fixes, hover and go to definition. "
+        "Needs pygls: pip install 'launchverify[lsp]'.",
+    )
+    lsp.add_argument("--tcp", metavar="HOST:PORT",
+                     help="listen on a TCP port instead of standard input and output")
+
     completion = commands.add_parser(
         "completion", help="print a shell completion script",
         description="Print a completion script: eval \"$(launchverify completion bash)\" "
@@ -233,7 +242,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.print_help()
         return EXIT_ERROR
     handlers = {"check": _check, "report": _report, "graph": _graph, "rules": _rules,
-                "explain": _explain, "run": _run, "completion": _completion}
+                "explain": _explain, "run": _run, "completion": _completion, "lsp": _lsp}
     try:
         return handlers[args.command](args)
     except (UsageError, RegistryError, ConfigError, BaselineError) as error:
@@ -485,6 +494,12 @@ def _completion(args: argparse.Namespace) -> int:
     codes = [rule.code for rule in all_rules()]
     sys.stdout.write(completion_script(args.shell, build_parser(), codes))
     return EXIT_OK
+
+
+def _lsp(args: argparse.Namespace) -> int:
+    from launchverify.lsp import serve  # imports pygls only when the server starts
+
+    return serve(args.tcp)
 
 
 def _explain(args: argparse.Namespace) -> int:

@@ -46,10 +46,15 @@ class Suppression:
             not self.selectors or finding.code in self.codes)
 
 
+def comment_pattern(path: Path) -> re.Pattern[str]:
+    """Return the pattern of a suppression comment in this file's format (``codes`` group)."""
+    return _XML if path.suffix.lower() == ".xml" else _HASH
+
+
 def _scan_text(path: Path) -> tuple[tuple[int, int, str | None, bool, int], ...]:
     """Return (line, column, codes text, alone on its line, covered next line) per comment."""
     lines = source_lines(path)
-    pattern = _XML if path.suffix.lower() == ".xml" else _HASH
+    pattern = comment_pattern(path)
     found = []
     for index, text in enumerate(lines):
         if "launchverify" not in text:

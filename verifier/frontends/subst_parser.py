@@ -10,6 +10,7 @@ parse time, as in launch.
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -123,10 +124,36 @@ def unescape(text: str) -> str:
     return "".join(out)
 
 
+def variable_references(text: str) -> list[tuple[str, int, int]]:
+    """Return ``(name, start, end)`` of each ``$(var name ...)`` in text (0-based, end exclusive).
+
+    For pointing at references in a line as written (``if="$(var sim)"``), where an editor
+    asks what is under the cursor: the text around substitutions may be anything, and a
+    substitution launch would refuse (one being typed) is skipped, not an error. Names
+    that are themselves substitutions are left out.
+
+    Examples:
+        >>> variable_references('ns="$(var robot)/$(var arm)"')
+        [('robot', 4, 16), ('arm', 17, 27)]
+    """
+    found: set[tuple[str, int, int]] = set()
+    start = text.find("$(")
+    while start >= 0:
+        escapes = len(text[:start]) - len(text[:start].rstrip("\\"))
+        if escapes % 2 == 0:  # ``\$(`` is literal text
+            reader = _Reader(text, found)
+            reader.pos = start
+            with contextlib.suppress(SubstitutionSyntaxError):
+                reader.substitution(0, quote=None)
+        start = text.find("$(", start + 2)
+    return sorted(found, key=lambda ref: (ref[1], ref[2]))
+
+
 class _Reader:
-    def __init__(self, text: str) -> None:
+    def __init__(self, text: str, variables: set[tuple[str, int, int]] | None = None) -> None:
         self.text = text
         self.pos = 0
+        self.variables = variables  # where ``$(var name)`` is, when asked
 
     def done(self) -> bool:
         return self.pos >= len(self.text)
@@ -185,6 +212,8 @@ class _Reader:
             raise SubstitutionSyntaxError(
                 f"$({name}) expects {_arity_text(spec)} argument(s), got {len(args)}", start
             )
+        if self.variables is not None and name == "var" and isinstance(args[0], s.Text):
+            self.variables.add((args[0].text, start, self.pos))
         return spec.build(args)
 
     def argument(self, depth: int, quote: str | None) -> s.Sub:

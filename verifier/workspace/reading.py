@@ -13,7 +13,7 @@ import contextlib
 import os
 import re
 import stat
-from collections.abc import Iterator
+from collections.abc import Iterator, Mapping
 from contextvars import ContextVar
 from pathlib import Path
 
@@ -36,6 +36,24 @@ _UNSAVED: dict[str, bytes] = {}
 def set_unsaved(path: Path, data: bytes) -> None:
     """Make every reader see ``data`` as the content of ``path`` (an editor's buffer)."""
     _UNSAVED[os.path.realpath(path)] = data
+
+
+@contextlib.contextmanager
+def unsaved_buffers(contents: Mapping[Path, bytes]) -> Iterator[None]:
+    """Let every reader see these buffers in place of their files inside the block only.
+
+    The language server checks what its editor has open, then forgets it: a buffer closed
+    or saved since must not stand for its file in the next check.
+    """
+    saved = dict(_UNSAVED)
+    _UNSAVED.clear()
+    for path, data in contents.items():
+        set_unsaved(path, data)
+    try:
+        yield
+    finally:
+        _UNSAVED.clear()
+        _UNSAVED.update(saved)
 
 
 def unsaved(path: Path) -> bytes | None:
