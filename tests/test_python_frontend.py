@@ -306,3 +306,40 @@ def generate_launch_description():
 """
     assert [code for code, _, _ in findings(write(tmp_path, "override.launch.py", body))
             ] == ["LV101"]
+
+
+def test_a_temporary_file_passed_to_an_include_is_read_as_unknown(tmp_path: Path) -> None:
+    # rtabmap's zed example writes an override into a NamedTemporaryFile and passes its
+    # path to the camera's launch file, whose code opens it: that evaluation has its own
+    # scratch folder, so the file is an input there (no message naming a random path)
+    camera = """
+def setup(context):
+    path = LaunchConfiguration('override').perform(context)
+    with open(path) as override:
+        override.read()
+    return [Node(package='demo_nodes_cpp', executable='talker', name='camera'),
+            Node(package='demo_nodes_cpp', executable='talker', name='camera')]
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument('override'),
+                              OpaqueFunction(function=setup)])
+"""
+    write(tmp_path, "camera.launch.py", camera)
+    body = """
+import tempfile
+from launch.actions import IncludeLaunchDescription
+from launch.launch_description_sources import PythonLaunchDescriptionSource
+
+def setup(context):
+    with tempfile.NamedTemporaryFile(mode='w+t', delete=False) as override:
+        override.write('/**:\\n  ros__parameters:\\n    rate: 1\\n')
+    return [IncludeLaunchDescription(
+        PythonLaunchDescriptionSource(os.path.join(os.path.dirname(__file__),
+                                                   'camera.launch.py')),
+        launch_arguments={'override': override.name}.items())]
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=setup)])
+"""
+    found = findings(write(tmp_path, "example.launch.py", body))
+    assert [code for code, _, _ in found] == ["LV101"], found

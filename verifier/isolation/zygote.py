@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, NoReturn
 
+from launchverify.frontends.python.sandbox import SCRATCH_PREFIX
 from launchverify.isolation.confine import Confinement
 from launchverify.isolation.worker import Setting, serve
 
@@ -220,7 +221,7 @@ class _Server:
 
     def spawn(self, number: int, request: dict[str, Any], fd: int, wake: tuple[int, ...]) -> None:
         try:
-            scratch = tempfile.mkdtemp(prefix="launchverify-", dir=self.temporary)
+            scratch = tempfile.mkdtemp(prefix=SCRATCH_PREFIX, dir=self.temporary)
         except OSError:
             scratch = ""
         try:

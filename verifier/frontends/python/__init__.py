@@ -12,6 +12,7 @@ import builtins
 import errno
 import inspect
 import io
+import re
 import sys
 import traceback
 from collections.abc import Iterator, Mapping
@@ -25,8 +26,10 @@ from launchverify.frontends.python.convert import PythonConverter
 from launchverify.frontends.python.importer import Opaque, import_context
 from launchverify.frontends.python.mentions import mentioned_strings
 from launchverify.frontends.python.sandbox import (
+    SCRATCH_NAME,
     SandboxViolation,
     TimeLimitExceeded,
+    in_other_scratch,
     in_scratch,
     sandbox,
     take_refusals,
@@ -307,8 +310,9 @@ class _Session:
         unknown = has_placeholder(name) or isinstance(file, Opaque) or (
             path.is_absolute() and not Path(file).exists()
             and not resolved(path).is_relative_to(self.frontend.workspace))
-        if unknown and reading:
-            # A file of the robot (a package not in the workspace): an input, not an error.
+        if reading and (unknown or in_other_scratch(name)):
+            # A file of the robot (a package not in the workspace), or one another launch
+            # file's code writes at run time: an input, not an error.
             return _unknown_content(path, mode)
         try:
             return builtins.open(file, mode, *args, **kwargs)  # noqa: PTH123 (user code's open)
@@ -432,7 +436,12 @@ def _shown(text: str) -> str:
 
     spelled = {"env": "$(env {})", "arg": "$(var {})", "pkg": "$(find-pkg-share {})",
                "prefix": "$(find-pkg-prefix {})", "opaque": "<{}>"}
-    return PATTERN.sub(lambda m: spelled[m.group(1)].format(m.group(2)), text)[:200]
+    text = PATTERN.sub(lambda m: spelled[m.group(1)].format(m.group(2)), text)
+    return _SCRATCH_PATH.sub("<a temporary file>", text)[:200]
+
+
+# A path in an evaluation's scratch folder: random, so never part of a message.
+_SCRATCH_PATH = re.compile(r"[^\s'\"]*/" + SCRATCH_NAME.pattern + r"(?:/[^\s'\"]*)?")
 
 
 def _required_parameters(function: Any) -> list[str]:

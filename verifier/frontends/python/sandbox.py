@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import io
 import os
+import re
 import shutil
 import signal
 import sys
@@ -55,6 +56,9 @@ _STDLIB = os.path.dirname(os.__file__)  # noqa: PTH120
 _WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_APPEND | os.O_TRUNC
 TIME_LIMIT = 10.0
 MEMORY_LIMIT = 2 * 1024 ** 3  # bytes of address space beyond what is used already
+
+SCRATCH_PREFIX = "launchverify-"  # the evaluations' scratch folders (mkdtemp adds 8 chars)
+SCRATCH_NAME = re.compile(re.escape(SCRATCH_PREFIX) + r"[a-z0-9_]{8}")
 
 
 class SandboxViolation(PermissionError):
@@ -131,6 +135,19 @@ def armed() -> bool:
 def in_scratch(path: Any) -> bool:
     """Return whether a path is in the evaluation's private temporary folder."""
     return _in_scratch(path)
+
+
+def in_other_scratch(path: Any) -> bool:
+    """Return whether a path names a file in another evaluation's scratch folder.
+
+    A temporary file that one launch file's code wrote (a parameter override passed to an
+    include) is read by another evaluation, whose scratch folder differs and which never
+    sees the file: at run time it exists, here its content is unknown.
+    """
+    if not isinstance(path, (str, bytes, os.PathLike)) or _in_scratch(path):
+        return False
+    folder = os.path.basename(os.path.dirname(os.path.abspath(os.fsdecode(path))))  # noqa: PTH100, PTH119, PTH120
+    return bool(SCRATCH_NAME.fullmatch(folder))
 
 
 def _in_scratch(path: Any) -> bool:
@@ -253,7 +270,7 @@ def sandbox(seconds: float | None = None) -> Iterator[None]:
     if not nested:
         os.environ = SymbolicEnviron()  # type: ignore[assignment]  # noqa: B003
         _state.depth -= 1  # our own folder is made outside the sandbox
-        scratch = tempfile.mkdtemp(prefix="launchverify-", dir=saved_tempdir)
+        scratch = tempfile.mkdtemp(prefix=SCRATCH_PREFIX, dir=saved_tempdir)
         _state.depth += 1
         _scratch.append(scratch)
         tempfile.tempdir = scratch
