@@ -38,6 +38,11 @@ def set_unsaved(path: Path, data: bytes) -> None:
     _UNSAVED[os.path.realpath(path)] = data
 
 
+def forget_unsaved(path: Path) -> None:
+    """Let readers see ``path``'s own content again."""
+    _UNSAVED.pop(os.path.realpath(path), None)
+
+
 def unsaved(path: Path) -> bytes | None:
     """Return the unsaved content standing for a file, if any."""
     if not _UNSAVED:
