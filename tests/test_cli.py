@@ -43,11 +43,12 @@ def test_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
     finding = document["findings"][0]
     assert set(finding) == {"code", "slug", "severity", "message", "file", "line", "column",
                             "end_line", "end_column", "related", "include_chain", "witness",
-                            "trace"}
+                            "trace", "fix"}
     assert finding["code"] == "LV101" and finding["slug"] == "duplicate-node-name"
     assert finding["file"] == str(DUPLICATE)
     assert finding["line"] == 4 and finding["column"] == 3
     assert finding["related"][0]["line"] == 3
+    assert finding["fix"] is None
     assert code == 1
 
 

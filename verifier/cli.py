@@ -32,10 +32,12 @@ from launchverify.engine import (
 )
 from launchverify.findings.baseline import BaselineError, write_baseline
 from launchverify.findings.cache import ResultCache, default_cache_dir, disabled_by_environment
+from launchverify.findings.fixes import Outcome, fix_all, hidden, unified_diff
 from launchverify.graph import LaunchGraph
 from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.rule import Rule, Severity
+from launchverify.workspace import reading
 from launchverify.workspace.includers import Includers
 from launchverify.workspace.paths import display_path
 
@@ -153,6 +155,15 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--stdin-filename", type=Path, metavar="PATH",
                        help="with the path '-': check standard input as the content of "
                        "PATH (an editor's unsaved buffer; PATH must exist)")
+    check.add_argument("--fix", action="store_true",
+                       help="apply the safe fixes to the files, check again until none is "
+                       "left, and report what remains (with '-': print the fixed buffer)")
+    check.add_argument("--unsafe-fixes", action="store_true",
+                       help="with --fix or --diff, apply the unsafe fixes too (a guess among "
+                       "several candidates, a comment's free text removed)")
+    check.add_argument("--diff", action="store_true",
+                       help="print what --fix would change as a unified diff and write "
+                       "nothing; exit 1 when there is something to fix")
     check.add_argument("--no-cache", action="store_true",
                        help="check everything again: neither read nor write the cache of "
                        "results (also LAUNCHVERIFY_NO_CACHE=1)")
@@ -339,9 +350,16 @@ def _writable(*paths: Path | None) -> None:
 
 def _check(args: argparse.Namespace) -> int:
     _writable(args.output, args.write_baseline, args.xunit_file)
+    _fix_usage(args)
     buffered = _read_stdin(args)
     options, config = check_options(args, progress=not args.quiet and sys.stderr.isatty())
     report = run_check_cached(options, None if buffered else _result_cache(args))
+    if args.diff:
+        return _diff(args, options, report)
+    report_out = sys.stdout
+    if args.fix:
+        report = _fix(args, options, report, args.stdin_filename if buffered else None)
+        report_out = sys.stderr if buffered else sys.stdout  # stdout has the fixed buffer
     if args.write_baseline is not None:
         write_baseline(args.write_baseline, report.findings)
     if args.xunit_file is not None:
@@ -357,12 +375,91 @@ def _check(args: argparse.Namespace) -> int:
             color = {"auto": None, "always": True, "never": False}[args.color]
             if color is None and os.environ.get("NO_COLOR"):  # no-color.org: plain text
                 color = False
-            _render(args, report, sys.stdout, color=color)
+            _render(args, report, report_out, color=color)
     sys.stdout.flush()
     _say_protections(report, args.verbose)
     if args.exit_zero:
         return EXIT_OK
     return EXIT_FINDINGS if fails(report, args, config) else EXIT_OK
+
+
+def _fix_usage(args: argparse.Namespace) -> None:
+    """Refuse combinations of the fix options that cannot mean anything."""
+    if args.diff and (args.write_baseline or args.xunit_file):
+        raise UsageError("--diff writes nothing: it does not go with --write-baseline or "
+                         "--xunit-file")
+
+
+def _fixed(report: Report, options: CheckOptions, unsafe: bool,
+           stdin: Path | None = None) -> Outcome:
+    """Apply the fixes in memory, checking again after each pass; say what was refused.
+
+    With standard input, only the buffer is fixed (the files on disk are not ours to
+    change then).
+    """
+    only = None if stdin is None else canonical(stdin)
+    outcome = fix_all(report, lambda: run_check(options), unsafe=unsafe,
+                      editable=None if only is None else lambda path: path == only)
+    for note in outcome.notes:
+        print(f"launchverify: note: {note}", file=sys.stderr)
+    return outcome
+
+
+def _diff(args: argparse.Namespace, options: CheckOptions, report: Report) -> int:
+    """Print what ``--fix`` would change as a unified diff; write nothing.
+
+    Exit 1 when there is something to fix (as ruff's ``--diff``), else 0.
+    """
+    outcome = _fixed(report, options, args.unsafe_fixes, args.stdin_filename)
+    text = unified_diff(outcome, report.display_path)
+    if args.output is not None:
+        args.output.write_text(text, encoding="utf-8")
+    else:
+        with _output_may_close():
+            sys.stdout.write(text)
+    if not args.quiet:
+        count = outcome.count
+        print(f"Would fix {count} finding{'s' if count != 1 else ''}"
+              f"{_hidden_note(outcome.report, args.unsafe_fixes)}.", file=sys.stderr)
+    return EXIT_FINDINGS if outcome.fixed and not args.exit_zero else EXIT_OK
+
+
+def _fix(args: argparse.Namespace, options: CheckOptions, report: Report,
+         stdin: Path | None) -> Report:
+    """Apply the fixes and return the check of the fixed files.
+
+    The files are written; for standard input, the fixed buffer goes to standard output.
+    """
+    outcome = _fixed(report, options, args.unsafe_fixes, stdin)
+    if stdin is not None:
+        path = canonical(stdin)
+        data = outcome.fixed.get(path, reading.unsaved(path))
+        assert data is not None  # the buffer read for '-'
+        reading.set_unsaved(path, data)  # what the findings now point into
+        sys.stdout.buffer.write(data)
+        sys.stdout.flush()
+    else:
+        for path, data in sorted(outcome.fixed.items()):
+            try:
+                path.write_bytes(data)
+            except OSError as error:
+                raise UsageError(f"cannot write {display_path(path)}: "
+                                 f"{error.strerror or error}") from None
+    if not args.quiet:
+        remaining = len(outcome.report.findings)
+        print(f"Fixed {outcome.count} finding{'s' if outcome.count != 1 else ''} "
+              f"({remaining} remaining){_hidden_note(outcome.report, args.unsafe_fixes)}.",
+              file=sys.stderr)
+    return outcome.report
+
+
+def _hidden_note(report: Report, unsafe: bool) -> str:
+    """Return ``"; 2 hidden fixes can be enabled with --unsafe-fixes"`` when there are."""
+    count = hidden(report.findings, unsafe)
+    if not count:
+        return ""
+    return (f"; {count} hidden fix{'es' if count != 1 else ''} can be enabled with "
+            "--unsafe-fixes")
 
 
 def _result_cache(args: argparse.Namespace) -> ResultCache | None:
@@ -399,7 +496,8 @@ def _render(args: argparse.Namespace, report: Report, out: TextIO,
     elif args.format == "text":
         from launchverify.render.text import render_text
 
-        render_text(report, out, color=color, explain=args.explain, quiet=args.quiet)
+        render_text(report, out, color=color, explain=args.explain, quiet=args.quiet,
+                    unsafe_fixes=args.unsafe_fixes)
     elif args.format == "json":
         from launchverify.render.json_out import render_json
 

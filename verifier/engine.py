@@ -22,6 +22,7 @@ from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
 from launchverify.findings.baseline import apply_baseline
 from launchverify.findings.cache import Entry, ResultCache, key_of, options_text, stamps_of
+from launchverify.findings.fixes import within
 from launchverify.findings.suppressions import apply_suppressions
 from launchverify.frontends import launch_format
 from launchverify.graph import LaunchGraph
@@ -245,7 +246,7 @@ def run_check(options: CheckOptions) -> Report:
                              RuleContext(packages=index, interfaces=Interfaces(graphs)))
     loaded = {path for g in graphs for path in g.files}
     findings, suppressed = _suppress(findings, loaded, rules)
-    findings = _configured(findings, tree, selection)
+    findings = within(_configured(findings, tree, selection), workspace)  # fixes: ours only
     baselined = 0
     if options.baseline is not None:
         findings, baselined = apply_baseline(options.baseline, findings)

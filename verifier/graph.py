@@ -82,6 +82,7 @@ class NodeRecord:
     deferred: bool = False
     execution: int | None = None  # index in ``LaunchGraph.executed`` of what started it
     autostart: Sub | None = None  # lifecycle nodes: configure and activate at start
+    executable_written: Span | None = None  # where the executable is written verbatim
 
     def executable_label(self) -> str:
         """Return ``package/executable`` as written, for messages."""
@@ -156,6 +157,7 @@ class ConfigRead:
     origin: Origin
     found: bool
     has_default: bool
+    written: Span | None = None  # where the name is written verbatim (for a fix)
 
 
 @dataclass(frozen=True, slots=True)
@@ -166,6 +168,7 @@ class PackageRef:
     origin: Origin
     found: bool
     what: str
+    written: Span | None = None  # where the name is written verbatim (for a fix)
 
 
 @dataclass(frozen=True, slots=True)
@@ -177,6 +180,7 @@ class FileRef:
     exists: bool
     what: str
     note: str = ""
+    written: Span | None = None  # where the file's name is written verbatim (for a fix)
 
 
 @dataclass(frozen=True, slots=True)

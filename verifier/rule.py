@@ -71,6 +71,29 @@ class Fix:
     edits: tuple[Edit, ...]
     applicability: Applicability = Applicability.SAFE
 
+
+def rename(written: Span | None, old: str, new: str, *, unique: bool) -> Fix | None:
+    """Return the fix that replaces ``old``, written verbatim at ``written``, with ``new``.
+
+    Safe when ``new`` is the only candidate (``unique``), else unsafe. ``None`` when the
+    place is unknown or is not exactly ``old``'s width on one line: a fix replaces exactly
+    the text it names, or is not offered.
+
+    Examples:
+        >>> from pathlib import Path
+        >>> fix = rename(Span(Path("a.xml"), 3, 12, 3, 17), "talkr", "talker", unique=True)
+        >>> fix.message, fix.applicability.value, fix.edits[0].content
+        ("replace 'talkr' with 'talker'", 'safe', 'talker')
+        >>> rename(Span(Path("a.xml"), 3, 12), "talkr", "talker", unique=True) is None
+        True
+    """
+    if (written is None or written.end_line != written.line or written.end_column is None
+            or written.end_column - written.column != len(old) or not old or old == new):
+        return None
+    return Fix(f"replace {old!r} with {new!r}", (Edit(written, new),),
+               Applicability.SAFE if unique else Applicability.UNSAFE)
+
+
 @dataclass(frozen=True, slots=True)
 class Finding:
     """One reported problem, with everything reporters need."""

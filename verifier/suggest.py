@@ -15,8 +15,14 @@ def did_you_mean(name: str, candidates: Iterable[str]) -> str:
         >>> did_you_mean("use_sim_tme", ["use_sim_time", "robot"])
         " (did you mean 'use_sim_time'?)"
     """
+    match = closest(name, candidates)
+    return f" (did you mean {match!r}?)" if match else ""
+
+
+def closest(name: str, candidates: Iterable[str]) -> str | None:
+    """Return the candidate ``did_you_mean`` names, if any (difflib's closest, 0.75 alike)."""
     matches = difflib.get_close_matches(name, sorted(set(candidates)), n=1, cutoff=0.75)
-    return f" (did you mean {matches[0]!r}?)" if matches else ""
+    return matches[0] if matches else None
 
 
 def edit_distance(first: str, second: str, limit: int = 3) -> int:
@@ -59,20 +65,63 @@ def typo_of(name: str, candidates: Iterable[str]) -> str | None:
         >>> typo_of("nav2_bringupp", ["nav2_bringup", "nav2_common"])
         'nav2_bringup'
     """
+    found = typos(name, candidates)
+    return found[0] if found else None
+
+
+def typos(name: str, candidates: Iterable[str]) -> list[str]:
+    """Return every candidate ``name`` may misspell (one or two edits), likeliest first.
+
+    A fix that renames ``name`` is safe only when there is exactly one.
+
+    Examples:
+        >>> typos("robot_nme", ["robot_name", "robot_ns", "robot_nm", "robot"])
+        ['robot_name', 'robot_nm', 'robot_ns']
+    """
     pool = candidates if isinstance(candidates, frozenset) else frozenset(candidates)
     if name in pool:
-        return None
+        return []
     limit = 1 if len(name) <= 6 else 2
     grams = _bigrams(name)
     needed = len(grams) - 2 * limit  # each edit breaks at most two bigrams
-    best: tuple[int, str] | None = None
+    found: list[tuple[int, str]] = []
     for candidate, candidate_grams in _bigram_index(pool):
         if abs(len(candidate) - len(name)) > limit or len(grams & candidate_grams) < needed:
             continue
         distance = edit_distance(name, candidate, limit)
-        if distance <= limit and (best is None or (distance, candidate) < best):
-            best = (distance, candidate)
-    return None if best is None else best[1]
+        if distance <= limit:
+            found.append((distance, candidate))
+    return [candidate for _, candidate in sorted(found)]
+
+
+def file_name_typos(name: str, names: Iterable[str]) -> list[str]:
+    """Return the file names ``name`` may misspell, likeliest first.
+
+    The part before the first dot must be one or two edits away with the same extensions
+    (or the extensions so, with the same stem); stems under three characters match
+    nothing (``a.launch.py`` is not a typo of ``b.launch.py``).
+
+    Examples:
+        >>> file_name_typos("param.yaml", ["params.yaml", "param.yml", "params.xml", "x.yaml"])
+        ['params.yaml']
+        >>> file_name_typos("params.yml", ["params.yaml", "params.xml"])
+        ['params.xml', 'params.yaml']
+    """
+    stem, _, suffix = name.partition(".")
+    if len(stem) < 3:
+        return []
+    same_suffix: dict[str, str] = {}
+    same_stem: dict[str, str] = {}
+    for candidate in names:
+        other_stem, _, other_suffix = candidate.partition(".")
+        if other_suffix == suffix:
+            same_suffix[other_stem] = candidate
+        elif other_stem == stem and other_suffix:
+            same_stem[other_suffix] = candidate
+    found = [same_suffix[s] for s in typos(stem, same_suffix)]
+    if found or not suffix:
+        return found
+    return [same_stem[s] for s in typos(suffix, same_stem)]
 
 
 SUGGESTION_THRESHOLD = 0.75  # below this, a suggestion would more likely mislead than help

@@ -109,6 +109,19 @@ class Converter(Protocol):
     def keyword_values(self, call: Span) -> dict[str, Span]:
         """Return where the value of each keyword argument of the call is written."""
 
+    def written(self, call: Span, value: Any, *, position: int | None = None,
+                keyword: str | None = None, item: int | None = None,
+                items: int | None = None) -> s.Sub:
+        """Return ``sub(value)``, located when the call writes it as a plain string literal.
+
+        The argument is the call's ``position``-th or its ``keyword=`` one (``item``: an
+        item of the list of ``items`` written there). A located literal (``Text.where``)
+        can be fixed.
+        """
+
+    def written_key(self, call: Span, keyword: str, key: Any) -> s.Sub:
+        """Return ``sub(key)`` for a key of the call's ``keyword=`` dict, located if literal."""
+
     def unmodeled(self, what: str, span: Span) -> None:
         """Record that something was not modelled (LV003)."""
 

@@ -338,7 +338,8 @@ class IncludeLaunchDescription(Action):
     def to_ir(self, cv: Converter) -> a.Action:
         keys = cv.keyword_keys(self._span, "launch_arguments")
         arguments = tuple(
-            a.IncludeArg(name=cv.sub(name), value=cv.sub(value),
+            a.IncludeArg(name=cv.written_key(self._span, "launch_arguments", name),
+                         value=cv.sub(value),
                          span=keys.get(name, self._span) if isinstance(name, str) else self._span)
             for name, value in self._arguments
         )

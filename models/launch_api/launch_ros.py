@@ -155,7 +155,8 @@ class ComposableNode(Modelled):
                 extra.append(a.ParamItem(name=cv.sub(key), value=cv.param_value(value),
                                          span=self._span))
         return a.ComposableNode(
-            package=cv.sub(self._package), plugin=cv.sub(self._plugin), span=self._span,
+            package=cv.written(self._span, self._package, position=0, keyword="package"),
+            plugin=cv.sub(self._plugin), span=self._span,
             name=cv.opt_sub(self._name), namespace=cv.opt_sub(self._namespace),
             parameters=cv.parameters(self._parameters, self._span),
             remappings=cv.remaps(self._remappings, self._span),
@@ -242,8 +243,9 @@ class Node(ExecuteProcess):
         """Return what every Node-like IR action takes."""
         return {
             **cv_common(self, cv),
-            "executable": cv.sub(self.node_executable),
-            "package": cv.opt_sub(self.node_package),
+            "executable": cv.written(self._span, self.node_executable, keyword="executable"),
+            "package": (None if self.node_package is None
+                        else cv.written(self._span, self.node_package, keyword="package")),
             "name": cv.opt_sub(self._node_name),
             "namespace": cv.opt_sub(self._node_namespace),
             "exec_name": cv.opt_sub(self._exec_name),
@@ -498,7 +500,8 @@ class FindPackagePrefix(_FindPackageBase):
         return get_package_prefix(package_name)
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.FindPackagePrefix(cv.sub(self._package))
+        return s.FindPackagePrefix(cv.written(self._span, self._package, position=0,
+                                              keyword="package"))
 
 
 class FindPackageShare(_FindPackageBase):
@@ -511,7 +514,8 @@ class FindPackageShare(_FindPackageBase):
         return get_package_share_directory(package_name)
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.FindPackageShare(cv.sub(self._package))
+        return s.FindPackageShare(cv.written(self._span, self._package, position=0,
+                                             keyword="package"))
 
 
 class FindPackage(FindPackagePrefix):

@@ -65,7 +65,8 @@ class LaunchConfiguration(Substitution):
 
     def to_sub(self, cv: Converter) -> s.Sub:
         default = None if self._default is None else cv.sub(_default_items(self._default))
-        return s.LaunchConfig(cv.sub(self._variable_name), default, where=self._span)
+        name = cv.written(self._span, self._variable_name, position=0, keyword="variable_name")
+        return s.LaunchConfig(name, default, where=self._span)
 
 
 def _default_items(default: Any) -> list[Any]:
@@ -189,7 +190,11 @@ class PathJoinSubstitution(Substitution):
         return f"PathJoinSubstitution('{parts}')"
 
     def to_sub(self, cv: Converter) -> s.Sub:
-        return s.PathJoin(tuple(cv.sub(part) for part in self._parts))
+        last = len(self._parts) - 1  # a file's name, often: located for fixes
+        return s.PathJoin(tuple(
+            cv.written(self._span, part, position=0, keyword="substitutions", item=last,
+                       items=len(self._parts))
+            if index == last else cv.sub(part) for index, part in enumerate(self._parts)))
 
     def __truediv__(self, other: Any) -> PathJoinSubstitution:
         return PathJoinSubstitution([*self._parts, other])
@@ -545,7 +550,9 @@ class LaunchConfigurationEquals(Condition):
         return Condition.evaluate(self, context)
 
     def to_condition(self, cv: Converter) -> c.Condition:
-        return c.ConfigEquals(cv.sub(self._name), cv.opt_sub(self._expected_value), self.negate)
+        name = cv.written(self._span, self._name, position=0,
+                          keyword="launch_configuration_name")
+        return c.ConfigEquals(name, cv.opt_sub(self._expected_value), self.negate)
 
 
 class LaunchConfigurationNotEquals(LaunchConfigurationEquals):

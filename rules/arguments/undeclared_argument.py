@@ -5,8 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
-from launchverify.rule import Finding, Rule, RuleContext, Severity
-from launchverify.suggest import typo_of
+from launchverify.rule import Finding, Rule, RuleContext, Severity, rename
+from launchverify.suggest import typos
 
 
 class UndeclaredArgument(Rule):
@@ -33,6 +33,9 @@ class UndeclaredArgument(Rule):
     ## Fix
     Correct the name, declare the argument before its first use, or give the read a
     default: `$(var use_sim false)`.
+
+    Autofix: renames the read to the declared name it misspells, where the name is written
+    as plain text; safe when exactly one declared name is that close, unsafe otherwise.
     """
 
     code = "LV201"
@@ -53,7 +56,8 @@ class UndeclaredArgument(Rule):
             if key in seen or graph.runs(read.origin) is False:
                 continue
             seen.add(key)
-            typo = typo_of(read.name, known)
+            close = typos(read.name, known)
+            typo = close[0] if close else None
             # read before its declaration in the same file, or out of that declaration's scope
             declared = (read.name, read.origin.span.file) in declared_in
             if typo is None and not declared and not alone:
@@ -61,5 +65,7 @@ class UndeclaredArgument(Rule):
             hint = f" (did you mean {typo!r}?)" if typo else (
                 " here (it is declared elsewhere, not in scope before this read)"
                 if declared else "")
-            yield self.finding(read.origin, name=read.name, hint=hint)
+            fix = (None if typo is None
+                   else rename(read.written, read.name, typo, unique=len(close) == 1))
+            yield self.finding(read.origin, name=read.name, hint=hint, fix=fix)
 

@@ -12,9 +12,9 @@ from launchverify.ir.subst import Sub
 from launchverify.ir.walk import configuration_names, iter_subs
 from launchverify.models.parameter_values import typed_parameter
 from launchverify.parameters import effective_parameters
-from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.rule import Finding, Fix, Rule, RuleContext, Severity, rename
 from launchverify.span import Span
-from launchverify.suggest import did_you_mean
+from launchverify.suggest import closest, did_you_mean, typos
 
 
 class UnknownIncludeArgument(Rule):
@@ -39,6 +39,10 @@ class UnknownIncludeArgument(Rule):
 
     ## Fix
     Use the name the included file declares, or declare the argument there.
+
+    Autofix: renames the argument to the declared name it most likely misspells, where
+    the name is written as plain text; safe when that is its only close name (one or two
+    edits away), unsafe otherwise.
 
     An argument that later arguments of the same include read (`$(var common_dir)/a.yaml`)
     is a helper the includer computes with, and is not reported. An argument named like a
@@ -74,8 +78,9 @@ class UnknownIncludeArgument(Rule):
                 same = applied_inside(graph, include, name, value)
                 hint = (self.applied.format(name=name, value=same) if same is not None
                         else did_you_mean(name, known))
+                fix = None if same is not None else _fix(include, name, span, known)
                 finding = self.finding(origin, name=name, target=include.target.name,
-                                       hint=hint)
+                                       hint=hint, fix=fix)
                 yield (finding if same is None
                        else dataclasses.replace(finding, severity=Severity.INFO))
 
@@ -88,6 +93,18 @@ class UnknownIncludeArgument(Rule):
             yield self.finding(Span.of_file(graph.root), name=f"{name}:={graph.pinned[name]}",
                                target=graph.root.name + " (given on the command line)",
                                hint=did_you_mean(name, known))
+
+
+def _fix(include: IncludeRecord, name: str, span: Span, known: set[str]) -> Fix | None:
+    """Return the rename of an argument to the declared name the hint suggests."""
+    meant = closest(name, known)
+    if meant is None:
+        return None
+    for argument in include.action.arguments:
+        written = argument.name
+        if argument.span == span and isinstance(written, s.Text) and written.text == name:
+            return rename(written.where, name, meant, unique=typos(name, known) == [meant])
+    return None
 
 
 def applied_inside(graph: LaunchGraph, include: IncludeRecord, name: str,

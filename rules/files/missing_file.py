@@ -3,9 +3,15 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+from pathlib import Path
 
-from launchverify.graph import LaunchGraph
-from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.evaluate.values import text_of
+from launchverify.graph import IncludeRecord, LaunchGraph
+from launchverify.ir.subst import tail_at
+from launchverify.rule import Finding, Fix, Rule, RuleContext, Severity, rename
+from launchverify.span import Span
+from launchverify.suggest import file_name_typos
+from launchverify.workspace.packages import PackageIndex
 from launchverify.workspace.paths import display_path
 
 
@@ -31,6 +37,10 @@ class MissingFile(Rule):
     ## Fix
     Correct the path, or install the file (check `install(DIRECTORY ...)` or
     `data_files`). Build relative paths from `$(dirname)` or `$(find-pkg-share pkg)`.
+
+    Autofix: when a file beside where the path points has a name one or two edits away
+    (same extension), and the file's name is written as plain text at the end of the
+    path, renames it there: safe when exactly one file is that close, unsafe otherwise.
     """
 
     code = "LV302"
@@ -45,7 +55,8 @@ class MissingFile(Rule):
             written = _written(include.action.path.describe(), graph.display(include.location))
             if include.status == "missing":
                 yield self.finding(include.origin, what="included launch file",
-                                   written=written, note=_note(include.note))
+                                   written=written, note=_note(include.note),
+                                   fix=_include_fix(graph, include, ctx.packages))
             elif include.relative:
                 yield self.finding(include.origin, what="included launch file",
                                    written=written, note=_note(include.note) + " where ros2 "
@@ -57,7 +68,27 @@ class MissingFile(Rule):
                 continue
             seen.add(key)
             yield self.finding(ref.origin, what=ref.what, written=_written(None, ref.location),
-                               note=_note(ref.note))
+                               note=_note(ref.note),
+                               fix=None if ref.note else _fix(ref.written, ref.location,
+                                                              ctx.packages))
+
+
+def _include_fix(graph: LaunchGraph, include: IncludeRecord,
+                 packages: PackageIndex | None) -> Fix | None:
+    """Return the rename of a missing include's file name to a file beside it, if one."""
+    location = text_of(include.location) or graph.base(include.location)
+    if include.note or location is None:
+        return None
+    return _fix(tail_at(include.action.path, Path(location).name), location, packages)
+
+
+def _fix(written: Span | None, location: str, packages: PackageIndex | None) -> Fix | None:
+    """Return the rename of a missing file's name, written at ``written``, to a neighbour's."""
+    path = Path(location)
+    if written is None or packages is None or not path.is_absolute():
+        return None
+    close = file_name_typos(path.name, packages.neighbours(path))
+    return rename(written, path.name, close[0], unique=len(close) == 1) if close else None
 
 
 def _written(expression: str | None, resolved: str | None) -> str:

@@ -6,7 +6,8 @@ import difflib
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
-from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.rule import Finding, Rule, RuleContext, Severity, rename
+from launchverify.suggest import typos
 from launchverify.workspace.package_executables import executables
 
 
@@ -34,6 +35,10 @@ class UnknownExecutable(Rule):
 
     ## Fix
     Use the executable's installed name (`ros2 pkg executables <package>` lists them).
+
+    Autofix: renames the executable to the one the message suggests, where it is written
+    as plain text; safe when that is its only close name (one or two edits away), unsafe
+    otherwise.
     """
 
     code = "LV304"
@@ -61,5 +66,8 @@ class UnknownExecutable(Rule):
             hint = f" (did you mean {close[0]!r}?)" if close else (
                 f"; it installs {', '.join(sorted(provided.names)[:6])}"
                 if provided.names else "")
+            fix = None if not close else rename(
+                node.executable_written, executable, close[0],
+                unique=typos(executable, provided.names) == close)
             yield self.finding(node.origin, package=package_name, executable=executable,
-                               hint=hint)
+                               hint=hint, fix=fix)

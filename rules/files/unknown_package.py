@@ -7,8 +7,8 @@ from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph, PackageRef
 from launchverify.models.known_packages import is_released, released_packages
-from launchverify.rule import Finding, Rule, RuleContext, Severity
-from launchverify.suggest import closest_package, typo_of
+from launchverify.rule import Finding, Rule, RuleContext, Severity, rename
+from launchverify.suggest import closest_package, typos
 
 
 class UnknownPackage(Rule):
@@ -59,6 +59,10 @@ class UnknownPackage(Rule):
     ## Fix
     Correct the package name, or add the package to the workspace. A package installed
     apart from the workspace is found through `AMENT_PREFIX_PATH` or `package-paths`.
+
+    Autofix: renames the package to the one the message names, where the name is written
+    as plain text; safe for a typo with exactly one candidate, unsafe for a typo with
+    several or for a package that is only named alike.
     """
 
     code = "LV303"
@@ -69,7 +73,7 @@ class UnknownPackage(Rule):
 
     def __init__(self) -> None:
         # one check's suggestions: every graph asks again, and installed packages are many
-        self._suggested: dict[str, tuple[str | None, str | None]] = {}
+        self._suggested: dict[str, tuple[str | None, str | None, bool]] = {}
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         installed = ctx.packages is not None and ctx.packages.has_install
@@ -95,7 +99,7 @@ class UnknownPackage(Rule):
         """Report a package found nowhere: an error when surely wrong, else a warning."""
         if not installed and is_released(ref.name):
             return None  # a dependency to install, not a mistake
-        typo, hint = self._suggestions(ref.name, local)
+        typo, hint, unique = self._suggestions(ref.name, local)
         if not installed and typo is None and not local:
             return None  # loose launch files: no workspace to miss it from
         if (not installed and typo is None and ctx.packages is not None
@@ -103,8 +107,10 @@ class UnknownPackage(Rule):
             return None  # a declared dependency from elsewhere (.repos): not here yet
         where = ("neither in the workspace nor installed" if installed
                  else "not in the workspace and not a released ROS 2 package")
+        fix = None if hint is None else rename(ref.written, ref.name, hint,
+                                               unique=typo is not None and unique)
         finding = self.finding(ref.origin, name=ref.name, where=where,
-                               hint=f" (did you mean {hint!r}?)" if hint else "")
+                               hint=f" (did you mean {hint!r}?)" if hint else "", fix=fix)
         if installed or typo is not None:
             return finding
         if hint is None:
@@ -112,9 +118,12 @@ class UnknownPackage(Rule):
                                        message=finding.message + self.outside)
         return dataclasses.replace(finding, severity=Severity.WARNING)
 
-    def _suggestions(self, name: str, local: frozenset[str]) -> tuple[str | None, str | None]:
-        """Return the package ``name`` misspells and the one it most likely means."""
+    def _suggestions(self, name: str, local: frozenset[str]
+                     ) -> tuple[str | None, str | None, bool]:
+        """Return (the typo's target, the package most likely meant, whether unique)."""
         if name not in self._suggested:
-            typo = typo_of(name, local) or typo_of(name, released_packages())
-            self._suggested[name] = (typo, typo or closest_package(name, local))
+            close = typos(name, local) or typos(name, released_packages())
+            typo = close[0] if close else None
+            self._suggested[name] = (typo, typo or closest_package(name, local),
+                                     len(close) == 1)
         return self._suggested[name]

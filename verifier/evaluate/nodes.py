@@ -46,7 +46,8 @@ class NodeBuilder:
         package_name = text_of(package)
         if package_name is not None:
             self.walker.record_package(package_name, ctx.origin(action.at("pkg")),
-                                self.walker.index.find(package_name) is not None, "node")
+                                       self.walker.index.find(package_name) is not None,
+                                       "node", s.written_at(action.package))
         executable = self.walker.reducer.at(ctx, action.at("exec")).reduce(action.executable)
         reducer = self.walker.reducer.at(ctx, action.at("name"))
         name = None if action.name is None else reducer.reduce(action.name)
@@ -77,6 +78,7 @@ class NodeBuilder:
             executable=executable, name=name, namespace=namespace, fqn=fqn,
             remappings=remaps, parameters=params, deferred=ctx.deferred,
             execution=self.walker.execution, autostart=autostart,
+            executable_written=s.written_at(action.executable),
         )
         self.walker.graph.nodes.append(record)
         self.walker.graph.launches.append(LaunchRecord(
@@ -95,7 +97,7 @@ class NodeBuilder:
         if package_name is not None:
             found = self.walker.index.find(package_name) is not None
             self.walker.record_package(package_name, inner.origin(node.at("pkg")), found,
-                                       "composable node")
+                                       "composable node", s.written_at(node.package))
         plugin = reducer.reduce(node.plugin)
         name = None if node.name is None else reducer.reduce(node.name)
         if name is not None:
@@ -163,7 +165,8 @@ class NodeBuilder:
             reducer = self.walker.reducer.at(ctx, entry.span)
             if isinstance(entry, a.ParamFile):
                 location = reducer.reduce(entry.path)
-                self.check_file(location, ctx.origin(entry.span), "parameter file", ctx)
+                self.check_file(location, ctx.origin(entry.span), "parameter file", ctx,
+                                entry.path)
                 out.append(ParamRecord(ctx.origin(entry.span), file=location,
                                        source=self.read_param_file(location)))
                 if self.allows_substitutions(entry, ctx):
@@ -221,8 +224,12 @@ class NodeBuilder:
             self.walker.graph.param_files[located] = self.walker.loader.param_file(located)
         return located
 
-    def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx) -> None:
-        """Record whether a file the launch needs exists (when its path is known)."""
+    def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx,
+                   expression: s.Sub | None = None) -> None:
+        """Record whether a file the launch needs exists (when its path is known).
+
+        ``expression``: the path as written, to locate the file's name in it (for a fix).
+        """
         text = text_of(location)
         if text is None and machine_dependent(location):
             return  # the robot's environment decides; not a claim to make here
@@ -245,4 +252,6 @@ class NodeBuilder:
         if located is not None:
             self.walker.graph.file_refs.append(FileRef(text, origin, True, what))
         elif self.walker.in_workspace(path):
-            self.walker.graph.file_refs.append(FileRef(text, origin, False, what))
+            written = None if expression is None else s.tail_at(expression, path.name)
+            self.walker.graph.file_refs.append(FileRef(text, origin, False, what,
+                                                       written=written))

@@ -100,10 +100,11 @@ class ScopeReducer(_Located, Reducer):
         return Origin(where, self.ctx.chain, self.ctx.path,
                       call=call if call.file == where.file else self.span)
 
-    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None,
+               written: Span | None = None) -> s.Sub:
         value = self.walker.scopes.get(name)
         self.walker.record_read(name, self._origin(where), value is not None,
-                                default is not None)
+                                default is not None, written)
         if value is None:
             return Unset(name) if default is None else self.reduce(default)
         if default is not None and is_unset(value):
@@ -137,23 +138,26 @@ class ScopeReducer(_Located, Reducer):
             return self.reduce(default)
         return super().environment(name, default)
 
-    def package_share(self, name: str) -> s.Sub:
+    def package_share(self, name: str, written: Span | None = None) -> s.Sub:
         package = self.walker.index.find(name)
-        self.walker.record_package(name, self._origin(), package is not None, "share")
+        self.walker.record_package(name, self._origin(), package is not None, "share", written)
         return Unknown(f"share folder of {name}") if package is None else s.Text(
             str(package.share)
         )
 
-    def package_prefix(self, name: str) -> s.Sub:
+    def package_prefix(self, name: str, written: Span | None = None) -> s.Sub:
         package = self.walker.index.find(name)
-        self.walker.record_package(name, self._origin(), package is not None, "prefix")
+        self.walker.record_package(name, self._origin(), package is not None, "prefix",
+                                   written)
         if package is None or package.prefix is None:
             return Unknown(f"install prefix of {name}")
         return s.Text(str(package.prefix))
 
-    def executable_path(self, executable: str, package: str) -> s.Sub:
+    def executable_path(self, executable: str, package: str,
+                        written: Span | None = None) -> s.Sub:
         found = self.walker.index.find(package)
-        self.walker.record_package(package, self._origin(), found is not None, "executable")
+        self.walker.record_package(package, self._origin(), found is not None, "executable",
+                                   written)
         return Unknown(f"path of {executable} in {package}")
 
     def this_file(self, directory: bool) -> s.Sub:

@@ -32,12 +32,13 @@ class ContextFreeReducer(Reducer):
         super().__init__()
         self.index = index
 
-    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None,
+               written: Span | None = None) -> s.Sub:
         if default is not None:
             return self.reduce(default)
         return Unknown(f"configuration {name}")
 
-    def package_share(self, name: str) -> s.Sub:
+    def package_share(self, name: str, written: Span | None = None) -> s.Sub:
         package = self.index.find(name)
         return Unknown(name) if package is None else s.Text(str(package.share))
 

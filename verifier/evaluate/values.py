@@ -139,23 +139,28 @@ class Reducer:
 
     # ------------------------------------------------------------------ hooks
 
-    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
-        """Return the value of a launch configuration (read at ``where``, if known)."""
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None,
+               written: Span | None = None) -> s.Sub:
+        """Return the value of a launch configuration (read at ``where``, if known).
+
+        ``written``: where the name itself is written verbatim (for fixes), if known.
+        """
         raise NotImplementedError
 
     def environment(self, name: str, default: s.Sub | None) -> s.Sub:
         """Return the value of an environment variable."""
         return EnvInput(name, None if default is None else self.reduce(default))
 
-    def package_share(self, name: str) -> s.Sub:
-        """Return the share folder of a package."""
+    def package_share(self, name: str, written: Span | None = None) -> s.Sub:
+        """Return the share folder of a package (its name written verbatim at ``written``)."""
         return Unknown(f"share folder of {name}")
 
-    def package_prefix(self, name: str) -> s.Sub:
+    def package_prefix(self, name: str, written: Span | None = None) -> s.Sub:
         """Return the install prefix of a package."""
         return Unknown(f"install prefix of {name}")
 
-    def executable_path(self, executable: str, package: str) -> s.Sub:
+    def executable_path(self, executable: str, package: str,
+                        written: Span | None = None) -> s.Sub:
         """Return the path of an executable of a package."""
         return Unknown(f"path of {executable} in {package}")
 
@@ -213,7 +218,7 @@ class Reducer:
         name = self._name(sub.name)
         if name is None:
             return Unknown(f"configuration named by {sub.name.describe()}")
-        return self.config(name, sub.default, sub.where)
+        return self.config(name, sub.default, sub.where, s.written_at(sub.name))
 
     def _env(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.EnvVar)
@@ -250,19 +255,21 @@ class Reducer:
     def _pkg_share(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.FindPackageShare)
         name = self._name(sub.package)
-        return Unknown(sub.describe()) if name is None else self.package_share(name)
+        return (Unknown(sub.describe()) if name is None
+                else self.package_share(name, s.written_at(sub.package)))
 
     def _pkg_prefix(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.FindPackagePrefix)
         name = self._name(sub.package)
-        return Unknown(sub.describe()) if name is None else self.package_prefix(name)
+        return (Unknown(sub.describe()) if name is None
+                else self.package_prefix(name, s.written_at(sub.package)))
 
     def _exec_in_pkg(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.ExecutableInPackage)
         executable, package = self._name(sub.executable), self._name(sub.package)
         if executable is None or package is None:
             return Unknown(sub.describe())
-        return self.executable_path(executable, package)
+        return self.executable_path(executable, package, s.written_at(sub.package))
 
     def _anon(self, sub: s.Sub) -> s.Sub:
         assert isinstance(sub, s.AnonName)
@@ -478,7 +485,8 @@ class BaseReducer(Reducer):
         text = self.read(path) if self.read is not None else None
         return Unknown(f"content of {path}") if text is None else s.Text(text)
 
-    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None,
+               written: Span | None = None) -> s.Sub:
         return Unknown(f"configuration {name}")
 
     def arg(self, sub: Arg) -> s.Sub:

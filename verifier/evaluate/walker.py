@@ -135,15 +135,17 @@ class Walker:
         for record in self.include_stack:
             record.complete = False
 
-    def record_read(self, name: str, origin: Origin, found: bool, has_default: bool) -> None:
-        """Record a configuration read."""
-        self.graph.reads.append(ConfigRead(name, origin, found, has_default))
+    def record_read(self, name: str, origin: Origin, found: bool, has_default: bool,
+                    written: Span | None = None) -> None:
+        """Record a configuration read (its name written verbatim at ``written``)."""
+        self.graph.reads.append(ConfigRead(name, origin, found, has_default, written))
         for record in self.include_stack:
             record.reads.add(name)
 
-    def record_package(self, name: str, origin: Origin, found: bool, what: str) -> None:
-        """Record a package reference."""
-        self.graph.packages.append(PackageRef(name, origin, found, what))
+    def record_package(self, name: str, origin: Origin, found: bool, what: str,
+                       written: Span | None = None) -> None:
+        """Record a package reference (its name written verbatim at ``written``)."""
+        self.graph.packages.append(PackageRef(name, origin, found, what, written))
 
     def record_lookups(self, lookups: tuple[tuple[str, Span], ...], ctx: Ctx) -> None:
         """Record the packages Python code looked up (get_package_share_directory...)."""
@@ -303,7 +305,8 @@ class Walker:
             current = (Unknown("configuration") if name is None
                        else self.scopes.get(name) or Unset(name))
             if name is not None:
-                self.record_read(name, ctx.origin(span), not isinstance(current, Unset), True)
+                self.record_read(name, ctx.origin(span), not isinstance(current, Unset), True,
+                                 s.written_at(condition.name))
             expected = None if condition.expected is None else reducer.reduce(condition.expected)
             guard = StrEquals(current, expected, condition.negate, where=span)
         else:
@@ -641,7 +644,8 @@ class Walker:
     def do_SetParametersFromFile(self, action: a.SetParametersFromFile, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
         location = reducer.reduce(action.filename)
-        self.nodes.check_file(location, ctx.origin(action.at("filename")), "parameter file", ctx)
+        self.nodes.check_file(location, ctx.origin(action.at("filename")), "parameter file", ctx,
+                              action.filename)
         self.scopes.append_shared(GLOBAL_PARAMS, ScopedParam(
             ctx.origin(action.span), ctx.path, file=location,
             source=self.nodes.read_param_file(location)))

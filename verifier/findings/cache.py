@@ -33,7 +33,7 @@ from pathlib import Path
 import launchverify
 from launchverify.workspace.packages import SKIP_DIRS
 
-FORMAT = 1  # bump when what is stored changes shape
+FORMAT = 2  # bump when what is stored changes shape (2: findings carry fixes)
 RACY_SECONDS = 2.0
 MAX_AGE_DAYS = 30  # cache files unused for longer are removed
 Stamp = tuple[int, int, str | None]  # size, mtime_ns, content hash for racy files

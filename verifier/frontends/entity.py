@@ -16,10 +16,15 @@ Scalar = str | int | float | bool | None
 
 @dataclass(frozen=True, slots=True)
 class Attr:
-    """An attribute value as written (text for XML; a YAML scalar or list) and its span."""
+    """An attribute value as written (text for XML; a YAML scalar or list) and its span.
+
+    ``value_at``: where the value's own text is, when it is written verbatim on one line
+    (no entity, escape or alias): its substitutions' literals are then located too.
+    """
 
     value: Scalar | list[Scalar]
     span: Span
+    value_at: Span | None = None
 
 
 @dataclass(eq=False)

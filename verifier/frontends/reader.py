@@ -9,6 +9,7 @@ problem with the span of the offending attribute.
 from __future__ import annotations
 
 import shlex
+from collections.abc import Callable
 from pathlib import Path
 
 import yaml
@@ -38,10 +39,14 @@ class EntityReader:
 
     # ------------------------------------------------------------------ substitutions
 
-    def parse_text(self, text: str, span: Span) -> s.Sub:
-        """Parse ``$(...)`` in text; a syntax error becomes a problem and an opaque value."""
+    def parse_text(self, text: str, span: Span, written: Span | None = None) -> s.Sub:
+        """Parse ``$(...)`` in text; a syntax error becomes a problem and an opaque value.
+
+        ``written``: where ``text`` itself is, verbatim on one line; its literals are
+        then located (``Text.where``).
+        """
         try:
-            return parse_substitution(text)
+            return parse_substitution(text, None if written is None else _locator(written))
         except SubstitutionSyntaxError as error:
             self.sink.parse(f"invalid substitution in {text!r}: {error}", span)
             return s.Opaque(f"unparsable {text!r}")
@@ -52,7 +57,7 @@ class EntityReader:
         if attr is None:
             return None
         text = self._string(entity, name, attr)
-        return None if text is None else self.parse_text(text, attr.span)
+        return None if text is None else self.parse_text(text, attr.span, attr.value_at)
 
     def req(self, entity: Entity, name: str) -> s.Sub:
         """Read a required substitution attribute (raises ``MissingAttribute`` if absent)."""
@@ -221,6 +226,15 @@ class EntityReader:
             f"got {got} {attr.value!r}{hint}",
             attr.span,
         )
+
+
+def _locator(written: Span) -> Callable[[int, int], Span]:
+    """Return where offsets of a text written verbatim on one line, at ``written``, are."""
+    def locate(start: int, end: int) -> Span:
+        return Span(written.file, written.line, written.column + start, written.line,
+                    written.column + end)
+
+    return locate
 
 
 def split_cmdline(parsed: s.Sub) -> tuple[s.Sub, ...]:

@@ -15,6 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from launchverify.ir import subst as s
+from launchverify.span import Span
 
 MAX_DEPTH = 64
 
@@ -28,6 +29,7 @@ class SubstitutionSyntaxError(ValueError):
 
 
 Builder = Callable[[list[s.Sub]], s.Sub]
+Locate = Callable[[int, int], Span | None]  # offsets in the text -> where they are written
 
 
 @dataclass(frozen=True)
@@ -86,8 +88,11 @@ def _arity_text(spec: _Spec) -> str:
     return f"{spec.low} to {spec.high}"
 
 
-def parse_substitution(text: str) -> s.Sub:
+def parse_substitution(text: str, locate: Locate | None = None) -> s.Sub:
     """Parse an attribute value into a substitution expression.
+
+    ``locate`` says where a stretch of ``text`` is written in its file; literal parts
+    written verbatim (no escape) then carry their place (``Text.where``), for fixes.
 
     Raises:
         SubstitutionSyntaxError: for text that ros2 launch would refuse.
@@ -96,17 +101,19 @@ def parse_substitution(text: str) -> s.Sub:
         >>> parse_substitution("$(var ns)/robot").describe()
         '$(var ns)/robot'
     """
-    reader = _Reader(text)
+    reader = _Reader(text, locate)
     parts: list[s.Sub] = []
     literal: list[str] = []
+    start = reader.pos
     while not reader.done():
         if reader.at_substitution():
-            parts.append(s.Text("".join(literal)))
+            parts.append(reader.literal(literal, start))
             literal = []
             parts.append(reader.substitution(0, quote=None))
+            start = reader.pos
         else:
             literal.append(reader.literal_char(stop=""))
-    parts.append(s.Text("".join(literal)))
+    parts.append(reader.literal(literal, start))
     return s.concat(parts)
 
 
@@ -141,7 +148,7 @@ def variable_references(text: str) -> list[tuple[str, int, int]]:
     while start >= 0:
         escapes = len(text[:start]) - len(text[:start].rstrip("\\"))
         if escapes % 2 == 0:  # ``\$(`` is literal text
-            reader = _Reader(text, found)
+            reader = _Reader(text, variables=found)
             reader.pos = start
             with contextlib.suppress(SubstitutionSyntaxError):
                 reader.substitution(0, quote=None)
@@ -150,10 +157,20 @@ def variable_references(text: str) -> list[tuple[str, int, int]]:
 
 
 class _Reader:
-    def __init__(self, text: str, variables: set[tuple[str, int, int]] | None = None) -> None:
+    def __init__(self, text: str, locate: Locate | None = None,
+                 variables: set[tuple[str, int, int]] | None = None) -> None:
         self.text = text
         self.pos = 0
+        self.locate = locate
         self.variables = variables  # where ``$(var name)`` is, when asked
+
+    def literal(self, chars: list[str], start: int) -> s.Text:
+        """Return the literal read since ``start``, located when written without escapes."""
+        text = "".join(chars)
+        where = None
+        if self.locate is not None and text and self.pos - start == len(text):
+            where = self.locate(start, self.pos)
+        return s.Text(text, where)
 
     def done(self) -> bool:
         return self.pos >= len(self.text)
@@ -223,14 +240,16 @@ class _Reader:
         stop = " '\"()" if quote is None else f" {quote}()"
         parts: list[s.Sub] = []
         literal: list[str] = []
+        start = self.pos
         while not self.done() and self.peek() not in (" ", ")"):
             if self.at_substitution():
-                parts.append(s.Text("".join(literal)))
+                parts.append(self.literal(literal, start))
                 literal = []
                 parts.append(self.substitution(depth + 1, quote))
+                start = self.pos
             else:
                 literal.append(self.literal_char(stop))
-        parts.append(s.Text("".join(literal)))
+        parts.append(self.literal(literal, start))
         return s.concat(parts)
 
     def quoted(self, depth: int, quote: str) -> s.Sub:
@@ -239,19 +258,21 @@ class _Reader:
         self.pos += 1
         parts: list[s.Sub] = []
         literal: list[str] = []
+        run = self.pos
         while True:
             if self.done():
                 raise SubstitutionSyntaxError("unclosed quote", start)
             if self.peek() == quote:
+                parts.append(self.literal(literal, run))
                 self.pos += 1
                 break
             if self.at_substitution():
-                parts.append(s.Text("".join(literal)))
+                parts.append(self.literal(literal, run))
                 literal = []
                 parts.append(self.substitution(depth + 1, quote))
+                run = self.pos
             else:
                 literal.append(self.literal_char(stop=""))
-        parts.append(s.Text("".join(literal)))
         if self.peek() not in (" ", ")", ""):
             raise SubstitutionSyntaxError("a quoted argument must stand alone", self.pos)
         return s.concat(parts)

@@ -26,7 +26,7 @@ _ENTITY_DECL = re.compile(rb"<!ENTITY", re.IGNORECASE)
 
 _PREDEFINED_ENTITIES = frozenset({"lt", "gt", "amp", "quot", "apos"})
 _ENTITY_REF = re.compile(r"&([A-Za-z_][\w.-]*);")
-_ATTRIBUTE = re.compile(r"""([^\s=/>]+)\s*=\s*(?:"[^"]*"|'[^']*')""")
+_ATTRIBUTE = re.compile(r"""([^\s=/>]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 
 
 @dataclass(frozen=True, slots=True)
@@ -36,6 +36,7 @@ class _StartTag:
     start: int
     end: int
     attributes: dict[str, tuple[int, int]]
+    values: dict[str, tuple[int, int]]  # each attribute's text between its quotes
 
 
 def scan_start_tags(text: str) -> list[_StartTag]:
@@ -68,13 +69,20 @@ def scan_start_tags(text: str) -> list[_StartTag]:
             name_end = index + 1
             while name_end < end and not text[name_end].isspace() and text[name_end] not in "/>":
                 name_end += 1
-            attributes = {
-                match.group(1): (index + match.start(1), index + match.end())
-                for match in _ATTRIBUTE.finditer(body, name_end - index)
-            }
-            tags.append(_StartTag(index, end, attributes))
+            matches = list(_ATTRIBUTE.finditer(body, name_end - index))
+            attributes = {match.group(1): (index + match.start(1), index + match.end())
+                          for match in matches}
+            values = {match.group(1): (index + match.end() - 1 - len(_quoted(match)),
+                                       index + match.end() - 1) for match in matches}
+            tags.append(_StartTag(index, end, attributes, values))
         index = text.find("<", end)
     return tags
+
+
+def _quoted(match: re.Match[str]) -> str:
+    """Return the text between an attribute's quotes."""
+    double = match.group(2)
+    return double if double is not None else match.group(3)
 
 
 def _declaration_end(text: str, index: int) -> int:
@@ -163,7 +171,8 @@ def read_xml(path: Path, data: bytes, sink: ProblemSink) -> Entity | None:
     tags = scan_start_tags(text)
     if len(tags) != len(elements):  # should not happen; fall back to lxml's lines
         tags = []
-    return _convert(root, locator, iter(zip(elements, tags, strict=False)) if tags else None)
+    return _convert(root, locator, iter(zip(elements, tags, strict=False)) if tags else None,
+                    text)
 
 
 def _undefined_entity(text: str) -> tuple[str, int] | None:
@@ -199,6 +208,7 @@ def _convert(
     element: etree._Element,
     locator: _Locator,
     tags: Iterator[tuple[etree._Element, _StartTag]] | None,
+    text: str,
 ) -> Entity:
     tag = str(element.tag)
     start_tag = None
@@ -214,12 +224,16 @@ def _convert(
     for name, value in element.attrib.items():
         key = str(name)
         where = start_tag.attributes.get(key) if start_tag is not None else None
-        entity.attrs[key] = Attr(str(value), locator.span(*where) if where else span)
+        inside = start_tag.values.get(key) if start_tag is not None else None
+        verbatim = inside is not None and text[inside[0]:inside[1]] == str(value) \
+            and "\n" not in str(value)
+        entity.attrs[key] = Attr(str(value), locator.span(*where) if where else span,
+                                 locator.span(*inside) if inside and verbatim else None)
     children: list[Entity] = []
     for child in element:
         if not isinstance(child.tag, str):
             continue  # comments, processing instructions
-        converted = _convert(child, locator, tags)
+        converted = _convert(child, locator, tags, text)
         children.append(converted)
         entity.nested.setdefault(converted.tag, []).append(converted)
     entity.child_list = children

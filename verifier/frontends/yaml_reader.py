@@ -119,7 +119,7 @@ def read_yaml(path: Path, data: bytes, sink: ProblemSink) -> Entity | None:
         sink.parse("a YAML launch file must be a mapping with one root key, 'launch'", whole)
         return None
     key, value = root.value[0]
-    converter = _Converter(path, sink)
+    converter = _Converter(path, sink, text)
     try:
         return converter.entity(str(key.value), value, span_of(path, key))
     except _Budget:
@@ -145,10 +145,16 @@ def decode(data: bytes) -> str:
                             1) from None
 
 
+# An anchor (``&name``): one node may then stand for several places.
+_ANCHOR = re.compile(r"(?:^|[\s:,\[{-])&[^\s,\[\]{}]")
+
+
 class _Converter:
-    def __init__(self, path: Path, sink: ProblemSink) -> None:
+    def __init__(self, path: Path, sink: ProblemSink, text: str = "") -> None:
         self.path = path
         self.sink = sink
+        # values are located only in a document without anchors (no alias shares a node)
+        self.lines = [] if _ANCHOR.search(text) else text.split("\n")
         self.scalars = ScalarReader()
         self.count = 0
         self.open: set[int] = set()  # collections being converted (to catch cycles)
@@ -202,7 +208,8 @@ class _Converter:
                     self.entity(name, item, span_of(self.path, item)) for item in value_node.value
                 ]
             else:
-                entity.attrs[name] = Attr(self.plain(value_node), key_span)
+                entity.attrs[name] = Attr(self.plain(value_node), key_span,
+                                          self.written(value_node))
         return entity
 
     def children(self, node: yaml.SequenceNode) -> list[Entity]:
@@ -227,6 +234,22 @@ class _Converter:
             key, value = item.value[0]
             out.append(self.entity(str(key.value), value, span_of(self.path, key)))
         return out
+
+    def written(self, node: yaml.Node) -> Span | None:
+        """Return where a scalar's text is, when written verbatim on one line.
+
+        Plain scalars and quoted ones without escapes qualify; block scalars do not.
+        """
+        start, end = node.start_mark, node.end_mark
+        if (not isinstance(node, yaml.ScalarNode) or node.style not in (None, "", "'", '"')
+                or start.line != end.line or start.line >= len(self.lines)):
+            return None
+        first, last = start.column, end.column
+        if node.style:  # quoted
+            first, last = first + 1, last - 1
+        if self.lines[start.line][first:last] != node.value or not node.value:
+            return None
+        return Span(self.path, start.line + 1, first + 1, start.line + 1, last + 1)
 
     def plain(self, node: yaml.Node) -> Scalar | list[Scalar]:
         """Return a scalar or a list of scalars; anything deeper becomes its YAML text."""

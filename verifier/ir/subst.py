@@ -59,9 +59,15 @@ def _call(name: str, *args: Sub | None) -> str:
 
 @dataclass(frozen=True, slots=True)
 class Text(Sub):
-    """Literal text."""
+    """Literal text.
+
+    ``where``: the exact place of the text in the user's file, when a frontend read it
+    there verbatim (each character of ``text`` at the next column, on one line: no escape,
+    no entity, no quote inside). A fix may replace that span; not part of the value.
+    """
 
     text: str
+    where: Span | None = field(default=None, compare=False, repr=False)
 
     def describe(self) -> str:
         return self.text.replace("\\", "\\\\").replace("$(", "\\$(")
@@ -497,6 +503,30 @@ def concat(parts: list[Sub] | tuple[Sub, ...]) -> Sub:
     if len(merged) == 1:
         return merged[0]
     return Concat(tuple(merged))
+
+
+def written_at(sub: Sub | None) -> Span | None:
+    """Return where a literal value is written verbatim in its file, if a frontend knows."""
+    return sub.where if isinstance(sub, Text) else None
+
+
+def tail_at(sub: Sub, tail: str) -> Span | None:
+    """Return where the last characters of an expression, ``tail``, are written verbatim.
+
+    The expression must end with a literal that ends with ``tail`` (the file name at the
+    end of a path) and that the frontend located; ``tail`` may not span lines.
+    """
+    last = sub
+    while isinstance(last, (Concat, PathJoin)) and last.parts:  # a path's last component
+        last = last.parts[-1]
+    where = written_at(last)
+    if (where is None or where.end_line is None or where.end_column is None or not tail
+            or "\n" in tail or not isinstance(last, Text) or not last.text.endswith(tail)):
+        return None
+    column = where.end_column - len(tail)
+    if column < 1 or (where.end_line == where.line and column < where.column):
+        return None
+    return Span(where.file, where.end_line, column, where.end_line, where.end_column)
 
 
 def walk(sub: Sub) -> list[Sub]:

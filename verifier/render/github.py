@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import TextIO
 
 from launchverify.engine import Report
+from launchverify.findings.fixes import fix_note
 from launchverify.rule import Finding, Severity
 
 COMMANDS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
@@ -37,7 +38,7 @@ def annotation(finding: Finding, report: Report) -> str:
         properties += [("col", str(span.column)), ("endLine", str(span.line))]
         if span.end_column is not None and span.end_column >= span.column:
             properties.append(("endColumn", str(span.end_column)))
-    properties.append(("title", f"{finding.code} {finding.slug}"))
+    properties.append(("title", f"{finding.code} {finding.slug}{fix_note(finding.fix)}"))
     message = finding.message
     if finding.witness:
         values = " ".join(f"{k}:={v}" for k, v in sorted(finding.witness.items()))

@@ -1,7 +1,8 @@
 """The findings of the HTML report: an index by rule and full entries by file.
 
 Each entry carries what the text output prints with ``--explain``: the code frame, related
-places, the include chain, the witness and the trace, so the page stands on its own.
+places, the include chain, the witness, the trace and the fix, so the page stands on its
+own.
 """
 
 from __future__ import annotations
@@ -10,6 +11,7 @@ from collections import defaultdict
 from collections.abc import Iterable
 
 from launchverify.engine import Report
+from launchverify.findings.fixes import fix_note
 from launchverify.render.html_text import clip, esc, place
 from launchverify.rule import Finding, Severity
 from launchverify.span import Span
@@ -104,6 +106,9 @@ def render_finding(report: Report, finding: Finding, index: int) -> str:
             + (f" {place(report, step.span.file, step.span.line)}" if step.span else "")
             + "</li>" for step in finding.trace)
         body.append(f'<div class="part"><h4>Trace</h4><ol class="trace">{steps}</ol></div>')
+    if finding.fix is not None:
+        body.append(f'<div class="part"><h4>Fix</h4><p class="fix">{esc(finding.fix.message)}'
+                    f'{esc(fix_note(finding.fix))}</p></div>')
     return (f'<article class="finding sev-{finding.severity.value}" id="{finding_id(index)}">'
             + "".join(body) + "</article>")
 

@@ -7,7 +7,7 @@ from typing import Any, TextIO
 
 from launchverify import __version__
 from launchverify.engine import Report
-from launchverify.rule import Finding, Severity
+from launchverify.rule import Finding, Fix, Severity
 
 
 def finding_dict(finding: Finding, report: Report) -> dict[str, Any]:
@@ -37,6 +37,21 @@ def finding_dict(finding: Finding, report: Report) -> dict[str, Any]:
              "line": step.span.line if step.span else None}
             for step in finding.trace
         ],
+        "fix": fix_dict(finding.fix, report),
+    }
+
+
+def fix_dict(fix: Fix | None, report: Report) -> dict[str, Any] | None:
+    """Return a finding's fix as a JSON object (``None`` when it has none)."""
+    if fix is None:
+        return None
+    return {
+        "applicability": fix.applicability.value,
+        "message": fix.message,
+        "edits": [{"file": report.display_path(edit.span.file), "line": edit.span.line,
+                   "column": edit.span.column, "end_line": edit.span.end_line,
+                   "end_column": edit.span.end_column, "content": edit.content}
+                  for edit in fix.edits],
     }
 
 

@@ -18,6 +18,7 @@ from pathlib import Path
 from typing import TextIO
 
 from launchverify.engine import Report
+from launchverify.findings.fixes import fix_note
 from launchverify.rule import Finding, Severity
 
 # Characters XML 1.0 cannot carry even as character references.
@@ -36,7 +37,7 @@ def finding_line(finding: Finding) -> str:
     if finding.witness:
         values = " ".join(f"{k}:={v}" for k, v in sorted(finding.witness.items()))
         text += f" (when: {values})"
-    return text
+    return text + fix_note(finding.fix)
 
 
 def _unique(paths: Iterable[Path]) -> list[Path]:

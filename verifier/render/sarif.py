@@ -7,6 +7,11 @@ the trace as a code flow. Paths below ``root`` (the working directory unless giv
 relative URIs against ``%SRCROOT%``, which is what code scanning maps onto the checkout;
 other files get absolute ``file://`` URIs.
 
+A finding with a fix has ``fixes``: one ``artifactChange`` per file it edits, each edit a
+``replacement`` (the region deleted, end exclusive as ours; the text inserted), and
+``properties.applicability`` (``safe``, or ``unsafe``: applied only with
+``--unsafe-fixes``).
+
 Fingerprints: ``partialFingerprints["launchverify/v1"]`` lets a viewer recognise a
 finding again after edits elsewhere in the file moved it; the recipe (shared with
 baselines) is in ``launchverify.findings.fingerprint``, with paths relative to the root.
@@ -26,7 +31,7 @@ from launchverify import __version__
 from launchverify.engine import Report
 from launchverify.findings.fingerprint import fingerprints
 from launchverify.registry import all_rules
-from launchverify.rule import Finding, Rule, Severity
+from launchverify.rule import Finding, Fix, Rule, Severity
 from launchverify.span import Span
 
 SCHEMA_URI = (
@@ -180,6 +185,26 @@ def code_flow(finding: Finding, places: Places) -> dict[str, Any]:
             "threadFlows": [{"locations": steps}]}
 
 
+def sarif_fix(fix: Fix, places: Places) -> dict[str, Any]:
+    """Return the SARIF ``fix`` of a finding: its edits grouped by file."""
+    changes: dict[Path, list[dict[str, Any]]] = {}
+    for edit in fix.edits:
+        span = edit.span
+        replacement: dict[str, Any] = {"deletedRegion": {
+            "startLine": span.line, "startColumn": span.column,
+            "endLine": span.end_line or span.line,
+            "endColumn": span.end_column or span.column}}
+        if edit.content:
+            replacement["insertedContent"] = {"text": edit.content}
+        changes.setdefault(span.file, []).append(replacement)
+    return {
+        "description": {"text": fix.message},
+        "artifactChanges": [{"artifactLocation": places.artifact(file), "replacements": edits}
+                            for file, edits in changes.items()],
+        "properties": {"applicability": fix.applicability.value},
+    }
+
+
 def result(finding: Finding, index: dict[str, int], places: Places,
            fingerprint_value: str) -> dict[str, Any]:
     """Return the SARIF ``result`` of one finding."""
@@ -198,6 +223,8 @@ def result(finding: Finding, index: dict[str, int], places: Places,
         ]
     if finding.trace:
         entry["codeFlows"] = [code_flow(finding, places)]
+    if finding.fix is not None and finding.fix.edits:
+        entry["fixes"] = [sarif_fix(finding.fix, places)]
     entry["partialFingerprints"] = {FINGERPRINT: fingerprint_value}
     if finding.witness:
         entry["properties"] = {"witness": dict(sorted(finding.witness.items()))}

@@ -1,4 +1,8 @@
-"""Human-readable output: ``file:line:col: severity CODE [slug] message`` and a code frame."""
+"""Human-readable output: ``file:line:col: severity CODE [slug] message`` and a code frame.
+
+A finding ``--fix`` would mend has ``[*]`` before its code (as ruff marks them), and the
+summary says how many are fixable.
+"""
 
 from __future__ import annotations
 
@@ -8,6 +12,7 @@ from rich.console import Console
 from rich.markup import escape
 
 from launchverify.engine import Report
+from launchverify.findings.fixes import applicable, fixable, hidden
 from launchverify.rule import Finding, Severity
 from launchverify.workspace.sources import source_line, source_lines
 
@@ -30,11 +35,13 @@ def _frame(finding: Finding) -> list[str]:
 
 
 def render_text(report: Report, out: TextIO, *, color: bool | None = None,
-                explain: bool = False, quiet: bool = False) -> None:
+                explain: bool = False, quiet: bool = False,
+                unsafe_fixes: bool = False) -> None:
     """Write findings with code frames and a summary line.
 
     ``explain`` adds, under each finding, the related source lines, the trace, why the
-    rule matters and how to fix it; ``quiet`` leaves out the summary.
+    rule matters and how to fix it; ``quiet`` leaves out the summary. ``unsafe_fixes``:
+    unsafe fixes count as fixable (``--unsafe-fixes``).
     """
     # --color always/never decide; auto follows the terminal and NO_COLOR (rich reads it)
     console = Console(file=out, highlight=False, soft_wrap=True, force_terminal=color,
@@ -43,9 +50,11 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
         span = finding.span
         where = f"{report.display_path(span.file)}:{span.line}:{span.column}"
         style = STYLES[finding.severity]
+        marker = "\\[*] " if applicable(finding.fix, unsafe_fixes) else ""
         console.print(
             f"[bold]{escape(where)}[/bold]: [{style}]{finding.severity.value}[/{style}] "
-            f"[bold]{finding.code}[/bold] \\[{finding.slug}] {escape(finding.message)}"
+            f"{marker}[bold]{finding.code}[/bold] \\[{finding.slug}] "
+            f"{escape(finding.message)}"
         )
         for line in _frame(finding):
             console.print(escape(line), style="dim" if "|" in line[:8] else None)
@@ -74,10 +83,16 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
             console.print("    (--explain prints the trace)", style="dim")
         if explain:
             _explanation(console, finding)
+            if finding.fix is not None:
+                console.print(f"    fix ({finding.fix.applicability.value}): "
+                              f"{escape(finding.fix.message)}", style="dim")
     if explain:
         _unjudged(console, report)
     if not quiet:
         console.print(summary_line(report))
+        footer = fixes_line(report, unsafe_fixes)
+        if footer:
+            console.print(escape(footer))
 
 
 def _explanation(console: Console, finding: Finding) -> None:
@@ -121,6 +136,19 @@ def summary_line(report: Report) -> str:
     total = len(report.findings)
     return (f"Found {total} finding{'s' if total != 1 else ''} ({', '.join(parts)}) in "
             f"{files} ({took}).")
+
+
+def fixes_line(report: Report, unsafe: bool) -> str:
+    """Return ``[*] 2 fixable with --fix (1 hidden fix ...)``, or '' when none is."""
+    count, more = fixable(report.findings, unsafe), hidden(report.findings, unsafe)
+    if not count and not more:
+        return ""
+    flag = "--fix --unsafe-fixes" if unsafe else "--fix"
+    text = f"[*] {count} fixable with {flag}"
+    if more:
+        text += (f" ({more} hidden fix{'es' if more != 1 else ''} can be enabled with "
+                 "--unsafe-fixes)")
+    return text + "."
 
 
 def render_statistics(report: Report, out: TextIO, *, quiet: bool = False) -> None:

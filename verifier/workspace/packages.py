@@ -242,6 +242,26 @@ class PackageIndex:
             return candidate
         return _by_name(package.source, relative)
 
+    def neighbours(self, path: Path) -> list[str]:
+        """Return the names of the files in the folder where ``path`` would be.
+
+        The folder itself, and for a path in a package's install layout the matching
+        folder of its sources (where ``locate`` finds files first).
+        """
+        folders = [path.parent]
+        package = self.owner(path)
+        if package is not None and package.source is not None \
+                and path.is_relative_to(package.share):
+            folders.append(package.source / path.relative_to(package.share).parent)
+        names: set[str] = set()
+        for folder in folders:
+            try:
+                with os.scandir(folder) as entries:
+                    names.update(entry.name for entry in entries if entry.is_file())
+            except OSError:
+                continue
+        return sorted(names)
+
 
 def _by_name(source: Path, relative: Path) -> Path | None:
     """Find ``relative``'s file name below ``source``; prefer the longest matching suffix."""

@@ -56,6 +56,11 @@ def unsaved_buffers(contents: Mapping[Path, bytes]) -> Iterator[None]:
         _UNSAVED.update(saved)
 
 
+def forget_unsaved(path: Path) -> None:
+    """Let readers see ``path``'s own content again."""
+    _UNSAVED.pop(os.path.realpath(path), None)
+
+
 def unsaved(path: Path) -> bytes | None:
     """Return the unsaved content standing for a file, if any."""
     if not _UNSAVED:

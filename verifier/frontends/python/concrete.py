@@ -34,7 +34,8 @@ class ConcreteReducer(Reducer):
         self.current = current
         self.reads: list[tuple[str, bool, bool]] = []  # name, found, has a default
 
-    def config(self, name: str, default: s.Sub | None, where: Span | None = None) -> s.Sub:
+    def config(self, name: str, default: s.Sub | None, where: Span | None = None,
+               written: Span | None = None) -> s.Sub:
         self.reads.append((name, name in self.configurations, default is not None))
         if name in self.configurations:
             return s.Text(self.configurations[name])
@@ -42,11 +43,11 @@ class ConcreteReducer(Reducer):
             return self.reduce(default)
         raise SubstitutionFailure(f"launch configuration '{name}' does not exist", name)
 
-    def package_share(self, name: str) -> s.Sub:
+    def package_share(self, name: str, written: Span | None = None) -> s.Sub:
         package = self.index.find(name)
         return s.Text(placeholder("pkg", name) if package is None else str(package.share))
 
-    def package_prefix(self, name: str) -> s.Sub:
+    def package_prefix(self, name: str, written: Span | None = None) -> s.Sub:
         package = self.index.find(name)
         if package is None or package.prefix is None:
             return s.Text(placeholder("prefix", name))

@@ -117,6 +117,25 @@ class PythonConverter:
     def keyword_values(self, call: Span) -> dict[str, Span]:
         return self._locator.keyword_values(call)
 
+    def written(self, call: Span, value: Any, *, position: int | None = None,
+                keyword: str | None = None, item: int | None = None,
+                items: int | None = None) -> s.Sub:
+        sub = self.sub(value)
+        if isinstance(value, str) and sub == s.Text(value):
+            where = self._locator.literal(call, value, position=position, keyword=keyword,
+                                          item=item, items=items)
+            if where is not None:
+                return s.Text(value, where)
+        return sub
+
+    def written_key(self, call: Span, keyword: str, key: Any) -> s.Sub:
+        sub = self.sub(key)
+        if isinstance(key, str) and sub == s.Text(key):
+            where = self._locator.key_literal(call, keyword, key)
+            if where is not None:
+                return s.Text(key, where)
+        return sub
+
     def pairs(self, value: Any) -> tuple[tuple[s.Sub, s.Sub], ...]:
         items = value.items() if isinstance(value, Mapping) else value
         return tuple((self.sub(k), self.sub(v)) for k, v in items)

@@ -21,6 +21,8 @@ MAX_SOURCE_BYTES = 2 << 20  # a launch file, not a generated blob
 
 Calls = dict[tuple[int, int], ast.Call]
 Assignments = dict[str, list[ast.expr]]
+Lines = tuple[bytes, ...]
+Parsed = tuple[Calls, Assignments, Lines]
 
 
 class CallLocator:
@@ -31,7 +33,7 @@ class CallLocator:
     """
 
     def __init__(self) -> None:
-        self._files: dict[Path, tuple[Calls, Assignments]] = {}
+        self._files: dict[Path, Parsed] = {}
 
     def keyword_keys(self, call: Span, keyword: str) -> dict[str, Span]:
         """Return the span of each literal key of ``keyword=`` in the call at ``call``.
@@ -83,6 +85,82 @@ class CallLocator:
         return [(_span(call.file, item), self._keys(call.file, item, follow=False))
                 for item in value.elts]
 
+    def literal(self, call: Span, text: str, *, position: int | None = None,
+                keyword: str | None = None, item: int | None = None,
+                items: int | None = None) -> Span | None:
+        """Return where ``text`` is written, inside its quotes, as an argument of the call.
+
+        The argument is the call's ``position``-th one or its ``keyword=`` one (``item``:
+        an item of the list or tuple written there). Only a plain string literal spelling
+        exactly ``text`` (no prefix, escape or implicit concatenation) is located, so that
+        a fix can replace it; columns count characters. With ``item``, the list must
+        have ``items`` items when given (a value built from more than what is written
+        there is not located).
+
+        Examples:
+            >>> import tempfile
+            >>> file = Path(tempfile.mkdtemp()) / "x.launch.py"
+            >>> _ = file.write_text("Node(package='démo', executable=r'talker')")
+            >>> where = CallLocator().literal(Span(file, 1, 1), "démo", keyword="package")
+            >>> (where.column, where.end_column)
+            (15, 19)
+            >>> CallLocator().literal(Span(file, 1, 1), "talker", keyword="executable") is None
+            True
+        """
+        node = self._call(call)
+        if node is None:
+            return None
+        value: ast.expr | None = None
+        if position is not None and position < len(node.args):
+            value = node.args[position]
+        elif keyword is not None:
+            value = self._keyword(call, keyword)
+        if item is not None:
+            if not isinstance(value, (ast.List, ast.Tuple)) or not (
+                    -len(value.elts) <= item < len(value.elts)) or any(
+                    isinstance(entry, ast.Starred) for entry in value.elts) or (
+                    items is not None and len(value.elts) != items):
+                return None
+            value = value.elts[item]
+        return self._literal(call.file, value, text)
+
+    def key_literal(self, call: Span, keyword: str, key: str) -> Span | None:
+        """Return where a key of the call's ``keyword=`` dict or pairs is written (see above)."""
+        value = self._bound(call.file, self._keyword(call, keyword))
+        if (isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute)
+                and value.func.attr == "items" and not value.args):
+            value = self._bound(call.file, value.func.value)
+        nodes: list[ast.expr] = []
+        if isinstance(value, ast.Dict):
+            nodes = [k for k in value.keys if k is not None]
+        elif isinstance(value, (ast.List, ast.Tuple)):
+            nodes = [entry.elts[0] for entry in value.elts
+                     if isinstance(entry, ast.Tuple) and len(entry.elts) == 2]
+        found = [node for node in nodes
+                 if isinstance(node, ast.Constant) and node.value == key]
+        return self._literal(call.file, found[0], key) if len(found) == 1 else None
+
+    def _literal(self, file: Path, node: ast.expr | None, text: str) -> Span | None:
+        """Return the span inside the quotes of a plain one-line literal spelling ``text``."""
+        if (not isinstance(node, ast.Constant) or node.value != text or not text
+                or node.end_lineno != node.lineno or node.end_col_offset is None):
+            return None
+        lines = self._parsed(file)[2]
+        if not 0 < node.lineno <= len(lines) or (node.lineno == 1 and lines[0].startswith(
+                b"\xef\xbb\xbf")):  # columns after a byte-order mark are ambiguous
+            return None
+        line = lines[node.lineno - 1]
+        try:
+            before = line[:node.col_offset].decode()
+            written = line[node.col_offset:node.end_col_offset].decode()
+        except UnicodeDecodeError:
+            return None
+        if len(written) < 2 or written[0] not in "'\"" or written[-1] != written[0] \
+                or written[1:-1] != text:
+            return None
+        column = len(before) + 2  # 1-based, after the opening quote
+        return Span(file, node.lineno, column, node.lineno, column + len(text))
+
     def _keys(self, file: Path, value: ast.expr | None, *, follow: bool = True
               ) -> dict[str, Span]:
         """Return the literal keys of a dict (or ``.items()`` of one) or of a list of pairs.
@@ -126,7 +204,7 @@ class CallLocator:
     def _call(self, where: Span) -> ast.Call | None:
         return self._parsed(where.file)[0].get((where.line, where.column))
 
-    def _parsed(self, file: Path) -> tuple[Calls, Assignments]:
+    def _parsed(self, file: Path) -> Parsed:
         found = self._files.get(file)
         if found is None:
             buffered = unsaved(file)
@@ -136,7 +214,7 @@ class CallLocator:
                 try:
                     stat = file.stat()
                 except OSError:
-                    found = ({}, {})
+                    found = ({}, {}, ())
                 else:
                     found = _index(file, stat.st_mtime_ns, stat.st_size)
             self._files[file] = found
@@ -144,24 +222,24 @@ class CallLocator:
 
 
 @functools.lru_cache(maxsize=32)
-def _index(file: Path, mtime_ns: int, size: int) -> tuple[Calls, Assignments]:
+def _index(file: Path, mtime_ns: int, size: int) -> Parsed:
     """Parse one version of a file; index its calls by position and its simple assignments."""
     if size > MAX_SOURCE_BYTES:
-        return {}, {}
+        return {}, {}, ()
     try:
         data = read_file(file)
     except OSError:
-        return {}, {}
+        return {}, {}, ()
     return _parse(data, file)
 
 
-def _parse(data: bytes, file: Path) -> tuple[Calls, Assignments]:
+def _parse(data: bytes, file: Path) -> Parsed:
     if len(data) > MAX_SOURCE_BYTES:
-        return {}, {}
+        return {}, {}, ()
     try:
         tree = ast.parse(data, filename=str(file))
     except (SyntaxError, ValueError, RecursionError, MemoryError):
-        return {}, {}
+        return {}, {}, ()
     calls: Calls = {}
     assignments: Assignments = {}
     for node in ast.walk(tree):
@@ -171,7 +249,7 @@ def _parse(data: bytes, file: Path) -> tuple[Calls, Assignments]:
             for target in node.targets:
                 if isinstance(target, ast.Name):
                     assignments.setdefault(target.id, []).append(node.value)
-    return calls, assignments
+    return calls, assignments, tuple(data.split(b"\n"))
 
 
 def _span(file: Path, node: ast.expr) -> Span:
