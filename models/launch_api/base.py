@@ -45,8 +45,11 @@ def caller_span(skip: int = 1) -> Span:
     return _frame_span(frame)
 
 
+_Position = tuple[int | None, int | None, int | None, int | None]  # lines, columns
+
+
 @functools.lru_cache(maxsize=256)
-def _positions(code: CodeType) -> tuple[tuple[int | None, ...], ...] | None:
+def _positions(code: CodeType) -> tuple[_Position, ...] | None:
     """Return a code object's instruction positions (a loop asks for the same ones often)."""
     positions = getattr(code, "co_positions", None)
     if positions is None:
@@ -63,10 +66,10 @@ def _frame_span(frame: FrameType) -> Span:
     positions = _positions(frame.f_code)
     if positions is not None:
         index = frame.f_lasti // 2
-        entry = positions[index] if 0 <= index < len(positions) else None
-        if entry and entry[0] is not None and entry[2] is not None:
-            start, end, column, end_column = entry
-            return Span(path, start, column + 1, end, (end_column or column) + 1)
+        if 0 <= index < len(positions):
+            start, end, column, end_column = positions[index]
+            if start is not None and column is not None:
+                return Span(path, start, column + 1, end, (end_column or column) + 1)
     return Span(path, line)
 
 
