@@ -250,7 +250,8 @@ class TagParser(EntityReader):
                 return a.ParamValue(
                     value=tuple(self.parse_text(p, span) for p in parts), value_type=value_type
                 )
-            return a.ParamValue(value=self.parse_text(raw, span), value_type=value_type)
+            written = item.attrs["value"].value_at  # a fix can rename a name read here
+            return a.ParamValue(value=self.parse_text(raw, span, written), value_type=value_type)
         if isinstance(raw, list):
             return a.ParamValue(
                 value=tuple(self.parse_text(x, span) if isinstance(x, str) else x for x in raw),
