@@ -29,30 +29,10 @@ TIMEOUT = 30.0  # seconds for anything to arrive (a loaded CI machine; usually w
 
 Message = dict[str, Any]
 
-# The server with LV201's typo findings carrying a fix, as rules will (another branch adds
-# fixes to rules): the code action path end to end, with a fix this test controls. And a
-# bug planted in the server itself: checking a file named explode.launch.xml fails.
+# The server with a bug planted in it: checking a file named explode.launch.xml fails.
 BOOT = textwrap.dedent("""
-    import dataclasses, re, sys
+    import sys
     import launchverify.lsp.server as server
-    from launchverify.rule import Edit, Fix
-    from launchverify.rules.arguments.undeclared_argument import UndeclaredArgument
-    from launchverify.workspace.sources import source_lines
-
-    original = UndeclaredArgument.check
-
-    def check(self, graph, ctx):
-        for finding in original(self, graph, ctx):
-            typo = re.search(r"'(\\w+)' is read .*did you mean '(\\w+)'", finding.message)
-            if typo:
-                span = finding.span
-                line = source_lines(span.file)[span.line - 1]
-                text = line[span.column - 1:span.end_column - 1].replace(*typo.groups())
-                fix = Fix(f"rename to {typo.group(2)!r}", (Edit(span, text),))
-                finding = dataclasses.replace(finding, fix=fix)
-            yield finding
-
-    UndeclaredArgument.check = check
     check_documents = server.check_documents
 
     def exploding(paths, buffers, folders):
@@ -271,13 +251,16 @@ def test_code_actions_offer_the_fix_and_a_suppression(client: Client, tmp_path: 
     actions = client.request("textDocument/codeAction", {
         "textDocument": {"uri": robot.as_uri()}, "range": typo["range"],
         "context": {"diagnostics": [typo]}})
-    fix = next(a for a in actions if a["title"] == "LV201: rename to 'use_sim_time'")
+    fix = next(a for a in actions
+               if a["title"] == "LV201: replace 'use_sim_tme' with 'use_sim_time'")
     assert fix["kind"] == "quickfix" and fix["isPreferred"] is True
     assert fix["diagnostics"][0]["code"] == "LV201"
     (change,) = fix["edit"]["documentChanges"]
     assert change["textDocument"] == {"uri": robot.as_uri(), "version": 1}
-    assert change["edits"] == [{"range": typo["range"],
-                                "newText": 'if="$(var use_sim_time)"'}]
+    column = ROBOT.splitlines()[3].index("use_sim_tme")  # only the misspelt name changes
+    assert change["edits"] == [{"range": {"start": {"line": 3, "character": column},
+                                          "end": {"line": 3, "character": column + 11}},
+                                "newText": "use_sim_time"}]
     suppress = next(a for a in actions if a["title"] == "Suppress LV201 on this line")
     (edit,) = suppress["edit"]["documentChanges"][0]["edits"]
     end = len(ROBOT.splitlines()[3])
