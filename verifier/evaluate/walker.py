@@ -367,6 +367,15 @@ class Walker:
                 f"choices {list(action.choices)} (ros2 launch fails)",
                 action.span, ctx,
             )
+        elif action.choices is not None and given is None and existing is not None \
+                and not is_unset(existing) and self.graph.runs(ctx.origin(action.span)):
+            # An includer passes a value that depends on its arguments: with their
+            # defaults it must still be a choice (its own default is LV203's to judge).
+            passed = self.base_check.at(ctx, action.span)
+            value = passed.text(current)
+            if value is not None and value not in action.choices:
+                passed.fail(f"argument {action.name!r} gets value {value!r}, which is not one "
+                            f"of its choices {list(action.choices)} (ros2 launch fails)")
         self.graph.arguments.append(ArgumentRecord(
             action.name, ctx.origin(action.span), default, action.description,
             action.choices, current, action,
