@@ -1,0 +1,101 @@
+"""What a node's code creates: endpoints and the interface of one executable or component.
+
+Names are kept as written in the code (relative, ``~/private`` or absolute): resolving them
+against a namespace and remaps belongs to the launch graph, not to the sources.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from enum import Enum
+from pathlib import Path
+
+from launchverify.span import Span
+
+
+class EndpointKind(str, Enum):
+    """What an endpoint does on the ROS graph."""
+
+    PUBLISHER = "publisher"
+    SUBSCRIPTION = "subscription"
+    SERVICE = "service"
+    CLIENT = "client"
+    ACTION_SERVER = "action_server"
+    ACTION_CLIENT = "action_client"
+
+
+@dataclass(frozen=True, slots=True)
+class Endpoint:
+    """One publisher, subscription, service, client or action end a node's code creates.
+
+    ``name`` is the name as written, ``None`` when it is not known before run time; then
+    ``unresolved_reason`` says why. When the name comes from a parameter,
+    ``name_parameter`` is that parameter and ``name`` its default (when one is declared).
+    ``via`` names the wrapper that creates it (``image_transport``, ``message_filters``,
+    ``tf2_ros``); ``type`` is normalised (``sensor_msgs/msg/LaserScan``) when known.
+    """
+
+    kind: EndpointKind
+    name: str | None
+    type: str | None
+    span: Span
+    name_parameter: str | None = None
+    parameter_default: str | None = None
+    qos: str | None = None
+    via: str | None = None
+    unresolved_reason: str | None = None
+    owner: str | None = None  # the class whose code creates it, when inside one
+    note: str | None = None
+
+    def at(self, file: Path) -> Endpoint:
+        """Return the same endpoint located in ``file`` (a cached result reused)."""
+        return replace(self, span=replace(self.span, file=file))
+
+
+@dataclass(frozen=True, slots=True)
+class NodeName:
+    """A default node name given in code (``rclcpp::Node("talker")``, ``super().__init__``)."""
+
+    name: str
+    span: Span
+    owner: str | None = None
+
+    def at(self, file: Path) -> NodeName:
+        """Return the same name located in ``file``."""
+        return replace(self, span=replace(self.span, file=file))
+
+
+@dataclass(frozen=True, slots=True)
+class FileInterfaces:
+    """What one source file creates; ``problem`` says why a file could not be read."""
+
+    file: Path
+    endpoints: tuple[Endpoint, ...] = ()
+    node_names: tuple[NodeName, ...] = ()
+    problem: str | None = None
+    partial: bool = False  # the parser recovered from syntax errors
+
+    def at(self, file: Path) -> FileInterfaces:
+        """Return the same result for another file with identical content."""
+        if file == self.file:
+            return self
+        return FileInterfaces(file, tuple(e.at(file) for e in self.endpoints),
+                              tuple(n.at(file) for n in self.node_names),
+                              self.problem, self.partial)
+
+
+@dataclass(frozen=True, slots=True)
+class NodeInterface:
+    """The endpoints of one executable (or component plugin) of a package.
+
+    ``sources`` are the files read; ``problems`` say what could not be read or mapped, so
+    an empty ``endpoints`` never passes for "creates nothing" when it is incomplete.
+    """
+
+    package: str
+    executable: str
+    component: str | None
+    node_name: str | None
+    endpoints: tuple[Endpoint, ...]
+    sources: tuple[Path, ...]
+    problems: tuple[str, ...] = ()

@@ -1,0 +1,76 @@
+"""The interface of each executable and component of a package, from its sources.
+
+Joins ``sources.package_targets`` (which files) with ``files.file_interfaces`` (what each
+file creates). A library registering several components holds all their classes: an
+endpoint created by another registered component's class is left to that component.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from pathlib import Path
+
+from launchverify.topology.files import file_interfaces
+from launchverify.topology.model import Endpoint, FileInterfaces, NodeInterface, NodeName
+from launchverify.topology.sources import Target, package_targets
+from launchverify.workspace.packages import Package, scan_sources
+
+
+def package_interfaces(package: Package) -> list[NodeInterface]:
+    """Return the node interface of every executable and component of one package."""
+    return [target_interface(package.name, target) for target in package_targets(package)]
+
+
+def target_interface(package: str, target: Target) -> NodeInterface:
+    """Return what the sources of one executable or component create."""
+    results = [file_interfaces(path) for path in target.sources]
+    others = {_class(p) for p in target.other_components}
+    endpoints = [e for r in results for e in r.endpoints
+                 if e.owner is None or e.owner not in others]
+    problems = list(target.problems)
+    problems += [f"{r.file}: {r.problem}" for r in results if r.problem]
+    problems += [f"{r.file}: syntax errors, read as far as recovered"
+                 for r in results if r.partial]
+    if not target.sources and not problems:
+        problems.append("no source file found")
+    return NodeInterface(package, target.executable, target.component,
+                         _node_name(results, target), tuple(endpoints),
+                         target.sources, tuple(problems))
+
+
+def _class(plugin: str) -> str:
+    return plugin.rsplit("::", 1)[-1]
+
+
+def _node_name(results: Iterable[FileInterfaces], target: Target) -> str | None:
+    """Return the one default node name the code gives.
+
+    A component's own class decides first, then an executable's own files (its ``main``),
+    then all files; several different names leave it unknown.
+    """
+    names: list[NodeName] = [n for r in results for n in r.node_names]
+    groups = []
+    if target.component is not None:
+        groups.append({n.name for n in names if n.owner == _class(target.component)})
+    groups.append({n.name for n in names if n.span.file in target.main_sources})
+    groups.append({n.name for n in names})
+    for distinct in groups:
+        if distinct:
+            return distinct.pop() if len(distinct) == 1 else None
+    return None
+
+
+def workspace_interfaces(roots: Iterable[Path]) -> Iterator[NodeInterface]:
+    """Yield the node interfaces of every package found below the given folders."""
+    seen: set[Path] = set()
+    for root in roots:
+        for name, folder in sorted(scan_sources(root), key=lambda item: str(item[1])):
+            if folder in seen:
+                continue
+            seen.add(folder)
+            yield from package_interfaces(Package(name, source=folder))
+
+
+def endpoints_of(interfaces: Iterable[NodeInterface]) -> list[Endpoint]:
+    """Return every endpoint of the given interfaces, in order."""
+    return [e for interface in interfaces for e in interface.endpoints]
