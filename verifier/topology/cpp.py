@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 from launchverify.topology.model import Endpoint, EndpointKind, FileInterfaces, NodeName
 from launchverify.topology.names import Resolved, merge, unknown
-from launchverify.topology.parsing import parse, short, span, text, walk
+from launchverify.topology.parsing import damaged, parse, short, span, text, walk
 from launchverify.topology.wrappers import (
     TF_CLASSES,
     image_endpoints,
@@ -84,7 +84,8 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
             if node.type == "field_initializer":
                 names.extend(_node_name_initializer(context, node))
     return FileInterfaces(path, tuple(endpoints), tuple(names),
-                          partial=tree.root_node.has_error)
+                          partial=damaged(tree.root_node),
+                          aliases=tuple(sorted(context.aliases.items())))
 
 
 # --------------------------------------------------------------------------- the file
@@ -337,21 +338,28 @@ def _owner(node: Node) -> str | None:
 
 
 def _endpoint(context: _File, node: Node, kind: EndpointKind, type_: str | None,
-              name_arg: Node | None, qos: Node | None = None, via: str | None = None
-              ) -> Endpoint:
+              name_arg: Node | None, qos: Node | None = None, via: str | None = None,
+              written: str | None = None) -> Endpoint:
     where = span(context.path, node)
+    written = "".join(written.split()) if written and type_ is None else None
     owner = _owner(node)
     qos_text = short(text(qos), 40) if qos is not None else None
     if name_arg is None:
         return Endpoint(kind, None, type_, where, qos=qos_text, via=via, owner=owner,
-                        unresolved_reason="no name argument found")
+                        unresolved_reason="no name argument found", type_written=written)
     resolved = _resolve(context, name_arg, 0)
     reason = resolved.reason
     if resolved.parameter is not None and resolved.value is None:
         reason = f"parameter '{resolved.parameter}' has no default declared in this file"
     return Endpoint(kind, resolved.value, type_, where, resolved.parameter,
                     resolved.value if resolved.parameter else None, qos_text, via,
-                    reason if resolved.value is None else None, owner)
+                    reason if resolved.value is None else None, owner, type_written=written)
+
+
+def _first_template(arguments: Node | None) -> str | None:
+    if arguments is None or not arguments.named_children:
+        return None
+    return text(arguments.named_children[0])
 
 
 def _call(context: _File, node: Node) -> list[Endpoint]:
@@ -361,7 +369,7 @@ def _call(context: _File, node: Node) -> list[Endpoint]:
     if "rclcpp_action" in scope and name in _ACTION:
         rest = _skip_nodes(context, arguments)
         return [_endpoint(context, node, _ACTION[name], _template_type(context, template),
-                          rest[0] if rest else None)]
+                          rest[0] if rest else None, written=_first_template(template))]
     if name in _IMAGE or (image_scope and name in ("create_publisher", "create_subscription")):
         kind, camera = _IMAGE[name] if name in _IMAGE else (_RCLCPP[name], False)
         rest = _skip_nodes(context, arguments) if image_scope else arguments
@@ -378,7 +386,8 @@ def _call(context: _File, node: Node) -> list[Endpoint]:
         qos = rest[1] if len(rest) > 1 and not name.startswith("create_generic_") else None
         if name in ("create_service", "create_client"):
             qos = None
-        return [_endpoint(context, node, _RCLCPP[name], type_, rest[0] if rest else None, qos)]
+        return [_endpoint(context, node, _RCLCPP[name], type_, rest[0] if rest else None, qos,
+                          written=_first_template(template))]
     return []
 
 
@@ -395,7 +404,7 @@ def _subscribe(context: _File, node: Node, obj: Node, arguments: list[Node]) -> 
         template = _template_arguments_in(declared)
         return [_endpoint(context, node, EndpointKind.SUBSCRIPTION,
                           _type(context, template) if template else None,
-                          rest[0] if rest else None, via="message_filters")]
+                          rest[0] if rest else None, via="message_filters", written=template)]
     if "image_transport" in declared or "ImageTransport" in declared or _IMAGE_OBJECT.search(
             text(obj)):
         base = _endpoint(context, node, EndpointKind.SUBSCRIPTION, None,
@@ -466,7 +475,7 @@ def _wrapper(context: _File, node: Node, written: str, arguments: list[Node]) ->
         template = _template_arguments_in(compact)
         return [_endpoint(context, node, EndpointKind.SUBSCRIPTION,
                           _type(context, template) if template else None, name,
-                          via="message_filters")]
+                          via="message_filters", written=template)]
     if "image_transport" in compact and cls in ("CameraPublisher", "Publisher",
                                                 "SubscriberFilter", "CameraSubscriber"):
         kind = EndpointKind.PUBLISHER if "Publisher" in cls else EndpointKind.SUBSCRIPTION
@@ -497,7 +506,7 @@ def _node_name_initializer(context: _File, node: Node) -> list[NodeName]:
     if written not in _NODE_CLASSES or not arguments:
         return []
     name = _resolve(context, arguments[0], 0).value
-    return [NodeName(name, span(context.path, node), _owner(node))] if name else []
+    return [NodeName(name, span(context.path, node), _owner(node))]
 
 
 def _node_name_call(context: _File, node: Node) -> list[NodeName]:
@@ -515,4 +524,4 @@ def _node_name_call(context: _File, node: Node) -> list[NodeName]:
     if cls not in _NODE_CLASSES:
         return []
     value = _resolve(context, arguments[0], 0).value
-    return [NodeName(value, span(context.path, node), _owner(node))] if value else []
+    return [NodeName(value, span(context.path, node), _owner(node))]

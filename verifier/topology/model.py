@@ -46,6 +46,7 @@ class Endpoint:
     unresolved_reason: str | None = None
     owner: str | None = None  # the class whose code creates it, when inside one
     note: str | None = None
+    type_written: str | None = None  # the type as written, when ``type`` is not known
 
     def at(self, file: Path) -> Endpoint:
         """Return the same endpoint located in ``file`` (a cached result reused)."""
@@ -54,9 +55,13 @@ class Endpoint:
 
 @dataclass(frozen=True, slots=True)
 class NodeName:
-    """A default node name given in code (``rclcpp::Node("talker")``, ``super().__init__``)."""
+    """A default node name given in code (``rclcpp::Node("talker")``, ``super().__init__``).
 
-    name: str
+    ``name`` is ``None`` when the code computes it: then no other name in the same sources
+    can be taken for the node's name.
+    """
+
+    name: str | None
     span: Span
     owner: str | None = None
 
@@ -74,6 +79,7 @@ class FileInterfaces:
     node_names: tuple[NodeName, ...] = ()
     problem: str | None = None
     partial: bool = False  # the parser recovered from syntax errors
+    aliases: tuple[tuple[str, str], ...] = ()  # C++ type aliases, for other files' types
 
     def at(self, file: Path) -> FileInterfaces:
         """Return the same result for another file with identical content."""
@@ -81,7 +87,7 @@ class FileInterfaces:
             return self
         return FileInterfaces(file, tuple(e.at(file) for e in self.endpoints),
                               tuple(n.at(file) for n in self.node_names),
-                              self.problem, self.partial)
+                              self.problem, self.partial, self.aliases)
 
 
 @dataclass(frozen=True, slots=True)

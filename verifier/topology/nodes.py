@@ -8,12 +8,15 @@ endpoint created by another registered component's class is left to that compone
 from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
+from dataclasses import replace
 from pathlib import Path
 
 from launchverify.topology.files import file_interfaces
 from launchverify.topology.model import Endpoint, FileInterfaces, NodeInterface, NodeName
 from launchverify.topology.sources import Target, package_targets
+from launchverify.topology.wrappers import normalise_type
 from launchverify.workspace.packages import Package, scan_sources
+from launchverify.workspace.paths import display_path
 
 
 def package_interfaces(package: Package) -> list[NodeInterface]:
@@ -25,17 +28,32 @@ def target_interface(package: str, target: Target) -> NodeInterface:
     """Return what the sources of one executable or component create."""
     results = [file_interfaces(path) for path in target.sources]
     others = {_class(p) for p in target.other_components}
-    endpoints = [e for r in results for e in r.endpoints
+    aliases = dict(a for r in results for a in r.aliases)
+    endpoints = [_retyped(e, aliases) for r in results for e in r.endpoints
                  if e.owner is None or e.owner not in others]
     problems = list(target.problems)
-    problems += [f"{r.file}: {r.problem}" for r in results if r.problem]
-    problems += [f"{r.file}: syntax errors, read as far as recovered"
+    problems += [f"{display_path(r.file)}: {r.problem}" for r in results if r.problem]
+    problems += [f"{display_path(r.file)}: syntax errors, read as far as recovered"
                  for r in results if r.partial]
     if not target.sources and not problems:
         problems.append("no source file found")
     return NodeInterface(package, target.executable, target.component,
                          _node_name(results, target), tuple(endpoints),
                          target.sources, tuple(problems))
+
+
+def _retyped(endpoint: Endpoint, aliases: dict[str, str]) -> Endpoint:
+    """Resolve a type through an alias another file of the target declares (a header's)."""
+    written = endpoint.type_written
+    if endpoint.type is not None or written is None:
+        return endpoint
+    for _ in range(4):
+        target = aliases.get(written) or aliases.get(written.rsplit("::", 1)[-1])
+        if target is None or target == written:
+            break
+        written = target
+    resolved = normalise_type(written)
+    return replace(endpoint, type=resolved, type_written=None) if resolved else endpoint
 
 
 def _class(plugin: str) -> str:
@@ -56,7 +74,7 @@ def _node_name(results: Iterable[FileInterfaces], target: Target) -> str | None:
     groups.append({n.name for n in names})
     for distinct in groups:
         if distinct:
-            return distinct.pop() if len(distinct) == 1 else None
+            return distinct.pop() if len(distinct) == 1 else None  # {None}: computed
     return None
 
 

@@ -61,3 +61,18 @@ def short(code: str, limit: int = 60) -> str:
     """Return code on one line, cut to ``limit`` characters, for messages."""
     flat = " ".join(code.split())
     return flat if len(flat) <= limit else flat[: limit - 1] + "…"
+
+
+def damaged(root: Node) -> bool:
+    """Return whether the parser had to skip code (an error node, a missing token).
+
+    A missing ``;`` alone does not count: ``RCLCPP_COMPONENTS_REGISTER_NODE(x)`` and other
+    macros are written without one, and the tree around them is whole.
+    """
+    stack = [root]
+    while stack:
+        node = stack.pop()
+        if node.type == "ERROR" or (node.is_missing and node.type != ";"):
+            return True
+        stack.extend(child for child in node.children if child.has_error)
+    return False

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 
 from launchverify.topology.model import Endpoint, EndpointKind, FileInterfaces, NodeName
 from launchverify.topology.names import Resolved, merge, unknown
-from launchverify.topology.parsing import parse, short, span, text, walk
+from launchverify.topology.parsing import damaged, parse, short, span, text, walk
 from launchverify.topology.wrappers import (
     TF_CLASSES,
     image_endpoints,
@@ -65,7 +65,7 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
             endpoints.extend(_call(context, node))
             names.extend(_node_name(context, node))
     return FileInterfaces(path, tuple(endpoints), tuple(names),
-                          partial=tree.root_node.has_error)
+                          partial=damaged(tree.root_node))
 
 
 def _collect(context: _File, nodes: list[Node]) -> None:
@@ -297,4 +297,4 @@ def _node_name(context: _File, node: Node) -> list[NodeName]:
     if name is None:
         return []
     value = _resolve(context, name, 0).value
-    return [NodeName(value, span(context.path, node), _owner(node))] if value else []
+    return [NodeName(value, span(context.path, node), _owner(node))]

@@ -1,0 +1,20 @@
+// A component registered with an executable; its header is followed from here.
+#include "demo_cpp/relay.hpp"
+
+#include "rclcpp_components/register_node_macro.hpp"
+
+namespace demo_cpp
+{
+
+Relay::Relay(const rclcpp::NodeOptions & options)
+: Node("relay", options)  // expect-node-name: relay
+{
+  auto out_topic = declare_parameter<std::string>("out_topic", "/cmd_vel");
+  // Twist is an alias of the header: this file alone does not type it, the executable does
+  out_ = create_publisher<Twist>(out_topic, rclcpp::QoS(10).reliable());  // expect: publisher /cmd_vel ? param=out_topic
+  setup();
+}
+
+}  // namespace demo_cpp
+
+RCLCPP_COMPONENTS_REGISTER_NODE(demo_cpp::Relay)
