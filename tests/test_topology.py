@@ -153,13 +153,17 @@ def test_components_in_one_library_keep_their_own_endpoints() -> None:
     assert (ping.node_name, pong.node_name) == ("ping", "pong")
 
 
-def test_a_type_alias_of_a_header_types_the_source_endpoint() -> None:
+def test_a_header_types_the_endpoints_of_the_sources_including_it() -> None:
     interfaces = {i.executable: i for i in package_interfaces(
         Package("demo_cpp", source=DATA / "demo_cpp"))}
     relay = interfaces["relay"]
     assert relay.node_name == "relay"
-    assert {(e.name, e.type) for e in relay.endpoints} == {
-        ("/cmd_vel", "geometry_msgs/msg/Twist"), ("cmd_vel_in", "geometry_msgs/msg/Twist")}
+    assert {(e.kind.value, e.name, e.type, e.via) for e in relay.endpoints} == {
+        ("publisher", "/cmd_vel", "geometry_msgs/msg/Twist", None),
+        ("subscription", "cmd_vel_in", "geometry_msgs/msg/Twist", None),
+        # members declared in the header, built in relay.cpp's initialiser list
+        ("subscription", "feedback", "geometry_msgs/msg/Twist", "message_filters"),
+        ("publisher", "/tf_static", "tf2_msgs/msg/TFMessage", "tf2_ros")}
     assert interfaces["broken"].problems  # parsed as far as recovered, and says so
 
 

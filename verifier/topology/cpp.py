@@ -15,7 +15,14 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from launchverify.topology.model import Endpoint, EndpointKind, FileInterfaces, NodeName
+from launchverify.span import Span
+from launchverify.topology.model import (
+    Endpoint,
+    EndpointKind,
+    FileInterfaces,
+    MemberInit,
+    NodeName,
+)
 from launchverify.topology.names import Resolved, merge, unknown
 from launchverify.topology.parsing import damaged, parse, short, span, text, walk
 from launchverify.topology.wrappers import (
@@ -63,6 +70,7 @@ class _File:
     values: dict[str, list[Node]] = field(default_factory=dict)
     read_params: dict[str, list[str]] = field(default_factory=dict)  # get_parameter(p, var)
     types: dict[str, str] = field(default_factory=dict)
+    members: dict[str, str] = field(default_factory=dict)
     defaults: dict[str, Resolved] = field(default_factory=dict)
 
 
@@ -74,18 +82,23 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
     _collect(context, nodes)
     endpoints: list[Endpoint] = []
     names: list[NodeName] = []
+    inits: list[MemberInit] = []
     for node in nodes:
         if node.type == "call_expression":
             endpoints.extend(_call(context, node))
             endpoints.extend(_make_call(context, node))
             names.extend(_node_name_call(context, node))
-        elif node.type in ("declaration", "field_initializer", "new_expression"):
+        elif node.type in ("declaration", "new_expression"):
             endpoints.extend(_construction(context, node))
-            if node.type == "field_initializer":
-                names.extend(_node_name_initializer(context, node))
+        elif node.type == "field_initializer":
+            endpoints.extend(_construction(context, node))
+            names.extend(_node_name_initializer(context, node))
+            inits.extend(_member_init(context, node))
     return FileInterfaces(path, tuple(endpoints), tuple(names),
                           partial=damaged(tree.root_node),
-                          aliases=tuple(sorted(context.aliases.items())))
+                          aliases=tuple(sorted(context.aliases.items())),
+                          members=tuple(sorted(context.members.items())),
+                          inits=tuple(inits))
 
 
 # --------------------------------------------------------------------------- the file
@@ -117,6 +130,8 @@ def _collect(context: _File, nodes: list[Node]) -> None:
                 target = _variable(declarator)
                 if target:
                     context.types[target] = written
+                    if kind == "field_declaration":
+                        context.members[target] = written
             value = node.child_by_field_name("default_value")
             target = _variable(node.child_by_field_name("declarator"))
             if kind == "field_declaration" and value is not None and target:
@@ -298,13 +313,18 @@ def _template_type(context: _File, arguments: Node | None) -> str | None:
 
 
 def _type(context: _File, written: str) -> str | None:
+    return _aliased(context.aliases, written)
+
+
+def _aliased(aliases: dict[str, str], written: str) -> str | None:
+    """Return the normalised type of ``written`` after following the aliases given."""
     compact = "".join(written.split()).removeprefix("const")
     for _ in range(4):  # follow aliases of aliases
         last = compact.rsplit("::", 1)[-1]
-        if compact in context.aliases:
-            compact = context.aliases[compact]
-        elif last in context.aliases and context.aliases[last] != compact:
-            compact = context.aliases[last]
+        if compact in aliases:
+            compact = aliases[compact]
+        elif last in aliases and aliases[last] != compact:
+            compact = aliases[last]
         else:
             break
     return normalise_type(compact)
@@ -340,14 +360,19 @@ def _owner(node: Node) -> str | None:
 def _endpoint(context: _File, node: Node, kind: EndpointKind, type_: str | None,
               name_arg: Node | None, qos: Node | None = None, via: str | None = None,
               written: str | None = None) -> Endpoint:
-    where = span(context.path, node)
+    resolved = _resolve(context, name_arg, 0) if name_arg is not None else None
+    return _built(kind, resolved, type_, span(context.path, node), _owner(node),
+                  short(text(qos), 40) if qos is not None else None, via, written)
+
+
+def _built(kind: EndpointKind, resolved: Resolved | None, type_: str | None, where: Span,
+           owner: str | None, qos_text: str | None = None, via: str | None = None,
+           written: str | None = None) -> Endpoint:
+    """Return an endpoint from its resolved name (``None``: no name argument)."""
     written = "".join(written.split()) if written and type_ is None else None
-    owner = _owner(node)
-    qos_text = short(text(qos), 40) if qos is not None else None
-    if name_arg is None:
+    if resolved is None:
         return Endpoint(kind, None, type_, where, qos=qos_text, via=via, owner=owner,
                         unresolved_reason="no name argument found", type_written=written)
-    resolved = _resolve(context, name_arg, 0)
     reason = resolved.reason
     if resolved.parameter is not None and resolved.value is None:
         reason = f"parameter '{resolved.parameter}' has no default declared in this file"
@@ -459,29 +484,57 @@ def _construction(context: _File, node: Node) -> list[Endpoint]:
 
 
 def _wrapper(context: _File, node: Node, written: str, arguments: list[Node]) -> list[Endpoint]:
+    rest = _skip_nodes(context, arguments) if arguments else []
+    name = _resolve(context, rest[0], 0) if rest else None
+    return _wrapper_endpoints(written, span(context.path, node), _owner(node),
+                              len(arguments) - len(rest), len(arguments), name,
+                              context.aliases)
+
+
+def _wrapper_endpoints(written: str, where: Span, owner: str | None, node_arguments: int,
+                       arguments: int, name: Resolved | None, aliases: dict[str, str],
+                       ) -> list[Endpoint]:
+    """Return what constructing a wrapper of type ``written`` with these arguments creates."""
     compact = "".join(written.split())
     if "make_shared" in compact or "make_unique" in compact:
         return []
     cls = re.sub(r"<.*", "", compact).rsplit("::", 1)[-1]
     if cls in TF_CLASSES and ("tf2_ros" in compact or cls in compact):
-        return tf_endpoints(cls, span(context.path, node), _owner(node))
-    if not arguments:
-        return []
-    rest = _skip_nodes(context, arguments)
-    if len(rest) == len(arguments) and "SubscriberFilter" not in compact:
-        return []  # no node given: not a subscription yet
-    name = rest[0] if rest else None
+        return tf_endpoints(cls, where, owner)
+    if not arguments or (not node_arguments and "SubscriberFilter" not in compact):
+        return []  # no node given: not subscribed yet
     if "message_filters" in compact and cls == "Subscriber":
         template = _template_arguments_in(compact)
-        return [_endpoint(context, node, EndpointKind.SUBSCRIPTION,
-                          _type(context, template) if template else None, name,
-                          via="message_filters", written=template)]
+        type_ = _aliased(aliases, template) if template else None
+        return [_built(EndpointKind.SUBSCRIPTION, name, type_, where, owner,
+                       via="message_filters", written=template)]
     if "image_transport" in compact and cls in ("CameraPublisher", "Publisher",
                                                 "SubscriberFilter", "CameraSubscriber"):
         kind = EndpointKind.PUBLISHER if "Publisher" in cls else EndpointKind.SUBSCRIPTION
-        base = _endpoint(context, node, kind, None, name)
-        return image_endpoints(base, camera=cls.startswith("Camera"))
+        return image_endpoints(_built(kind, name, None, where, owner),
+                               camera=cls.startswith("Camera"))
     return []
+
+
+def member_endpoints(init: MemberInit, written: str, aliases: dict[str, str]
+                     ) -> list[Endpoint]:
+    """Return what a member initialiser creates, given the member's type from a header."""
+    return _wrapper_endpoints(written, init.span, init.owner, init.node_arguments,
+                              init.arguments, init.name, aliases)
+
+
+def _member_init(context: _File, node: Node) -> list[MemberInit]:
+    """Keep an initialiser of a member this file does not declare, for the target's headers."""
+    if len(node.named_children) < 2:
+        return []
+    member = _variable(node.named_children[0]) or ""
+    arguments = list(node.named_children[-1].named_children)
+    if not member or member in context.types or not arguments:
+        return []
+    rest = _skip_nodes(context, arguments)
+    return [MemberInit(member, span(context.path, node), _owner(node),
+                       len(arguments) - len(rest), len(arguments),
+                       _resolve(context, rest[0], 0) if rest else None)]
 
 
 def _make_call(context: _File, node: Node) -> list[Endpoint]:

@@ -11,6 +11,7 @@ from enum import Enum
 from pathlib import Path
 
 from launchverify.span import Span
+from launchverify.topology.names import Resolved
 
 
 class EndpointKind(str, Enum):
@@ -71,6 +72,27 @@ class NodeName:
 
 
 @dataclass(frozen=True, slots=True)
+class MemberInit:
+    """A member built in a constructor's initialiser list, its type declared elsewhere.
+
+    ``cartesian_broadcaster_(*this)`` in a ``.cpp`` whose header declares the member a
+    ``tf2_ros::StaticTransformBroadcaster``: what it creates is known once the files of
+    the whole executable are read together.
+    """
+
+    member: str
+    span: Span
+    owner: str | None
+    node_arguments: int  # leading node arguments (``this``, ``*this``, ``node``)
+    arguments: int
+    name: Resolved | None  # the first argument after them
+
+    def at(self, file: Path) -> MemberInit:
+        """Return the same initialiser located in ``file``."""
+        return replace(self, span=replace(self.span, file=file))
+
+
+@dataclass(frozen=True, slots=True)
 class FileInterfaces:
     """What one source file creates; ``problem`` says why a file could not be read."""
 
@@ -80,6 +102,8 @@ class FileInterfaces:
     problem: str | None = None
     partial: bool = False  # the parser recovered from syntax errors
     aliases: tuple[tuple[str, str], ...] = ()  # C++ type aliases, for other files' types
+    members: tuple[tuple[str, str], ...] = ()  # C++ data members and their written types
+    inits: tuple[MemberInit, ...] = ()  # initialisers of members declared elsewhere
 
     def at(self, file: Path) -> FileInterfaces:
         """Return the same result for another file with identical content."""
@@ -87,7 +111,8 @@ class FileInterfaces:
             return self
         return FileInterfaces(file, tuple(e.at(file) for e in self.endpoints),
                               tuple(n.at(file) for n in self.node_names),
-                              self.problem, self.partial, self.aliases)
+                              self.problem, self.partial, self.aliases, self.members,
+                              tuple(i.at(file) for i in self.inits))
 
 
 @dataclass(frozen=True, slots=True)

@@ -11,6 +11,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import replace
 from pathlib import Path
 
+from launchverify.topology.cpp import member_endpoints
 from launchverify.topology.files import file_interfaces
 from launchverify.topology.model import Endpoint, FileInterfaces, NodeInterface, NodeName
 from launchverify.topology.sources import Target, package_targets
@@ -29,7 +30,11 @@ def target_interface(package: str, target: Target) -> NodeInterface:
     results = [file_interfaces(path) for path in target.sources]
     others = {_class(p) for p in target.other_components}
     aliases = dict(a for r in results for a in r.aliases)
-    endpoints = [_retyped(e, aliases) for r in results for e in r.endpoints
+    members = dict(m for r in results for m in r.members)
+    created = [e for r in results for e in r.endpoints]
+    created += [e for r in results for init in r.inits if init.member in members
+                for e in member_endpoints(init, members[init.member], aliases)]
+    endpoints = [_retyped(e, aliases) for e in created
                  if e.owner is None or e.owner not in others]
     problems = list(target.problems)
     problems += [f"{display_path(r.file)}: {r.problem}" for r in results if r.problem]

@@ -6,8 +6,11 @@
 namespace demo_cpp
 {
 
+// The members below are declared in the header: this file alone cannot tell what they are.
 Relay::Relay(const rclcpp::NodeOptions & options)
-: Node("relay", options)  // expect-node-name: relay
+: Node("relay", options),  // expect-node-name: relay
+  feedback_(this, "feedback"),
+  static_frames_(*this)
 {
   auto out_topic = declare_parameter<std::string>("out_topic", "/cmd_vel");
   // Twist is an alias of the header: this file alone does not type it, the executable does

@@ -5,6 +5,8 @@
 
 #include "rclcpp/rclcpp.hpp"
 #include "geometry_msgs/msg/twist.hpp"
+#include "message_filters/subscriber.h"
+#include "tf2_ros/static_transform_broadcaster.h"
 
 namespace demo_cpp
 {
@@ -26,6 +28,9 @@ private:
 
   rclcpp::Subscription<Twist>::SharedPtr in_;
   rclcpp::Publisher<Twist>::SharedPtr out_;
+  // built in relay.cpp's initialiser list: typed from here when the executable is read
+  message_filters::Subscriber<Twist> feedback_;
+  tf2_ros::StaticTransformBroadcaster static_frames_;
 };
 
 }  // namespace demo_cpp
