@@ -163,7 +163,9 @@ def test_a_header_types_the_endpoints_of_the_sources_including_it() -> None:
         ("subscription", "cmd_vel_in", "geometry_msgs/msg/Twist", None),
         # members declared in the header, built in relay.cpp's initialiser list
         ("subscription", "feedback", "geometry_msgs/msg/Twist", "message_filters"),
-        ("publisher", "/tf_static", "tf2_msgs/msg/TFMessage", "tf2_ros")}
+        ("publisher", "/tf_static", "tf2_msgs/msg/TFMessage", "tf2_ros"),
+        # a typedef of the header names the wrapper built with new in relay.cpp
+        ("subscription", "limits", "geometry_msgs/msg/Twist", "message_filters")}
     assert interfaces["broken"].problems  # parsed as far as recovered, and says so
 
 

@@ -57,6 +57,7 @@ _IMAGE = {
 _NODE_CLASSES = ("Node", "LifecycleNode")
 _NODE_ARG = re.compile(r"[*&]?\s*(?:this|[\w:\->.]*node\w*(?:\(\))?|.*shared_from_this\(\)"
                        r"|.*get_node_\w+\(\))", re.I)
+_BARE_TYPE = re.compile(r"[A-Za-z_]\w*")  # a type named without namespace: maybe a typedef
 _IMAGE_OBJECT = re.compile(r"transport|^(?:this->)?it_?$", re.I)
 _STRING_TYPES = ("std::string", "string", "const std::string", "std::string_view")
 
@@ -86,10 +87,10 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
     for node in nodes:
         if node.type == "call_expression":
             endpoints.extend(_call(context, node))
-            endpoints.extend(_make_call(context, node))
+            endpoints.extend(_make_call(context, node, inits))
             names.extend(_node_name_call(context, node))
         elif node.type in ("declaration", "new_expression"):
-            endpoints.extend(_construction(context, node))
+            endpoints.extend(_construction(context, node, inits))
         elif node.type == "field_initializer":
             endpoints.extend(_construction(context, node))
             names.extend(_node_name_initializer(context, node))
@@ -395,7 +396,8 @@ def _call(context: _File, node: Node) -> list[Endpoint]:
         rest = _skip_nodes(context, arguments)
         return [_endpoint(context, node, _ACTION[name], _template_type(context, template),
                           rest[0] if rest else None, written=_first_template(template))]
-    if name in _IMAGE or (image_scope and name in ("create_publisher", "create_subscription")):
+    if (name in _IMAGE and template is None and (image_scope or _image_object(context, obj))) or (
+            image_scope and name in ("create_publisher", "create_subscription")):
         kind, camera = _IMAGE[name] if name in _IMAGE else (_RCLCPP[name], False)
         rest = _skip_nodes(context, arguments) if image_scope else arguments
         base = _endpoint(context, node, kind, None, rest[0] if rest else None)
@@ -416,6 +418,15 @@ def _call(context: _File, node: Node) -> list[Endpoint]:
     return []
 
 
+def _image_object(context: _File, obj: Node | None) -> bool:
+    """Return whether a method's object is an ImageTransport (ROS 1 ``nh.advertise<T>`` is not)."""
+    if obj is None:
+        return False
+    declared = context.types.get(_variable(obj) or "", "")
+    return "image_transport" in declared or "ImageTransport" in declared or bool(
+        _IMAGE_OBJECT.search(text(obj)))
+
+
 def _subscribe(context: _File, node: Node, obj: Node, arguments: list[Node]) -> list[Endpoint]:
     """``sub.subscribe(node, "name")`` (message_filters) or ``it.subscribe("name", ...)``."""
     declared = context.types.get(_variable(obj) or "", "")
@@ -430,8 +441,7 @@ def _subscribe(context: _File, node: Node, obj: Node, arguments: list[Node]) -> 
         return [_endpoint(context, node, EndpointKind.SUBSCRIPTION,
                           _type(context, template) if template else None,
                           rest[0] if rest else None, via="message_filters", written=template)]
-    if "image_transport" in declared or "ImageTransport" in declared or _IMAGE_OBJECT.search(
-            text(obj)):
+    if _image_object(context, obj):
         base = _endpoint(context, node, EndpointKind.SUBSCRIPTION, None,
                          rest[0] if rest else None)
         return image_endpoints(base, camera=False)
@@ -459,7 +469,8 @@ def _template_arguments_in(written: str) -> str | None:
 # --------------------------------------------------------------------------- constructions
 
 
-def _construction(context: _File, node: Node) -> list[Endpoint]:
+def _construction(context: _File, node: Node,
+                  deferred: list[MemberInit] | None = None) -> list[Endpoint]:
     """Wrapper objects built with their arguments: declarations, ``new``, initialisers."""
     if node.type == "declaration":
         declarator = node.child_by_field_name("declarator")
@@ -469,11 +480,11 @@ def _construction(context: _File, node: Node) -> list[Endpoint]:
         if arguments is None or arguments.type not in ("argument_list", "initializer_list"):
             return []
         return _wrapper(context, node, text(node.child_by_field_name("type")),
-                        list(arguments.named_children))
+                        list(arguments.named_children), deferred)
     if node.type == "new_expression":
         arguments = node.child_by_field_name("arguments")
         return _wrapper(context, node, text(node.child_by_field_name("type")),
-                        [] if arguments is None else list(arguments.named_children))
+                        [] if arguments is None else list(arguments.named_children), deferred)
     # field_initializer: a member whose declared type is a wrapper
     if len(node.named_children) < 2:
         return []
@@ -483,9 +494,16 @@ def _construction(context: _File, node: Node) -> list[Endpoint]:
                     list(arguments.named_children))
 
 
-def _wrapper(context: _File, node: Node, written: str, arguments: list[Node]) -> list[Endpoint]:
+def _wrapper(context: _File, node: Node, written: str, arguments: list[Node],
+             deferred: list[MemberInit] | None = None) -> list[Endpoint]:
     rest = _skip_nodes(context, arguments) if arguments else []
     name = _resolve(context, rest[0], 0) if rest else None
+    compact = "".join(written.split())
+    if (deferred is not None and len(rest) < len(arguments)
+            and _BARE_TYPE.fullmatch(compact) and compact not in context.aliases):
+        deferred.append(MemberInit(None, compact, span(context.path, node), _owner(node),
+                                   len(arguments) - len(rest), len(arguments), name))
+        return []
     return _wrapper_endpoints(written, span(context.path, node), _owner(node),
                               len(arguments) - len(rest), len(arguments), name,
                               context.aliases)
@@ -496,6 +514,10 @@ def _wrapper_endpoints(written: str, where: Span, owner: str | None, node_argume
                        ) -> list[Endpoint]:
     """Return what constructing a wrapper of type ``written`` with these arguments creates."""
     compact = "".join(written.split())
+    for _ in range(4):  # a typedef of a wrapper: typedef message_filters::Subscriber<T> S;
+        if compact not in aliases or aliases[compact] == compact:
+            break
+        compact = aliases[compact]
     if "make_shared" in compact or "make_unique" in compact:
         return []
     cls = re.sub(r"<.*", "", compact).rsplit("::", 1)[-1]
@@ -532,19 +554,20 @@ def _member_init(context: _File, node: Node) -> list[MemberInit]:
     if not member or member in context.types or not arguments:
         return []
     rest = _skip_nodes(context, arguments)
-    return [MemberInit(member, span(context.path, node), _owner(node),
+    return [MemberInit(member, None, span(context.path, node), _owner(node),
                        len(arguments) - len(rest), len(arguments),
                        _resolve(context, rest[0], 0) if rest else None)]
 
 
-def _make_call(context: _File, node: Node) -> list[Endpoint]:
+def _make_call(context: _File, node: Node,
+               deferred: list[MemberInit] | None = None) -> list[Endpoint]:
     """``std::make_shared<Wrapper>(args)`` and ``make_unique``."""
     _, name, template, _ = _callee(node.child_by_field_name("function"))
     if name not in ("make_shared", "make_unique") or template is None:
         return []
     if not template.named_children:
         return []
-    return _wrapper(context, node, text(template.named_children[0]), _arguments(node))
+    return _wrapper(context, node, text(template.named_children[0]), _arguments(node), deferred)
 
 
 # --------------------------------------------------------------------------- node names

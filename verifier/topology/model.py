@@ -73,14 +73,16 @@ class NodeName:
 
 @dataclass(frozen=True, slots=True)
 class MemberInit:
-    """A member built in a constructor's initialiser list, its type declared elsewhere.
+    """An object built with a node whose type is declared in another file.
 
     ``cartesian_broadcaster_(*this)`` in a ``.cpp`` whose header declares the member a
-    ``tf2_ros::StaticTransformBroadcaster``: what it creates is known once the files of
-    the whole executable are read together.
+    ``tf2_ros::StaticTransformBroadcaster`` (``member``), or ``new ImuSubscriber(this,
+    "imu")`` where a header's ``typedef`` says what ``ImuSubscriber`` is (``written``):
+    what it creates is known once the files of the whole executable are read together.
     """
 
-    member: str
+    member: str | None
+    written: str | None
     span: Span
     owner: str | None
     node_arguments: int  # leading node arguments (``this``, ``*this``, ``node``)

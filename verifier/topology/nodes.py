@@ -32,8 +32,9 @@ def target_interface(package: str, target: Target) -> NodeInterface:
     aliases = dict(a for r in results for a in r.aliases)
     members = dict(m for r in results for m in r.members)
     created = [e for r in results for e in r.endpoints]
-    created += [e for r in results for init in r.inits if init.member in members
-                for e in member_endpoints(init, members[init.member], aliases)]
+    created += [e for r in results for init in r.inits
+                for e in member_endpoints(init, init.written or members.get(init.member or "", ""),
+                                          aliases)]
     endpoints = [_retyped(e, aliases) for e in created
                  if e.owner is None or e.owner not in others]
     problems = list(target.problems)

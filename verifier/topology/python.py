@@ -31,6 +31,7 @@ MAX_DEPTH = 6
 # method -> (kind, index of the type, index of the name, keyword of the type, of the name)
 _METHODS = {
     "create_publisher": (EndpointKind.PUBLISHER, 0, 1, "msg_type", "topic"),
+    "create_lifecycle_publisher": (EndpointKind.PUBLISHER, 0, 1, "msg_type", "topic"),
     "create_subscription": (EndpointKind.SUBSCRIPTION, 0, 1, "msg_type", "topic"),
     "create_service": (EndpointKind.SERVICE, 0, 1, "srv_type", "srv_name"),
     "create_client": (EndpointKind.CLIENT, 0, 1, "srv_type", "srv_name"),
@@ -39,7 +40,8 @@ _CLASSES = {
     "ActionServer": (EndpointKind.ACTION_SERVER, 1, 2, "action_type", "action_name"),
     "ActionClient": (EndpointKind.ACTION_CLIENT, 1, 2, "action_type", "action_name"),
 }
-_QOS = {"create_publisher": (2, "qos_profile"), "create_subscription": (3, "qos_profile")}
+_QOS = {"create_publisher": (2, "qos_profile"), "create_subscription": (3, "qos_profile"),
+        "create_lifecycle_publisher": (2, "qos_profile")}
 _NODE_CLASSES = ("Node", "LifecycleNode")
 _READERS = ("value", "string_value", "get_parameter_value", "as_string")
 

@@ -16,6 +16,8 @@ Relay::Relay(const rclcpp::NodeOptions & options)
   // Twist is an alias of the header: this file alone does not type it, the executable does
   out_ = create_publisher<Twist>(out_topic, rclcpp::QoS(10).reliable());  // expect: publisher /cmd_vel ? param=out_topic
   setup();
+  // TwistSubscriber is the header's typedef of a message_filters subscriber
+  limits_.reset(new TwistSubscriber(this, "limits"));
 }
 
 }  // namespace demo_cpp

@@ -9,6 +9,8 @@
 #include "tf2_ros/static_transform_broadcaster.h"
 #include "tf2_ros/transform_listener.h"
 
+typedef message_filters::Subscriber<sensor_msgs::msg::CameraInfo> InfoSubscriber;
+
 class StereoSync : public rclcpp::Node
 {
 public:
@@ -22,6 +24,8 @@ public:
     static_broadcaster_ = std::make_shared<tf2_ros::StaticTransformBroadcaster>(this);  // expect: publisher /tf_static tf2_msgs/msg/TFMessage via=tf2_ros
     tf_buffer_ = std::make_unique<tf2_ros::Buffer>(get_clock());
     tf_listener_ = std::make_shared<tf2_ros::TransformListener>(*tf_buffer_);  // expect: subscription /tf tf2_msgs/msg/TFMessage via=tf2_ros ; subscription /tf_static tf2_msgs/msg/TFMessage via=tf2_ros
+    right_info_.reset(new InfoSubscriber(this, "right/camera_info"));  // expect: subscription right/camera_info sensor_msgs/msg/CameraInfo via=message_filters
+    raw_ = create_generic_publisher("stereo/raw", "sensor_msgs/msg/Image", rclcpp::QoS(1));  // expect: publisher stereo/raw sensor_msgs/msg/Image
   }
 
 private:
@@ -31,4 +35,6 @@ private:
   std::shared_ptr<tf2_ros::StaticTransformBroadcaster> static_broadcaster_;
   std::unique_ptr<tf2_ros::Buffer> tf_buffer_;
   std::shared_ptr<tf2_ros::TransformListener> tf_listener_;
+  rclcpp::GenericPublisher::SharedPtr raw_;
+  std::unique_ptr<InfoSubscriber> right_info_;
 };

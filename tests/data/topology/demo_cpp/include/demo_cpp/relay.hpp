@@ -12,6 +12,7 @@ namespace demo_cpp
 {
 
 using Twist = geometry_msgs::msg::Twist;
+typedef message_filters::Subscriber<Twist> TwistSubscriber;
 
 class Relay : public rclcpp::Node
 {
@@ -31,6 +32,7 @@ private:
   // built in relay.cpp's initialiser list: typed from here when the executable is read
   message_filters::Subscriber<Twist> feedback_;
   tf2_ros::StaticTransformBroadcaster static_frames_;
+  std::shared_ptr<TwistSubscriber> limits_;
 };
 
 }  // namespace demo_cpp
