@@ -100,7 +100,9 @@ def test_cmake_targets_and_components_map_to_their_sources() -> None:
     targets = {t.executable: t for t in package_targets(Package("demo_cpp", source=root))}
     assert set(targets) == {"talker", "scan_filter", "fibonacci_server", "camera",
                             "stereo_sync", "broken", "relay", "demo_cpp::Ping",
-                            "demo_cpp::Pong"}
+                            "demo_cpp::Pong", "left_driver", "right_driver"}
+    assert _relative(targets["left_driver"].sources, root) == [
+        "src/drivers.cpp", "src/left_main.cpp"]
     assert _relative(targets["talker"].sources, root) == ["src/talker.cpp"]
     assert targets["relay"].component == "demo_cpp::Relay"
     assert _relative(targets["relay"].sources, root) == [
@@ -151,6 +153,16 @@ def test_components_in_one_library_keep_their_own_endpoints() -> None:
     assert [(e.kind.value, e.name) for e in ping.endpoints] == [("publisher", "ping")]
     assert [(e.kind.value, e.name) for e in pong.endpoints] == [("subscription", "ping")]
     assert (ping.node_name, pong.node_name) == ("ping", "pong")
+
+
+def test_executables_sharing_a_library_keep_the_classes_their_main_builds() -> None:
+    interfaces = {i.executable: i for i in package_interfaces(
+        Package("demo_cpp", source=DATA / "demo_cpp"))}
+    left = {e.name for e in interfaces["left_driver"].endpoints}
+    right = {e.name for e in interfaces["right_driver"].endpoints}
+    # the base class's publisher for both, a member's helper class for the left one
+    assert left == {"status", "left/scan", "watchdog"}
+    assert right == {"status", "right/scan"}
 
 
 def test_a_header_types_the_endpoints_of_the_sources_including_it() -> None:

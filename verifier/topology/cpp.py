@@ -99,7 +99,8 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
                           partial=damaged(tree.root_node),
                           aliases=tuple(sorted(context.aliases.items())),
                           members=tuple(sorted(context.members.items())),
-                          inits=tuple(inits))
+                          inits=tuple(inits), classes=_classes(nodes),
+                          instantiated=_instantiated(nodes))
 
 
 # --------------------------------------------------------------------------- the file
@@ -131,8 +132,8 @@ def _collect(context: _File, nodes: list[Node]) -> None:
                 target = _variable(declarator)
                 if target:
                     context.types[target] = written
-                    if kind == "field_declaration":
-                        context.members[target] = written
+                    if kind == "field_declaration":  # keyed by class: names repeat
+                        context.members[f"{_owner(node) or ''}::{target}"] = written
             value = node.child_by_field_name("default_value")
             target = _variable(node.child_by_field_name("declarator"))
             if kind == "field_declaration" and value is not None and target:
@@ -352,8 +353,7 @@ def _owner(node: Node) -> str | None:
                 declarator = declarator.child_by_field_name("declarator")
             inner = declarator.child_by_field_name("declarator") if declarator else None
             if inner is not None and inner.type == "qualified_identifier":
-                scope = text(inner.child_by_field_name("scope"))
-                return scope.rsplit("::", 1)[-1] or None
+                return class_name(text(inner.child_by_field_name("scope"))) or None
         parent = parent.parent
     return None
 
@@ -568,6 +568,53 @@ def _make_call(context: _File, node: Node,
     if not template.named_children:
         return []
     return _wrapper(context, node, text(template.named_children[0]), _arguments(node), deferred)
+
+
+# --------------------------------------------------------------------------- classes
+
+
+def class_name(written: str) -> str:
+    """Return a class's bare name: ``ns::RosFilter<T>`` -> ``RosFilter``."""
+    return re.sub(r"<.*", "", "".join(written.split())).rsplit("::", 1)[-1]
+
+
+def _classes(nodes: list[Node]) -> tuple[tuple[str, tuple[str, ...]], ...]:
+    """Return each class with the classes it relates to: its bases and its members' types."""
+    out: dict[str, set[str]] = {}
+    for node in nodes:
+        if node.type not in ("class_specifier", "struct_specifier"):
+            continue
+        name = node.child_by_field_name("name")
+        body = node.child_by_field_name("body")
+        if name is None or body is None:
+            continue
+        related = out.setdefault(class_name(text(name)), set())
+        for child in node.named_children:
+            if child.type == "base_class_clause":
+                related.update(class_name(text(b)) for b in child.named_children
+                               if b.type != "access_specifier")
+        for member in body.named_children:
+            if member.type == "field_declaration":
+                written = member.child_by_field_name("type")
+                related.update(text(t) for t in walk(written) if t.type == "type_identifier"
+                               ) if written is not None else None
+    return tuple(sorted((name, tuple(sorted(related))) for name, related in out.items()))
+
+
+def _instantiated(nodes: list[Node]) -> tuple[str, ...]:
+    """Return the classes the code builds: ``make_shared<X>``, ``new X``, ``X x(...)``."""
+    found: set[str] = set()
+    for node in nodes:
+        if node.type == "new_expression":
+            found.add(class_name(text(node.child_by_field_name("type"))))
+        elif node.type == "call_expression":
+            _, name, template, _ = _callee(node.child_by_field_name("function"))
+            if name in ("make_shared", "make_unique") and template is not None:
+                found.add(class_name(_first_template(template) or ""))
+        elif node.type == "declaration" and node.parent is not None and (
+                node.parent.type == "compound_statement"):
+            found.add(class_name(text(node.child_by_field_name("type"))))
+    return tuple(sorted(n for n in found if n))
 
 
 # --------------------------------------------------------------------------- node names

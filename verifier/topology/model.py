@@ -104,8 +104,10 @@ class FileInterfaces:
     problem: str | None = None
     partial: bool = False  # the parser recovered from syntax errors
     aliases: tuple[tuple[str, str], ...] = ()  # C++ type aliases, for other files' types
-    members: tuple[tuple[str, str], ...] = ()  # C++ data members and their written types
+    members: tuple[tuple[str, str], ...] = ()  # ``Class::member`` -> its written type
     inits: tuple[MemberInit, ...] = ()  # initialisers of members declared elsewhere
+    classes: tuple[tuple[str, tuple[str, ...]], ...] = ()  # class -> bases and member types
+    instantiated: tuple[str, ...] = ()  # classes the file's code builds (make_shared, new)
 
     def at(self, file: Path) -> FileInterfaces:
         """Return the same result for another file with identical content."""
@@ -114,7 +116,8 @@ class FileInterfaces:
         return FileInterfaces(file, tuple(e.at(file) for e in self.endpoints),
                               tuple(n.at(file) for n in self.node_names),
                               self.problem, self.partial, self.aliases, self.members,
-                              tuple(i.at(file) for i in self.inits))
+                              tuple(i.at(file) for i in self.inits), self.classes,
+                              self.instantiated)
 
 
 @dataclass(frozen=True, slots=True)

@@ -11,7 +11,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import replace
 from pathlib import Path
 
-from launchverify.topology.cpp import member_endpoints
+from launchverify.topology.cpp import class_name, member_endpoints
 from launchverify.topology.files import file_interfaces
 from launchverify.topology.model import Endpoint, FileInterfaces, NodeInterface, NodeName
 from launchverify.topology.sources import Target, package_targets
@@ -33,10 +33,12 @@ def target_interface(package: str, target: Target) -> NodeInterface:
     members = dict(m for r in results for m in r.members)
     created = [e for r in results for e in r.endpoints]
     created += [e for r in results for init in r.inits
-                for e in member_endpoints(init, init.written or members.get(init.member or "", ""),
-                                          aliases)]
+                for e in member_endpoints(
+                    init, init.written or members.get(f"{init.owner or ''}::{init.member}", ""),
+                    aliases)]
     endpoints = [_retyped(e, aliases) for e in created
                  if e.owner is None or e.owner not in others]
+    endpoints = _instantiated_only(endpoints, results, target, aliases)
     problems = list(target.problems)
     problems += [f"{display_path(r.file)}: {r.problem}" for r in results if r.problem]
     problems += [f"{display_path(r.file)}: syntax errors, read as far as recovered"
@@ -46,6 +48,38 @@ def target_interface(package: str, target: Target) -> NodeInterface:
     return NodeInterface(package, target.executable, target.component,
                          _node_name(results, target), tuple(endpoints),
                          target.sources, tuple(problems))
+
+
+def _instantiated_only(endpoints: list[Endpoint], results: list[FileInterfaces],
+                       target: Target, aliases: dict[str, str]) -> list[Endpoint]:
+    """Keep an executable's endpoints to the classes its ``main`` files build.
+
+    Executables often link one library holding every node class of the package; each
+    then gets only the classes its own files instantiate, their bases and their members'
+    types (followed through the library's aliases). When none of those classes creates an
+    endpoint, nothing is filtered: an over-approximation is safer than a loss.
+    """
+    if target.component is not None or not target.main_sources:
+        return endpoints
+    related: dict[str, set[str]] = {}
+    for result in results:
+        for name, others in result.classes:
+            related.setdefault(name, set()).update(others)
+    pending = [n for r in results if r.file in target.main_sources for n in r.instantiated]
+    reachable: set[str] = set()
+    while pending:
+        name = pending.pop()
+        if name in reachable:
+            continue
+        reachable.add(name)
+        pending.extend(related.get(name, ()))
+        if name in aliases:
+            pending.append(class_name(aliases[name]))
+    owned = {e.owner for e in endpoints if e.owner is not None}
+    if not reachable & owned:
+        return endpoints
+    return [e for e in endpoints if e.owner is None or e.owner in reachable
+            or e.span.file in target.main_sources]
 
 
 def _retyped(endpoint: Endpoint, aliases: dict[str, str]) -> Endpoint:
