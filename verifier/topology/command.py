@@ -11,9 +11,12 @@ import json
 import sys
 import time
 from pathlib import Path
-from typing import Any, TextIO
+from typing import TYPE_CHECKING, Any, TextIO
 
 from launchverify.workspace.paths import display_path
+
+if TYPE_CHECKING:
+    from launchverify.topology.model import NodeInterface
 
 EXIT_OK, EXIT_ERROR = 0, 2
 
@@ -37,7 +40,7 @@ def run(args: argparse.Namespace, out: TextIO | None = None) -> int:
     """Print the node interfaces found below ``args.paths``; return the exit status."""
     from launchverify.topology.files import cache_stats, file_interfaces, language_of
     from launchverify.topology.model import FileInterfaces, NodeInterface
-    from launchverify.topology.nodes import workspace_interfaces
+    from launchverify.topology.nodes import workspace_interfaces  # imports no parser yet
 
     stream = out or sys.stdout
     missing = [p for p in args.paths if not p.exists()]
@@ -72,7 +75,7 @@ def run(args: argparse.Namespace, out: TextIO | None = None) -> int:
     return EXIT_OK
 
 
-def _as_json(interface: Any) -> dict[str, Any]:
+def _as_json(interface: NodeInterface) -> dict[str, Any]:
     return {
         "package": interface.package, "executable": interface.executable,
         "component": interface.component, "node_name": interface.node_name,
@@ -88,7 +91,7 @@ def _as_json(interface: Any) -> dict[str, Any]:
     }
 
 
-def _print_text(interface: Any, stream: TextIO) -> None:
+def _print_text(interface: NodeInterface, stream: TextIO) -> None:
     title = f"{interface.package} {interface.executable}".strip()
     if interface.component and interface.component != interface.executable:
         title += f" (component {interface.component})"

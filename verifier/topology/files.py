@@ -63,8 +63,9 @@ def file_interfaces(path: Path, language: str | None = None) -> FileInterfaces:
         return cached.at(path)
     try:
         result = _extractor(language)(path, data)
-    except (RecursionError, ValueError, UnicodeError) as error:
-        result = FileInterfaces(path, problem=f"could not be analysed: {error}")
+    except Exception as error:  # one file's surprise must not end a workspace's reading
+        result = FileInterfaces(path, problem=f"could not be analysed: "
+                                f"{type(error).__name__}: {error}")
     _STATS["parsed"] += 1
     _CACHE[key] = result
     return result

@@ -166,11 +166,11 @@ def _string(node: Node) -> str | None:
         return None if any(p is None for p in parts) else "".join(p or "" for p in parts)
     if node.type != "string":
         return None
+    start = next((c for c in node.named_children if c.type == "string_start"), None)
+    if start is not None and any(p in text(start).lower() for p in "fb"):
+        return None  # f-strings are built at run time; bytes are not names
     pieces = [c for c in node.named_children if c.type not in ("string_start", "string_end")]
     if any(c.type != "string_content" for c in pieces):
-        return None
-    if text(node.named_children[0]).lower().startswith(("f", "b")) if node.named_children \
-            else False:
         return None
     return "".join(text(c) for c in pieces)
 
