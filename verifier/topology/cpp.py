@@ -594,10 +594,9 @@ def _classes(nodes: list[Node]) -> tuple[tuple[str, tuple[str, ...]], ...]:
                 related.update(class_name(text(b)) for b in child.named_children
                                if b.type != "access_specifier")
         for member in body.named_children:
-            if member.type == "field_declaration":
-                written = member.child_by_field_name("type")
-                related.update(text(t) for t in walk(written) if t.type == "type_identifier"
-                               ) if written is not None else None
+            written = member.child_by_field_name("type")
+            if member.type == "field_declaration" and written is not None:
+                related.update(text(t) for t in walk(written) if t.type == "type_identifier")
     return tuple(sorted((name, tuple(sorted(related))) for name, related in out.items()))
 
 
