@@ -38,6 +38,7 @@ from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.rule import Rule, Severity
 from launchverify.workspace import reading
+from launchverify.topology import command as topology_command
 from launchverify.workspace.includers import Includers
 from launchverify.workspace.paths import display_path
 
@@ -235,6 +236,7 @@ def build_parser() -> argparse.ArgumentParser:
         "source in fish's config.",
     )
     completion.add_argument("shell", choices=("bash", "zsh", "fish"))
+    topology_command.add_parser(commands)
     return parser
 
 
@@ -253,7 +255,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.print_help()
         return EXIT_ERROR
     handlers = {"check": _check, "report": _report, "graph": _graph, "rules": _rules,
-                "explain": _explain, "run": _run, "completion": _completion, "lsp": _lsp}
+                "explain": _explain, "run": _run, "completion": _completion, "lsp": _lsp,
+                "interfaces": topology_command.run}
     try:
         return handlers[args.command](args)
     except (UsageError, RegistryError, ConfigError, BaselineError) as error:

@@ -9,6 +9,9 @@ small interpreter of ``CMakeLists.txt`` that follows ``set``, functions and macr
 ``ament_auto_add_executable`` and ``rclcpp_components_register_node(... EXECUTABLE x)``.
 Anything it cannot follow (an ``include``, a subdirectory, a name it cannot expand) makes
 the answer incomplete, and an incomplete answer never produces a finding.
+
+``build_targets`` reads the same ``CMakeLists.txt`` for the sources of each target and the
+component plugins registered on libraries (for the node interfaces read from sources).
 """
 
 from __future__ import annotations
@@ -44,6 +47,43 @@ _HARMLESS = frozenset({
 _HARMLESS_PREFIXES = ("target_", "ament_export_", "ament_add_", "ament_auto_add_gtest",
                       "rosidl_", "ament_cmake_", "find_", "cuda_add_library")
 _TEST_FOLDERS = frozenset({"test", "tests", "testing"})
+_TARGET_COMMANDS = frozenset({"add_executable", "ament_auto_add_executable",
+                              "cuda_add_executable", "add_library", "ament_auto_add_library",
+                              "target_sources"})
+_TARGET_KEYWORDS = frozenset({"WIN32", "MACOSX_BUNDLE", "EXCLUDE_FROM_ALL", "STATIC", "SHARED",
+                              "MODULE", "OBJECT", "INTERFACE", "PRIVATE", "PUBLIC",
+                              "DIRECTORY", "NO_TARGET_LINK_LIBRARIES", "IMPORTED", "ALIAS"})
+
+
+@dataclass(frozen=True)
+class BuildTargets:
+    """The sources of each CMake target, and the components registered on libraries.
+
+    ``sources`` maps a target to its source words, expanded (relative to the package, or
+    absolute; a ``DIRECTORY`` of ``ament_auto_*`` ends with ``/``). ``components`` holds
+    ``(library, plugin class, executable or None)``.
+    """
+
+    sources: dict[str, tuple[str, ...]]
+    components: tuple[tuple[str, str, str | None], ...]
+    complete: bool
+    links: dict[str, tuple[str, ...]] = field(default_factory=dict)  # target_link_libraries
+    executables: frozenset[str] = frozenset()  # add_executable targets installed in lib/
+
+
+def build_targets(source: Path, name: str) -> BuildTargets | None:
+    """Return the targets a CMake package builds from its sources, or ``None``."""
+    if not (source / "CMakeLists.txt").is_file():
+        return None
+    cmake = _CMake(name)
+    for variable in ("CMAKE_CURRENT_SOURCE_DIR", "PROJECT_SOURCE_DIR", "CMAKE_SOURCE_DIR"):
+        cmake.variables[variable] = str(source)
+    if cmake.run(source / "CMakeLists.txt") is None and not cmake.sources:
+        return None
+    return BuildTargets({t: tuple(words) for t, words in cmake.sources.items()},
+                        tuple(cmake.components), cmake.complete,
+                        {t: tuple(words) for t, words in cmake.links.items()},
+                        frozenset(cmake.targets & cmake.installed or cmake.targets))
 
 
 @dataclass(frozen=True)
@@ -139,6 +179,9 @@ class _CMake:
     targets: set[str] = field(default_factory=set)
     installed: set[str] = field(default_factory=set)
     complete: bool = True
+    sources: dict[str, list[str]] = field(default_factory=dict)
+    components: list[tuple[str, str, str | None]] = field(default_factory=list)
+    links: dict[str, list[str]] = field(default_factory=dict)
 
     def run(self, path: Path) -> Executables | None:
         text = _read(path)
@@ -199,9 +242,29 @@ class _CMake:
             current = self.variables.get(args[1], "")
             self.variables[args[1]] = ";".join(
                 w for w in [current, *(x for x in words if x is not None)] if w)
+        elif name in _TARGET_COMMANDS and args:
+            self.record_sources(name, args)
+            if name in ("add_library", "ament_auto_add_library", "target_sources"):
+                return
+            self.call_target(name, args)
+        elif name == "target_link_libraries" and args:
+            target = self.expand(args[0])
+            if target is not None:
+                self.links.setdefault(target, []).extend(
+                    w for w in (self.expand(a) for a in args[1:]) if w)
+        elif name == "rclcpp_components_register_nodes" and len(args) > 1:
+            target = self.expand(args[0])
+            for plugin in args[1:]:
+                if target is not None and plugin != "NO_TARGET_LINK_LIBRARIES":
+                    self.components.append((target, plugin, None))
         elif name == "project" and args:
             self.variables["PROJECT_NAME"] = self.expand(args[0]) or self.project
-        elif name in ("add_executable", "ament_auto_add_executable", "cuda_add_executable"):
+        else:
+            self.call_rest(name, args, depth)
+
+    def call_target(self, name: str, args: list[str]) -> None:
+        """``add_executable`` and its variants: a target that may be installed."""
+        if name in ("add_executable", "ament_auto_add_executable", "cuda_add_executable"):
             target = self.expand(args[0]) if args else None
             if target is None:
                 self.complete = False
@@ -209,7 +272,10 @@ class _CMake:
                 self.targets.add(target)
                 if name == "ament_auto_add_executable":
                     self.installed.add(target)
-        elif name == "install":
+
+    def call_rest(self, name: str, args: list[str], depth: int) -> None:
+        """Every other command: installs, user functions and macros, components."""
+        if name == "install":
             self.install(args)
         elif name in self.functions:
             if depth < MAX_CALL_DEPTH:
@@ -263,6 +329,29 @@ class _CMake:
                 self.complete = False
             else:
                 self.installed.add(name)
+            plugin = args.index("PLUGIN") + 1 if "PLUGIN" in args else 0
+            library = self.expand(args[0]) if args else None
+            if plugin and plugin < len(args) and library is not None:
+                self.components.append((library, args[plugin], name))
+
+    def record_sources(self, name: str, args: list[str]) -> None:
+        """Remember the source words of a target (keywords dropped, variables expanded)."""
+        target = self.expand(args[0])
+        if target is None:
+            return
+        words = self.sources.setdefault(target, [])
+        directory = False
+        for word in args[1:]:
+            if word in _TARGET_KEYWORDS:
+                directory = word == "DIRECTORY"
+                continue
+            expanded = self.expand(word)
+            if expanded is None:
+                self.complete = False
+                continue
+            for item in expanded.split(";"):
+                if item:
+                    words.append(item.rstrip("/") + "/" if directory else item)
 
 
 def _block(commands: list[tuple[str, list[str]]], index: int,

@@ -1,0 +1,649 @@
+"""Endpoints a C++ file creates (rclcpp, rclcpp_action, image_transport, message_filters, tf2).
+
+Reads the tree-sitter-cpp tree of one file: every call of a ``create_*`` factory, every
+construction of a wrapper class, and the default node name given to ``rclcpp::Node`` or
+``LifecycleNode``. Names are resolved within the file: literals, ``std::string`` variables
+and members initialised from literals, and parameters (``declare_parameter`` with its
+default, ``get_parameter``). Variables are tracked by name, not by flow, so two different
+values for one name leave it unknown rather than guessed.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from launchverify.span import Span
+from launchverify.topology.model import (
+    Endpoint,
+    EndpointKind,
+    FileInterfaces,
+    MemberInit,
+    NodeName,
+)
+from launchverify.topology.names import Resolved, merge, unknown
+from launchverify.topology.parsing import damaged, parse, short, span, text, walk
+from launchverify.topology.wrappers import (
+    TF_CLASSES,
+    image_endpoints,
+    normalise_type,
+    tf_endpoints,
+)
+
+if TYPE_CHECKING:
+    from tree_sitter import Node
+
+MAX_DEPTH = 6
+_RCLCPP = {
+    "create_publisher": EndpointKind.PUBLISHER,
+    "create_subscription": EndpointKind.SUBSCRIPTION,
+    "create_generic_publisher": EndpointKind.PUBLISHER,
+    "create_generic_subscription": EndpointKind.SUBSCRIPTION,
+    "create_service": EndpointKind.SERVICE,
+    "create_client": EndpointKind.CLIENT,
+}
+_ACTION = {"create_server": EndpointKind.ACTION_SERVER,
+           "create_client": EndpointKind.ACTION_CLIENT}
+# image_transport calls: name -> (kind, camera)
+_IMAGE = {
+    "advertise": (EndpointKind.PUBLISHER, False),
+    "advertiseCamera": (EndpointKind.PUBLISHER, True),
+    "create_camera_publisher": (EndpointKind.PUBLISHER, True),
+    "subscribeCamera": (EndpointKind.SUBSCRIPTION, True),
+    "create_camera_subscription": (EndpointKind.SUBSCRIPTION, True),
+}
+_NODE_CLASSES = ("Node", "LifecycleNode")
+_NODE_ARG = re.compile(r"[*&]?\s*(?:this|[\w:\->.]*node\w*(?:\(\))?|.*shared_from_this\(\)"
+                       r"|.*get_node_\w+\(\))", re.I)
+_BARE_TYPE = re.compile(r"[A-Za-z_]\w*")  # a type named without namespace: maybe a typedef
+_IMAGE_OBJECT = re.compile(r"transport|^(?:this->)?it_?$", re.I)
+_STRING_TYPES = ("std::string", "string", "const std::string", "std::string_view")
+
+
+@dataclass
+class _File:
+    """What the whole file tells about its names: aliases, variables, parameters."""
+
+    path: Path
+    aliases: dict[str, str] = field(default_factory=dict)
+    values: dict[str, list[Node]] = field(default_factory=dict)
+    read_params: dict[str, list[str]] = field(default_factory=dict)  # get_parameter(p, var)
+    types: dict[str, str] = field(default_factory=dict)
+    members: dict[str, str] = field(default_factory=dict)
+    defaults: dict[str, Resolved] = field(default_factory=dict)
+
+
+def extract(path: Path, data: bytes) -> FileInterfaces:
+    """Return the endpoints and node names one C++ source file creates."""
+    tree = parse("cpp", data)
+    nodes = walk(tree.root_node)
+    context = _File(path)
+    _collect(context, nodes)
+    endpoints: list[Endpoint] = []
+    names: list[NodeName] = []
+    inits: list[MemberInit] = []
+    for node in nodes:
+        if node.type == "call_expression":
+            endpoints.extend(_call(context, node))
+            endpoints.extend(_make_call(context, node, inits))
+            names.extend(_node_name_call(context, node))
+        elif node.type in ("declaration", "new_expression"):
+            endpoints.extend(_construction(context, node, inits))
+        elif node.type == "field_initializer":
+            endpoints.extend(_construction(context, node))
+            names.extend(_node_name_initializer(context, node))
+            inits.extend(_member_init(context, node))
+    return FileInterfaces(path, tuple(endpoints), tuple(names),
+                          partial=damaged(tree.root_node),
+                          aliases=tuple(sorted(context.aliases.items())),
+                          members=tuple(sorted(context.members.items())),
+                          inits=tuple(inits), classes=_classes(nodes),
+                          instantiated=_instantiated(nodes))
+
+
+# --------------------------------------------------------------------------- the file
+
+
+def _collect(context: _File, nodes: list[Node]) -> None:
+    """Record aliases, variable values and types, and declared parameters."""
+    for node in nodes:
+        kind = node.type
+        if kind == "alias_declaration":
+            alias, aliased = node.child_by_field_name("name"), node.child_by_field_name("type")
+            context.aliases[text(alias)] = "".join(text(aliased).split())
+        elif kind == "type_definition":
+            declarator = node.child_by_field_name("declarator")
+            context.aliases[text(declarator)] = "".join(
+                text(node.child_by_field_name("type")).split())
+        elif kind == "using_declaration":
+            written = "".join(text(node).removeprefix("using").rstrip(";").split())
+            if "::" in written and not written.startswith("namespace"):
+                context.aliases[written.rsplit("::", 1)[1]] = written
+        elif kind == "init_declarator":
+            value = node.child_by_field_name("value")
+            target = _variable(node.child_by_field_name("declarator"))
+            if target and value is not None:
+                context.values.setdefault(target, []).extend(_initial(value))
+        elif kind in ("declaration", "field_declaration"):
+            written = text(node.child_by_field_name("type"))
+            for declarator in node.children_by_field_name("declarator"):
+                target = _variable(declarator)
+                if target:
+                    context.types[target] = written
+                    if kind == "field_declaration":  # keyed by class: names repeat
+                        context.members[f"{_owner(node) or ''}::{target}"] = written
+            value = node.child_by_field_name("default_value")
+            target = _variable(node.child_by_field_name("declarator"))
+            if kind == "field_declaration" and value is not None and target:
+                context.values.setdefault(target, []).extend(_initial(value))
+        elif kind == "assignment_expression" and text(node.child_by_field_name("operator")) == "=":
+            target = _variable(node.child_by_field_name("left"))
+            value = node.child_by_field_name("right")
+            if target and value is not None:
+                context.values.setdefault(target, []).append(value)
+        elif kind == "field_initializer":
+            target = _variable(node.named_children[0]) if node.named_children else None
+            arguments = node.named_children[-1] if node.named_children else None
+            if target and arguments is not None and arguments.type in (
+                    "argument_list", "initializer_list"):
+                context.values.setdefault(target, []).extend(_initial(arguments))
+        elif kind == "call_expression":
+            _parameter_call(context, node)
+
+
+def _parameter_call(context: _File, node: Node) -> None:
+    """Record ``declare_parameter`` defaults and ``get_parameter("p", var)`` targets."""
+    _, name, _, _ = _callee(node.child_by_field_name("function"))
+    arguments = _arguments(node)
+    if name not in ("declare_parameter", "get_parameter", "get_parameter_or") or not arguments:
+        return
+    parameter = _literal(arguments[0])
+    if parameter is None:
+        return
+    if name == "declare_parameter" and len(arguments) > 1:
+        default = _resolve(context, arguments[1], 0)
+        if default.parameter is None and parameter not in context.defaults:
+            context.defaults[parameter] = default
+    elif name in ("get_parameter", "get_parameter_or") and len(arguments) > 1:
+        target = _variable(arguments[1])
+        if target:
+            context.read_params.setdefault(target, []).append(parameter)
+            if name == "get_parameter_or" and len(arguments) > 2:
+                default = _resolve(context, arguments[2], 0)
+                context.defaults.setdefault(parameter, default)
+
+
+def _initial(value: Node) -> list[Node]:
+    """Return the value an initialiser gives: ``{"x"}`` and ``("x")`` hold one."""
+    if value.type in ("initializer_list", "argument_list"):
+        return value.named_children[:1] if len(value.named_children) == 1 else []
+    return [value]
+
+
+def _variable(node: Node | None) -> str | None:
+    """Return the key of an assigned variable: ``x``, ``x_``, ``this->x_`` are ``x`` / ``x_``."""
+    if node is None:
+        return None
+    if node.type in ("identifier", "field_identifier"):
+        return text(node)
+    if node.type == "field_expression":
+        if text(node.child_by_field_name("argument")) == "this":
+            return text(node.child_by_field_name("field"))
+        return None
+    if node.type in ("reference_declarator", "pointer_declarator"):
+        inner = node.named_children[-1] if node.named_children else None
+        return _variable(inner)
+    if node.type == "qualified_identifier":
+        return text(node.child_by_field_name("name")) or None
+    return None
+
+
+# --------------------------------------------------------------------------- names
+
+
+def _literal(node: Node) -> str | None:
+    """Return the value of a string literal (adjacent literals joined), else ``None``."""
+    if node.type == "string_literal":
+        if any(c.type != "string_content" for c in node.named_children):
+            return None  # escape sequences: rare in names, not decoded here
+        return "".join(text(c) for c in node.named_children)
+    if node.type == "raw_string_literal":
+        content = node.child_by_field_name("delimiter")
+        raw = text(node)
+        delimiter = text(content) if content is not None else ""
+        start = raw.find("(") + 1
+        return raw[start: len(raw) - len(delimiter) - 2]
+    if node.type == "concatenated_string":
+        parts = [_literal(c) for c in node.named_children]
+        return None if any(p is None for p in parts) else "".join(p or "" for p in parts)
+    return None
+
+
+def _resolve(context: _File, node: Node, depth: int) -> Resolved:
+    """Return what a name expression holds, as far as this file tells."""
+    literal = _literal(node)
+    if literal is not None:
+        return Resolved(literal)
+    written = short(text(node))
+    if depth > MAX_DEPTH:
+        return unknown(f"'{written}' is too deeply indirect to follow")
+    kind = node.type
+    if kind in ("parenthesized_expression", "initializer_list") and len(node.named_children) == 1:
+        return _resolve(context, node.named_children[0], depth + 1)
+    if kind == "call_expression":
+        return _resolve_call(context, node, depth)
+    if kind in ("identifier", "field_expression", "qualified_identifier"):
+        variable = _variable(node)
+        if variable is None:
+            return unknown(f"'{written}' is read at run time")
+        candidates = [_resolve(context, value, depth + 1)
+                      for value in context.values.get(variable, [])]
+        candidates += [_parameter(context, p) for p in context.read_params.get(variable, [])]
+        return merge(variable, candidates)
+    if kind == "binary_expression" and text(node.child_by_field_name("operator")) == "+":
+        left = _resolve(context, node.child_by_field_name("left"), depth + 1)  # type: ignore[arg-type]
+        right = _resolve(context, node.child_by_field_name("right"), depth + 1)  # type: ignore[arg-type]
+        if left.value is not None and right.value is not None and not (
+                left.parameter or right.parameter):
+            return Resolved(left.value + right.value)
+        return unknown(f"built at run time: {written}")
+    return unknown(f"built at run time: {written}")
+
+
+def _parameter(context: _File, parameter: str) -> Resolved:
+    """Return a parameter's value: its declared default, when the file declares one."""
+    default = context.defaults.get(parameter)
+    return Resolved(default.value if default is not None else None, parameter)
+
+
+def _resolve_call(context: _File, node: Node, depth: int) -> Resolved:
+    function = node.child_by_field_name("function")
+    _, name, _, obj = _callee(function)
+    arguments = _arguments(node)
+    if name in ("declare_parameter", "get_parameter") and arguments:
+        parameter = _literal(arguments[0])
+        if parameter is not None:
+            if name == "declare_parameter" and len(arguments) > 1:
+                default = _resolve(context, arguments[1], depth + 1)
+                return Resolved(default.value, parameter)
+            return _parameter(context, parameter)
+    if name in ("as_string", "get_value", "c_str", "string_value", "get", "value_to_string") \
+            and obj is not None:
+        return _resolve(context, obj, depth + 1)
+    if name in ("string", "string_view", "ParameterValue") and len(arguments) == 1:
+        return _resolve(context, arguments[0], depth + 1)
+    return unknown(f"returned by {short(text(function), 40)}() at run time")
+
+
+# --------------------------------------------------------------------------- calls
+
+
+def _callee(function: Node | None) -> tuple[str, str, Node | None, Node | None]:
+    """Return (scope, name, template arguments, object) of a called expression."""
+    if function is None:
+        return "", "", None, None
+    obj: Node | None = None
+    scope = ""
+    node: Node | None = function
+    if function.type == "field_expression":
+        obj = function.child_by_field_name("argument")
+        node = function.child_by_field_name("field")
+    while node is not None and node.type == "qualified_identifier":
+        scope += text(node.child_by_field_name("scope")) + "::"
+        node = node.child_by_field_name("name")
+    if node is None:
+        return scope, "", None, obj
+    if node.type in ("template_function", "template_method"):
+        return scope, text(node.child_by_field_name("name")), node.child_by_field_name(
+            "arguments"), obj
+    return scope, text(node), None, obj
+
+
+def _arguments(call: Node) -> list[Node]:
+    arguments = call.child_by_field_name("arguments")
+    return [] if arguments is None else [
+        a for a in arguments.named_children if a.type != "comment"]
+
+
+def _template_type(context: _File, arguments: Node | None) -> str | None:
+    """Return the normalised interface type of the first template argument."""
+    if arguments is None or not arguments.named_children:
+        return None
+    return _type(context, text(arguments.named_children[0]))
+
+
+def _type(context: _File, written: str) -> str | None:
+    return _aliased(context.aliases, written)
+
+
+def _aliased(aliases: dict[str, str], written: str) -> str | None:
+    """Return the normalised type of ``written`` after following the aliases given."""
+    compact = "".join(written.split()).removeprefix("const")
+    for _ in range(4):  # follow aliases of aliases
+        last = compact.rsplit("::", 1)[-1]
+        if compact in aliases:
+            compact = aliases[compact]
+        elif last in aliases and aliases[last] != compact:
+            compact = aliases[last]
+        else:
+            break
+    return normalise_type(compact)
+
+
+def _skip_nodes(context: _File, arguments: list[Node]) -> list[Node]:
+    """Drop the leading node arguments (``this``, ``node``, ``*this``) of a factory call."""
+    index = 0
+    while index < len(arguments) - 1 and _NODE_ARG.fullmatch(text(arguments[index])) and (
+            context.types.get(_variable(arguments[index]) or "", "") not in _STRING_TYPES):
+        index += 1
+    return arguments[index:]
+
+
+def _owner(node: Node) -> str | None:
+    """Return the class whose code holds ``node`` (class body or ``Class::method``)."""
+    parent = node.parent
+    while parent is not None:
+        if parent.type in ("class_specifier", "struct_specifier"):
+            return text(parent.child_by_field_name("name")) or None
+        if parent.type == "function_definition":
+            declarator = parent.child_by_field_name("declarator")
+            while declarator is not None and declarator.type != "function_declarator":
+                declarator = declarator.child_by_field_name("declarator")
+            inner = declarator.child_by_field_name("declarator") if declarator else None
+            if inner is not None and inner.type == "qualified_identifier":
+                return class_name(text(inner.child_by_field_name("scope"))) or None
+        parent = parent.parent
+    return None
+
+
+def _endpoint(context: _File, node: Node, kind: EndpointKind, type_: str | None,
+              name_arg: Node | None, qos: Node | None = None, via: str | None = None,
+              written: str | None = None) -> Endpoint:
+    resolved = _resolve(context, name_arg, 0) if name_arg is not None else None
+    return _built(kind, resolved, type_, span(context.path, node), _owner(node),
+                  short(text(qos), 40) if qos is not None else None, via, written)
+
+
+def _built(kind: EndpointKind, resolved: Resolved | None, type_: str | None, where: Span,
+           owner: str | None, qos_text: str | None = None, via: str | None = None,
+           written: str | None = None) -> Endpoint:
+    """Return an endpoint from its resolved name (``None``: no name argument)."""
+    written = "".join(written.split()) if written and type_ is None else None
+    if resolved is None:
+        return Endpoint(kind, None, type_, where, qos=qos_text, via=via, owner=owner,
+                        unresolved_reason="no name argument found", type_written=written)
+    reason = resolved.reason
+    if resolved.parameter is not None and resolved.value is None:
+        reason = f"parameter '{resolved.parameter}' has no default declared in this file"
+    return Endpoint(kind, resolved.value, type_, where, resolved.parameter,
+                    resolved.value if resolved.parameter else None, qos_text, via,
+                    reason if resolved.value is None else None, owner, type_written=written)
+
+
+def _first_template(arguments: Node | None) -> str | None:
+    if arguments is None or not arguments.named_children:
+        return None
+    return text(arguments.named_children[0])
+
+
+def _call(context: _File, node: Node) -> list[Endpoint]:
+    scope, name, template, obj = _callee(node.child_by_field_name("function"))
+    arguments = _arguments(node)
+    image_scope = "image_transport" in scope
+    if "rclcpp_action" in scope and name in _ACTION:
+        rest = _skip_nodes(context, arguments)
+        return [_endpoint(context, node, _ACTION[name], _template_type(context, template),
+                          rest[0] if rest else None, written=_first_template(template))]
+    if (name in _IMAGE and template is None and (image_scope or _image_object(context, obj))) or (
+            image_scope and name in ("create_publisher", "create_subscription")):
+        kind, camera = _IMAGE[name] if name in _IMAGE else (_RCLCPP[name], False)
+        rest = _skip_nodes(context, arguments) if image_scope else arguments
+        base = _endpoint(context, node, kind, None, rest[0] if rest else None)
+        return image_endpoints(base, camera)
+    if name == "subscribe" and obj is not None:
+        return _subscribe(context, node, obj, arguments)
+    if name in _RCLCPP:
+        rest = _skip_nodes(context, arguments) if (scope or obj is None) else arguments
+        type_ = _template_type(context, template)
+        if name.startswith("create_generic_") and len(rest) > 1:
+            written = _resolve(context, rest[1], 0).value
+            type_ = normalise_type(written) if written else None
+        qos = rest[1] if len(rest) > 1 and not name.startswith("create_generic_") else None
+        if name in ("create_service", "create_client"):
+            qos = None
+        return [_endpoint(context, node, _RCLCPP[name], type_, rest[0] if rest else None, qos,
+                          written=_first_template(template))]
+    return []
+
+
+def _image_object(context: _File, obj: Node | None) -> bool:
+    """Return whether a method's object is an ImageTransport (ROS 1 ``nh.advertise<T>`` is not)."""
+    if obj is None:
+        return False
+    declared = context.types.get(_variable(obj) or "", "")
+    return "image_transport" in declared or "ImageTransport" in declared or bool(
+        _IMAGE_OBJECT.search(text(obj)))
+
+
+def _subscribe(context: _File, node: Node, obj: Node, arguments: list[Node]) -> list[Endpoint]:
+    """``sub.subscribe(node, "name")`` (message_filters) or ``it.subscribe("name", ...)``."""
+    declared = context.types.get(_variable(obj) or "", "")
+    rest = _skip_nodes(context, arguments)
+    if "message_filters" in declared or "SubscriberFilter" in declared or (
+            len(rest) < len(arguments) and "image_transport" not in declared):
+        if "SubscriberFilter" in declared:
+            base = _endpoint(context, node, EndpointKind.SUBSCRIPTION, None,
+                             rest[0] if rest else None)
+            return image_endpoints(base, camera=False)
+        template = _template_arguments_in(declared)
+        return [_endpoint(context, node, EndpointKind.SUBSCRIPTION,
+                          _type(context, template) if template else None,
+                          rest[0] if rest else None, via="message_filters", written=template)]
+    if _image_object(context, obj):
+        base = _endpoint(context, node, EndpointKind.SUBSCRIPTION, None,
+                         rest[0] if rest else None)
+        return image_endpoints(base, camera=False)
+    return []
+
+
+def _template_arguments_in(written: str) -> str | None:
+    """Return the first template argument inside a written type, ``A<B>`` -> ``B``."""
+    start, end = written.find("<"), written.rfind(">")
+    if start < 0 or end < start:
+        return None
+    inner = written[start + 1: end]
+    depth, out = 0, []
+    for char in inner:
+        if char == "<":
+            depth += 1
+        elif char == ">":
+            depth -= 1
+        elif char == "," and depth == 0:
+            break
+        out.append(char)
+    return "".join(out).strip()
+
+
+# --------------------------------------------------------------------------- constructions
+
+
+def _construction(context: _File, node: Node,
+                  deferred: list[MemberInit] | None = None) -> list[Endpoint]:
+    """Wrapper objects built with their arguments: declarations, ``new``, initialisers."""
+    if node.type == "declaration":
+        declarator = node.child_by_field_name("declarator")
+        if declarator is None or declarator.type != "init_declarator":
+            return []
+        arguments = declarator.child_by_field_name("value")
+        if arguments is None or arguments.type not in ("argument_list", "initializer_list"):
+            return []
+        return _wrapper(context, node, text(node.child_by_field_name("type")),
+                        list(arguments.named_children), deferred)
+    if node.type == "new_expression":
+        arguments = node.child_by_field_name("arguments")
+        return _wrapper(context, node, text(node.child_by_field_name("type")),
+                        [] if arguments is None else list(arguments.named_children), deferred)
+    # field_initializer: a member whose declared type is a wrapper
+    if len(node.named_children) < 2:
+        return []
+    member = _variable(node.named_children[0]) or ""
+    arguments = node.named_children[-1]
+    return _wrapper(context, node, context.types.get(member, ""),
+                    list(arguments.named_children))
+
+
+def _wrapper(context: _File, node: Node, written: str, arguments: list[Node],
+             deferred: list[MemberInit] | None = None) -> list[Endpoint]:
+    rest = _skip_nodes(context, arguments) if arguments else []
+    name = _resolve(context, rest[0], 0) if rest else None
+    compact = "".join(written.split())
+    if (deferred is not None and len(rest) < len(arguments)
+            and _BARE_TYPE.fullmatch(compact) and compact not in context.aliases):
+        deferred.append(MemberInit(None, compact, span(context.path, node), _owner(node),
+                                   len(arguments) - len(rest), len(arguments), name))
+        return []
+    return _wrapper_endpoints(written, span(context.path, node), _owner(node),
+                              len(arguments) - len(rest), len(arguments), name,
+                              context.aliases)
+
+
+def _wrapper_endpoints(written: str, where: Span, owner: str | None, node_arguments: int,
+                       arguments: int, name: Resolved | None, aliases: dict[str, str],
+                       ) -> list[Endpoint]:
+    """Return what constructing a wrapper of type ``written`` with these arguments creates."""
+    compact = "".join(written.split())
+    for _ in range(4):  # a typedef of a wrapper: typedef message_filters::Subscriber<T> S;
+        if compact not in aliases or aliases[compact] == compact:
+            break
+        compact = aliases[compact]
+    if "make_shared" in compact or "make_unique" in compact:
+        return []
+    cls = re.sub(r"<.*", "", compact).rsplit("::", 1)[-1]
+    if cls in TF_CLASSES and ("tf2_ros" in compact or cls in compact):
+        return tf_endpoints(cls, where, owner)
+    if not arguments or (not node_arguments and "SubscriberFilter" not in compact):
+        return []  # no node given: not subscribed yet
+    if "message_filters" in compact and cls == "Subscriber":
+        template = _template_arguments_in(compact)
+        type_ = _aliased(aliases, template) if template else None
+        return [_built(EndpointKind.SUBSCRIPTION, name, type_, where, owner,
+                       via="message_filters", written=template)]
+    if "image_transport" in compact and cls in ("CameraPublisher", "Publisher",
+                                                "SubscriberFilter", "CameraSubscriber"):
+        kind = EndpointKind.PUBLISHER if "Publisher" in cls else EndpointKind.SUBSCRIPTION
+        return image_endpoints(_built(kind, name, None, where, owner),
+                               camera=cls.startswith("Camera"))
+    return []
+
+
+def member_endpoints(init: MemberInit, written: str, aliases: dict[str, str]
+                     ) -> list[Endpoint]:
+    """Return what a member initialiser creates, given the member's type from a header."""
+    return _wrapper_endpoints(written, init.span, init.owner, init.node_arguments,
+                              init.arguments, init.name, aliases)
+
+
+def _member_init(context: _File, node: Node) -> list[MemberInit]:
+    """Keep an initialiser of a member this file does not declare, for the target's headers."""
+    if len(node.named_children) < 2:
+        return []
+    member = _variable(node.named_children[0]) or ""
+    arguments = list(node.named_children[-1].named_children)
+    if not member or member in context.types or not arguments:
+        return []
+    rest = _skip_nodes(context, arguments)
+    return [MemberInit(member, None, span(context.path, node), _owner(node),
+                       len(arguments) - len(rest), len(arguments),
+                       _resolve(context, rest[0], 0) if rest else None)]
+
+
+def _make_call(context: _File, node: Node,
+               deferred: list[MemberInit] | None = None) -> list[Endpoint]:
+    """``std::make_shared<Wrapper>(args)`` and ``make_unique``."""
+    _, name, template, _ = _callee(node.child_by_field_name("function"))
+    if name not in ("make_shared", "make_unique") or template is None:
+        return []
+    if not template.named_children:
+        return []
+    return _wrapper(context, node, text(template.named_children[0]), _arguments(node), deferred)
+
+
+# --------------------------------------------------------------------------- classes
+
+
+def class_name(written: str) -> str:
+    """Return a class's bare name: ``ns::RosFilter<T>`` -> ``RosFilter``."""
+    return re.sub(r"<.*", "", "".join(written.split())).rsplit("::", 1)[-1]
+
+
+def _classes(nodes: list[Node]) -> tuple[tuple[str, tuple[str, ...]], ...]:
+    """Return each class with the classes it relates to: its bases and its members' types."""
+    out: dict[str, set[str]] = {}
+    for node in nodes:
+        if node.type not in ("class_specifier", "struct_specifier"):
+            continue
+        name = node.child_by_field_name("name")
+        body = node.child_by_field_name("body")
+        if name is None or body is None:
+            continue
+        related = out.setdefault(class_name(text(name)), set())
+        for child in node.named_children:
+            if child.type == "base_class_clause":
+                related.update(class_name(text(b)) for b in child.named_children
+                               if b.type != "access_specifier")
+        for member in body.named_children:
+            written = member.child_by_field_name("type")
+            if member.type == "field_declaration" and written is not None:
+                related.update(text(t) for t in walk(written) if t.type == "type_identifier")
+    return tuple(sorted((name, tuple(sorted(related))) for name, related in out.items()))
+
+
+def _instantiated(nodes: list[Node]) -> tuple[str, ...]:
+    """Return the classes the code builds: ``make_shared<X>``, ``new X``, ``X x(...)``."""
+    found: set[str] = set()
+    for node in nodes:
+        if node.type == "new_expression":
+            found.add(class_name(text(node.child_by_field_name("type"))))
+        elif node.type == "call_expression":
+            _, name, template, _ = _callee(node.child_by_field_name("function"))
+            if name in ("make_shared", "make_unique") and template is not None:
+                found.add(class_name(_first_template(template) or ""))
+        elif node.type == "declaration" and node.parent is not None and (
+                node.parent.type == "compound_statement"):
+            found.add(class_name(text(node.child_by_field_name("type"))))
+    return tuple(sorted(n for n in found if n))
+
+
+# --------------------------------------------------------------------------- node names
+
+
+def _node_name_initializer(context: _File, node: Node) -> list[NodeName]:
+    """``MyNode() : Node("talker")`` and ``rclcpp_lifecycle::LifecycleNode("x", options)``."""
+    if len(node.named_children) < 2:
+        return []
+    written = text(node.named_children[0]).rsplit("::", 1)[-1]
+    arguments = node.named_children[-1].named_children
+    if written not in _NODE_CLASSES or not arguments:
+        return []
+    name = _resolve(context, arguments[0], 0).value
+    return [NodeName(name, span(context.path, node), _owner(node))]
+
+
+def _node_name_call(context: _File, node: Node) -> list[NodeName]:
+    """``std::make_shared<rclcpp::Node>("x")`` and ``rclcpp::Node::make_shared("x")``."""
+    scope, name, template, _ = _callee(node.child_by_field_name("function"))
+    arguments = _arguments(node)
+    if not arguments:
+        return []
+    if name in ("make_shared", "make_unique") and template is not None:
+        cls = "".join(text(template).strip("<>").split()).rsplit("::", 1)[-1]
+    elif name == "make_shared" and scope:
+        cls = scope.strip(":").rsplit("::", 1)[-1]
+    else:
+        return []
+    if cls not in _NODE_CLASSES:
+        return []
+    value = _resolve(context, arguments[0], 0).value
+    return [NodeName(value, span(context.path, node), _owner(node))]

@@ -1,0 +1,137 @@
+"""What a node's code creates: endpoints and the interface of one executable or component.
+
+Names are kept as written in the code (relative, ``~/private`` or absolute): resolving them
+against a namespace and remaps belongs to the launch graph, not to the sources.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, replace
+from enum import Enum
+from pathlib import Path
+
+from launchverify.span import Span
+from launchverify.topology.names import Resolved
+
+
+class EndpointKind(str, Enum):
+    """What an endpoint does on the ROS graph."""
+
+    PUBLISHER = "publisher"
+    SUBSCRIPTION = "subscription"
+    SERVICE = "service"
+    CLIENT = "client"
+    ACTION_SERVER = "action_server"
+    ACTION_CLIENT = "action_client"
+
+
+@dataclass(frozen=True, slots=True)
+class Endpoint:
+    """One publisher, subscription, service, client or action end a node's code creates.
+
+    ``name`` is the name as written, ``None`` when it is not known before run time; then
+    ``unresolved_reason`` says why. When the name comes from a parameter,
+    ``name_parameter`` is that parameter and ``name`` its default (when one is declared).
+    ``via`` names the wrapper that creates it (``image_transport``, ``message_filters``,
+    ``tf2_ros``); ``type`` is normalised (``sensor_msgs/msg/LaserScan``) when known.
+    """
+
+    kind: EndpointKind
+    name: str | None
+    type: str | None
+    span: Span
+    name_parameter: str | None = None
+    parameter_default: str | None = None
+    qos: str | None = None
+    via: str | None = None
+    unresolved_reason: str | None = None
+    owner: str | None = None  # the class whose code creates it, when inside one
+    note: str | None = None
+    type_written: str | None = None  # the type as written, when ``type`` is not known
+
+    def at(self, file: Path) -> Endpoint:
+        """Return the same endpoint located in ``file`` (a cached result reused)."""
+        return replace(self, span=replace(self.span, file=file))
+
+
+@dataclass(frozen=True, slots=True)
+class NodeName:
+    """A default node name given in code (``rclcpp::Node("talker")``, ``super().__init__``).
+
+    ``name`` is ``None`` when the code computes it: then no other name in the same sources
+    can be taken for the node's name.
+    """
+
+    name: str | None
+    span: Span
+    owner: str | None = None
+
+    def at(self, file: Path) -> NodeName:
+        """Return the same name located in ``file``."""
+        return replace(self, span=replace(self.span, file=file))
+
+
+@dataclass(frozen=True, slots=True)
+class MemberInit:
+    """An object built with a node whose type is declared in another file.
+
+    ``cartesian_broadcaster_(*this)`` in a ``.cpp`` whose header declares the member a
+    ``tf2_ros::StaticTransformBroadcaster`` (``member``), or ``new ImuSubscriber(this,
+    "imu")`` where a header's ``typedef`` says what ``ImuSubscriber`` is (``written``):
+    what it creates is known once the files of the whole executable are read together.
+    """
+
+    member: str | None
+    written: str | None
+    span: Span
+    owner: str | None
+    node_arguments: int  # leading node arguments (``this``, ``*this``, ``node``)
+    arguments: int
+    name: Resolved | None  # the first argument after them
+
+    def at(self, file: Path) -> MemberInit:
+        """Return the same initialiser located in ``file``."""
+        return replace(self, span=replace(self.span, file=file))
+
+
+@dataclass(frozen=True, slots=True)
+class FileInterfaces:
+    """What one source file creates; ``problem`` says why a file could not be read."""
+
+    file: Path
+    endpoints: tuple[Endpoint, ...] = ()
+    node_names: tuple[NodeName, ...] = ()
+    problem: str | None = None
+    partial: bool = False  # the parser recovered from syntax errors
+    aliases: tuple[tuple[str, str], ...] = ()  # C++ type aliases, for other files' types
+    members: tuple[tuple[str, str], ...] = ()  # ``Class::member`` -> its written type
+    inits: tuple[MemberInit, ...] = ()  # initialisers of members declared elsewhere
+    classes: tuple[tuple[str, tuple[str, ...]], ...] = ()  # class -> bases and member types
+    instantiated: tuple[str, ...] = ()  # classes the file's code builds (make_shared, new)
+
+    def at(self, file: Path) -> FileInterfaces:
+        """Return the same result for another file with identical content."""
+        if file == self.file:
+            return self
+        return FileInterfaces(file, tuple(e.at(file) for e in self.endpoints),
+                              tuple(n.at(file) for n in self.node_names),
+                              self.problem, self.partial, self.aliases, self.members,
+                              tuple(i.at(file) for i in self.inits), self.classes,
+                              self.instantiated)
+
+
+@dataclass(frozen=True, slots=True)
+class NodeInterface:
+    """The endpoints of one executable (or component plugin) of a package.
+
+    ``sources`` are the files read; ``problems`` say what could not be read or mapped, so
+    an empty ``endpoints`` never passes for "creates nothing" when it is incomplete.
+    """
+
+    package: str
+    executable: str
+    component: str | None
+    node_name: str | None
+    endpoints: tuple[Endpoint, ...]
+    sources: tuple[Path, ...]
+    problems: tuple[str, ...] = ()

@@ -1,0 +1,134 @@
+"""The interface of each executable and component of a package, from its sources.
+
+Joins ``sources.package_targets`` (which files) with ``files.file_interfaces`` (what each
+file creates). A library registering several components holds all their classes: an
+endpoint created by another registered component's class is left to that component.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from dataclasses import replace
+from pathlib import Path
+
+from launchverify.topology.cpp import class_name, member_endpoints
+from launchverify.topology.files import file_interfaces
+from launchverify.topology.model import Endpoint, FileInterfaces, NodeInterface, NodeName
+from launchverify.topology.sources import Target, package_targets
+from launchverify.topology.wrappers import normalise_type
+from launchverify.workspace.packages import Package, scan_sources
+from launchverify.workspace.paths import display_path
+
+
+def package_interfaces(package: Package) -> list[NodeInterface]:
+    """Return the node interface of every executable and component of one package."""
+    return [target_interface(package.name, target) for target in package_targets(package)]
+
+
+def target_interface(package: str, target: Target) -> NodeInterface:
+    """Return what the sources of one executable or component create."""
+    results = [file_interfaces(path) for path in target.sources]
+    others = {_class(p) for p in target.other_components}
+    aliases = dict(a for r in results for a in r.aliases)
+    members = dict(m for r in results for m in r.members)
+    created = [e for r in results for e in r.endpoints]
+    created += [e for r in results for init in r.inits
+                for e in member_endpoints(
+                    init, init.written or members.get(f"{init.owner or ''}::{init.member}", ""),
+                    aliases)]
+    endpoints = [_retyped(e, aliases) for e in created
+                 if e.owner is None or e.owner not in others]
+    endpoints = _instantiated_only(endpoints, results, target, aliases)
+    problems = list(target.problems)
+    problems += [f"{display_path(r.file)}: {r.problem}" for r in results if r.problem]
+    problems += [f"{display_path(r.file)}: syntax errors, read as far as recovered"
+                 for r in results if r.partial]
+    if not target.sources and not problems:
+        problems.append("no source file found")
+    return NodeInterface(package, target.executable, target.component,
+                         _node_name(results, target), tuple(endpoints),
+                         target.sources, tuple(problems))
+
+
+def _instantiated_only(endpoints: list[Endpoint], results: list[FileInterfaces],
+                       target: Target, aliases: dict[str, str]) -> list[Endpoint]:
+    """Keep an executable's endpoints to the classes its ``main`` files build.
+
+    Executables often link one library holding every node class of the package; each
+    then gets only the classes its own files instantiate, their bases and their members'
+    types (followed through the library's aliases). When none of those classes creates an
+    endpoint, nothing is filtered: an over-approximation is safer than a loss.
+    """
+    if target.component is not None or not target.main_sources:
+        return endpoints
+    related: dict[str, set[str]] = {}
+    for result in results:
+        for name, others in result.classes:
+            related.setdefault(name, set()).update(others)
+    pending = [n for r in results if r.file in target.main_sources for n in r.instantiated]
+    reachable: set[str] = set()
+    while pending:
+        name = pending.pop()
+        if name in reachable:
+            continue
+        reachable.add(name)
+        pending.extend(related.get(name, ()))
+        if name in aliases:
+            pending.append(class_name(aliases[name]))
+    owned = {e.owner for e in endpoints if e.owner is not None}
+    if not reachable & owned:
+        return endpoints
+    return [e for e in endpoints if e.owner is None or e.owner in reachable
+            or e.span.file in target.main_sources]
+
+
+def _retyped(endpoint: Endpoint, aliases: dict[str, str]) -> Endpoint:
+    """Resolve a type through an alias another file of the target declares (a header's)."""
+    written = endpoint.type_written
+    if endpoint.type is not None or written is None:
+        return endpoint
+    for _ in range(4):
+        target = aliases.get(written) or aliases.get(written.rsplit("::", 1)[-1])
+        if target is None or target == written:
+            break
+        written = target
+    resolved = normalise_type(written)
+    return replace(endpoint, type=resolved, type_written=None) if resolved else endpoint
+
+
+def _class(plugin: str) -> str:
+    return plugin.rsplit("::", 1)[-1]
+
+
+def _node_name(results: Iterable[FileInterfaces], target: Target) -> str | None:
+    """Return the one default node name the code gives.
+
+    A component's own class decides first, then an executable's own files (its ``main``),
+    then all files; several different names leave it unknown.
+    """
+    names: list[NodeName] = [n for r in results for n in r.node_names]
+    groups = []
+    if target.component is not None:
+        groups.append({n.name for n in names if n.owner == _class(target.component)})
+    groups.append({n.name for n in names if n.span.file in target.main_sources})
+    groups.append({n.name for n in names})
+    for distinct in groups:
+        if distinct:
+            return distinct.pop() if len(distinct) == 1 else None  # {None}: computed
+    return None
+
+
+def workspace_interfaces(roots: Iterable[Path]) -> Iterator[NodeInterface]:
+    """Yield the node interfaces of every package found below the given folders."""
+    seen: set[Path] = set()
+    for root in roots:
+        for name, folder in sorted(scan_sources(root), key=lambda item: str(item[1])):
+            if folder in seen:
+                continue
+            seen.add(folder)
+            yield from package_interfaces(Package(name, source=folder))
+
+
+def endpoints_of(interfaces: Iterable[NodeInterface]) -> list[Endpoint]:
+    """Return every endpoint of the given interfaces, in order."""
+    return [e for interface in interfaces for e in interface.endpoints]
