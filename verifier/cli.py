@@ -37,8 +37,8 @@ from launchverify.graph import LaunchGraph
 from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.rule import Rule, Severity
-from launchverify.workspace import reading
 from launchverify.topology import command as topology_command
+from launchverify.workspace import reading
 from launchverify.workspace.includers import Includers
 from launchverify.workspace.paths import display_path
 
