@@ -372,9 +372,9 @@ class Walker:
             # An includer passes a value that depends on its arguments: with their
             # defaults it must still be a choice (its own default is LV203's to judge).
             passed = self.base_check.at(ctx, action.span)
-            value = passed.text(current)
-            if value is not None and value not in action.choices:
-                passed.fail(f"argument {action.name!r} gets value {value!r}, which is not one "
+            chosen = passed.text(current)
+            if chosen is not None and chosen not in action.choices:
+                passed.fail(f"argument {action.name!r} gets value {chosen!r}, which is not one "
                             f"of its choices {list(action.choices)} (ros2 launch fails)")
         self.graph.arguments.append(ArgumentRecord(
             action.name, ctx.origin(action.span), default, action.description,
