@@ -73,7 +73,7 @@ def _end(view: GraphView, composed: ComposedEndpoint,
     node, endpoint = composed.node, composed.endpoint
     where = view.where(node.origin)
     return {
-        "node": fqns.get(id(node)),
+        "node": fqns.get(id(node)) or view.value(node.fqn),
         "package": view.value(node.package),
         "executable": view.value(node.executable),
         "type": endpoint.type,
@@ -106,6 +106,13 @@ def render_text(doc: dict[str, Any], out: TextIO) -> None:
                     out.write(f"        {role}: {names}\n")
             if entry["condition"]:
                 out.write(f"        when {entry['condition']}\n")
+    missing = [node for node in doc["nodes"]
+               if node.get("interface") and not node["interface"]["found"]]
+    if missing:
+        out.write("no interface:\n")
+        for node in missing:
+            who = node["fqn"] or f"{node['package']}/{node['executable']}"
+            out.write(f"    {who}: {node['interface']['note']}\n")
     unresolved = [(node["fqn"] or node["executable"], item)
                   for node in doc["nodes"] if node.get("interface")
                   for item in node["interface"]["unresolved"]]
