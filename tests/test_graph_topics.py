@@ -93,6 +93,10 @@ CASES: list[tuple[str, tuple[str, ...], Summary]] = [
     ("conditional.launch.xml", ("--symbolic",), {"topics": {
         "/chatter": {"publishers": ["/talker"], "subscribers": ["/listener"]}, **TALKER}}),
     # a namespace only the user gives: relative and private names stay unknown, /tf does not
+    # a remap whose target only the user gives: chatter unknown, the rest unaffected
+    ("symbolic_remap.launch.xml", (), {"topics": TALKER}),
+    ("symbolic_remap.launch.xml", ("to:=/said",), {"topics": {
+        "/said": {"publishers": ["/talker"]}, **TALKER}}),
     ("symbolic_namespace.launch.xml", (),
      {"topics": {"/tf": {"publishers": ["/$(var robot)/talker"]}}}),
 ]
@@ -143,6 +147,28 @@ def test_unknown_namespace_leaves_names_unresolved_with_reasons(
     unresolved = {u["written"]: u["reason"] for u in interface["unresolved"]}
     assert set(unresolved) == {"chatter", "~/status"}
     assert all("namespace is not known before launch" in r for r in unresolved.values())
+
+
+def test_unknown_remap_side_says_which_rule(capsys: pytest.CaptureFixture[str]) -> None:
+    document = _graph(capsys, "symbolic_remap.launch.xml")
+    [unresolved] = document["nodes"][0]["interface"]["unresolved"]
+    assert unresolved["written"] == "chatter"
+    assert "$(var to)" in unresolved["reason"]
+    assert "symbolic_remap.launch.xml:4" in unresolved["reason"]
+
+
+def test_sources_that_cannot_be_read_are_said_so(monkeypatch: pytest.MonkeyPatch,
+                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    from launchverify.topology import nodes
+
+    def broken(package: object) -> list[object]:
+        raise ValueError("surprise")
+
+    monkeypatch.setattr(nodes, "package_interfaces", broken)
+    document = _graph(capsys, "pair.launch.xml")
+    assert document["topics"] == []
+    notes = {n["interface"]["note"] for n in document["nodes"]}
+    assert notes == {"the sources of chat_cpp could not be read: ValueError: surprise"}
 
 
 def test_package_without_sources_is_said_so(capsys: pytest.CaptureFixture[str]) -> None:

@@ -56,6 +56,7 @@ class WorkspaceInterfaces:
     def __init__(self, index: PackageIndex) -> None:
         self.index = index
         self._read: dict[str, list[NodeInterface]] = {}
+        self._failed: dict[str, str] = {}
 
     def interface(self, package: str, executable: str,
                   component: bool) -> tuple[NodeInterface | None, str | None]:
@@ -69,7 +70,15 @@ class WorkspaceInterfaces:
         if package not in self._read:
             from launchverify.topology.nodes import package_interfaces
 
-            self._read[package] = package_interfaces(Package(package, source=found.source))
+            try:
+                self._read[package] = package_interfaces(Package(package,
+                                                                 source=found.source))
+            except Exception as error:  # one package's surprise must not end the graph
+                self._failed[package] = f"{type(error).__name__}: {error}"
+                self._read[package] = []
+        if package in self._failed:
+            return None, (f"the sources of {package} could not be read: "
+                          f"{self._failed[package]}")
         candidates = self._read[package]
         if component:
             matches = [i for i in candidates if i.component == executable]
