@@ -84,6 +84,8 @@ CASES: list[tuple[str, tuple[str, ...], Summary]] = [
         "/left/count": {"servers": ["/left/counter"]},
         "/right/count": {"servers": ["/right/counter"], "clients": ["/left/counter"]},
         "/right/peer/count": {"clients": ["/right/counter"]}}}),
+    ("ros_arguments.launch.py", (), {"topics": {"/first": {"publishers": ["/talker"]},
+                                                **TALKER}}),
     # the listener is off under the defaults ...
     ("conditional.launch.xml", (), {"topics": {"/chatter": {"publishers": ["/talker"]},
                                                **TALKER}}),

@@ -14,10 +14,11 @@ out as ``None`` with the reason.
 
 from __future__ import annotations
 
+import shlex
 from dataclasses import dataclass, field
 from typing import Protocol
 
-from launchverify.graph import LaunchGraph, NodeRecord, Origin
+from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, Origin
 from launchverify.ir.subst import Sub, walk
 from launchverify.ir.symbolic import Arg, EnvInput, Select
 from launchverify.models.ros_names import node_fqn
@@ -196,6 +197,13 @@ class Composer:
             if identity.namespace is None:
                 identity.namespace_reason = ("the node's namespace is not known before "
                                              "launch: " + self.describe(node.namespace))
+        given, reason = self.ros_argument_rules(node)
+        if reason is not None:
+            identity.rules.append(UnknownRule(reason))
+        if given:  # before launch's own __node/__ns: they win over name= and namespace=
+            identity.name, identity.namespace, _ = node_identity(
+                identity.name, identity.namespace, given, False, False)
+            identity.rules.extend(given)
         for remap in node.remappings:
             if remap.scope and not self.symbolic and self.graph.runs(remap.origin) is False:
                 continue
@@ -209,6 +217,37 @@ class Composer:
             identity.namespace_reason = reason
         identity.name, identity.namespace = name, namespace
         return identity
+
+    def ros_argument_rules(self, node: NodeRecord) -> tuple[list[RuleLike], str | None]:
+        """Return the ``-r``/``--remap`` rules of a node's ``ros_arguments`` (they come first).
+
+        The second item says why they are not all known (an argument not known before
+        launch), ``None`` when they are.
+        """
+        launches = self.graph.derived.get("launch_of_node")
+        if launches is None:  # built once per graph: a fleet has many nodes
+            launches = {id(launch.node): launch for launch in self.graph.launches
+                        if launch.node is not None}
+            self.graph.derived["launch_of_node"] = launches
+        launch = launches.get(id(node))
+        if not isinstance(launch, LaunchRecord) or not launch.ros_arguments:
+            return [], None
+        words: list[str] = []
+        for argument in launch.ros_arguments:
+            text = self.text(argument)
+            if text is None:
+                return [], f"ros_arguments not known before launch: {self.describe(argument)}"
+            try:
+                words.extend(shlex.split(text))
+            except ValueError:
+                words.append(text)
+        where = f"{display_path(launch.origin.span.file)}:{launch.origin.span.line}"
+        rules: list[RuleLike] = []
+        for flag, value in zip(words, [*words[1:], ""], strict=True):
+            if flag in ("-r", "--remap") and ":=" in value:
+                src, _, dst = value.partition(":=")
+                rules.append(parse_rule(src, dst, where))
+        return rules, None
 
     def rule(self, src: Sub, dst: Sub, origin: Origin) -> RuleLike:
         """Return one remap rule, or an unknown one saying which side is not known."""
