@@ -185,7 +185,8 @@ def build_parser() -> argparse.ArgumentParser:
     graph = commands.add_parser(
         "graph", help="print what a launch file would start",
         description="Evaluate one launch file and print its nodes, processes, includes, "
-        "arguments and lifecycle bring-up under the given arguments.",
+        "arguments, lifecycle bring-up and, from the workspace's own sources, the topics, "
+        "services and actions its nodes use, under the given arguments.",
     )
     graph.add_argument("targets", nargs="+", metavar="FILE|name:=value")
     graph.add_argument("--workspace", type=Path)
@@ -654,11 +655,14 @@ def _graph(args: argparse.Namespace) -> int:
     graph = evaluate(canonical(path), index=index, workspace=workspace, pinned=arguments,
                      environment=parse_environment(args.env))
     graph.included_elsewhere = Includers.of_workspace(index.workspaces).included(graph.root)
+    from launchverify.topology.compose import WorkspaceInterfaces
+
+    interfaces = WorkspaceInterfaces(index)
     with _output_may_close():
         if args.format == "json":
-            render_graph_json(graph, sys.stdout, symbolic=args.symbolic)
+            render_graph_json(graph, sys.stdout, symbolic=args.symbolic, interfaces=interfaces)
         else:
-            render_graph_text(graph, sys.stdout, symbolic=args.symbolic)
+            render_graph_text(graph, sys.stdout, symbolic=args.symbolic, interfaces=interfaces)
     return _graph_stopped(graph, args.format)
 
 

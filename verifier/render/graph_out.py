@@ -8,7 +8,7 @@ its path condition and values as expressions over the arguments.
 from __future__ import annotations
 
 import json
-from typing import Any, TextIO
+from typing import TYPE_CHECKING, Any, TextIO
 
 from launchverify.graph import LaunchGraph, NodeRecord, Origin, ParamRecord
 from launchverify.ir.subst import Sub
@@ -19,15 +19,26 @@ from launchverify.models.ros_names import node_fqn
 from launchverify.parameters import Contribution, effective_parameters
 from launchverify.workspace.paths import display_path
 
+if TYPE_CHECKING:
+    from launchverify.topology.compose import InterfaceSource, NodeEndpoints
+
 BRINGUP_ORDER = ("unconfigured", "configuring", "inactive", "activating", "active")
 
 
 class GraphView:
-    """Turns a graph into plain data, concrete or symbolic."""
+    """Turns a graph into plain data, concrete or symbolic.
 
-    def __init__(self, graph: LaunchGraph, symbolic: bool) -> None:
+    With ``interfaces`` (``launchverify graph``), the nodes' endpoints are composed from
+    the workspace's sources into ``topics``, ``services`` and ``actions``; without, those
+    fields are left out and no source is read.
+    """
+
+    def __init__(self, graph: LaunchGraph, symbolic: bool,
+                 interfaces: InterfaceSource | None = None) -> None:
         self.graph = graph
         self.symbolic = symbolic
+        self.interfaces = interfaces
+        self._composed: dict[int, NodeEndpoints] = {}
 
     def value(self, sub: Sub | None) -> str | None:
         """Return a value for output."""
@@ -70,7 +81,17 @@ class GraphView:
             "parameters": [self.parameter(p) for p in node.parameters],
             "effective_parameters": self.effective(node),
             **self.where(node.origin),
+            **self.interface(node),
         }
+
+    def interface(self, node: NodeRecord) -> dict[str, Any]:
+        """Return ``{"interface": ...}`` for a node when endpoints are composed, else ``{}``."""
+        composed = self._composed.get(id(node))
+        if composed is None:
+            return {}
+        from launchverify.render.graph_topics import node_interface
+
+        return {"interface": node_interface(self, composed)}
 
     def effective(self, node: NodeRecord) -> dict[str, Any] | None:
         """Return what the node receives per parameter, where from, and what it overrides.
@@ -121,6 +142,13 @@ class GraphView:
     def document(self) -> dict[str, Any]:
         """Return the whole graph as the documented JSON object."""
         graph = self.graph
+        topology: dict[str, Any] = {}
+        if self.interfaces is not None:
+            from launchverify.render.graph_topics import composed_nodes, sections
+
+            composed = composed_nodes(self, self.interfaces)
+            self._composed = {id(c.node): c for c in composed}
+            topology = sections(self, composed)
         return {
             "view": view(graph),
             "nodes": [self.node(n) for n in graph.nodes if self.shown(n.origin)],
@@ -144,6 +172,7 @@ class GraphView:
                  **self.where(a.origin)}
                 for a in graph.arguments if self.shown(a.origin)
             ],
+            **topology,
         }
 
 
@@ -199,15 +228,17 @@ def view(graph: LaunchGraph) -> dict[str, Any]:
             "what ros2 launch would fail on is reported"}
 
 
-def render_graph_json(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False) -> None:
-    """Write the graph as JSON."""
-    json.dump(GraphView(graph, symbolic).document(), out, indent=2)
+def render_graph_json(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False,
+                      interfaces: InterfaceSource | None = None) -> None:
+    """Write the graph as JSON (with topics, services and actions given ``interfaces``)."""
+    json.dump(GraphView(graph, symbolic, interfaces).document(), out, indent=2)
     out.write("\n")
 
 
-def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False) -> None:
+def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False,
+                      interfaces: InterfaceSource | None = None) -> None:
     """Write the graph as an indented listing."""
-    doc = GraphView(graph, symbolic).document()
+    doc = GraphView(graph, symbolic, interfaces).document()
     out.write(f"{'launched directly' if doc['view']['launched_directly'] else 'included'}: "
               f"{doc['view']['why']}\n")
     for node in doc["nodes"]:
@@ -249,6 +280,10 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
         for argument in doc["arguments"]:
             out.write(f"    {argument['name']} = {argument['value']}"
                       f"  (default {argument['default']})\n")
+    if interfaces is not None:
+        from launchverify.render.graph_topics import render_text
+
+        render_text(doc, out)
 
 
 def _lifecycle_text(lifecycle: dict[str, Any] | None, out: TextIO) -> None:

@@ -1,0 +1,352 @@
+"""Each launched node's endpoints, fully qualified: the launch graph meets the sources.
+
+For every node a launch starts, the interface its executable (or component plugin) has in
+the workspace's sources (``nodes.package_interfaces``) is taken, and each endpoint's name
+as written (or the value the launch gives the parameter it comes from, else that
+parameter's default) is resolved against the node's namespace, name and remap rules
+(``resolve``). Runs after evaluation, next to the rules, and reads only the graph and the
+sources; nothing here is imported by ``check``.
+
+Unknowns stay unknown: a name that needs something not known before launch (a symbolic
+namespace, a remap rule with an argument in it, a parameter set from an expression) comes
+out as ``None`` with the reason.
+"""
+
+from __future__ import annotations
+
+import shlex
+from dataclasses import dataclass, field
+from typing import Protocol
+
+from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, Origin
+from launchverify.ir.subst import Sub, walk
+from launchverify.ir.symbolic import Arg, EnvInput, Select
+from launchverify.models.ros_names import node_fqn
+from launchverify.parameters import effective_parameters
+from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface
+from launchverify.topology.resolve import (
+    Resolution,
+    RuleLike,
+    UnknownRule,
+    expand,
+    node_identity,
+    parse_rule,
+    resolve,
+)
+from launchverify.workspace.packages import Package, PackageIndex
+from launchverify.workspace.paths import display_path
+
+COMPONENT_KINDS = ("composable_node", "composable_lifecycle_node")
+SERVICE_KINDS = (EndpointKind.SERVICE, EndpointKind.CLIENT)
+
+
+class InterfaceSource(Protocol):
+    """Where a node's interface comes from (the workspace's sources, or a test's table)."""
+
+    def interface(self, package: str, executable: str,
+                  component: bool) -> tuple[NodeInterface | None, str | None]:
+        """Return the interface of an executable or plugin, or ``None`` and why not."""
+
+
+class WorkspaceInterfaces:
+    """Node interfaces read from the sources of the packages a ``PackageIndex`` knows.
+
+    Each package is read once, when a node of it is first asked for.
+    """
+
+    def __init__(self, index: PackageIndex) -> None:
+        self.index = index
+        self._read: dict[str, list[NodeInterface]] = {}
+        self._failed: dict[str, str] = {}
+
+    def interface(self, package: str, executable: str,
+                  component: bool) -> tuple[NodeInterface | None, str | None]:
+        """Return the interface of ``executable`` (or plugin) of ``package``, or why none."""
+        found = self.index.find(package)
+        if found is None:
+            return None, f"package {package} is not found"
+        if found.source is None:
+            return None, (f"package {package} has no sources in the workspace (a released "
+                          "package): its node interfaces are not known")
+        if package not in self._read:
+            from launchverify.topology.nodes import package_interfaces
+
+            try:
+                self._read[package] = package_interfaces(Package(package,
+                                                                 source=found.source))
+            except Exception as error:  # one package's surprise must not end the graph
+                self._failed[package] = f"{type(error).__name__}: {error}"
+                self._read[package] = []
+        if package in self._failed:
+            return None, (f"the sources of {package} could not be read: "
+                          f"{self._failed[package]}")
+        candidates = self._read[package]
+        if component:
+            matches = [i for i in candidates if i.component == executable]
+        else:
+            matches = sorted((i for i in candidates if i.executable == executable),
+                             key=lambda i: i.component is not None)
+        if not matches:
+            what = "component" if component else "executable"
+            return None, f"no {what} {executable} found in the sources of {package}"
+        return matches[0], None
+
+
+@dataclass(frozen=True, slots=True)
+class ComposedEndpoint:
+    """One endpoint of one launched node with its fully qualified name (or why not).
+
+    ``value_from`` says where a name read from a parameter came from: ``launch`` (the
+    launch sets the parameter for this node) or ``default`` (the sources' default).
+    """
+
+    node: NodeRecord
+    endpoint: Endpoint
+    name: str | None
+    reason: str | None = None
+    value_from: str | None = None
+    remapped_by: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class NodeEndpoints:
+    """A launched node, its interface (``None``: ``note`` says why) and its endpoints."""
+
+    node: NodeRecord
+    package: str | None
+    executable: str | None
+    interface: NodeInterface | None
+    endpoints: tuple[ComposedEndpoint, ...] = ()
+    note: str | None = None
+    fqn: str | None = None  # from the launch, else from the name its sources give
+
+
+@dataclass
+class _Identity:
+    """A node's name and namespace as far as known, and why not where not."""
+
+    name: str | None
+    namespace: str | None
+    name_reason: str | None = None
+    namespace_reason: str | None = None
+    rules: list[RuleLike] = field(default_factory=list)
+
+
+class Composer:
+    """Composes one graph's nodes with their interfaces, in one view.
+
+    ``symbolic``: values that depend on launch arguments stay unknown (the view of every
+    branch); otherwise the arguments as given (then defaults) decide them.
+    """
+
+    def __init__(self, graph: LaunchGraph, source: InterfaceSource, symbolic: bool) -> None:
+        self.graph = graph
+        self.source = source
+        self.symbolic = symbolic
+
+    def text(self, sub: Sub | None) -> str | None:
+        """Return a value when this view knows it."""
+        if sub is None or (self.symbolic and _has_inputs(sub)):
+            return None
+        return self.graph.base(sub)
+
+    def describe(self, sub: Sub) -> str:
+        """Return a value as an expression, for reasons."""
+        return self.graph.display(sub) or sub.describe()
+
+    def shown(self, origin: Origin) -> bool:
+        """Return whether a record belongs in this view (as ``graph`` lists nodes)."""
+        return self.symbolic or self.graph.runs(origin) is not False
+
+    def compose(self) -> list[NodeEndpoints]:
+        """Return every node of the view with its fully qualified endpoints."""
+        return [self.node(node) for node in self.graph.nodes if self.shown(node.origin)]
+
+    def node(self, node: NodeRecord) -> NodeEndpoints:
+        """Return one node's endpoints (none, with a note, when its interface is unknown)."""
+        package, executable = self.text(node.package), self.text(node.executable)
+        if package is None or executable is None:
+            return NodeEndpoints(node, package, executable, None,
+                                 note="its package or executable is not known before "
+                                 f"launch: {node.executable_label()}")
+        interface, note = self.source.interface(package, executable,
+                                                node.kind in COMPONENT_KINDS)
+        if interface is None:
+            return NodeEndpoints(node, package, executable, None, note=note)
+        identity = self.identity(node, interface)
+        endpoints = tuple(self.endpoint(node, e, identity) for e in interface.endpoints)
+        fqn = None
+        if identity.name is not None and identity.namespace is not None:
+            fqn = node_fqn(identity.namespace, identity.name)
+        return NodeEndpoints(node, package, executable, interface, endpoints, fqn=fqn)
+
+    def identity(self, node: NodeRecord, interface: NodeInterface) -> _Identity:
+        """Return the node's name, namespace and remap rules as this view knows them."""
+        identity = _Identity(None, "/")
+        if node.name is not None:
+            identity.name = self.text(node.name)
+            if identity.name is None:
+                identity.name_reason = ("the node's name is not known before launch: "
+                                        + self.describe(node.name))
+        else:
+            identity.name = interface.node_name
+            if identity.name is None:
+                identity.name_reason = "neither the launch nor the sources give the node's name"
+        if node.namespace is not None:
+            identity.namespace = self.text(node.namespace)
+            if identity.namespace is None:
+                identity.namespace_reason = ("the node's namespace is not known before "
+                                             "launch: " + self.describe(node.namespace))
+        given, reason = self.ros_argument_rules(node)
+        if reason is not None:
+            identity.rules.append(UnknownRule(reason))
+        if given:  # before launch's own __node/__ns: they win over name= and namespace=
+            identity.name, identity.namespace, _ = node_identity(
+                identity.name, identity.namespace, given, False, False)
+            identity.rules.extend(given)
+        for remap in node.remappings:
+            if remap.scope and not self.symbolic and self.graph.runs(remap.origin) is False:
+                continue
+            identity.rules.append(self.rule(remap.src, remap.dst, remap.origin))
+        name, namespace, reason = node_identity(
+            identity.name, identity.namespace, identity.rules,
+            launch_named=node.name is not None, launch_namespaced=node.namespace is not None)
+        if reason is not None and name is None and identity.name is not None:
+            identity.name_reason = reason
+        if reason is not None and namespace is None and identity.namespace is not None:
+            identity.namespace_reason = reason
+        identity.name, identity.namespace = name, namespace
+        return identity
+
+    def ros_argument_rules(self, node: NodeRecord) -> tuple[list[RuleLike], str | None]:
+        """Return the ``-r``/``--remap`` rules of a node's ``ros_arguments`` (they come first).
+
+        The second item says why they are not all known (an argument not known before
+        launch), ``None`` when they are.
+        """
+        launches = self.graph.derived.get("launch_of_node")
+        if launches is None:  # built once per graph: a fleet has many nodes
+            launches = {id(launch.node): launch for launch in self.graph.launches
+                        if launch.node is not None}
+            self.graph.derived["launch_of_node"] = launches
+        launch = launches.get(id(node))
+        if not isinstance(launch, LaunchRecord) or not launch.ros_arguments:
+            return [], None
+        words: list[str] = []
+        for argument in launch.ros_arguments:
+            text = self.text(argument)
+            if text is None:
+                return [], f"ros_arguments not known before launch: {self.describe(argument)}"
+            try:
+                words.extend(shlex.split(text))
+            except ValueError:
+                words.append(text)
+        where = f"{display_path(launch.origin.span.file)}:{launch.origin.span.line}"
+        rules: list[RuleLike] = []
+        for flag, value in zip(words, [*words[1:], ""], strict=True):
+            if flag in ("-r", "--remap") and ":=" in value:
+                src, _, dst = value.partition(":=")
+                rules.append(parse_rule(src, dst, where))
+        return rules, None
+
+    def rule(self, src: Sub, dst: Sub, origin: Origin) -> RuleLike:
+        """Return one remap rule, or an unknown one saying which side is not known."""
+        where = f"{display_path(origin.span.file)}:{origin.span.line}"
+        source, target = self.text(src), self.text(dst)
+        if source is not None and target is not None:
+            return parse_rule(source, target, where)
+        reason = (f"{self.describe(src)}:={self.describe(dst)} at {where}")
+        if source is None:
+            return UnknownRule(reason)
+        known = parse_rule(source, "", where)
+        return UnknownRule(reason, known.node, known.src)
+
+    def endpoint(self, node: NodeRecord, endpoint: Endpoint,
+                 identity: _Identity) -> ComposedEndpoint:
+        """Return one endpoint with its fully qualified name, or the reason it is unknown."""
+        written, value_from, reason = self.written_name(node, endpoint)
+        if written is None:
+            return ComposedEndpoint(node, endpoint, None, reason, value_from)
+        if identity.namespace is None:
+            absolute = expand(written, "/", None) if written.startswith("/") else None
+            if absolute is None or absolute.name is None or identity.rules:
+                return ComposedEndpoint(node, endpoint, None, identity.namespace_reason,
+                                        value_from)
+            return ComposedEndpoint(node, endpoint, absolute.name, None, value_from)
+        resolution: Resolution = resolve(written, identity.namespace, identity.name,
+                                         identity.rules,
+                                         service=endpoint.kind in SERVICE_KINDS)
+        reason = resolution.reason
+        if resolution.name is None and identity.name is None and identity.name_reason:
+            reason = f"{reason} ({identity.name_reason})"
+        return ComposedEndpoint(node, endpoint, resolution.name, reason, value_from,
+                                resolution.remapped_by)
+
+    def written_name(self, node: NodeRecord, endpoint: Endpoint,
+                     ) -> tuple[str | None, str | None, str | None]:
+        """Return ``(name, value_from, reason)``: the name the node's code passes to rcl.
+
+        A name read from a parameter is the value the launch gives that parameter on this
+        node, else the default the sources declare.
+        """
+        parameter = endpoint.name_parameter
+        if parameter is None:
+            if endpoint.name is None:
+                return None, None, endpoint.unresolved_reason or "the name is not known"
+            return endpoint.name, None, None
+        unknown = self.unknown_parameter(node, parameter)
+        if unknown is not None:
+            return None, None, unknown
+        effective = effective_parameters(self.graph, node)
+        winner = effective.winner(parameter)
+        if winner is not None:
+            where = f"{display_path(winner.span.file)}:{winner.span.line}"
+            if winner.value is None:
+                return None, "launch", (f"parameter {parameter} is set at {where} to a value "
+                                        "not known before launch")
+            if not isinstance(winner.value, str):
+                return None, "launch", (f"parameter {parameter} is set at {where} to a "
+                                        f"{winner.kind}, not a name")
+            return winner.value, "launch", None
+        if not effective.complete:
+            return None, None, (f"parameter {parameter} may be set by a parameter source of "
+                                "this node that could not be read")
+        if endpoint.name is None:
+            return None, "default", (endpoint.unresolved_reason or f"parameter {parameter} "
+                                     "has no default in the sources and the launch does "
+                                     "not set it")
+        return endpoint.name, "default", None
+
+    def unknown_parameter(self, node: NodeRecord, parameter: str) -> str | None:
+        """Return why this view cannot tell what a node's parameter is, or ``None``.
+
+        Parameter files are keyed by node name: when the launch does not give the name, a
+        file may hold a block for the name the code picks. In the symbolic view, a value
+        (or file) that depends on launch arguments is unknown.
+        """
+        files = [p for p in node.parameters if p.file is not None]
+        if files and self.graph.base(node.fqn) is None:
+            return (f"parameter {parameter} may be set by a parameter file under the node's "
+                    "name, which the launch does not give")
+        if not self.symbolic:
+            return None
+        for param in node.parameters:
+            if param.file is not None and _has_inputs(param.file):
+                return (f"parameter {parameter} may be set by a parameter file chosen by "
+                        f"launch arguments: {self.describe(param.file)}")
+            if param.name is not None and self.text(param.name) in (parameter, None) and (
+                    isinstance(param.value, Sub) and _has_inputs(param.value)):
+                return (f"parameter {parameter} is set from launch arguments: "
+                        f"{self.describe(param.value)}")
+        return None
+
+
+def compose(graph: LaunchGraph, source: InterfaceSource, *,
+            symbolic: bool = False) -> list[NodeEndpoints]:
+    """Return every node of the view with its fully qualified endpoints."""
+    return Composer(graph, source, symbolic).compose()
+
+
+def _has_inputs(sub: Sub) -> bool:
+    """Return whether a value depends on launch arguments or the environment."""
+    return any(isinstance(part, (Arg, EnvInput, Select)) for part in walk(sub))
