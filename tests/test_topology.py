@@ -143,6 +143,29 @@ def test_cmake_variables_directories_and_linked_libraries(tmp_path: Path) -> Non
         "src/core/a.cpp", "src/core/b.cc", "src/gen.cpp", "src/main.cpp"]
 
 
+
+def test_a_cmake_function_with_keyword_arguments_registers_a_component(tmp_path: Path) -> None:
+    # ros2/demos' demo_nodes_cpp: create_demo_library(plugin executable FILES ...) reads its
+    # sources from cmake_parse_arguments' ${ARG_FILES} and registers ${plugin}
+    (tmp_path / "src").mkdir()
+    (tmp_path / "src" / "talker.cpp").write_text("// talker\n")
+    (tmp_path / "CMakeLists.txt").write_text(
+        "project(demo)\n"
+        "function(create_demo_library plugin executable)\n"
+        '  cmake_parse_arguments(ARG "" "" "FILES;DEPENDENCIES" ${ARGN})\n'
+        "  set(library ${executable}_library)\n"
+        "  add_library(${library} SHARED ${ARG_FILES})\n"
+        "  rclcpp_components_register_node(${library} PLUGIN ${plugin} "
+        "EXECUTABLE ${executable})\n"
+        "endfunction()\n"
+        'create_demo_library("demo::Talker" talker FILES src/talker.cpp '
+        "DEPENDENCIES rclcpp::rclcpp)\n")
+    built = build_targets(tmp_path, "demo")
+    assert built is not None
+    assert built.sources["talker_library"] == ("src/talker.cpp",)
+    assert built.components == (("talker_library", "demo::Talker", "talker"),)
+
+
 # --------------------------------------------------------------------------- interfaces
 
 

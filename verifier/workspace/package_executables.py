@@ -259,8 +259,44 @@ class _CMake:
                     self.components.append((target, plugin, None))
         elif name == "project" and args:
             self.variables["PROJECT_NAME"] = self.expand(args[0]) or self.project
+        elif name == "cmake_parse_arguments" and len(args) >= 4:
+            self.parse_arguments(args)
         else:
             self.call_rest(name, args, depth)
+
+    def parse_arguments(self, args: list[str]) -> None:
+        """``cmake_parse_arguments``: a function's keyword arguments as ``PREFIX_KEYWORD``.
+
+        ``create_demo_library(plugin exe FILES a.cpp DEPENDENCIES ...)`` in ros2/demos reads
+        its sources from ``${ARG_FILES}``.
+        """
+        if args[0] == "PARSE_ARGV" and len(args) >= 6:
+            try:
+                skip = int(args[1])
+            except ValueError:
+                self.complete = False
+                return
+            prefix, keywords = args[2], args[3:6]
+            given = (self.variables.get("ARGV") or "").split(";")[skip:]
+        else:
+            prefix, keywords = args[0], args[1:4]
+            given = [w for a in args[4:] for w in (self.expand(a) or "").split(";")]
+        options, single, multiple = (set(filter(None, (self.expand(k) or "").split(";")))
+                                     for k in keywords)
+        values: dict[str, list[str]] = {}
+        current: str | None = None
+        for word in given:
+            if word in options:
+                values[word], current = ["TRUE"], None
+            elif word in single or word in multiple:
+                values[word], current = [], word
+            elif current is not None:
+                values[current].append(word)
+                if current in single:
+                    current = None
+        for keyword in options | single | multiple:
+            default = "FALSE" if keyword in options else ""
+            self.variables[f"{prefix}_{keyword}"] = ";".join(values.get(keyword, [default]))
 
     def call_target(self, name: str, args: list[str]) -> None:
         """``add_executable`` and its variants: a target that may be installed."""
@@ -296,6 +332,7 @@ class _CMake:
             self.variables[param] = value if value is not None else "\x00"
         rest = [self.expand(a) or "" for a in args[len(function.params):]]
         self.variables["ARGN"] = ";".join(rest)
+        self.variables["ARGV"] = ";".join(self.expand(a) or "" for a in args)
         self.execute(function.body, depth + 1)
         self.variables = saved
 
@@ -332,7 +369,11 @@ class _CMake:
             plugin = args.index("PLUGIN") + 1 if "PLUGIN" in args else 0
             library = self.expand(args[0]) if args else None
             if plugin and plugin < len(args) and library is not None:
-                self.components.append((library, args[plugin], name))
+                expanded = self.expand(args[plugin])
+                if expanded is None:
+                    self.complete = False
+                else:
+                    self.components.append((library, expanded, name))
 
     def record_sources(self, name: str, args: list[str]) -> None:
         """Remember the source words of a target (keywords dropped, variables expanded)."""
