@@ -297,3 +297,9 @@ def test_hundreds_of_python_files_do_not_stall_the_zygote(tmp_path: Path) -> Non
     report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path, time_limit=2))
     assert report.python_files == 360
     assert [f.code for f in report.findings] == []
+
+
+def test_an_enumeration_named_by_a_list_is_a_codec_error() -> None:
+    # found by the property test above: the enumeration's name was looked up unhashed
+    with pytest.raises(CodecError):
+        Decoder(lambda number: (lambda *args: None)).decode(["#e", [], None])

@@ -199,7 +199,7 @@ def _one(rest: list[object], kind: type) -> Any:
 
 
 def _enum(rest: list[object]) -> enum.Enum:
-    if len(rest) != 2 or rest[0] not in ENUMS:
+    if len(rest) != 2 or not isinstance(rest[0], str) or rest[0] not in ENUMS:
         raise CodecError("malformed enumeration value")
     try:
         return ENUMS[str(rest[0])](rest[1])
