@@ -35,6 +35,7 @@ from launchverify.rules.parameters.inconsistent_sim_time import InconsistentSimT
 from launchverify.rules.parameters.param_file_error import ParamFileError
 from launchverify.rules.parameters.param_type_conflict import ParamTypeConflict
 from launchverify.rules.parameters.unmatched_param_block import UnmatchedParamBlock
+from launchverify.rules.wiring.unused_remap import UnusedRemap
 
 BUILTIN: tuple[type[Rule], ...] = (
     ParseError,               # LV001
@@ -67,4 +68,5 @@ BUILTIN: tuple[type[Rule], ...] = (
     LifecycleDeadlock,        # LV503
     InvalidLifecycleTransition,  # LV504
     ManagerUnknownNode,       # LV505
+    UnusedRemap,              # LV601
 )

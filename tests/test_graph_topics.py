@@ -193,7 +193,8 @@ def test_text_format_lists_topics(capsys: pytest.CaptureFixture[str]) -> None:
 
 
 def test_check_reads_no_sources() -> None:
-    """Only ``graph`` composes endpoints: ``check`` imports neither tree-sitter nor this."""
+    """``check`` reads sources only for a rule that needs them (LV601: a node of a
+    workspace package with remap rules of its own); this pair has none."""
     code = ("import sys\n"
             "from launchverify.cli import main\n"
             f"main(['check', {str(LAUNCH / 'pair.launch.xml')!r}, '--workspace', "
