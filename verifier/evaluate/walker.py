@@ -371,17 +371,34 @@ class Walker:
                 and not is_unset(existing) and self.graph.runs(ctx.origin(action.span)):
             # An includer passes a value that depends on its arguments: with their
             # defaults it must still be a choice (its own default is LV203's to judge).
-            passed = self.base_check.at(ctx, action.span)
-            chosen = passed.text(current)
+            # Reported where the includer passes it, when it does so by name.
+            chosen = self.base_check.at(ctx, action.span).text(current)
             if chosen is not None and chosen not in action.choices:
-                passed.fail(f"argument {action.name!r} gets value {chosen!r}, which is not one "
-                            f"of its choices {list(action.choices)} (ros2 launch fails)")
+                where, at = self.passed_at(action.name, ctx, action.span)
+                self.base_check.at(at, where).fail(
+                    f"argument {action.name!r} of {action.span.short()} gets value "
+                    f"{chosen!r}, which is not one of its choices {list(action.choices)} "
+                    "(ros2 launch fails)")
         self.graph.arguments.append(ArgumentRecord(
             action.name, ctx.origin(action.span), default, action.description,
             action.choices, current, action,
         ))
         for record in self.include_stack:
             record.declared.add(action.name)
+
+    def passed_at(self, name: str, ctx: Ctx, declared: Span) -> tuple[Span, Ctx]:
+        """Return where the innermost include passes argument ``name`` (and its context).
+
+        Falls back to the declaration when the value came another way (an XML include
+        passes every configuration of its scope).
+        """
+        if self.include_stack:
+            record = self.include_stack[-1]
+            for passed, _value, span in record.arguments:
+                if passed == name:
+                    origin = record.origin
+                    return span, Ctx(span.file, origin.chain, origin.path)
+        return declared, ctx
 
     def do_SetConfig(self, action: a.SetConfig, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
