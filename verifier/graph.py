@@ -94,6 +94,11 @@ class NodeRecord:
         """Return whether the node is a managed (lifecycle) node."""
         return self.kind in ("lifecycle_node", "composable_lifecycle_node")
 
+    @property
+    def composable(self) -> bool:
+        """Return whether the node is a component loaded into a container."""
+        return self.kind in ("composable_node", "composable_lifecycle_node")
+
 
 @dataclass(frozen=True, slots=True)
 class ArgumentRecord:

@@ -22,7 +22,6 @@ from launchverify.models.parameter_values import typed_parameter
 from launchverify.models.ros_names import node_key_matches
 from launchverify.span import Span
 
-COMPONENT_KINDS = ("composable_node", "composable_lifecycle_node")
 EVERY_NODE = "/**"
 
 
@@ -80,7 +79,7 @@ def effective_parameters(graph: LaunchGraph, node: NodeRecord) -> EffectiveParam
 def _resolve(graph: LaunchGraph, node: NodeRecord) -> EffectiveParameters:
     fqn = graph.base(node.fqn)
     result = EffectiveParameters(node, fqn)
-    component = node.kind in COMPONENT_KINDS
+    component = node.composable
     table: dict[str, list[tuple[str, Contribution]]] = {}  # key -> [(name, value)] in order
     own_key = fqn if fqn is not None else EVERY_NODE
     for param in node.parameters:

@@ -18,8 +18,6 @@ from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 from launchverify.workspace.package_contents import name_literals, unnamed_node_names
 from launchverify.workspace.packages import PackageIndex
 
-COMPONENT_KINDS = ("composable_node", "composable_lifecycle_node")
-
 
 @dataclass(frozen=True)
 class Receiver:
@@ -40,7 +38,7 @@ class Receiver:
     @property
     def component(self) -> bool:
         """Return whether launch_ros filters the file for it (a loaded component)."""
-        return self.node.kind in COMPONENT_KINDS
+        return self.node.composable
 
     def label(self) -> str:
         """Return how the node is named in messages."""

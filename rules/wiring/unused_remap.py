@@ -24,7 +24,6 @@ BUILT_IN_PRIVATE = (
     "change_state", "get_state", "get_available_states", "get_available_transitions",
     "get_transition_graph", "transition_event", "get_logger_levels", "set_logger_levels",
 )
-COMPONENT_KINDS = ("composable_node", "composable_lifecycle_node")
 
 
 class UnusedRemap(Rule):
@@ -104,7 +103,7 @@ class UnusedRemap(Rule):
         if package is None or executable is None:
             return
         interface, _ = composer.source.interface(package, executable,
-                                                 node.kind in COMPONENT_KINDS)
+                                                 node.composable)
         if interface is None:
             return
         identity = composer.identity(node, interface)

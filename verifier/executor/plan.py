@@ -184,7 +184,7 @@ def _components(graph: LaunchGraph, builder: CommandBuilder) -> dict[int, list[l
 
     out: dict[int, list[list[str]]] = defaultdict(list)
     for node in graph.nodes:
-        if (node.kind not in ("composable_node", "composable_lifecycle_node")
+        if (not node.composable
                 or node.execution is None or node.container is None
                 or not graph.runs(node.origin)):
             continue

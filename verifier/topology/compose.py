@@ -36,7 +36,6 @@ from launchverify.topology.resolve import (
 from launchverify.workspace.packages import Package, PackageIndex
 from launchverify.workspace.paths import display_path
 
-COMPONENT_KINDS = ("composable_node", "composable_lifecycle_node")
 SERVICE_KINDS = (EndpointKind.SERVICE, EndpointKind.CLIENT)
 
 
@@ -170,7 +169,7 @@ class Composer:
                                  note="its package or executable is not known before "
                                  f"launch: {node.executable_label()}")
         interface, note = self.source.interface(package, executable,
-                                                node.kind in COMPONENT_KINDS)
+                                                node.composable)
         if interface is None:
             return NodeEndpoints(node, package, executable, None, note=note)
         identity = self.identity(node, interface)
