@@ -200,6 +200,14 @@ class _CMake:
         expanded = _VARIABLE.sub(value, word)
         return None if "\x00" in expanded or "$" in expanded else expanded
 
+    def list_items(self, word: str) -> list[str]:
+        """Return a word expanded and split as a CMake list ([] and incomplete when unknown)."""
+        expanded = self.expand(word)
+        if expanded is None:
+            self.complete = False
+            return []
+        return expanded.split(";")
+
     def execute(self, commands: list[tuple[str, list[str]]], depth: int) -> None:
         index = 0
         while index < len(commands):
@@ -225,11 +233,7 @@ class _CMake:
         elif items[:2] == ["IN", "ITEMS"]:
             items = items[2:]
         for item in items:
-            expanded = self.expand(item)
-            if expanded is None:
-                self.complete = False
-                continue
-            for word in expanded.split(";"):
+            for word in self.list_items(item):
                 self.variables[variable] = word
                 self.execute(body, depth + 1)
 
@@ -348,11 +352,7 @@ class _CMake:
         for word in args[1:]:
             if word in keywords:
                 break
-            expanded = self.expand(word)
-            if expanded is None:
-                self.complete = False
-                continue
-            for item in expanded.split(";"):
+            for item in self.list_items(word):
                 if kind == "TARGETS" and item in self.targets:
                     self.installed.add(item)
                 elif kind == "PROGRAMS":
@@ -386,11 +386,7 @@ class _CMake:
             if word in _TARGET_KEYWORDS:
                 directory = word == "DIRECTORY"
                 continue
-            expanded = self.expand(word)
-            if expanded is None:
-                self.complete = False
-                continue
-            for item in expanded.split(";"):
+            for item in self.list_items(word):
                 if item:
                     words.append(item.rstrip("/") + "/" if directory else item)
 
