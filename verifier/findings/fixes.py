@@ -16,8 +16,7 @@ from __future__ import annotations
 
 import dataclasses
 import difflib
-from collections.abc import Callable, Iterable, Iterator
-from contextlib import contextmanager
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -264,22 +263,6 @@ class Outcome:
     notes: list[str] = field(default_factory=list)
 
 
-@contextmanager
-def buffered(contents: dict[Path, bytes]) -> Iterator[None]:
-    """Make every reader (Python workers included) see ``contents`` instead of the files."""
-    before = {path: reading.unsaved(path) for path in contents}
-    for path, data in contents.items():
-        reading.set_unsaved(path, data)
-    try:
-        yield
-    finally:
-        for path, old in before.items():
-            if old is None:
-                reading.forget_unsaved(path)
-            else:
-                reading.set_unsaved(path, old)
-
-
 def fix_all(report: Report, check: Callable[[], Report], *, unsafe: bool,
             editable: Callable[[Path], bool] | None = None) -> Outcome:
     """Fix, check again, and repeat until no fix is left (at most ``MAX_PASSES`` times).
@@ -306,7 +289,7 @@ def fix_all(report: Report, check: Callable[[], Report], *, unsafe: bool,
         if not step.contents:
             break
         trial = {**current, **step.contents}
-        with buffered(trial):
+        with reading.unsaved_buffers(trial):
             checked = check()
         broken = _unreadable(step, checked, outcome.report)
         if broken:
@@ -319,7 +302,7 @@ def fix_all(report: Report, check: Callable[[], Report], *, unsafe: bool,
                     trial[path] = current[path]
             if trial == current:
                 continue
-            with buffered(trial):
+            with reading.unsaved_buffers(trial):
                 checked = check()
         current = trial
         outcome.count += sum(1 for f in step.fixed if not _touches(f, broken))

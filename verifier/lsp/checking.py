@@ -50,7 +50,7 @@ def check_documents(documents: Iterable[Path], buffers: Mapping[Path, bytes],
     checked = Checked()
     paths = sorted({canonical(p) for p in documents if p.is_file()})
     checked.covered.update(paths)
-    with unsaved_buffers({canonical(p): data for p, data in buffers.items()}):
+    with unsaved_buffers({canonical(p): data for p, data in buffers.items()}, only=True):
         for group in _by_configuration(paths, checked.problems):
             try:
                 _check_group(group, folders, checked)

@@ -39,14 +39,16 @@ def set_unsaved(path: Path, data: bytes) -> None:
 
 
 @contextlib.contextmanager
-def unsaved_buffers(contents: Mapping[Path, bytes]) -> Iterator[None]:
+def unsaved_buffers(contents: Mapping[Path, bytes], *, only: bool = False) -> Iterator[None]:
     """Let every reader see these buffers in place of their files inside the block only.
 
-    The language server checks what its editor has open, then forgets it: a buffer closed
-    or saved since must not stand for its file in the next check.
+    They lay over the buffers already set (a fix pass over an editor's buffer); with
+    ``only``, no other buffer counts inside (the language server checks exactly what its
+    editor has open: a buffer closed or saved since must not stand for its file).
     """
     saved = dict(_UNSAVED)
-    _UNSAVED.clear()
+    if only:
+        _UNSAVED.clear()
     for path, data in contents.items():
         set_unsaved(path, data)
     try:
@@ -54,11 +56,6 @@ def unsaved_buffers(contents: Mapping[Path, bytes]) -> Iterator[None]:
     finally:
         _UNSAVED.clear()
         _UNSAVED.update(saved)
-
-
-def forget_unsaved(path: Path) -> None:
-    """Let readers see ``path``'s own content again."""
-    _UNSAVED.pop(os.path.realpath(path), None)
 
 
 def unsaved(path: Path) -> bytes | None:
