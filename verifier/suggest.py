@@ -21,7 +21,13 @@ def did_you_mean(name: str, candidates: Iterable[str]) -> str:
 
 def closest(name: str, candidates: Iterable[str]) -> str | None:
     """Return the candidate ``did_you_mean`` names, if any (difflib's closest, 0.75 alike)."""
-    matches = difflib.get_close_matches(name, sorted(set(candidates)), n=1, cutoff=0.75)
+    return _closest(name, tuple(sorted(set(candidates))))
+
+
+@lru_cache(maxsize=4096)
+def _closest(name: str, candidates: tuple[str, ...]) -> str | None:
+    """``closest`` remembered: every root reaching an include asks it again (and the fix)."""
+    matches = difflib.get_close_matches(name, candidates, n=1, cutoff=0.75)
     return matches[0] if matches else None
 
 

@@ -73,7 +73,8 @@ class UnknownPackage(Rule):
 
     def __init__(self) -> None:
         # one check's suggestions: every graph asks again, and installed packages are many
-        self._suggested: dict[str, tuple[str | None, str | None, bool]] = {}
+        self._typos: dict[str, tuple[str | None, bool]] = {}
+        self._closest: dict[str, str | None] = {}
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         installed = ctx.packages is not None and ctx.packages.has_install
@@ -99,12 +100,13 @@ class UnknownPackage(Rule):
         """Report a package found nowhere: an error when surely wrong, else a warning."""
         if not installed and is_released(ref.name):
             return None  # a dependency to install, not a mistake
-        typo, hint, unique = self._suggestions(ref.name, local)
+        typo, unique = self._typo(ref.name, local)
         if not installed and typo is None and not local:
             return None  # loose launch files: no workspace to miss it from
         if (not installed and typo is None and ctx.packages is not None
                 and ctx.packages.declares(ref.origin.span.file, ref.name)):
             return None  # a declared dependency from elsewhere (.repos): not here yet
+        hint = typo or self._closest_package(ref.name, local)
         where = ("neither in the workspace nor installed" if installed
                  else "not in the workspace and not a released ROS 2 package")
         fix = None if hint is None else rename(ref.written, ref.name, hint,
@@ -118,12 +120,15 @@ class UnknownPackage(Rule):
                                        message=finding.message + self.outside)
         return dataclasses.replace(finding, severity=Severity.WARNING)
 
-    def _suggestions(self, name: str, local: frozenset[str]
-                     ) -> tuple[str | None, str | None, bool]:
-        """Return (the typo's target, the package most likely meant, whether unique)."""
-        if name not in self._suggested:
+    def _typo(self, name: str, local: frozenset[str]) -> tuple[str | None, bool]:
+        """Return the package ``name`` misspells, if any, and whether it is the only one."""
+        if name not in self._typos:
             close = typos(name, local) or typos(name, released_packages())
-            typo = close[0] if close else None
-            self._suggested[name] = (typo, typo or closest_package(name, local),
-                                     len(close) == 1)
-        return self._suggested[name]
+            self._typos[name] = (close[0] if close else None, len(close) == 1)
+        return self._typos[name]
+
+    def _closest_package(self, name: str, local: frozenset[str]) -> str | None:
+        """Return the workspace package most likely meant (asked only when reported)."""
+        if name not in self._closest:
+            self._closest[name] = closest_package(name, local)
+        return self._closest[name]

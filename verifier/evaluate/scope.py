@@ -12,7 +12,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any
 
-from launchverify.ir.subst import Sub, Text, tree_size
+from launchverify.ir.subst import Sub, Text
 from launchverify.ir.symbolic import PathCondition, Select, Unknown, Unset
 
 ROS_NAMESPACE = "ros_namespace"
@@ -47,7 +47,8 @@ MAX_VALUE_SIZE = 2000
 MAX_TEXT_SIZE = 100_000  # characters
 
 
-def guarded(path: PathCondition, new: Sub, old: Sub | None, name: str) -> Sub:
+def guarded(path: PathCondition, new: Sub, old: Sub | None, name: str,
+            measures: Measures | None = None) -> Sub:
     """Return the value after an assignment made under ``path``.
 
     A value that grows past ``MAX_VALUE_SIZE`` parts or ``MAX_TEXT_SIZE`` characters (a
@@ -57,9 +58,41 @@ def guarded(path: PathCondition, new: Sub, old: Sub | None, name: str) -> Sub:
         previous = Unset(name) if old is None else old
         if previous != new:
             new = Select(path, new, previous)
-    if tree_size(new, MAX_VALUE_SIZE) > MAX_VALUE_SIZE or text_size(new) > MAX_TEXT_SIZE:
+    if (measures or Measures()).too_large(new):
         return Unknown(f"value of {name} (too complex to follow)")
     return new
+
+
+class Measures:
+    """The sizes of the values one evaluation assigned, so that each is measured once.
+
+    An assignment under a condition wraps the previous value in a ``Select``: measuring
+    the new value from scratch would walk the whole chain again at every assignment. Sizes
+    are kept per object (the object too, so that its id stays its own).
+    """
+
+    def __init__(self) -> None:
+        self._known: dict[int, tuple[Sub, int, int]] = {}  # id -> (value, parts, chars)
+
+    def too_large(self, value: Sub) -> bool:
+        """Return whether a value is past either limit (shared parts: see ``text_size``)."""
+        parts, chars = self._measure(value)
+        if parts > MAX_VALUE_SIZE:
+            return True
+        # ``chars`` counts a shared part each time: past the limit, count it once.
+        return chars > MAX_TEXT_SIZE and text_size(value) > MAX_TEXT_SIZE
+
+    def _measure(self, value: Sub) -> tuple[int, int]:
+        known = self._known.get(id(value))
+        if known is not None:
+            return known[1], known[2]
+        parts, chars = 1, len(value.text) if isinstance(value, Text) else 0
+        for child in value.children():  # each distinct part once: linear even in a doubled value
+            child_parts, child_chars = self._measure(child)
+            parts = min(parts + child_parts, MAX_VALUE_SIZE + 1)
+            chars = min(chars + child_chars, MAX_TEXT_SIZE + 1)
+        self._known[id(value)] = (value, parts, chars)
+        return parts, chars
 
 
 def text_size(sub: Sub) -> int:
@@ -89,6 +122,7 @@ class Scopes:
         # arguments whose value a later <let>/SetLaunchConfiguration replaced: where
         self.overrides: dict[str, Any] = {}
         self._override_stack: list[dict[str, Any]] = []
+        self.measures = Measures()
 
     # launch's PushLaunchConfigurations / PopLaunchConfigurations
     def push_configs(self) -> None:
@@ -130,7 +164,8 @@ class Scopes:
         configuration that was never set means to its readers (``None``: reading fails).
         """
         old = self.configs.get(name)
-        self.configs[name] = guarded(path, value, unset if old is None else old, name)
+        self.configs[name] = guarded(path, value, unset if old is None else old, name,
+                                     self.measures)
 
     def get(self, name: str) -> Sub | None:
         """Return a configuration's value, or ``None`` when it was never set."""

@@ -538,26 +538,3 @@ def walk(sub: Sub) -> list[Sub]:
         out.append(item)
         stack.extend(reversed(item.children()))
     return out
-
-
-def tree_size(sub: Sub, limit: int) -> int:
-    """Return the size of ``sub`` as a tree (shared parts counted each time they appear).
-
-    Stops counting past ``limit``; runs in time linear in the distinct sub-expressions, so
-    it is safe on values built by doubling.
-    """
-    sizes: dict[int, int] = {}
-
-    def size(item: Sub) -> int:
-        known = sizes.get(id(item))
-        if known is not None:
-            return known
-        total = 1
-        for child in item.children():
-            total += size(child)
-            if total > limit:
-                break
-        sizes[id(item)] = min(total, limit + 1)
-        return sizes[id(item)]
-
-    return size(sub)

@@ -42,10 +42,11 @@ class Z3Backend:
         """Return switches under which every path holds, if any."""
         encoder = self.encoder(Mode.SWITCHES)
         formula = z3.And(*[encoder.path(p) for p in paths])
-        model = self._model(encoder, [formula])
+        names = argument_names([g for p in paths for g in p])
+        model = self._model(encoder, [formula], names)
         if model is None:
             return None
-        return self._assignment(encoder, model, argument_names([g for p in paths for g in p]))
+        return self._assignment(encoder, model, names)
 
     def same_name(self, first: Sub, first_path: PathCondition, second: Sub,
                   second_path: PathCondition) -> tuple[Witness, str] | None:
@@ -53,30 +54,31 @@ class Z3Backend:
         encoder = self.encoder(Mode.SWITCHES)
         left, right = encoder.name(first), encoder.name(second)
         formula = z3.And(left == right, encoder.path(first_path), encoder.path(second_path))
-        found = self._model(encoder, [formula])
+        names = argument_names([first, second, *first_path, *second_path])
+        found = self._model(encoder, [formula], names)
         if found is None:
             return None
-        names = argument_names([first, second, *first_path, *second_path])
         return (self._assignment(encoder, found, names),
                 _text(found.eval(left, model_completion=True)))
 
     def never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
         """Return the unsat core when ``guard`` cannot hold where ``path`` can."""
         encoder = self.encoder(Mode.ANY)
-        if self._check(encoder, [encoder.path(path)]) != z3.sat:
+        names = argument_names([*path, guard])
+        if self._check(encoder, [encoder.path(path)], names) != z3.sat:
             return None
         solver = self._solver()
         facts = (*path, guard)
         for index, fact in enumerate(facts):
             solver.assert_and_track(encoder.holds(fact), f"g{index}")
-        constraints = encoder.domain_constraints()
+        constraints = encoder.domain_constraints(names)
         for index, (_, formula) in enumerate(constraints):
             solver.assert_and_track(formula, f"d{index}")
         self.queries += 1
         if solver.check() != z3.unsat:
             return None
         if isinstance(guard, Truthy) and self._check(
-                encoder, [encoder.path(path), z3.Not(encoder.raises(guard))]) != z3.sat:
+                encoder, [encoder.path(path), z3.Not(encoder.raises(guard))], names) != z3.sat:
             return None  # never a boolean at all: launch raises (LV002/LV207 say so)
         core = {str(c) for c in solver.unsat_core()}
         guards = tuple(f for i, f in enumerate(facts) if f"g{i}" in core)
@@ -86,10 +88,11 @@ class Z3Backend:
     def always(self, path: PathCondition, guard: Guard) -> bool:
         """Return whether ``guard`` holds wherever ``path`` does (and ``path`` can)."""
         encoder = self.encoder(Mode.ANY)
-        if self._check(encoder, [encoder.path(path)]) != z3.sat:
+        names = argument_names([*path, guard])
+        if self._check(encoder, [encoder.path(path)], names) != z3.sat:
             return False
         negated = z3.Not(encoder.holds(guard))
-        return bool(self._check(encoder, [encoder.path(path), negated]) == z3.unsat)
+        return bool(self._check(encoder, [encoder.path(path), negated], names) == z3.unsat)
 
     def invalid_value(self, path: PathCondition, guard: Truthy) -> tuple[str, Witness] | None:
         """Return a non-boolean value the condition takes under some switches."""
@@ -98,11 +101,12 @@ class Z3Backend:
         if not all(_is_argument(v) for v in _variables(value)):
             return None  # it depends on unknowns: cannot tell
         formulas = [encoder.path(path), encoder.raises(guard)]
-        found = self._model(encoder, formulas)
+        names = argument_names([*path, guard])
+        found = self._model(encoder, formulas, names)
         if found is None:
             return None
         return (_text(found.eval(value, model_completion=True)),
-                self._assignment(encoder, found, argument_names([*path, guard])))
+                self._assignment(encoder, found, names))
 
     # ------------------------------------------------------------------ machinery
 
@@ -111,17 +115,19 @@ class Z3Backend:
         solver.set("timeout", TIMEOUT_MS)
         return solver
 
-    def _check(self, encoder: Encoder, formulas: Iterable[z3.BoolRef]) -> z3.CheckSatResult:
+    def _check(self, encoder: Encoder, formulas: Iterable[z3.BoolRef],
+               names: set[str]) -> z3.CheckSatResult:
         solver = self._solver()
         solver.add(*formulas)
-        solver.add(*[f for _, f in encoder.domain_constraints()])
+        solver.add(*[f for _, f in encoder.domain_constraints(names)])
         self.queries += 1
         return solver.check()
 
-    def _model(self, encoder: Encoder, formulas: list[z3.BoolRef]) -> z3.ModelRef | None:
+    def _model(self, encoder: Encoder, formulas: list[z3.BoolRef],
+               names: set[str]) -> z3.ModelRef | None:
         solver = self._solver()
         solver.add(*formulas)
-        solver.add(*[f for _, f in encoder.domain_constraints()])
+        solver.add(*[f for _, f in encoder.domain_constraints(names)])
         self.queries += 1
         if solver.check() != z3.sat:
             return None
