@@ -80,8 +80,9 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
                          help="the ROS 2 distribution to check for (default: $ROS_DISTRO, "
                          "else features of every distribution are accepted)")
     command.add_argument("-j", "--jobs", type=_positive_int, metavar="N",
-                         help="evaluate up to N Python launch files ahead at once, each in its "
-                         "own confined process (default: the number of CPUs)")
+                         help="use up to N processes: Python launch files evaluated ahead, "
+                         "each in its own confined process, and the rules shared out "
+                         "between processes (default: the number of CPUs)")
     command.add_argument("--time-limit", type=_positive_float, metavar="SECONDS",
                          help="stop a Python launch file's evaluation after SECONDS "
                          "(default: 10)")

@@ -15,7 +15,7 @@ not count), as ruff and mypy find theirs. Relative paths in it are relative to i
     severity = {LV404 = "error", LV202 = "info"}
     fail-on = "warning"
     distro = "humble"                        # default: $ROS_DISTRO, else any
-    jobs = 4                                 # Python files evaluated at once
+    jobs = 4                                 # processes (Python files, rules)
     time-limit = 10                          # seconds per Python evaluation
     max-file-size = 10                       # MB; larger files are not read
 """

@@ -20,6 +20,7 @@ from pathlib import Path
 from launchverify.config import Config, ConfigTree, matches
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
+from launchverify.fanout import RuleRun, rule_findings
 from launchverify.findings.baseline import apply_baseline
 from launchverify.findings.cache import Entry, ResultCache, key_of, options_text, stamps_of
 from launchverify.findings.fixes import within
@@ -243,7 +244,8 @@ def run_check(options: CheckOptions) -> Report:
         graph.included_elsewhere = graph.root in included or includers.included(graph.root)
     with distros.checking(options.distro):  # rules judge for it too (lifecycle labels)
         findings = run_rules(graphs, rules,
-                             RuleContext(packages=index, interfaces=Interfaces(graphs)))
+                             RuleContext(packages=index, interfaces=Interfaces(graphs)),
+                             jobs=options.jobs or default_jobs())
     loaded = {path for g in graphs for path in g.files}
     findings, suppressed = _suppress(findings, loaded, rules)
     findings = within(_configured(findings, tree, selection), workspace)  # fixes: ours only
@@ -426,32 +428,27 @@ def _isolated(rule: Rule, findings: Callable[[], Iterable[Finding]], file: Path 
 
 
 def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
-              ctx: RuleContext) -> list[Finding]:
-    """Run every rule on every graph and merge the findings."""
+              ctx: RuleContext, jobs: int = 1) -> list[Finding]:
+    """Run every rule on every graph (in up to ``jobs`` processes) and merge the findings."""
     merged: dict[tuple[object, ...], Finding] = {}
     votes: dict[tuple[object, ...], set[int]] = defaultdict(set)  # graphs that agree
     reach: dict[Path, int] = defaultdict(int)
     for graph in graphs:
         for path in graph.files:
             reach[path] += 1
-    unanimous: set[str] = set()
-    # Small graphs first: a file evaluated as its own root settles most questions that
-    # rules asking for every context would otherwise ask again in each includer.
-    smallest_first = sorted(graphs, key=lambda g: len(g.files))
-    for rule_class in rules:
-        rule = rule_class()
-        every_context = getattr(rule_class, "every_context", False)
-        if every_context:
-            unanimous.add(rule_class.code)
-        for graph in smallest_first if every_context else graphs:
-            for finding in _isolated(rule, partial(rule.check, graph, ctx), graph.root):
-                if finding.path and dead(graph, finding.path):
-                    continue  # where it is cannot run under this root, whatever the arguments
+    unanimous = {rule.code for rule in rules if getattr(rule, "every_context", False)}
+    run = RuleRun(graphs, rules, ctx, _isolated, dead)
+    found = rule_findings(run, jobs)
+    everything = list(range(len(graphs)))
+    for r, rule_class in enumerate(rules):
+        for g in run.order(rule_class, everything):
+            for finding in found[(r, g)]:
                 key = finding.key()
-                votes[key].add(id(graph))
+                votes[key].add(g)
                 known = merged.get(key)
                 if known is None or len(finding.chain) < len(known.chain):
                     merged[key] = finding
+        rule = run.instance(r)
         for finding in _isolated(rule, partial(rule.finish, ctx),
                                  graphs[0].root if graphs else None):
             merged.setdefault(finding.key(), finding)
