@@ -30,8 +30,11 @@ class Includers:
     def __init__(self, files: Iterable[Path]) -> None:
         self.files: set[Path] = set()  # every launch file scanned, resolved
         self._named_by: dict[str, set[Path]] = {}
+        folders: dict[Path, Path] = {}  # each folder resolved once (a file's links: its own)
         for path in files:
-            where = resolved(path)
+            if path.parent not in folders:
+                folders[path.parent] = resolved(path.parent)
+            where = resolved(path) if path.is_symlink() else folders[path.parent] / path.name
             self.files.add(where)
             try:
                 text = read_file(path, prefix=_SCANNED_BYTES)
