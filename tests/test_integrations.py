@@ -214,3 +214,32 @@ def test_launch_files_only_skips_given_files_that_are_not_launch_files(
     assert main(["check", str(test), str(launch), "--launch-files-only", "-q"]) == 1
     out = capsys.readouterr().out
     assert "LV101" in out and "LV001" not in out
+
+
+def test_includers_scan_rereads_what_changed(tmp_path: Path,
+                                             monkeypatch: pytest.MonkeyPatch) -> None:
+    """A long-lived process remembers each file's names by its stamp: an edited file, or
+    an editor's unsaved buffer, is read again."""
+    import os
+
+    from launchverify.workspace import includers as scan
+    from launchverify.workspace.reading import unsaved_buffers
+
+    launch = tmp_path / "launch"
+    launch.mkdir()
+    top, part = launch / "top.launch.xml", launch / "part.launch.xml"
+    part.write_text("<launch/>")
+    top.write_text('<launch><include file="$(dirname)/part.launch.xml"/></launch>')
+    old = 1_000_000_000
+    for path in (top, part):
+        os.utime(path, ns=(old, old))  # not racy: remembered
+    assert scan.Includers.of_workspace([tmp_path]).included(part)
+    assert str(top) in scan._REMEMBERED
+    monkeypatch.setattr(scan, "read_file", lambda *a, **k: pytest.fail("read again"))
+    assert scan.Includers.of_workspace([tmp_path]).included(part)  # from memory
+    monkeypatch.undo()
+    top.write_text("<launch/>")  # another size: read again
+    os.utime(top, ns=(old, old))
+    assert not scan.Includers.of_workspace([tmp_path]).included(part)
+    with unsaved_buffers({top: b'<launch><include file="part.launch.xml"/></launch>'}):
+        assert scan.Includers.of_workspace([tmp_path]).included(part)

@@ -13,15 +13,46 @@ counts as an entry point.
 from __future__ import annotations
 
 import re
+import time
 from collections.abc import Iterable
 from pathlib import Path
 
 from launchverify.workspace.discover import discover
 from launchverify.workspace.paths import resolved
-from launchverify.workspace.reading import read_file
+from launchverify.workspace.reading import read_file, unsaved
 
 _NAME = re.compile(rb"[\w.\-]+\.(?:py|xml|yaml|yml|launch|urdf|xacro|sdf)\b")
 _SCANNED_BYTES = 1 << 20
+RACY_SECONDS = 2.0  # a file changed this recently could change again unseen by its stamp
+MAX_REMEMBERED = 100_000
+
+# path -> (size, mtime_ns, names): a long-lived process (the language server) scans its
+# workspace for every check; an unchanged file is not read again.
+_REMEMBERED: dict[str, tuple[int, int, frozenset[str]]] = {}
+
+
+def _names_in(path: Path) -> frozenset[str]:
+    """Return the file names a launch file's text mentions (empty when unreadable)."""
+    stamp = None
+    if unsaved(path) is None:
+        try:
+            info = path.stat()
+        except OSError:
+            return frozenset()
+        stamp = (info.st_size, info.st_mtime_ns)
+        known = _REMEMBERED.get(str(path))
+        if known is not None and known[:2] == stamp:
+            return known[2]
+    try:
+        text = read_file(path, prefix=_SCANNED_BYTES)
+    except OSError:
+        return frozenset()
+    names = frozenset(name.decode("utf-8", "replace") for name in _NAME.findall(text))
+    if stamp is not None and time.time() - stamp[1] / 1e9 > RACY_SECONDS:
+        if len(_REMEMBERED) >= MAX_REMEMBERED:
+            _REMEMBERED.clear()
+        _REMEMBERED[str(path)] = (*stamp, names)
+    return names
 
 
 class Includers:
@@ -36,12 +67,8 @@ class Includers:
                 folders[path.parent] = resolved(path.parent)
             where = resolved(path) if path.is_symlink() else folders[path.parent] / path.name
             self.files.add(where)
-            try:
-                text = read_file(path, prefix=_SCANNED_BYTES)
-            except OSError:
-                continue
-            for name in set(_NAME.findall(text)):
-                self._named_by.setdefault(name.decode("utf-8", "replace"), set()).add(where)
+            for name in _names_in(path):
+                self._named_by.setdefault(name, set()).add(where)
 
     @classmethod
     def of_workspace(cls, folders: Iterable[Path]) -> Includers:
