@@ -917,9 +917,20 @@ _LITERAL_PARTS = (s.Text, s.Concat, s.PythonExpr, s.NotSub, s.AndSub, s.OrSub, s
                   s.AllSub, s.EqualsSub, s.NotEqualsSub, s.IfElse)
 
 
+_LITERAL: dict[int, tuple[s.Sub, bool]] = {}  # by id: an include's conditions, asked again
+MAX_LITERAL = 50_000
+
+
 def is_literal(expression: s.Sub) -> bool:
     """Return whether a condition is written without any input (``if="true"``)."""
-    return all(isinstance(part, _LITERAL_PARTS) for part in s.walk(expression))
+    known = _LITERAL.get(id(expression))
+    if known is not None and known[0] is expression:
+        return known[1]
+    found = all(isinstance(part, _LITERAL_PARTS) for part in s.walk(expression))
+    if len(_LITERAL) >= MAX_LITERAL:
+        _LITERAL.clear()
+    _LITERAL[id(expression)] = (expression, found)
+    return found
 
 
 def depends_on_argument(value: s.Sub, name: str) -> bool:
