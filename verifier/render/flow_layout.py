@@ -158,8 +158,8 @@ def _cluster(flow: FlowGraph, namespace: str, keys: list[str]) -> Cluster:
     _sweep(columns, successors, predecessors)
     columns = [chunk for column in columns for chunk in _wrap(column)]
     widths = [max(element_width(flow, k, namespace) for k in column) for column in columns]
-    width = sum(widths) + COLUMN_GAP * (len(columns) - 1) if columns else 0
-    height = max((len(c) for c in columns), default=0) * ROW - (ROW - NODE_H)
+    width = sum(widths) + COLUMN_GAP * (len(columns) - 1) if columns else 0.0
+    height = float(max((len(c) for c in columns), default=0) * ROW - (ROW - NODE_H))
     cluster = Cluster(namespace, columns, widths, layered=max(height, 0))
     loose = [k for k in keys if not successors[k] and not predecessors[k]]
     if loose:  # unconnected elements: a grid under the flow, as wide as it
@@ -326,8 +326,8 @@ def _place(flow: FlowGraph, cluster: Cluster, boxes: dict[str, Box]) -> None:
         x += width + COLUMN_GAP
     top = cluster.y + HEADER + (cluster.layered + ROW if cluster.columns else 0)
     for number, key in enumerate(cluster.grid):
-        row, column = divmod(number, cluster.grid_columns)
-        _put(flow, cluster, boxes, key, cluster.x + PAD + column * (cluster.cell + GRID_GAP),
+        row, cell = divmod(number, cluster.grid_columns)
+        _put(flow, cluster, boxes, key, cluster.x + PAD + cell * (cluster.cell + GRID_GAP),
              top + row * ROW, cluster.cell)
 
 
