@@ -7,7 +7,9 @@ fleet nodes, C++ and Python sources); small hand-made graphs test the layout's r
 from __future__ import annotations
 
 import io
+import os
 import re
+import subprocess
 import sys
 import time
 from pathlib import Path
@@ -176,6 +178,23 @@ def test_same_input_same_bytes(fleet: tuple[Report, Path], flow: FlowGraph) -> N
         pages.append(re.sub(r'<span class="value">[\d.]+</span><span class="label">seconds',
                             "", out.getvalue()))
     assert pages[0] == pages[1]
+
+
+def test_same_bytes_under_other_hash_seeds(tmp_path: Path) -> None:
+    root = write_workspace(tmp_path / "ws", robots=3)
+    sections = []
+    for seed in ("1", "2"):
+        out = tmp_path / f"report{seed}.html"
+        env = {**os.environ, "PYTHONHASHSEED": seed}
+        env.pop("AMENT_PREFIX_PATH", None)
+        done = subprocess.run([sys.executable, "-m", "launchverify", "report", str(root),
+                               "--workspace", str(tmp_path / "ws"), "-o", str(out)],
+                              capture_output=True, text=True, env=env, check=False)
+        assert done.returncode == 0, done.stderr
+        page = out.read_text(encoding="utf-8")
+        sections.append(page[page.index('<details class="flow-section"'):
+                             page.index('<details class="nodes"')])
+    assert sections[0] == sections[1] and "<svg" in sections[0]
 
 
 def _graph(nodes: list[str], topics: dict[str, tuple[list[str], list[str]]]) -> FlowGraph:

@@ -123,9 +123,13 @@ class FlowGraph:
 
 
 def natural(text: str) -> list[tuple[int, int | str]]:
-    """Return a sort key that puts robot2 before robot10 (numbers and words never compared)."""
-    return [(0, int(part)) if part.isdigit() else (1, part)
-            for part in re.split(r"(\d+)", text)]
+    """Return a sort key that puts robot2 before robot10 (numbers and words never compared).
+
+    The text itself comes last: ``robot01`` and ``robot1`` must not tie, or their order
+    would be the order of a set, which changes between runs.
+    """
+    return [*((0, int(part)) if part.isdigit() else (1, part)
+              for part in re.split(r"(\d+)", text)), (2, text)]
 
 
 def parsers_missing() -> str | None:
