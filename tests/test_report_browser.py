@@ -16,9 +16,12 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from flow_workspace import write_workspace
 
 from launchverify.engine import CheckOptions, run_check
 from launchverify.render.html_report import render_html
+from launchverify.topology.compose import WorkspaceInterfaces
+from launchverify.workspace.packages import PackageIndex
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
 FLEET = CORPUS / "realistic" / "fleet_report"
@@ -54,6 +57,12 @@ def pages(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
             with path.open("w", encoding="utf-8") as handle:
                 render_html(report, handle)
             out[name] = path
+        fleet = write_workspace(folder / "fleet_ws", robots=9)
+        report = run_check(CheckOptions(paths=[fleet], workspace=folder / "fleet_ws"))
+        out["flow"] = folder / "flow.html"
+        with out["flow"].open("w", encoding="utf-8") as handle:
+            render_html(report, handle, interfaces=WorkspaceInterfaces(
+                PackageIndex.from_environment([folder / "fleet_ws"], [])))
         return out
     finally:
         if saved is not None:
@@ -161,3 +170,36 @@ def test_screenshot(chromium: str, pages: dict[str, Path], tmp_path: Path) -> No
     assert shot.is_file()
     assert png_size(shot) == (1400, 2000)
     assert shot.stat().st_size > 60_000  # a drawn page, not a blank one
+
+
+def _lit(dom: str) -> set[str]:
+    """Return the names of the computation graph's nodes the filter keeps."""
+    return set(re.findall(r'class="fnode[^"]* on"[^>]*data-fqn="([^"]*)"', dom))
+
+
+def test_filter_narrows_the_computation_graph(chromium: str, pages: dict[str, Path],
+                                              tmp_path: Path) -> None:
+    source = pages["flow"].read_text(encoding="utf-8")
+    dom = dump_dom(chromium, tmp_path / "plain", pages["flow"].as_uri())
+    assert '<svg class="flow-svg" id="flow1-svg"' in dom  # nothing filtered
+    box = re.search(r'<input type="search" class="flow-filter"[^>]*>', dom)
+    assert box is not None and "hidden" not in box.group(0)  # the script shows it
+    page = tmp_path / "filtered.html"
+    page.write_text(source.replace('class="flow-filter" ',
+                                   'class="flow-filter" value="/robot3/localizer" '),
+                    encoding="utf-8")
+    dom = dump_dom(chromium, tmp_path / "profile", page.as_uri())
+    assert '<svg class="flow-svg focus" id="flow1-svg"' in dom
+    # what it reads from (map, filtered scan, imu, odometry; its reset service's caller)
+    # and who reads what it publishes (the planner reads its pose); not the co-readers
+    assert _lit(dom) == {"/robot3/localizer", "/map_server", "/robot3/front_filter",
+                         "/robot3/imu", "/robot3/base_driver", "/robot3/behavior",
+                         "/robot3/planner"}
+    assert "1 node matches" in dom
+    view = re.search(r'id="flow1-svg"[^>]* viewBox="([^"]+)" data-box="([^"]+)"', dom)
+    assert view is not None and view.group(1) != view.group(2)  # cropped to them
+    # a part of a name: every robot's localizer
+    page.write_text(source.replace('class="flow-filter" ', 'class="flow-filter" '
+                                   'value="localizer" '), encoding="utf-8")
+    dom = dump_dom(chromium, tmp_path / "profile", page.as_uri())
+    assert "9 nodes match" in dom and "/robot9/planner" in _lit(dom)

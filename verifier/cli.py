@@ -523,13 +523,15 @@ def _render(args: argparse.Namespace, report: Report, out: TextIO,
 
 def _report(args: argparse.Namespace) -> int:
     from launchverify.render.html_report import render_html
+    from launchverify.topology.compose import WorkspaceInterfaces
 
     _writable(args.output)
     options, _ = check_options(args, progress=sys.stderr.isatty())
     report = run_check(options)
     _say_protections(report, args.verbose)
+    _, index = build_index(options.paths, options.workspace, options.config.package_paths)
     with args.output.open("w", encoding="utf-8") as handle:
-        render_html(report, handle)
+        render_html(report, handle, interfaces=WorkspaceInterfaces(index))
     print(f"wrote {args.output} ({len(report.findings)} findings in {report.files} files)",
           file=sys.stderr)
     return EXIT_OK

@@ -9,7 +9,7 @@ escaped (``html_text.esc``), and a content security policy lets only that script
 from __future__ import annotations
 
 from collections import Counter
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
 
 from launchverify import __version__
 from launchverify.engine import Report
@@ -24,14 +24,22 @@ from launchverify.render.html_text import esc
 from launchverify.render.system_html import LEGEND, render_system_section, roots_to_show
 from launchverify.rule import Severity
 
+if TYPE_CHECKING:
+    from launchverify.topology.compose import InterfaceSource
+
 NAVIGATION_SYSTEMS = 6  # more systems than this are listed in the summary, not the header
 
 
-def render_html(report: Report, out: TextIO, *, title: str = "launchverify report") -> None:
-    """Write the whole report as one HTML document."""
+def render_html(report: Report, out: TextIO, *, title: str = "launchverify report",
+                interfaces: InterfaceSource | None = None) -> None:
+    """Write the whole report as one HTML document.
+
+    ``interfaces`` (node interfaces read from the workspace's sources) adds each
+    system's computation graph: nodes and the topics, services and actions between them.
+    """
     anchors = {id(f): finding_id(i) for i, f in enumerate(report.findings)}
     roots = roots_to_show(report)
-    systems = [render_system_section(report, graph, number, anchors)
+    systems = [render_system_section(report, graph, number, anchors, interfaces)
                for number, graph in enumerate(roots, 1)]
     out.write("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
               '<meta http-equiv="Content-Security-Policy" '
@@ -80,7 +88,8 @@ def _summary(report: Report, roots: list[str]) -> str:
     rules = "".join(
         f'<li><a href="#rule-{esc(code)}">{severity_badge(severity)} <code>{esc(code)}</code>'
         f' {esc(slug)} <b>{count}</b></a></li>'
-        for (code, slug, severity), count in sorted(by_rule.items()))
+        for (code, slug, severity), count in sorted(  # one rule may report at two levels
+            by_rule.items(), key=lambda item: (item[0][0], item[0][1], -item[0][2].rank)))
     return ('<section id="summary"><div class="cards">' + "".join(cards) + "</div>"
             + (f'<ul class="rules">{rules}</ul>' if rules else "") + _roots(roots)
             + "</section>")

@@ -111,6 +111,56 @@ svg .bt{font:700 9px var(--sans);fill:#fff;text-anchor:middle}
 svg .st-active{fill:var(--ok)}svg .st-inactive{fill:#d4a72c}svg .st-unconfigured{fill:#afb8c1}
 svg .st-finalized{fill:#424a53}
 svg .mgr-done{fill:var(--ok)}svg .mgr-blocked{fill:var(--err)}
+details.flow-section>summary{margin:10px 0 4px}
+ul.flow-legend{margin:4px 0}
+.sw-cond{border-style:dashed}.sw-unknown{background:var(--soft);border:1px dotted #8c959f}
+.pill{display:inline-block;width:22px;height:10px;border-radius:5px;vertical-align:0;
+margin-right:5px;border:1px solid #54aeff;background:#ddf4ff}
+.pill.p-services{border-color:#a475f9;background:#fbefff}
+.pill.p-actions{border-color:#fb8f44;background:#fff1e5}
+.pill.p-ref{background:#fff}
+.pill.p-missing{border:2px solid var(--err);background:#fff}
+.pill.p-unread{border:1px dashed #bf8700;background:#fff}
+.ln{display:inline-block;width:24px;border-top:1.5px solid #8c959f;vertical-align:3px;
+margin-right:5px}
+.ln.ln-services{border-top:1.5px dashed #a475f9}.ln.ln-actions{border-top:2px dotted #fb8f44}
+.flow{display:flex;flex-wrap:wrap;align-items:center;gap:4px 10px;margin:4px 0}
+.flow>.flow-tools{order:0}.flow>.tf-toggle{order:1;margin:0}.flow>.tf-label{order:2;font-size:12px}
+.flow>.picture{order:3;flex-basis:100%;max-height:92vh;overflow:auto;border:1px solid var(--line);
+border-radius:6px}
+.flow-tools{display:flex;align-items:center;gap:12px;font-size:12px}
+.flow-filter{font:12px var(--mono);padding:2px 6px;width:340px;border:1px solid var(--line);
+border-radius:4px}
+.flow-status{color:var(--muted)}
+svg.flow-svg{display:block;font-family:var(--sans)}
+svg .fc>rect{fill:#f6f8fa;stroke:#b6c2cf;stroke-width:1}
+svg .fnode rect{fill:#fff;stroke:#6e7781;stroke-width:1}
+svg .fnode.cond rect{stroke-dasharray:4 2}
+svg .fnode.unknown rect{fill:#f6f8fa;stroke:#8c959f;stroke-dasharray:1 2}
+svg .fnode.unknown .nl{fill:var(--muted)}
+svg .tag{font:700 10px var(--sans);fill:var(--lc);text-anchor:middle}
+svg .fnode.unknown .tag{fill:var(--muted)}
+svg .ftopic rect{fill:#ddf4ff;stroke:#54aeff;stroke-width:1}
+svg .ftopic.s-services rect{fill:#fbefff;stroke:#a475f9}
+svg .ftopic.s-actions rect{fill:#fff1e5;stroke:#fb8f44}
+svg .ftopic.tf rect{fill:#eaeef2;stroke:#8c959f}
+svg .ftopic.m-publisher rect,svg .ftopic.m-server rect{fill:#fff;stroke:var(--err);
+stroke-width:2}
+svg .ftopic.m-subscriber rect{fill:#fff;stroke:#bf8700;stroke-dasharray:3 2}
+svg .tl{font:10px var(--mono);fill:#1f2328}
+svg .fedge .el{fill:none;stroke:#8c959f;stroke-width:1}
+svg .fedge .ah{fill:#8c959f}
+svg .fedge.e-services .el{stroke:#a475f9;stroke-dasharray:4 3}
+svg .fedge.e-services .ah{fill:#a475f9}
+svg .fedge.e-actions .el{stroke:#fb8f44;stroke-dasharray:1 2;stroke-width:1.6}
+svg .fedge.e-actions .ah{fill:#fb8f44}
+svg .ftopic.ref rect{fill:#fff}
+svg .fnode:hover rect,svg .ftopic:hover rect{filter:brightness(.93)}
+.tf-toggle:not(:checked)~.picture .fedge.e-tf{display:none}
+svg.focus .fnode:not(.on),svg.focus .ftopic:not(.on){opacity:.12}
+svg.focus .fedge:not(.on){display:none}
+.flow .picture svg.focus .fedge.on{display:inline}
+svg.focus .fedge.on .el{stroke-width:1.8}
 details{margin:6px 0}
 summary{cursor:pointer;font-weight:600}
 ul.plain{list-style:none;margin:0;padding:0}
@@ -135,12 +185,47 @@ ul.tree li{border-left:1px solid var(--line);padding-left:8px;margin:2px 0}
 @media print{header.top{position:static}}
 """
 
-# Optional: follow a link into a collapsed <details> (a node's row) by opening it.
+# Optional: follow a link into a collapsed <details> (a node's row) by opening it; the
+# computation graph's filter box (shown only when this runs): the nodes whose name holds
+# the text, the topics they use (with their copies in other namespaces), who publishes
+# what they read and who reads what they publish (services: clients and servers), not
+# through tf; the rest faded and the picture cropped to them.
 SCRIPT = (
     "(function(){function show(){var id=decodeURIComponent(location.hash.slice(1));"
     "var t=id&&document.getElementById(id);if(!t)return;"
     "for(var e=t.parentElement;e;e=e.parentElement){if(e.tagName==='DETAILS')e.open=true;}"
-    "t.scrollIntoView();}window.addEventListener('hashchange',show);show();})();"
+    "t.scrollIntoView();}window.addEventListener('hashchange',show);show();"
+    "function each(l,f){for(var i=0;i<l.length;i++)f(l[i]);}"
+    "function filter(box){var svg=document.getElementById(box.getAttribute('data-flow'));"
+    "if(!svg)return;var status=box.parentElement.querySelector('.flow-status');"
+    "var parts=svg.querySelectorAll('[data-key]'),edges=svg.querySelectorAll('.fedge');"
+    "var full=svg.getAttribute('data-box').split(' '),byKey={};box.hidden=false;"
+    "each(parts,function(p){byKey[p.getAttribute('data-key')]=p;});"
+    "function topic(k){return byKey[k]&&byKey[k].getAttribute('data-topic');}"
+    "function size(b){svg.setAttribute('viewBox',b.join(' '));"
+    "svg.setAttribute('width',b[2]);svg.setAttribute('height',b[3]);}"
+    "function apply(){var q=box.value.trim();svg.classList.remove('focus');"
+    "each(parts,function(p){p.classList.remove('on');});"
+    "each(edges,function(p){p.classList.remove('on');});size(full);status.textContent='';"
+    "if(!q)return;var hit={},n=0,up={},down={},keep={};"
+    "each(svg.querySelectorAll('.fnode'),function(p){var k=p.getAttribute('data-key');"
+    "if(p.getAttribute('data-fqn').indexOf(q)>=0){hit[k]=keep[k]=1;n++;}});"
+    "if(!n){status.textContent='no node matches';return;}"
+    "function ends(f){each(edges,function(e){f(e,e.getAttribute('data-a'),"
+    "e.getAttribute('data-b'),e.classList.contains('e-tf'));});}"
+    "ends(function(e,a,b,tf){if(hit[a]){keep[b]=1;if(!tf)down[topic(b)]=1;}"
+    "if(hit[b]){keep[a]=1;if(!tf)up[topic(a)]=1;}});"
+    "ends(function(e,a,b,tf){if(hit[a]||hit[b]||down[topic(a)]||up[topic(b)]){"
+    "keep[a]=keep[b]=1;e.classList.add('on');}});"
+    "var x0=1e9,y0=1e9,x1=-1e9,y1=-1e9,shown=0;"
+    "for(var k in keep){var p=byKey[k];p.classList.add('on');shown++;"
+    "var r=p.getBBox();x0=Math.min(x0,r.x);y0=Math.min(y0,r.y);"
+    "x1=Math.max(x1,r.x+r.width);y1=Math.max(y1,r.y+r.height);}"
+    "svg.classList.add('focus');var m=16;x0=Math.max(0,x0-m);y0=Math.max(0,y0-m);"
+    "size([x0,y0,Math.ceil(x1+m-x0),Math.ceil(y1+m-y0)]);"
+    "status.textContent=n+(n===1?' node matches':' nodes match')+', '+shown+"
+    "' elements shown';}box.addEventListener('input',apply);apply();}"
+    "each(document.querySelectorAll('.flow-filter'),filter);})();"
 )
 
 # What the page may load and run: its own style and the script above, nothing else. Should

@@ -8,7 +8,7 @@ Kept apart from the page skeleton so that a report with several roots simply rep
 from __future__ import annotations
 
 from collections import defaultdict
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from launchverify.engine import Report
 from launchverify.graph import IncludeRecord, LaunchGraph
@@ -16,6 +16,9 @@ from launchverify.render.html_text import clip, esc, short_place, where
 from launchverify.render.system_model import SystemModel, SystemNode, build_model
 from launchverify.render.system_svg import render_system_svg
 from launchverify.span import Span
+
+if TYPE_CHECKING:
+    from launchverify.topology.compose import InterfaceSource
 
 ARGUMENT_LIMIT = 60  # characters of an include argument's value shown in the tree
 
@@ -46,8 +49,12 @@ def roots_to_show(report: Report) -> list[LaunchGraph]:
 
 
 def render_system_section(report: Report, graph: LaunchGraph, number: int,
-                          anchors: dict[int, str]) -> str:
-    """Return the section of one root: summary line, picture, tables, include tree."""
+                          anchors: dict[int, str],
+                          interfaces: InterfaceSource | None = None) -> str:
+    """Return the section of one root: summary line, pictures, tables, include tree.
+
+    With ``interfaces`` (where node interfaces come from), the computation graph too.
+    """
     model = build_model(report, graph, anchors)
     anchor = f"sys{number}-node"
     root_name = report.display_path(graph.root)
@@ -59,6 +66,10 @@ def render_system_section(report: Report, graph: LaunchGraph, number: int,
                      "file or package, or a construct launchverify does not model): the "
                      "picture may lack nodes.</p>")
     parts.append(f'<div class="picture">{render_system_svg(model, anchor)}</div>')
+    if interfaces is not None:
+        from launchverify.render.flow_html import computation_graph
+
+        parts.append(computation_graph(model, graph, interfaces, number, anchor))
     parts.append(_lifecycle(model.lifecycle))
     parts.append(_node_table(model, anchor))
     parts.append(render_include_tree(report, graph))

@@ -1,0 +1,226 @@
+"""The computation graph as inline SVG, with its filter box and tf switch.
+
+Elements are drawn where ``flow_layout`` put them; arrows are cubic curves from an
+element's right side into the next one's left side, with a drawn arrowhead (no SVG
+markers: those are referenced through ``url(...)``, which the page does without). The
+page works without JavaScript: the tf switch is a checkbox styled in CSS, and only the
+filter box needs the report's script (it stays hidden without it).
+"""
+
+from __future__ import annotations
+
+from launchverify.render.flow_layout import CHAR_W as NODE_CHAR_W
+from launchverify.render.flow_layout import TOPIC_CHAR_W, Box, FlowLayout, label_of, layout
+from launchverify.render.flow_model import FlowEdge, FlowGraph, FlowNode, FlowTopic
+from launchverify.render.html_text import clip, esc
+
+CONDITION_LIMIT = 400  # characters of a path condition in a tooltip
+NAMES_LIMIT = 10  # names listed per role in a tooltip
+ARROW = 6  # length of an arrowhead
+VERBS = {("topics", "publishers"): "publishes", ("topics", "subscribers"): "subscribes to",
+         ("services", "servers"): "serves", ("services", "clients"): "calls",
+         ("actions", "servers"): "serves action", ("actions", "clients"): "calls action"}
+SIDES = {"topics": ("published by", "subscribed by"), "services": ("called by", "served by"),
+         "actions": ("called by", "served by")}
+MISSING = {"publisher": "nobody in this launch publishes it",
+           "subscriber": "nobody in this launch subscribes to it",
+           "server": "nobody in this launch serves it"}
+
+FLOW_LEGEND = (
+    '<ul class="legend flow-legend">'
+    '<li><span class="sw"></span>node</li>'
+    '<li><span class="sw sw-cond"></span>node started under a condition</li>'
+    '<li><span class="sw sw-unknown"></span>node whose sources were not read</li>'
+    '<li><span class="pill p-topics"></span>topic</li>'
+    '<li><span class="pill p-services"></span>service</li>'
+    '<li><span class="pill p-actions"></span>action</li>'
+    '<li><span class="pill p-ref"></span>topic of another namespace, repeated</li>'
+    '<li><span class="pill p-missing"></span>nobody publishes (or serves) it</li>'
+    '<li><span class="pill p-unread"></span>nobody subscribes to it</li>'
+    '<li><span class="ln"></span>publishes / subscribes</li>'
+    '<li><span class="ln ln-services"></span>calls / serves</li>'
+    '<li><span class="ln ln-actions"></span>action</li>'
+    "</ul>"
+)
+
+
+def render_flow(flow: FlowGraph, number: int, anchor: str) -> str:
+    """Return the computation graph section of system ``number``.
+
+    Node boxes link to ``#{anchor}-{index}``, the node's row in the table below.
+    """
+    summary = f"Computation graph: {_summary(flow)}"
+    if flow.reason is not None:
+        return (f'<details class="flow-section" open><summary>{summary}</summary>'
+                f'<p class="note">Not drawn: {esc(flow.reason)}.</p></details>')
+    if not flow.nodes:
+        return ""
+    placed = layout(flow)
+    ident = f"flow{number}"
+    has_tf = any(e.tf for e in flow.edges)
+    tools = (f'<div class="flow-tools"><input type="search" class="flow-filter" '
+             f'data-flow="{ident}-svg" list="{ident}-names" '
+             'placeholder="filter: part of a node\'s name" '
+             'aria-label="show only matching nodes and their neighbours" hidden>'
+             '<span class="flow-status"></span></div>')
+    if has_tf:  # a checkbox before the picture: CSS shows the tf arrows, no script needed
+        tools += (f'<input type="checkbox" class="tf-toggle" id="{ident}-tf">'
+                  f'<label class="tf-label" for="{ident}-tf">show the /tf arrows</label>')
+    names = "".join(f'<option value="{esc(n.fqn)}"></option>'
+                    for n in sorted(flow.nodes.values(), key=lambda n: n.fqn))
+    return (f'<details class="flow-section" open><summary>{summary}</summary>'
+            f"{FLOW_LEGEND}"
+            f'<div class="flow">{tools}'
+            f'<datalist id="{ident}-names">{names}</datalist>'
+            f'<div class="picture">{render_flow_svg(flow, placed, ident, anchor)}</div>'
+            "</div></details>")
+
+
+def _summary(flow: FlowGraph) -> str:
+    sections = {"topics": 0, "services": 0, "actions": 0}
+    for topic in flow.topics.values():
+        if topic.ref is None:
+            sections[topic.section] += len(topic.names)
+    facts = [f"{len(flow.nodes)} node{'s' if len(flow.nodes) != 1 else ''}"]
+    if flow.reason is None:
+        facts += [f"{count} {section if count != 1 else section[:-1]}"
+                  for section, count in sections.items() if count or section == "topics"]
+        unknown = len(flow.nodes) - flow.known()
+        if unknown:
+            facts.append(f"{unknown} without sources")
+    return esc(", ".join(facts))
+
+
+def render_flow_svg(flow: FlowGraph, placed: FlowLayout, ident: str, anchor: str) -> str:
+    """Return the picture: namespace boxes, then arrows, then elements on top."""
+    width, height = f"{placed.width:.0f}", f"{placed.height:.0f}"
+    parts = [f'<svg class="flow-svg" id="{esc(ident)}-svg" role="img" width="{width}" '
+             f'height="{height}" viewBox="0 0 {width} {height}" '
+             f'data-box="0 0 {width} {height}" aria-label="computation graph: '
+             f'{len(flow.nodes)} nodes, {len(flow.topics)} topics, services and actions">']
+    for cluster in placed.clusters:
+        count = len(cluster.members())
+        parts.append(f'<g class="fc"><rect x="{cluster.x:.1f}" y="{cluster.y:.1f}" '
+                     f'width="{cluster.width:.1f}" height="{cluster.height:.1f}" rx="5"/>'
+                     f'<text class="nsl" x="{cluster.x + 8:.1f}" y="{cluster.y + 14:.1f}">'
+                     f"{esc(cluster.namespace)}</text>"
+                     f'<text class="nsc" x="{cluster.x + cluster.width - 8:.1f}" '
+                     f'y="{cluster.y + 14:.1f}">{count}</text></g>')
+    parts += [_edge(flow, placed, edge) for edge in flow.edges]
+    for cluster in placed.clusters:
+        for key in cluster.members():
+            box = placed.boxes[key]
+            node = flow.nodes.get(key)
+            if node is not None:
+                parts.append(_node(node, box, cluster.namespace, anchor, flow))
+            else:
+                parts.append(_topic(flow.topics[key], box, cluster.namespace, flow))
+    parts.append("</svg>")
+    return "".join(parts)
+
+
+def _edge(flow: FlowGraph, placed: FlowLayout, edge: FlowEdge) -> str:
+    (sx, sy), (tx, ty) = placed.boxes[edge.source].right, placed.boxes[edge.target].left
+    end = tx - ARROW
+    reach = max(18.0, (end - sx) / 2) if end > sx else 60.0
+    classes = ["fedge", f"e-{edge.section}"]
+    if edge.tf:
+        classes.append("e-tf")
+    return (f'<g class="{" ".join(classes)}" data-a="{esc(edge.source)}" '
+            f'data-b="{esc(edge.target)}"><path class="el" d="M{sx:.1f} {sy:.1f} '
+            f"C{sx + reach:.1f} {sy:.1f} {end - reach:.1f} {ty:.1f} {end:.1f} {ty:.1f}\"/>"
+            f'<path class="ah" d="M{tx:.1f} {ty:.1f}l-{ARROW} -3.5v7z"/></g>')
+
+
+def _fit(text: str, room: float, char_w: float) -> str:
+    """Return a label cut to what fits in ``room`` (ellipsis at the end)."""
+    return clip(text, max(int(room / char_w), 3))
+
+
+def _node(node: FlowNode, box: Box, namespace: str, anchor: str, flow: FlowGraph) -> str:
+    classes = ["fnode"]
+    tag = ""
+    if node.condition:
+        classes.append("cond")
+        tag = "if"
+    if not node.known:
+        classes.append("unknown")
+        tag = "?"
+    label = label_of(flow, node.key, namespace)
+    room = box.width - 10 - (16 if tag else 0)
+    badge = (f'<text class="tag" x="{box.x + box.width - 9:.1f}" y="{box.y + 14:.1f}">'
+             f"{tag}</text>") if tag else ""
+    return (f'<a href="#{esc(anchor)}-{node.index}" class="{" ".join(classes)}" '
+            f'data-key="{node.key}" data-fqn="{esc(node.fqn)}">'
+            f"<title>{esc(node_tooltip(node))}</title>"
+            f'<rect x="{box.x:.1f}" y="{box.y:.1f}" width="{box.width:.1f}" '
+            f'height="{box.height:.1f}" rx="3"/>'
+            f'<text class="nl" x="{box.x + 5:.1f}" y="{box.y + 14:.1f}">'
+            f"{esc(_fit(label, room, NODE_CHAR_W))}</text>{badge}</a>")
+
+
+def _topic(topic: FlowTopic, box: Box, namespace: str, flow: FlowGraph) -> str:
+    classes = ["ftopic", f"s-{topic.section}"]
+    if topic.tf:
+        classes.append("tf")
+    if topic.missing is not None:
+        classes.append(f"m-{topic.missing}")
+    if topic.ref is not None:
+        classes.append("ref")
+    label = label_of(flow, topic.key, namespace)
+    return (f'<g class="{" ".join(classes)}" data-key="{esc(topic.key)}" '
+            f'data-topic="{esc(topic.topic)}">'
+            f"<title>{esc(topic_tooltip(topic, flow))}</title>"
+            f'<rect x="{box.x:.1f}" y="{box.y:.1f}" width="{box.width:.1f}" '
+            f'height="{box.height:.1f}" rx="{box.height / 2:.1f}"/>'
+            f'<text class="tl" x="{box.x + 7:.1f}" y="{box.y + 11.5:.1f}">'
+            f"{esc(_fit(label, box.width - 12, TOPIC_CHAR_W))}</text></g>")
+
+
+def node_tooltip(node: FlowNode) -> str:
+    """Return what hovering a node says (plain text; callers escape it)."""
+    lines = [node.fqn, f"{node.executable or '?'}  ({node.kind.replace('_', ' ')})"]
+    if node.condition:
+        lines.append(f"when {clip(node.condition, CONDITION_LIMIT)}")
+    if not node.known:
+        lines.append(f"interface not known: {node.note or 'no sources read'}")
+    for (_section, role), verb in VERBS.items():
+        names = node.uses.get(f"{_section}:{role}", [])
+        if names:
+            lines.append(f"{verb} {_names(names)}")
+    if node.unresolved:
+        lines.append(f"{len(node.unresolved)} name(s) not known before launch:")
+        lines += [f"  {u}" for u in node.unresolved[:NAMES_LIMIT]]
+        if len(node.unresolved) > NAMES_LIMIT:
+            lines.append(f"  ... {len(node.unresolved) - NAMES_LIMIT} more")
+    return "\n".join(lines)
+
+
+def topic_tooltip(topic: FlowTopic, flow: FlowGraph) -> str:
+    """Return what hovering a topic, service or action says (plain text)."""
+    kind = topic.section[:-1]
+    lines = [f"{kind} {', '.join(topic.names)}"]
+    if topic.types:
+        lines.append(" | ".join(topic.types))
+    source_side, sink_side = SIDES[topic.section]
+    for side, keys in ((source_side, topic.sources), (sink_side, topic.sinks)):
+        if keys:
+            lines.append(f"{side} {_names([flow.nodes[k].fqn for k in keys])}")
+    if topic.missing is not None:
+        unknown = len(flow.nodes) - flow.known()
+        lines.append(MISSING[topic.missing] + (
+            f" (among the nodes whose sources were read: {unknown} were not)"
+            if unknown else ""))
+    if topic.ref is not None:
+        lines.append(f"shown again here for the nodes of this namespace that use it; "
+                     f"it is drawn in {flow.topics[topic.ref].namespace}")
+    if topic.tf:
+        lines.append("its arrows are hidden unless 'show the /tf arrows' is ticked")
+    return "\n".join(lines)
+
+
+def _names(names: list[str]) -> str:
+    unique = list(dict.fromkeys(names))
+    shown = ", ".join(unique[:NAMES_LIMIT])
+    return shown + (f" and {len(unique) - NAMES_LIMIT} more" if len(unique) > NAMES_LIMIT
+                    else "")
