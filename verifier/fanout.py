@@ -14,18 +14,21 @@ runs here.
 
 from __future__ import annotations
 
-import multiprocessing
 import os
+import sys
 import threading
 from collections.abc import Callable, Iterable, Iterator
-from concurrent.futures import Future, ProcessPoolExecutor
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
 from launchverify.rule import Finding, Rule, RuleContext
+
+if TYPE_CHECKING:
+    from concurrent.futures import Future
 
 # Below this much work (records over all graphs) forking costs more than it saves.
 MIN_WORK = 400
@@ -106,6 +109,9 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
         return run.run(list(range(len(run.rules))), everything)
     gathering = [r for r, rule in enumerate(run.rules) if rule.finish is not Rule.finish]
     shares = plan(run, jobs, exclude=gathering)
+    import multiprocessing  # here: a small check never pays for importing them
+    from concurrent.futures import ProcessPoolExecutor
+
     _SHARED["run"] = run
     out: PerGraph = {}
     try:
@@ -161,6 +167,9 @@ def _work(graphs: list[LaunchGraph]) -> int:
 
 
 def _can_fork() -> bool:
-    """Return whether forking is possible and safe here (POSIX, and no other thread)."""
-    return (hasattr(os, "fork") and "fork" in multiprocessing.get_all_start_methods()
+    """Return whether forking is possible and safe here (POSIX, and no other thread).
+
+    (macOS can fork, but its system libraries are not safe across a fork: not there.)
+    """
+    return (hasattr(os, "fork") and sys.platform != "darwin"
             and threading.active_count() == 1)
