@@ -53,10 +53,15 @@ class CompetingPublishers(Rule):
                "have one publisher ({why})")
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        from launchverify.topology.wiring import globs_option, name_matches, workspace_view
+        from launchverify.topology.wiring import (
+            globs_option,
+            name_matches,
+            reads_sources,
+            workspace_view,
+        )
 
         patterns = globs_option(ctx, "single-writer-topics", DEFAULT_SINGLE_WRITER)
-        if not patterns:
+        if not patterns or not reads_sources(graph, ctx):
             return
         why = ("single-writer-topics" if "single-writer-topics" in ctx.options
                else "the default single-writer topics: *cmd_vel")

@@ -81,11 +81,11 @@ class MissingPeer(PollingRule):
                 ) -> Iterator[tuple[Hashable, Finding | None]]:
         if graph.included_elsewhere or graph.stopped_early or not graph.complete_as_given():
             return  # the whole launch is not here: another evaluation judges
-        from launchverify.topology.wiring import globs_option, workspace_view
+        from launchverify.topology.wiring import globs_option, reads_sources, workspace_view
 
-        view = workspace_view(graph, ctx)
-        if all(node.interface is None for node in view.nodes):
+        if not reads_sources(graph, ctx):
             return
+        view = workspace_view(graph, ctx)
         external = globs_option(ctx, "external-names")
         complete = not view.unknown_nodes and not view.processes and all(
             not node.interface.problems for node in view.nodes if node.interface is not None)
@@ -122,7 +122,8 @@ class MissingPeer(PollingRule):
             return None
         close = close_writers(view, composed, end, section)
         who = describe_node(view, composed.node)
-        related = (Related(end.endpoint.span, f"{VERBS[end.endpoint.kind]} {name} here"),)
+        related: tuple[Related, ...] = (
+            Related(end.endpoint.span, f"{VERBS[end.endpoint.kind]} {name} here"),)
         if close:
             parts = [f"{describe_node(view, w.node)} {WRITE_VERBS[section]} {w.name} "
                      f"({cause})" for w, cause in close[:MOST_CANDIDATES]]

@@ -38,8 +38,10 @@ class TypeMismatch(Rule):
 
     ## Example
     ```xml
-    <node pkg="my_robot" exec="odom_publisher"/>  <!-- publishes odom: nav_msgs/msg/Odometry -->
-    <node pkg="my_robot" exec="pose_logger"/>     <!-- subscribes to odom: geometry_msgs/msg/PoseStamped -->
+    <!-- publishes cmd_vel as geometry_msgs/msg/Twist -->
+    <node pkg="my_robot" exec="teleop"/>
+    <!-- subscribes to cmd_vel as geometry_msgs/msg/TwistStamped (Jazzy's controllers) -->
+    <node pkg="my_robot" exec="base_controller"/>
     ```
 
     ## Fix
@@ -54,8 +56,10 @@ class TypeMismatch(Rule):
     message = "{node} {verb} {name} as {mine}, but {peer} {peer_verb} it as {theirs}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        from launchverify.topology.wiring import workspace_view
+        from launchverify.topology.wiring import reads_sources, workspace_view
 
+        if not reads_sources(graph, ctx):
+            return
         view = workspace_view(graph, ctx)
         for by_name in view.by_name.values():
             for connection in by_name.values():

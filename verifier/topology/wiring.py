@@ -21,19 +21,20 @@ from typing import TYPE_CHECKING
 from launchverify.events import overlap_guards
 from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord
 from launchverify.smt import Witness, reasoner_for
-from launchverify.topology.compose import (
-    ComposedEndpoint,
-    Composer,
-    InterfaceSource,
-    NodeEndpoints,
-)
-from launchverify.topology.connections import ROLES, SECTIONS, Connection, connections
 from launchverify.topology.model import EndpointKind
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # composition is imported only once a launched node has sources
     from launchverify.rule import RuleContext
+    from launchverify.topology.compose import (
+        ComposedEndpoint,
+        Composer,
+        InterfaceSource,
+        NodeEndpoints,
+    )
+    from launchverify.topology.connections import Connection
 
 READERS = (EndpointKind.SUBSCRIPTION, EndpointKind.CLIENT, EndpointKind.ACTION_CLIENT)
+SECTIONS = ("topics", "services", "actions")
 WRITERS = {"topics": "publishers", "services": "servers", "actions": "servers"}
 READERS_OF = {"topics": "subscribers", "services": "clients", "actions": "clients"}
 VERBS = {  # kind -> what it does to a name, for messages
@@ -83,6 +84,23 @@ class WiringView:
         return out
 
 
+def reads_sources(graph: LaunchGraph, ctx: RuleContext) -> bool:
+    """Return whether a node that may run belongs to a package with sources here.
+
+    Without one there is nothing to compose, and the check reads no sources at all.
+    """
+    if ctx.packages is None:
+        return False
+    for node in graph.nodes:
+        package = graph.base(node.package)
+        if package is None or graph.runs(node.origin) is False:
+            continue
+        found = ctx.packages.find(package)
+        if found is not None and found.source is not None:
+            return True
+    return False
+
+
 def workspace_view(graph: LaunchGraph, ctx: RuleContext) -> WiringView:
     """Return the graph's view with interfaces read from the workspace's sources.
 
@@ -112,6 +130,9 @@ def view_of(graph: LaunchGraph, source: InterfaceSource) -> WiringView:
     found = kept.get("view")
     if isinstance(found, WiringView):
         return found
+    from launchverify.topology.compose import Composer
+    from launchverify.topology.connections import ROLES, connections
+
     composer = Composer(graph, source, symbolic=False)
     nodes = [composer.node(node) for node in graph.nodes
              if graph.runs(node.origin) is not False]
