@@ -222,14 +222,16 @@ def moved_cause(view: WiringView, reader: NodeEndpoints, end: ComposedEndpoint,
     wrote, _, _ = view.composer.written_name(writer_node.node, writer.endpoint)
     mine, theirs = namespace_of(reader) or "?", namespace_of(writer_node) or "?"
     who, peer = describe_node(view, reader.node), describe_node(view, writer_node.node)
-    if end.remapped_by is not None:
-        return f"a remap rule at {end.remapped_by} sends {who}'s name there"
-    if writer.remapped_by is not None:
-        return f"a remap rule at {writer.remapped_by} sends {peer}'s name there"
-    if read is not None and read.startswith("~"):
+    if read is not None and read.startswith("~") and end.remapped_by is None:
         return f"{who}'s name '{read}' is private: it resolves under the node's own name"
-    if wrote is not None and wrote.startswith("~"):
+    if wrote is not None and wrote.startswith("~") and writer.remapped_by is None:
         return f"{peer}'s name '{wrote}' is private: it resolves under that node's own name"
+    assert end.name is not None and writer.name is not None
+    if mine != theirs and under(end.name, mine) and under(writer.name, theirs):
+        if theirs == "/" or mine == "/":
+            pushed, around = (mine, who) if theirs == "/" else (theirs, peer)
+            return f"namespace {pushed} is pushed around {around} only"
+        return f"{who} is in namespace {mine}, {peer} in {theirs}"
     if read is not None and wrote is not None:
         if wrote.startswith("/") and not read.startswith("/") and mine != "/":
             return (f"{peer} uses the absolute name '{wrote}', {who} the relative "
@@ -237,9 +239,13 @@ def moved_cause(view: WiringView, reader: NodeEndpoints, end: ComposedEndpoint,
         if read.startswith("/") and not wrote.startswith("/") and theirs != "/":
             return (f"{who} uses the absolute name '{read}', {peer} the relative "
                     f"'{wrote}' in namespace {theirs}")
-    if mine != theirs:
-        if theirs == "/" or mine == "/":
-            pushed, around = (mine, who) if theirs == "/" else (theirs, peer)
-            return f"namespace {pushed} is pushed around {around} only"
-        return f"{who} is in namespace {mine}, {peer} in {theirs}"
+    if end.remapped_by is not None:
+        return f"a remap rule at {end.remapped_by} sends {who}'s name there"
+    if writer.remapped_by is not None:
+        return f"a remap rule at {writer.remapped_by} sends {peer}'s name there"
     return "the same name in another place"
+
+
+def under(name: str, namespace: str) -> bool:
+    """Return whether a name lies in a namespace (every name lies in ``/``)."""
+    return namespace == "/" or name.startswith(namespace.rstrip("/") + "/")
