@@ -118,7 +118,7 @@ class MissingPeer(PollingRule):
         section = ROLES[end.endpoint.kind][0]
         name = end.name
         if (built_in(name) or name_matches(name, external)
-                or view.writers(section, name) or view.unknown_writers(section)):
+                or view.writers(section, name) or view.anything_may_write(section)):
             return None
         close = close_writers(view, composed, end, section)
         who = describe_node(view, composed.node)

@@ -36,7 +36,6 @@ if TYPE_CHECKING:  # composition is imported only once a launched node has sourc
 READERS = (EndpointKind.SUBSCRIPTION, EndpointKind.CLIENT, EndpointKind.ACTION_CLIENT)
 SECTIONS = ("topics", "services", "actions")
 WRITERS = {"topics": "publishers", "services": "servers", "actions": "servers"}
-READERS_OF = {"topics": "subscribers", "services": "clients", "actions": "clients"}
 VERBS = {  # kind -> what it does to a name, for messages
     EndpointKind.PUBLISHER: "publishes", EndpointKind.SUBSCRIPTION: "subscribes to",
     EndpointKind.SERVICE: "serves", EndpointKind.CLIENT: "calls",
@@ -70,18 +69,14 @@ class WiringView:
         found = self.connection(section, name)
         return [] if found is None else found.ends.get(WRITERS[section], [])
 
-    def unknown_writers(self, section: str) -> list[str]:
-        """Return what may write any name of a section without the sources saying so.
+    def anything_may_write(self, section: str) -> bool:
+        """Return whether something may write any name of a section unbeknown to us.
 
-        Nodes without a known interface, plain processes, and endpoints of the writing
-        role whose name is not known; each described in a few words, for reasons.
+        A node without a known interface, a plain process, or an endpoint of the writing
+        role whose name is not known.
         """
-        out = [f"{describe_node(self, n.node)} (its interface is not known)"
-               for n in self.unknown_nodes]
-        out += [f"process at {p.origin.span.short()}" for p in self.processes]
-        out += [f"{describe_node(self, e.node)} ({e.reason or 'a name not known'})"
-                for e in self.unresolved.get((section, WRITERS[section]), [])]
-        return out
+        return bool(self.unknown_nodes or self.processes
+                    or self.unresolved.get((section, WRITERS[section])))
 
 
 def reads_sources(graph: LaunchGraph, ctx: RuleContext) -> bool:
