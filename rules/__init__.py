@@ -35,6 +35,9 @@ from launchverify.rules.parameters.inconsistent_sim_time import InconsistentSimT
 from launchverify.rules.parameters.param_file_error import ParamFileError
 from launchverify.rules.parameters.param_type_conflict import ParamTypeConflict
 from launchverify.rules.parameters.unmatched_param_block import UnmatchedParamBlock
+from launchverify.rules.wiring.competing_publishers import CompetingPublishers
+from launchverify.rules.wiring.missing_peer import MissingPeer
+from launchverify.rules.wiring.type_mismatch import TypeMismatch
 from launchverify.rules.wiring.unused_remap import UnusedRemap
 
 BUILTIN: tuple[type[Rule], ...] = (
@@ -69,4 +72,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     InvalidLifecycleTransition,  # LV504
     ManagerUnknownNode,       # LV505
     UnusedRemap,              # LV601
+    MissingPeer,              # LV602
+    TypeMismatch,             # LV603
+    CompetingPublishers,      # LV604
 )

@@ -192,19 +192,29 @@ def test_text_format_lists_topics(capsys: pytest.CaptureFixture[str]) -> None:
     assert "not resolved:" in out and "namespace is not known" in out
 
 
-def test_check_reads_no_sources() -> None:
-    """``check`` reads sources only for a rule that needs them (LV601: a node of a
-    workspace package with remap rules of its own); this pair has none."""
+def _modules_check_imports(*argv: str) -> str:
+    """Return the source-reading modules ``check`` imports (in a fresh interpreter)."""
     code = ("import sys\n"
             "from launchverify.cli import main\n"
-            f"main(['check', {str(LAUNCH / 'pair.launch.xml')!r}, '--workspace', "
-            f"{str(WORKSPACE)!r}])\n"
+            f"main(['check', *{list(argv)!r}])\n"
             "print(sorted(m for m in sys.modules if m.startswith(('tree_sitter', "
             "'launchverify.topology.compose', 'launchverify.topology.files'))), "
             "file=sys.stderr)\n")
     result = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                             check=False)
-    assert result.stderr.strip().splitlines()[-1] == "[]", result.stderr
+    return result.stderr.strip().splitlines()[-1]
+
+
+def test_check_reads_sources_only_for_the_wiring_rules(tmp_path: Path) -> None:
+    """``check`` reads sources only for the wiring rules (LV6), and only when a launched
+    node's package has sources in the workspace."""
+    pair = str(LAUNCH / "pair.launch.xml")
+    assert _modules_check_imports(pair, "--workspace", str(WORKSPACE), "--ignore",
+                                  "LV6") == "[]"
+    released = tmp_path / "released.launch.xml"
+    released.write_text('<launch><node pkg="demo_nodes_cpp" exec="talker"/></launch>')
+    assert _modules_check_imports(str(released), "--workspace", str(tmp_path)) == "[]"
+    assert "tree_sitter" in _modules_check_imports(pair, "--workspace", str(WORKSPACE))
 
 
 def test_workspace_without_sources_gives_empty_lists(

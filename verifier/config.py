@@ -18,6 +18,13 @@ not count), as ruff and mypy find theirs. Relative paths in it are relative to i
     jobs = 4                                 # processes (Python files, rules)
     time-limit = 10                          # seconds per Python evaluation
     max-file-size = 10                       # MB; larger files are not read
+    external-names = ["/gps/*", "scan"]      # fed from outside the launch (LV602)
+    single-writer-topics = ["*cmd_vel"]      # one publisher at a time (LV604)
+
+Name globs (``external-names``, ``single-writer-topics``) match fully qualified topic,
+service and action names; a glob without a leading ``/`` matches at any namespace depth
+(``scan`` is ``/scan`` and ``/robot1/scan``). Like the arguments, they hold for the whole
+check (the configuration of the check, not the one nearest each file).
 """
 
 from __future__ import annotations
@@ -43,7 +50,7 @@ SEVERITIES = ("error", "warning", "info")
 KNOWN_KEYS = frozenset({
     "select", "ignore", "per-file-ignores", "exclude", "arguments", "environment",
     "workspace", "package-paths", "severity", "fail-on", "distro", "jobs", "time-limit",
-    "max-file-size",
+    "max-file-size", "external-names", "single-writer-topics",
 })
 
 
@@ -70,6 +77,8 @@ class Config:
     jobs: int | None = None
     time_limit: float | None = None  # seconds
     max_file_size: float | None = None  # MB
+    external_names: list[str] = field(default_factory=list)  # name globs
+    single_writer_topics: list[str] | None = None  # name globs; None: the rule's default
 
     @property
     def root(self) -> Path:
@@ -177,6 +186,8 @@ def load_config(path: Path) -> Config:
         jobs=int(n) if (n := reader.number("jobs", integer=True)) is not None else None,
         time_limit=reader.number("time-limit"),
         max_file_size=reader.number("max-file-size"),
+        external_names=reader.names("external-names") or [],
+        single_writer_topics=reader.names("single-writer-topics"),
     )
     for code, level in config.severity.items():
         if level not in SEVERITIES:
@@ -223,6 +234,14 @@ class _Reader:
         if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
             raise self.fail(key, "a list of strings")
         return list(value)
+
+    def names(self, key: str) -> list[str] | None:
+        """Return a list of ROS name globs: not empty, no spaces (a name has none)."""
+        value = self.texts(key)
+        if value is not None and any(not v.strip() or any(c.isspace() for c in v)
+                                     for v in value):
+            raise self.fail(key, "a list of name globs (no blanks, no spaces)")
+        return value
 
     def table(self, key: str) -> dict[str, str]:
         value = self.data.get(key, {})

@@ -244,7 +244,8 @@ def run_check(options: CheckOptions) -> Report:
         graph.included_elsewhere = graph.root in included or includers.included(graph.root)
     with distros.checking(options.distro):  # rules judge for it too (lifecycle labels)
         findings = run_rules(graphs, rules,
-                             RuleContext(packages=index, interfaces=Interfaces(graphs)),
+                             RuleContext(packages=index, interfaces=Interfaces(graphs),
+                                         options=rule_options(config)),
                              jobs=options.jobs or default_jobs())
     loaded = {path for g in graphs for path in g.files}
     findings, suppressed = _suppress(findings, loaded, rules)
@@ -256,6 +257,18 @@ def run_check(options: CheckOptions) -> Report:
                   time.perf_counter() - started, display, graphs,
                   checked=[canonical(f) for f in files], suppressed=suppressed,
                   baselined=baselined, python_files=python_files, protections=protections)
+
+
+def rule_options(config: Config) -> dict[str, object]:
+    """Return what rules read from the configuration of the check (``RuleContext.options``).
+
+    ``single-writer-topics`` is absent when the configuration does not set it: the rule
+    then uses its own default.
+    """
+    options: dict[str, object] = {"external-names": tuple(config.external_names)}
+    if config.single_writer_topics is not None:
+        options["single-writer-topics"] = tuple(config.single_writer_topics)
+    return options
 
 
 def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report:

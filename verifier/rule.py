@@ -131,6 +131,8 @@ class RuleContext:
 
     packages: PackageIndex | None = None
     interfaces: Interfaces = field(default_factory=Interfaces)  # of every checked root
+    # What the check's configuration says for rules (``engine.rule_options``): name globs
+    # under ``external-names`` and ``single-writer-topics``.
     options: dict[str, object] = field(default_factory=dict)
     settled: dict[str, set[object]] = field(default_factory=dict)
     memo: dict[str, dict[object, object]] = field(default_factory=dict)

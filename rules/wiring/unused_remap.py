@@ -85,15 +85,10 @@ class UnusedRemap(Rule):
 
     @staticmethod
     def composer(graph: LaunchGraph, ctx: RuleContext) -> Composer:
-        """Return a composer over this graph, sharing one source reader per check."""
-        from launchverify.topology.compose import Composer, WorkspaceInterfaces
+        """Return a composer over this graph, sharing the check's one source reader."""
+        from launchverify.topology.wiring import workspace_view
 
-        memo = ctx.memo_for("LV601")
-        reader = memo.get("interfaces")
-        if not isinstance(reader, WorkspaceInterfaces):
-            assert ctx.packages is not None
-            reader = memo["interfaces"] = WorkspaceInterfaces(ctx.packages)
-        return Composer(graph, reader, symbolic=False)
+        return workspace_view(graph, ctx).composer
 
     def node_rules(self, graph: LaunchGraph, node: NodeRecord, own: list[RemapRecord],
                    composer: Composer) -> Iterator[Finding]:

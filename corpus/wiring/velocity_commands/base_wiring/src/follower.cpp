@@ -1,0 +1,28 @@
+// Follows a person: velocity commands of its own.
+#include <memory>
+
+#include "geometry_msgs/msg/twist.hpp"
+#include "geometry_msgs/msg/twist_stamped.hpp"
+#include "rclcpp/rclcpp.hpp"
+
+class Follower : public rclcpp::Node
+{
+public:
+  Follower()
+  : Node("follower")
+  {
+    publisher_ = create_publisher<geometry_msgs::msg::Twist>("cmd_vel", 10);
+  }
+
+private:
+  rclcpp::PublisherBase::SharedPtr publisher_;
+  rclcpp::SubscriptionBase::SharedPtr subscription_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Follower>());
+  rclcpp::shutdown();
+  return 0;
+}
