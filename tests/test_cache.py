@@ -149,3 +149,33 @@ def test_a_fifo_in_the_workspace_never_blocks_the_cache(
     os.mkfifo(tree / "pipe.yaml")
     first, _ = check(capsys, tree)
     assert check(capsys, tree) == (first, True)
+
+
+def test_extracted_interfaces_are_kept_between_runs(tmp_path: Path) -> None:
+    """A check that misses the result cache still reuses what a source file creates."""
+    from launchverify.findings.cache import ResultCache, blobs, in_use
+    from launchverify.topology import files
+
+    source = tmp_path / "talker.cpp"
+    source.write_text('#include <rclcpp/rclcpp.hpp>\nstruct T : rclcpp::Node {\n'
+                      '  T() : Node("talker") { pub_ = create_publisher<std_msgs::msg::String>'
+                      '("chatter", 10); }\n};\n')
+    cache = ResultCache(tmp_path / "cache")
+    files.clear_cache()
+    with in_use(cache):
+        first = files.file_interfaces(source)
+        store = blobs("interfaces")
+    assert blobs("interfaces") is None  # outside the block: no store
+    assert store is not None and len(list(store.folder.glob("*.pickle"))) == 1
+    assert [e.name for e in first.endpoints] == ["chatter"]
+    files.clear_cache()  # another process
+    with in_use(cache):
+        again = files.file_interfaces(tmp_path / "talker.cpp")
+    assert files.cache_stats() == {"parsed": 0, "reused": 1}
+    assert again == first
+    for stored in store.folder.glob("*.pickle"):
+        stored.write_bytes(b"damaged")
+    files.clear_cache()
+    with in_use(cache):
+        assert files.file_interfaces(source) == first  # read again
+    assert files.cache_stats()["parsed"] == 1

@@ -22,7 +22,14 @@ from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.runner import evaluate
 from launchverify.fanout import RuleRun, rule_findings
 from launchverify.findings.baseline import apply_baseline
-from launchverify.findings.cache import Entry, ResultCache, key_of, options_text, stamps_of
+from launchverify.findings.cache import (
+    Entry,
+    ResultCache,
+    in_use,
+    key_of,
+    options_text,
+    stamps_of,
+)
 from launchverify.findings.fixes import within
 from launchverify.findings.suppressions import apply_suppressions
 from launchverify.frontends import launch_format
@@ -284,7 +291,8 @@ def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report
         return dataclasses.replace(entry.report, seconds=time.perf_counter() - started,
                                    cached=True)
     now = time.time()
-    report = run_check(options)
+    with in_use(cache):
+        report = run_check(options)
     read = {str(path) for graph in report.graphs
             for path in (*graph.files, *graph.param_files)}
     cache.store(key, Entry(report.detached(), folders,

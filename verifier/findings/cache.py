@@ -222,7 +222,7 @@ class ResultCache:
             self.prune()
 
     def prune(self) -> None:
-        """Remove results not used for ``MAX_AGE_DAYS`` days."""
+        """Remove results (and stored values, ``blobs``) not used for ``MAX_AGE_DAYS`` days."""
         limit = time.time() - MAX_AGE_DAYS * 86400
         for path in self._stored():
             with contextlib.suppress(OSError):
@@ -232,6 +232,70 @@ class ResultCache:
     def _stored(self) -> Iterator[Path]:
         with contextlib.suppress(OSError):
             yield from self.folder.glob("*.pickle")
+            yield from self.folder.glob("*/*/*.pickle")
+
+
+class BlobStore:
+    """Values of one kind kept by a content key below the cache folder, between runs.
+
+    For work that depends only on a file's content (the interfaces extracted from a
+    source file): a check that misses the result cache still reuses it. Each value is
+    one file, written atomically; the folder is per launchverify code, so another
+    version never reads it. A store that cannot be read or written is no error.
+    """
+
+    def __init__(self, folder: Path) -> None:
+        self.folder = folder
+
+    def load(self, key: str) -> object | None:
+        """Return the value stored under ``key``, or ``None``."""
+        path = self.folder / f"{key}.pickle"
+        try:
+            with path.open("rb") as handle:
+                value: object = pickle.load(handle)
+        except Exception:  # missing, unreadable, or cut short: compute it again
+            return None
+        with contextlib.suppress(OSError):
+            os.utime(path)  # recently used: kept by the pruning
+        return value
+
+    def store(self, key: str, value: object) -> None:
+        """Write a value atomically (best effort)."""
+        with contextlib.suppress(OSError):
+            self.folder.mkdir(parents=True, exist_ok=True)
+            handle, temporary = tempfile.mkstemp(dir=self.folder, suffix=".tmp")
+            try:
+                with os.fdopen(handle, "wb") as out:
+                    pickle.dump(value, out, protocol=pickle.HIGHEST_PROTOCOL)
+                Path(temporary).replace(self.folder / f"{key}.pickle")
+            except Exception:
+                with contextlib.suppress(OSError):
+                    Path(temporary).unlink()
+
+
+_IN_USE: list[ResultCache] = []  # the cache of the running check, innermost last
+_CODE_STAMP: list[str] = []
+
+
+@contextlib.contextmanager
+def in_use(cache: ResultCache | None) -> Iterator[None]:
+    """Let stores of other results (``blobs``) live in this cache inside the block."""
+    if cache is not None:
+        _IN_USE.append(cache)
+    try:
+        yield
+    finally:
+        if cache is not None:
+            _IN_USE.pop()
+
+
+def blobs(kind: str) -> BlobStore | None:
+    """Return the store of a kind of value in the running check's cache, if it has one."""
+    if not _IN_USE:
+        return None
+    if not _CODE_STAMP:
+        _CODE_STAMP.append(own_code_stamp())
+    return BlobStore(_IN_USE[-1].folder / kind / _CODE_STAMP[0])
 
 
 def _write_tag(folder: Path) -> None:

@@ -2,8 +2,9 @@
 
 The cache is keyed by the file's content hash (and language), so an unchanged file is
 parsed once per process however many executables list it, and a copy of a file elsewhere
-reuses the result (relocated). Unreadable, binary and oversized files give a result with
-a ``problem`` instead of raising.
+reuses the result (relocated); with a cache folder in use (``check`` without
+``--no-cache``), between runs too. Unreadable, binary and oversized files give a result
+with a ``problem`` instead of raising.
 """
 
 from __future__ import annotations
@@ -12,10 +13,12 @@ import hashlib
 from collections.abc import Callable
 from pathlib import Path
 
+from launchverify.findings.cache import blobs
 from launchverify.topology.model import FileInterfaces
 from launchverify.workspace.reading import Unreadable, read_file
 
 MAX_SOURCE_BYTES = 2 * 1000 * 1000
+MAX_REMEMBERED = 20_000  # results kept in memory (a language server edits many times)
 CPP_SUFFIXES = frozenset({".cpp", ".cc", ".cxx", ".c++", ".hpp", ".hh", ".hxx", ".h", ".ipp"})
 PY_SUFFIXES = frozenset({".py"})
 
@@ -58,8 +61,13 @@ def file_interfaces(path: Path, language: str | None = None) -> FileInterfaces:
         return FileInterfaces(path, problem="binary file: not read")
     key = (language, hashlib.sha256(data).hexdigest())
     cached = _CACHE.get(key)
+    store = blobs("interfaces")
+    if cached is None and store is not None:
+        stored = store.load(f"{language}-{key[1]}")
+        cached = stored if isinstance(stored, FileInterfaces) else None
     if cached is not None:
         _STATS["reused"] += 1
+        _remember(key, cached)
         return cached.at(path)
     try:
         result = _extractor(language)(path, data)
@@ -67,8 +75,16 @@ def file_interfaces(path: Path, language: str | None = None) -> FileInterfaces:
         result = FileInterfaces(path, problem=f"could not be analysed: "
                                 f"{type(error).__name__}: {error}")
     _STATS["parsed"] += 1
-    _CACHE[key] = result
+    _remember(key, result)
+    if store is not None:
+        store.store(f"{language}-{key[1]}", result)
     return result
+
+
+def _remember(key: tuple[str, str], result: FileInterfaces) -> None:
+    if len(_CACHE) >= MAX_REMEMBERED and key not in _CACHE:
+        _CACHE.clear()
+    _CACHE[key] = result
 
 
 def cache_stats() -> dict[str, int]:
