@@ -5,7 +5,7 @@ the workspace's sources (``nodes.package_interfaces``) is taken, and each endpoi
 as written (or the value the launch gives the parameter it comes from, else that
 parameter's default) is resolved against the node's namespace, name and remap rules
 (``resolve``). Runs after evaluation, next to the rules, and reads only the graph and the
-sources; nothing here is imported by ``check``.
+sources; ``check`` imports it only when a launched node has sources (the wiring rules).
 
 Unknowns stay unknown: a name that needs something not known before launch (a symbolic
 namespace, a remap rule with an argument in it, a parameter set from an expression) comes
