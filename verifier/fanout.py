@@ -30,8 +30,9 @@ from launchverify.rule import Finding, Rule, RuleContext
 if TYPE_CHECKING:
     from concurrent.futures import Future
 
-# Below this much work (records over all graphs) forking costs more than it saves.
-MIN_WORK = 400
+# Below this much work (records over all graphs) forking costs more than it saves
+# (measured: ros2_control_demos, 511, took 0.046 s alone and 0.081 s shared out).
+MIN_WORK = 2000
 
 # (rule index, graph index) -> the findings of that rule in that graph, in its order
 PerGraph = dict[tuple[int, int], list[Finding]]
