@@ -87,7 +87,12 @@ class MemberInit:
     owner: str | None
     node_arguments: int  # leading node arguments (``this``, ``*this``, ``node``)
     arguments: int
-    name: Resolved | None  # the first argument after them
+    values: tuple[Resolved, ...]  # the first arguments after them, resolved
+
+    @property
+    def name(self) -> Resolved | None:
+        """Return the first argument after the node ones: most wrappers' name."""
+        return self.values[0] if self.values else None
 
     def at(self, file: Path) -> MemberInit:
         """Return the same initialiser located in ``file``."""
