@@ -116,6 +116,12 @@ def export(git: Path, branch: str, into: Path) -> str:
     return commit
 
 
+def _test_only(sources: tuple[Path, ...], folder: Path) -> bool:
+    """Return whether an executable is built from tests only (not one a launch starts)."""
+    parts = [p.relative_to(folder).parts for p in sources if p.is_relative_to(folder)]
+    return bool(parts) and all("test" in p[:-1] or "tests" in p[:-1] for p in parts)
+
+
 def generate(root: Path, output: Path, only: set[str]) -> dict[str, float]:
     """Write the models of ``SOURCES`` (or of the packages in ``only``); return timings."""
     timings: dict[str, float] = {}
@@ -139,7 +145,8 @@ def generate(root: Path, output: Path, only: set[str]) -> dict[str, float]:
                           file=sys.stderr)
                     continue
                 started = time.perf_counter()
-                interfaces = package_interfaces(Package(package, source=folder))
+                interfaces = [i for i in package_interfaces(Package(package, source=folder))
+                              if not _test_only(i.sources, folder)]
                 timings[package] = time.perf_counter() - started
                 where = folder.relative_to(tree).as_posix() if folder != tree else ""
                 model = ModelSource(f"https://github.com/{source.repository}", source.branch,

@@ -108,7 +108,7 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
                           aliases=tuple(sorted(context.aliases.items())),
                           members=tuple(sorted(context.members.items())),
                           inits=tuple(inits), classes=_classes(nodes),
-                          instantiated=_instantiated(nodes))
+                          instantiated=_instantiated(nodes), loaders=_loaders(nodes))
 
 
 # --------------------------------------------------------------------------- the file
@@ -700,6 +700,21 @@ def _classes(nodes: list[Node]) -> tuple[tuple[str, tuple[str, ...]], ...]:
             if member.type == "field_declaration" and written is not None:
                 related.update(text(t) for t in walk(written) if t.type == "type_identifier")
     return tuple(sorted((name, tuple(sorted(related))) for name, related in out.items()))
+
+
+def _loaders(nodes: list[Node]) -> tuple[str, ...]:
+    """Return the base classes of ``pluginlib::ClassLoader<Base>`` members and variables.
+
+    Plugins chosen by parameters at run time (nav2's controllers, planners, behaviours)
+    create endpoints no source of the package names.
+    """
+    found = set()
+    for node in nodes:
+        if node.type in ("field_declaration", "declaration"):
+            written = "".join(text(node.child_by_field_name("type")).split())
+            if "ClassLoader<" in written:
+                found.add(_template_arguments_in(written[written.index("ClassLoader<"):]) or "")
+    return tuple(sorted(n for n in found if n))
 
 
 def _instantiated(nodes: list[Node]) -> tuple[str, ...]:

@@ -188,7 +188,7 @@ def _interface(package: str, item: Any, source: ModelSource) -> NodeInterface:
     return NodeInterface(package, _text(item, "executable"), _optional(item, "component"),
                          _optional(item, "node_name"),
                          tuple(_endpoint(e, source) for e in endpoints), (),
-                         tuple(problems))
+                         tuple(problems), source.describe())
 
 
 def _endpoint(item: Any, source: ModelSource) -> Endpoint:
