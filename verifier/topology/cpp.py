@@ -170,6 +170,8 @@ def _parameter_call(context: _File, node: Node) -> None:
     arguments = _arguments(node)
     if name == "declare_parameter_if_not_declared":  # nav2_util's: the node comes first
         name, arguments = "declare_parameter", _skip_nodes(context, arguments)
+    elif name == "add_parameter":  # nav2_util::LifecycleNode's (name, default, description)
+        name = "declare_parameter"
     if name not in ("declare_parameter", "get_parameter", "get_parameter_or") or not arguments:
         return
     parameter = _literal(arguments[0])
@@ -755,7 +757,7 @@ def _node_name_call(context: _File, node: Node) -> list[NodeName]:
     if not arguments:
         return []
     if name in ("make_shared", "make_unique") and template is not None:
-        cls = "".join(text(template).strip("<>").split()).rsplit("::", 1)[-1]
+        cls = class_name(_first_template(template) or "")  # not Subscriber<T, LifecycleNode>
     elif name == "make_shared" and scope:
         cls = scope.strip(":").rsplit("::", 1)[-1]
     else:

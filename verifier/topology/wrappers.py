@@ -131,8 +131,8 @@ _COSTMAP_MADE = (
 )
 COSTMAP_CLASS = "Costmap2DROS"
 
-# class name -> what constructing it creates (the library must appear in the written type,
-# or the type be written bare, as after ``using namespace``)
+# class name -> what constructing it creates; the library must appear in the written type
+# (after aliases), so that a package's own ``Updater`` or ``ServiceClient`` is not taken
 WRAPPERS: dict[str, Wrapper] = {
     "TwistPublisher": Wrapper("nav2_util", (Made(_PUB, NAME, None, TWIST_NOTE),)),
     "TwistSubscriber": Wrapper("nav2_util", (Made(_SUB, NAME, None, TWIST_NOTE),)),
@@ -160,7 +160,7 @@ def wrapper_of(written: str) -> tuple[str, Wrapper] | None:
     bare = re.sub(r"<.*", "", compact)
     cls = bare.rsplit("::", 1)[-1]
     wrapper = WRAPPERS.get(cls)
-    if wrapper is None or (bare != cls and wrapper.library not in bare):
+    if wrapper is None or f"{wrapper.library}::" not in bare:
         return None
     return cls, wrapper
 
