@@ -26,9 +26,9 @@ from launchverify.topology.model import (
 from launchverify.topology.names import Resolved, merge, unknown
 from launchverify.topology.parsing import damaged, parse, short, span, text, walk
 from launchverify.topology.wrappers import (
-    Wrapper,
     COSTMAP_CLASS,
     TF_CLASSES,
+    Wrapper,
     image_endpoints,
     normalise_type,
     tf_endpoints,
@@ -170,7 +170,7 @@ def _parameter_call(context: _File, node: Node) -> None:
     arguments = _arguments(node)
     if name == "declare_parameter_if_not_declared":  # nav2_util's: the node comes first
         name, arguments = "declare_parameter", _skip_nodes(context, arguments)
-    elif name == "add_parameter":  # nav2_util::LifecycleNode's (name, default, description)
+    elif name in ("add_parameter", "declare_or_get_parameter"):  # nav2's LifecycleNode's
         name = "declare_parameter"
     if name not in ("declare_parameter", "get_parameter", "get_parameter_or") or not arguments:
         return
@@ -311,10 +311,10 @@ def _resolve_call(context: _File, node: Node, depth: int) -> Resolved:
     function = node.child_by_field_name("function")
     _, name, _, obj = _callee(function)
     arguments = _arguments(node)
-    if name in ("declare_parameter", "get_parameter") and arguments:
+    if name in ("declare_parameter", "get_parameter", "declare_or_get_parameter") and arguments:
         parameter = _literal(arguments[0])
         if parameter is not None:
-            if name == "declare_parameter" and len(arguments) > 1:
+            if name != "get_parameter" and len(arguments) > 1:
                 default = _resolve(context, arguments[1], depth + 1)
                 return Resolved(default.value, parameter)
             return _parameter(context, parameter)
@@ -626,14 +626,18 @@ def _helper_endpoints(helper: tuple[str, Wrapper], compact: str,
 def _costmap_namespace(values: tuple[Resolved, ...]) -> Resolved:
     """Return where a ``Costmap2DROS`` child node lives, relative to its parent node.
 
-    ``(name, parent_namespace, local_namespace, use_sim_time)`` puts it in
-    ``parent_namespace/local_namespace`` (the parent's own namespace in nav2's servers);
-    ``(name, use_sim_time)`` in ``/name``.
+    nav2 jazzy's ``(name, parent_namespace, local_namespace, use_sim_time)`` puts it in
+    ``parent_namespace/local_namespace`` (the parent's own namespace in nav2's servers),
+    kilted's ``(name, parent_namespace, use_sim_time, options)`` in
+    ``parent_namespace/name``; ``(name, use_sim_time)`` in ``/name``.
     """
-    if len(values) < 4:
-        name = values[0].value
-        return Resolved(f"/{name}") if name else unknown("the costmap's name is not known")
+    name = values[0]
+    if len(values) < 3:
+        return Resolved(f"/{name.value}") if name.value else unknown(
+            "the costmap's name is not known")
     parent, local = values[1], values[2]
+    if local.value is None and local.parameter is None:  # use_sim_time: kilted's order
+        local = name
     if local.value is None or local.parameter is not None:
         return unknown(local.reason or "the costmap's namespace is not known")
     if parent.reason == NODE_NAMESPACE:
