@@ -74,7 +74,13 @@ def test_fixture_endpoints(path: Path) -> None:
 def test_fixtures_cover_every_kind_and_wrapper() -> None:
     endpoints = [e for p in SOURCES for e in file_interfaces(p).endpoints]
     assert {e.kind for e in endpoints} == set(EndpointKind)
-    assert {e.via for e in endpoints} == {None, "image_transport", "message_filters", "tf2_ros"}
+    from launchverify.topology.wrappers import WRAPPERS
+
+    libraries = {w.library for w in WRAPPERS.values()}
+    assert {e.via for e in endpoints} == {None, "image_transport", "message_filters",
+                                          "tf2_ros", *libraries}
+    helpers = {(e.via, e.kind) for e in endpoints}
+    assert all((w.library, m.kind) in helpers for w in WRAPPERS.values() for m in w.made)
     assert any(e.span.file.suffix == ".py" and e.name_parameter for e in endpoints)
     assert any(e.span.file.suffix == ".cpp" and e.unresolved_reason for e in endpoints)
 
@@ -294,3 +300,38 @@ def test_check_does_not_import_tree_sitter() -> None:
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                          check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_controllers_are_targets_under_their_pluginlib_names() -> None:
+    root = DATA / "demo_controllers"
+    targets = {t.executable: t for t in package_targets(Package("demo_controllers", source=root))}
+    assert set(targets) == {"demo_controllers/SpeedController",
+                            "demo_controllers/LevelBroadcaster"}  # the costmap layer is not one
+    speed = targets["demo_controllers/SpeedController"]
+    assert speed.component == "demo_controllers::SpeedController"
+    assert _relative(speed.sources, root) == ["src/level_broadcaster.cpp",
+                                              "src/speed_controller.cpp"]  # no extension
+    interfaces = {i.executable: i for i in package_interfaces(
+        Package("demo_controllers", source=root))}
+    assert [e.name for e in interfaces["demo_controllers/SpeedController"].endpoints] == [
+        "~/speed"]
+    assert [e.name for e in interfaces["demo_controllers/LevelBroadcaster"].endpoints] == [
+        "~/level"]
+
+
+def test_plugin_loaders_are_named_as_a_problem(tmp_path: Path) -> None:
+    package = tmp_path / "loader_pkg"
+    (package / "src").mkdir(parents=True)
+    (package / "package.xml").write_text("<package format='3'><name>loader_pkg</name></package>")
+    (package / "CMakeLists.txt").write_text(
+        "project(loader_pkg)\nadd_executable(server src/server.cpp)\n"
+        "install(TARGETS server DESTINATION lib/${PROJECT_NAME})\n")
+    (package / "src" / "server.cpp").write_text(
+        "class Server : public rclcpp::Node {\n"
+        "  pluginlib::ClassLoader<nav2_core::Controller> loader_;\n"
+        "  Server() : Node(\"server\"), loader_(\"nav2_core\", \"nav2_core::Controller\") {\n"
+        "    pub_ = create_publisher<std_msgs::msg::Empty>(\"ready\", 1);\n  }\n};\n")
+    (interface,) = package_interfaces(Package("loader_pkg", source=package))
+    assert [e.name for e in interface.endpoints] == ["ready"]
+    assert any("plugins chosen by parameters (nav2_core::Controller)" in p
+               for p in interface.problems)

@@ -50,23 +50,29 @@ class InterfaceSource(Protocol):
 class WorkspaceInterfaces:
     """Node interfaces read from the sources of the packages a ``PackageIndex`` knows.
 
-    Each package is read once, when a node of it is first asked for.
+    Each package is read once, when a node of it is first asked for. A package with no
+    sources in the workspace (a released one, installed or not, or a folder holding only
+    launch and configuration files) falls back to the model shipped with launchverify
+    (``topology.shipped``), read the same lazy way; sources in the workspace always win
+    over a model.
     """
 
-    def __init__(self, index: PackageIndex) -> None:
+    def __init__(self, index: PackageIndex, models: bool = True) -> None:
         self.index = index
+        self.models = models
         self._read: dict[str, list[NodeInterface]] = {}
         self._failed: dict[str, str] = {}
 
     def interface(self, package: str, executable: str,
                   component: bool) -> tuple[NodeInterface | None, str | None]:
-        """Return the interface of ``executable`` (or plugin) of ``package``, or why none."""
+        """Return the interface of ``executable`` (or plugin) of ``package``, or why none.
+
+        The second item is the reason when there is no interface, and where a model's
+        interface comes from when there is one.
+        """
         found = self.index.find(package)
-        if found is None:
-            return None, f"package {package} is not found"
-        if found.source is None:
-            return None, (f"package {package} has no sources in the workspace (a released "
-                          "package): its node interfaces are not known")
+        if found is None or found.source is None:
+            return self._modelled(package, executable, component, found is None)
         if package not in self._read:
             from launchverify.topology.nodes import package_interfaces
 
@@ -79,16 +85,45 @@ class WorkspaceInterfaces:
         if package in self._failed:
             return None, (f"the sources of {package} could not be read: "
                           f"{self._failed[package]}")
-        candidates = self._read[package]
-        if component:
-            matches = [i for i in candidates if i.component == executable]
-        else:
-            matches = sorted((i for i in candidates if i.executable == executable),
-                             key=lambda i: i.component is not None)
-        if not matches:
+        if not any(i.sources for i in self._read[package]):  # launch files and configs only
+            return self._modelled(package, executable, component, False)
+        match = _match(self._read[package], executable, component)
+        if match is None:
             what = "component" if component else "executable"
             return None, f"no {what} {executable} found in the sources of {package}"
-        return matches[0], None
+        return match, None
+
+    def _modelled(self, package: str, executable: str, component: bool,
+                  missing: bool) -> tuple[NodeInterface | None, str | None]:
+        """Return the interface the shipped model of a package without sources gives."""
+        from launchverify.topology.shipped import ModelError, shipped_model
+
+        why = (f"package {package} is not found" if missing else
+               f"package {package} has no C++ or Python sources in the workspace")
+        try:
+            model = shipped_model(package) if self.models else None
+        except ModelError as error:
+            return None, f"{why}, and its shipped interface model is broken: {error}"
+        if model is None:
+            return None, f"{why}: its node interfaces are not known (no model is shipped)"
+        match = _match(list(model.interfaces), executable, component)
+        if match is None:
+            what = "component" if component else "executable"
+            return None, (f"{why}, and the model shipped for it (extracted from "
+                          f"{model.source.describe()}) has no {what} {executable}")
+        return match, (f"interface from the model shipped with launchverify, extracted from "
+                       f"{model.source.describe()}")
+
+
+def _match(candidates: list[NodeInterface], executable: str,
+           component: bool) -> NodeInterface | None:
+    """Return the interface of an executable (its own, before a component's) or plugin."""
+    if component:
+        matches = [i for i in candidates if i.component == executable]
+    else:
+        matches = sorted((i for i in candidates if i.executable == executable),
+                         key=lambda i: i.component is not None)
+    return matches[0] if matches else None
 
 
 @dataclass(frozen=True, slots=True)
@@ -109,7 +144,10 @@ class ComposedEndpoint:
 
 @dataclass(frozen=True, slots=True)
 class NodeEndpoints:
-    """A launched node, its interface (``None``: ``note`` says why) and its endpoints."""
+    """A launched node, its interface (``None``: ``note`` says why) and its endpoints.
+
+    With an interface, ``note`` says which shipped model it comes from, if one does.
+    """
 
     node: NodeRecord
     package: str | None
@@ -177,7 +215,8 @@ class Composer:
         fqn = None
         if identity.name is not None and identity.namespace is not None:
             fqn = node_fqn(identity.namespace, identity.name)
-        return NodeEndpoints(node, package, executable, interface, endpoints, fqn=fqn)
+        return NodeEndpoints(node, package, executable, interface, endpoints, fqn=fqn,
+                             note=note)  # a model's origin, when the interface is one
 
     def identity(self, node: NodeRecord, interface: NodeInterface) -> _Identity:
         """Return the node's name, namespace and remap rules as this view knows them."""

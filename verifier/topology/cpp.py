@@ -26,16 +26,24 @@ from launchverify.topology.model import (
 from launchverify.topology.names import Resolved, merge, unknown
 from launchverify.topology.parsing import damaged, parse, short, span, text, walk
 from launchverify.topology.wrappers import (
+    COSTMAP_CLASS,
     TF_CLASSES,
+    Wrapper,
     image_endpoints,
     normalise_type,
     tf_endpoints,
+    wrapper_endpoints,
+    wrapper_of,
 )
 
 if TYPE_CHECKING:
     from tree_sitter import Node
 
 MAX_DEPTH = 6
+MAX_WRAPPER_ARGUMENTS = 4  # arguments of a wrapper's constructor resolved (names come first)
+NODE_NAMESPACE = "the node's namespace, get_namespace()"
+NODE_NAME = "~"  # ``get_name() + "/x"`` is ``~/x``: both expand to <namespace>/<name>/x
+_OWN_NODE = re.compile(r"this|node_?|\w*node\(\)|shared_from_this\(\)", re.I)
 _RCLCPP = {
     "create_publisher": EndpointKind.PUBLISHER,
     "create_subscription": EndpointKind.SUBSCRIPTION,
@@ -100,7 +108,7 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
                           aliases=tuple(sorted(context.aliases.items())),
                           members=tuple(sorted(context.members.items())),
                           inits=tuple(inits), classes=_classes(nodes),
-                          instantiated=_instantiated(nodes))
+                          instantiated=_instantiated(nodes), loaders=_loaders(nodes))
 
 
 # --------------------------------------------------------------------------- the file
@@ -141,7 +149,10 @@ def _collect(context: _File, nodes: list[Node]) -> None:
         elif kind == "assignment_expression" and text(node.child_by_field_name("operator")) == "=":
             target = _variable(node.child_by_field_name("left"))
             value = node.child_by_field_name("right")
-            if target and value is not None:
+            updated = _parameter_update(node)
+            if target and updated is not None:
+                context.read_params.setdefault(target, []).append(updated)
+            elif target and value is not None:
                 context.values.setdefault(target, []).append(value)
         elif kind == "field_initializer":
             target = _variable(node.named_children[0]) if node.named_children else None
@@ -157,6 +168,10 @@ def _parameter_call(context: _File, node: Node) -> None:
     """Record ``declare_parameter`` defaults and ``get_parameter("p", var)`` targets."""
     _, name, _, _ = _callee(node.child_by_field_name("function"))
     arguments = _arguments(node)
+    if name == "declare_parameter_if_not_declared":  # nav2_util's: the node comes first
+        name, arguments = "declare_parameter", _skip_nodes(context, arguments)
+    elif name in ("add_parameter", "declare_or_get_parameter"):  # nav2's LifecycleNode's
+        name = "declare_parameter"
     if name not in ("declare_parameter", "get_parameter", "get_parameter_or") or not arguments:
         return
     parameter = _literal(arguments[0])
@@ -173,6 +188,29 @@ def _parameter_call(context: _File, node: Node) -> None:
             if name == "get_parameter_or" and len(arguments) > 2:
                 default = _resolve(context, arguments[2], 0)
                 context.defaults.setdefault(parameter, default)
+
+
+_UPDATED = re.compile(r"""name\(?\)?\s*==\s*"([^"]+)"|"([^"]+)"\s*==\s*\w*name""")
+
+
+def _parameter_update(assignment: Node) -> str | None:
+    """Return the parameter a dynamic-parameter callback assigns: ``x = p.as_string()``.
+
+    The idiom ``if (name == "topic") { topic_ = parameter.as_string(); }`` re-reads a
+    declared parameter; it is the same parameter, not another value of the variable.
+    """
+    value = assignment.child_by_field_name("right")
+    if value is None or value.type != "call_expression" or not re.search(
+            r"\.(as_string|get_value<std::string>)\(\)$", "".join(text(value).split())):
+        return None
+    parent, depth = assignment.parent, 0
+    while parent is not None and depth < 5:
+        if parent.type == "if_statement":
+            condition = text(parent.child_by_field_name("condition"))
+            match = _UPDATED.search(condition)
+            return (match.group(1) or match.group(2)) if match else None
+        parent, depth = parent.parent, depth + 1
+    return None
 
 
 def _initial(value: Node) -> list[Node]:
@@ -242,14 +280,25 @@ def _resolve(context: _File, node: Node, depth: int) -> Resolved:
                       for value in context.values.get(variable, [])]
         candidates += [_parameter(context, p) for p in context.read_params.get(variable, [])]
         return merge(variable, candidates)
+    if kind == "compound_literal_expression":  # std::string{x}
+        value = node.child_by_field_name("value")
+        if value is not None and len(value.named_children) == 1:
+            return _resolve(context, value.named_children[0], depth + 1)
     if kind == "binary_expression" and text(node.child_by_field_name("operator")) == "+":
         left = _resolve(context, node.child_by_field_name("left"), depth + 1)  # type: ignore[arg-type]
         right = _resolve(context, node.child_by_field_name("right"), depth + 1)  # type: ignore[arg-type]
         if left.value is not None and right.value is not None and not (
                 left.parameter or right.parameter):
+            if left.value == NODE_NAME and not right.value.startswith("/"):
+                return unknown(f"built from the node's name at run time: {written}")
             return Resolved(left.value + right.value)
         return unknown(f"built at run time: {written}")
     return unknown(f"built at run time: {written}")
+
+
+def _own_node(obj: Node | None) -> bool:
+    """Return whether a method is called on the node itself (``get_name()``, ``node->``)."""
+    return obj is None or bool(_OWN_NODE.fullmatch(text(obj).lstrip("*")))
 
 
 def _parameter(context: _File, parameter: str) -> Resolved:
@@ -262,13 +311,17 @@ def _resolve_call(context: _File, node: Node, depth: int) -> Resolved:
     function = node.child_by_field_name("function")
     _, name, _, obj = _callee(function)
     arguments = _arguments(node)
-    if name in ("declare_parameter", "get_parameter") and arguments:
+    if name in ("declare_parameter", "get_parameter", "declare_or_get_parameter") and arguments:
         parameter = _literal(arguments[0])
         if parameter is not None:
-            if name == "declare_parameter" and len(arguments) > 1:
+            if name != "get_parameter" and len(arguments) > 1:
                 default = _resolve(context, arguments[1], depth + 1)
                 return Resolved(default.value, parameter)
             return _parameter(context, parameter)
+    if name == "get_namespace" and not arguments and _own_node(obj):
+        return unknown(NODE_NAMESPACE)
+    if name == "get_name" and not arguments and _own_node(obj):
+        return Resolved(NODE_NAME)  # as a relative name, the node's own name is ``~``
     if name in ("as_string", "get_value", "c_str", "string_value", "get", "value_to_string") \
             and obj is not None:
         return _resolve(context, obj, depth + 1)
@@ -332,10 +385,15 @@ def _aliased(aliases: dict[str, str], written: str) -> str | None:
     return normalise_type(compact)
 
 
-def _skip_nodes(context: _File, arguments: list[Node]) -> list[Node]:
-    """Drop the leading node arguments (``this``, ``node``, ``*this``) of a factory call."""
+def _skip_nodes(context: _File, arguments: list[Node], keep_last: bool = True) -> list[Node]:
+    """Drop the leading node arguments (``this``, ``node``, ``*this``) of a factory call.
+
+    A factory's last argument is its name however it is spelt (``keep_last``); a helper
+    class may take the node alone (``diagnostic_updater::Updater(this)``).
+    """
     index = 0
-    while index < len(arguments) - 1 and _NODE_ARG.fullmatch(text(arguments[index])) and (
+    while index < len(arguments) - keep_last and _NODE_ARG.fullmatch(
+            text(arguments[index])) and (
             context.types.get(_variable(arguments[index]) or "", "") not in _STRING_TYPES):
         index += 1
     return arguments[index:]
@@ -496,22 +554,27 @@ def _construction(context: _File, node: Node,
 
 def _wrapper(context: _File, node: Node, written: str, arguments: list[Node],
              deferred: list[MemberInit] | None = None) -> list[Endpoint]:
-    rest = _skip_nodes(context, arguments) if arguments else []
-    name = _resolve(context, rest[0], 0) if rest else None
+    rest = _skip_nodes(context, arguments, keep_last=False) if arguments else []
+    values = _values(context, rest)
     compact = "".join(written.split())
-    if (deferred is not None and len(rest) < len(arguments)
+    if (deferred is not None and (len(rest) < len(arguments) or wrapper_of(compact))
             and _BARE_TYPE.fullmatch(compact) and compact not in context.aliases):
         deferred.append(MemberInit(None, compact, span(context.path, node), _owner(node),
-                                   len(arguments) - len(rest), len(arguments), name))
+                                   len(arguments) - len(rest), len(arguments), values))
         return []
     return _wrapper_endpoints(written, span(context.path, node), _owner(node),
-                              len(arguments) - len(rest), len(arguments), name,
+                              len(arguments) - len(rest), len(arguments), values,
                               context.aliases)
 
 
+def _values(context: _File, arguments: list[Node]) -> tuple[Resolved, ...]:
+    """Resolve a wrapper's first arguments (a name is one of them; the rest cost little)."""
+    return tuple(_resolve(context, a, 0) for a in arguments[:MAX_WRAPPER_ARGUMENTS])
+
+
 def _wrapper_endpoints(written: str, where: Span, owner: str | None, node_arguments: int,
-                       arguments: int, name: Resolved | None, aliases: dict[str, str],
-                       ) -> list[Endpoint]:
+                       arguments: int, values: tuple[Resolved, ...],
+                       aliases: dict[str, str]) -> list[Endpoint]:
     """Return what constructing a wrapper of type ``written`` with these arguments creates."""
     compact = "".join(written.split())
     for _ in range(4):  # a typedef of a wrapper: typedef message_filters::Subscriber<T> S;
@@ -523,6 +586,10 @@ def _wrapper_endpoints(written: str, where: Span, owner: str | None, node_argume
     cls = re.sub(r"<.*", "", compact).rsplit("::", 1)[-1]
     if cls in TF_CLASSES and ("tf2_ros" in compact or cls in compact):
         return tf_endpoints(cls, where, owner)
+    name = values[0] if values else None
+    helper = wrapper_of(compact)
+    if helper is not None and arguments and (node_arguments or helper[1].name_first):
+        return _helper_endpoints(helper, compact, values, where, owner, aliases)
     if not arguments or (not node_arguments and "SubscriberFilter" not in compact):
         return []  # no node given: not subscribed yet
     if "message_filters" in compact and cls == "Subscriber":
@@ -538,11 +605,53 @@ def _wrapper_endpoints(written: str, where: Span, owner: str | None, node_argume
     return []
 
 
+def _helper_endpoints(helper: tuple[str, Wrapper], compact: str,
+                      values: tuple[Resolved, ...], where: Span, owner: str | None,
+                      aliases: dict[str, str]) -> list[Endpoint]:
+    """Return what a helper class of ``wrappers.WRAPPERS`` creates with these arguments."""
+    cls, wrapper = helper
+    template = _template_arguments_in(compact)
+    type_ = _aliased(aliases, template) if template else None
+    name = None
+    if wrapper.name_at is not None and len(values) > wrapper.name_at:
+        name = values[wrapper.name_at]
+    prefix = None
+    if cls == COSTMAP_CLASS:
+        if len(values) < 2:
+            return []  # the costmap node's own constructor (NodeOptions): no child node
+        prefix = _costmap_namespace(values)
+    return wrapper_endpoints(cls, wrapper, name, type_, where, owner, prefix)
+
+
+def _costmap_namespace(values: tuple[Resolved, ...]) -> Resolved:
+    """Return where a ``Costmap2DROS`` child node lives, relative to its parent node.
+
+    nav2 jazzy's ``(name, parent_namespace, local_namespace, use_sim_time)`` puts it in
+    ``parent_namespace/local_namespace`` (the parent's own namespace in nav2's servers),
+    kilted's ``(name, parent_namespace, use_sim_time, options)`` in
+    ``parent_namespace/name``; ``(name, use_sim_time)`` in ``/name``.
+    """
+    name = values[0]
+    if len(values) < 3:
+        return Resolved(f"/{name.value}") if name.value else unknown(
+            "the costmap's name is not known")
+    parent, local = values[1], values[2]
+    if local.value is None and local.parameter is None:  # use_sim_time: kilted's order
+        local = name
+    if local.value is None or local.parameter is not None:
+        return unknown(local.reason or "the costmap's namespace is not known")
+    if parent.reason == NODE_NAMESPACE:
+        return Resolved(local.value)
+    if parent.value is not None and parent.value.startswith("/") and parent.parameter is None:
+        return Resolved(f"{parent.value.rstrip('/')}/{local.value}")
+    return unknown(f"the costmap's parent namespace: {parent.reason or parent.value}")
+
+
 def member_endpoints(init: MemberInit, written: str, aliases: dict[str, str]
                      ) -> list[Endpoint]:
     """Return what a member initialiser creates, given the member's type from a header."""
     return _wrapper_endpoints(written, init.span, init.owner, init.node_arguments,
-                              init.arguments, init.name, aliases)
+                              init.arguments, init.values, aliases)
 
 
 def _member_init(context: _File, node: Node) -> list[MemberInit]:
@@ -553,10 +662,9 @@ def _member_init(context: _File, node: Node) -> list[MemberInit]:
     arguments = list(node.named_children[-1].named_children)
     if not member or member in context.types or not arguments:
         return []
-    rest = _skip_nodes(context, arguments)
+    rest = _skip_nodes(context, arguments, keep_last=False)
     return [MemberInit(member, None, span(context.path, node), _owner(node),
-                       len(arguments) - len(rest), len(arguments),
-                       _resolve(context, rest[0], 0) if rest else None)]
+                       len(arguments) - len(rest), len(arguments), _values(context, rest))]
 
 
 def _make_call(context: _File, node: Node,
@@ -600,6 +708,21 @@ def _classes(nodes: list[Node]) -> tuple[tuple[str, tuple[str, ...]], ...]:
     return tuple(sorted((name, tuple(sorted(related))) for name, related in out.items()))
 
 
+def _loaders(nodes: list[Node]) -> tuple[str, ...]:
+    """Return the base classes of ``pluginlib::ClassLoader<Base>`` members and variables.
+
+    Plugins chosen by parameters at run time (nav2's controllers, planners, behaviours)
+    create endpoints no source of the package names.
+    """
+    found = set()
+    for node in nodes:
+        if node.type in ("field_declaration", "declaration"):
+            written = "".join(text(node.child_by_field_name("type")).split())
+            if "ClassLoader<" in written:
+                found.add(_template_arguments_in(written[written.index("ClassLoader<"):]) or "")
+    return tuple(sorted(n for n in found if n))
+
+
 def _instantiated(nodes: list[Node]) -> tuple[str, ...]:
     """Return the classes the code builds: ``make_shared<X>``, ``new X``, ``X x(...)``."""
     found: set[str] = set()
@@ -638,7 +761,7 @@ def _node_name_call(context: _File, node: Node) -> list[NodeName]:
     if not arguments:
         return []
     if name in ("make_shared", "make_unique") and template is not None:
-        cls = "".join(text(template).strip("<>").split()).rsplit("::", 1)[-1]
+        cls = class_name(_first_template(template) or "")  # not Subscriber<T, LifecycleNode>
     elif name == "make_shared" and scope:
         cls = scope.strip(":").rsplit("::", 1)[-1]
     else:

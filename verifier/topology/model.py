@@ -87,7 +87,12 @@ class MemberInit:
     owner: str | None
     node_arguments: int  # leading node arguments (``this``, ``*this``, ``node``)
     arguments: int
-    name: Resolved | None  # the first argument after them
+    values: tuple[Resolved, ...]  # the first arguments after them, resolved
+
+    @property
+    def name(self) -> Resolved | None:
+        """Return the first argument after the node ones: most wrappers' name."""
+        return self.values[0] if self.values else None
 
     def at(self, file: Path) -> MemberInit:
         """Return the same initialiser located in ``file``."""
@@ -108,6 +113,7 @@ class FileInterfaces:
     inits: tuple[MemberInit, ...] = ()  # initialisers of members declared elsewhere
     classes: tuple[tuple[str, tuple[str, ...]], ...] = ()  # class -> bases and member types
     instantiated: tuple[str, ...] = ()  # classes the file's code builds (make_shared, new)
+    loaders: tuple[str, ...] = ()  # base classes of the pluginlib plugins the file loads
 
     def at(self, file: Path) -> FileInterfaces:
         """Return the same result for another file with identical content."""
@@ -117,7 +123,7 @@ class FileInterfaces:
                               tuple(n.at(file) for n in self.node_names),
                               self.problem, self.partial, self.aliases, self.members,
                               tuple(i.at(file) for i in self.inits), self.classes,
-                              self.instantiated)
+                              self.instantiated, self.loaders)
 
 
 @dataclass(frozen=True, slots=True)
@@ -126,6 +132,8 @@ class NodeInterface:
 
     ``sources`` are the files read; ``problems`` say what could not be read or mapped, so
     an empty ``endpoints`` never passes for "creates nothing" when it is incomplete.
+    ``model`` says where an interface shipped as a model (``topology.shipped``) was
+    extracted from; ``None`` for one read from the workspace's sources.
     """
 
     package: str
@@ -135,3 +143,4 @@ class NodeInterface:
     endpoints: tuple[Endpoint, ...]
     sources: tuple[Path, ...]
     problems: tuple[str, ...] = ()
+    model: str | None = None

@@ -43,6 +43,10 @@ def target_interface(package: str, target: Target) -> NodeInterface:
     problems += [f"{display_path(r.file)}: {r.problem}" for r in results if r.problem]
     problems += [f"{display_path(r.file)}: syntax errors, read as far as recovered"
                  for r in results if r.partial]
+    loaders = sorted({base for r in results for base in r.loaders})
+    if loaders:
+        problems.append("loads plugins chosen by parameters (" + ", ".join(loaders) + "): "
+                        "the endpoints they create are not listed")
     if not target.sources and not problems:
         problems.append("no source file found")
     return NodeInterface(package, target.executable, target.component,

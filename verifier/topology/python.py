@@ -52,6 +52,7 @@ class _File:
     imports: dict[str, str] = field(default_factory=dict)  # local name -> dotted origin
     values: dict[str, list[Node]] = field(default_factory=dict)
     defaults: dict[str, Resolved] = field(default_factory=dict)
+    loops: dict[str, str] = field(default_factory=dict)  # loop variable -> what it iterates
 
 
 def extract(path: Path, data: bytes) -> FileInterfaces:
@@ -86,6 +87,10 @@ def _collect(context: _File, nodes: list[Node]) -> None:
                 if name.type == "aliased_import":
                     context.imports[text(name.child_by_field_name("alias"))] = text(
                         name.child_by_field_name("name"))
+        elif node.type == "for_statement":
+            target = _variable(node.child_by_field_name("left"))
+            if target:
+                context.loops[target] = short(text(node.child_by_field_name("right")), 40)
         elif node.type == "assignment":
             target = _variable(node.child_by_field_name("left"))
             value = node.child_by_field_name("right")
@@ -209,6 +214,8 @@ def _resolve(context: _File, node: Node, depth: int) -> Resolved:
             return _resolve(context, arguments[0], depth + 1)
         return unknown(f"returned by {short(text(function), 40)}() at run time")
     variable = _variable(node)
+    if variable is not None and variable not in context.values and variable in context.loops:
+        return unknown(f"each item of {context.loops[variable]}, at run time")
     if variable is not None:
         candidates = [_resolve(context, v, depth + 1) for v in context.values.get(variable, [])]
         return merge(variable, candidates)

@@ -1,9 +1,11 @@
 """Which source files make up each executable or component of a workspace package.
 
 CMake packages: the sources of ``add_executable`` (and the in-package libraries it links),
-and the library of each ``rclcpp_components_register_node(s)`` plugin, read by
-``package_executables.build_targets``; each source's ``#include "..."`` of the package's
-own headers is followed. ament_python packages: the module of each ``console_scripts``
+the library of each ``rclcpp_components_register_node(s)`` plugin, read by
+``package_executables.build_targets``, and the library of each ros2_control controller a
+pluginlib description file exports (a controller runs as a node of its own inside the
+controller manager); each source's ``#include "..."`` of the package's own headers is
+followed. ament_python packages: the module of each ``console_scripts``
 entry point (``pkg.module:main``) and the package modules it imports.
 """
 
@@ -12,6 +14,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass
 from pathlib import Path
+
+from lxml import etree
 
 from launchverify.topology.files import CPP_SUFFIXES
 from launchverify.workspace.package_executables import BuildTargets, build_targets
@@ -69,6 +73,43 @@ def _cmake(source: Path, name: str) -> list[Target]:
             problems = (*problems, f"library '{library}' of {plugin} not found in CMakeLists.txt")
         others = tuple(p for lib, p, _ in targets.components if lib == library and p != plugin)
         out.append(Target(executable or plugin, plugin, files, problems, others))
+    out.extend(_controllers(source, targets))
+    return out
+
+
+_PLUGIN_XML_BYTES = 256 * 1024
+
+
+def _controllers(source: Path, targets: BuildTargets) -> list[Target]:
+    """Return the ros2_control controllers the package's plugin description files export.
+
+    Each is named as a controller manager's ``type`` parameter names it
+    (``diff_drive_controller/DiffDriveController``); its class is the component.
+    """
+    found: list[tuple[str, str, str]] = []  # (library, pluginlib name, class)
+    for path in sorted(source.glob("*.xml")):
+        if path.name == "package.xml":
+            continue
+        try:
+            code = read_text(path, prefix=_PLUGIN_XML_BYTES)
+            root = etree.fromstring(code.encode(), etree.XMLParser(resolve_entities=False,
+                                                                    no_network=True))
+        except (Unreadable, OSError, etree.XMLSyntaxError, ValueError):
+            continue
+        libraries = [root] if root.tag == "library" else root.findall("library")
+        for library in libraries:
+            name = Path(library.get("path", "")).name.removeprefix("lib")
+            for cls in library.findall("class"):
+                base, kind = cls.get("base_class_type", ""), cls.get("type")
+                if base.startswith("controller_interface::") and kind and name:
+                    found.append((name, cls.get("name") or kind, kind))
+    out = []
+    for library, plugin, kind in found:
+        files, problems = _target_files(source, library, targets)
+        if library not in targets.sources:
+            problems = (*problems, f"library '{library}' of {plugin} not found in CMakeLists.txt")
+        others = tuple(k for lib, _, k in found if lib == library and k != kind)
+        out.append(Target(plugin, kind, files, problems, others))
     return out
 
 
@@ -100,6 +141,9 @@ def _expand_word(source: Path, word: str, problems: list[str]) -> list[Path]:
             return []
         return sorted(p for p in path.rglob("*") if p.suffix.lower() in CPP_SUFFIXES
                       and p.is_file())[:MAX_FILES]
+    if not path.suffix and not path.exists():  # CMake tries the usual extensions
+        path = next((path.with_suffix(e) for e in (".cpp", ".cc", ".cxx")
+                     if path.with_suffix(e).is_file()), path)
     if path.suffix.lower() not in CPP_SUFFIXES:
         return []  # generated files, object libraries, other languages
     if not path.is_file():

@@ -20,6 +20,8 @@ class Follower(Node):
         self.static = StaticTransformBroadcaster(self)  # expect: publisher /tf_static tf2_msgs/msg/TFMessage via=tf2_ros
         self.cmd = self.create_publisher(Twist, "turtle2/cmd_vel", 1)  # expect: publisher turtle2/cmd_vel geometry_msgs/msg/Twist
         self.spawner = Spawner(self)
+        for leader in self.declare_parameter("leaders", ["turtle1/pose"]).value:
+            self.create_subscription(Twist, leader, self.on_leader, 1)  # expect: subscription ? geometry_msgs/msg/Twist unresolved
 
 
 def main():

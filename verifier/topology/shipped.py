@@ -1,0 +1,260 @@
+"""Interface models: node interfaces of released packages, shipped as extracted data.
+
+A launch file often starts nodes of packages the user did not build (robot_state_publisher,
+nav2's servers, the controllers): their sources are not in the workspace, so the extractor
+cannot read them. ``bench/interface_models.py`` runs the same extractor on each package's
+public sources at a recorded commit and writes only what it found (executables, node names,
+endpoints, unresolved reasons) to ``models/interfaces/<package>.json``; this module writes
+and reads that format. Nothing here imports tree-sitter, and a package's model is read only
+when a node of it is asked for.
+
+The format (``"format": 1``)::
+
+    {"format": 1, "package": "nav2_amcl",
+     "source": {"repository": "https://github.com/ros-navigation/navigation2",
+                "branch": "jazzy", "commit": "<40 hex digits>", "path": "nav2_amcl"},
+     "extracted_with": "launchverify 0.x",
+     "interfaces": [{"executable": "amcl", "component": null, "node_name": "amcl",
+                     "problems": [...],
+                     "endpoints": [{"kind": "publisher", "name": "amcl_pose",
+                                    "type": "geometry_msgs/msg/PoseWithCovarianceStamped",
+                                    "at": "src/amcl_node.cpp:1561"}, ...]}]}
+
+An endpoint lists only the fields that are set: ``kind``, ``name`` (as written; absent when
+unknown), ``type``, ``name_parameter``, ``parameter_default``, ``via``, ``note``,
+``unresolved`` (the reason) and ``at`` (file and line in the package, at that commit).
+"""
+
+from __future__ import annotations
+
+import json
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from launchverify.span import Span
+from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface
+
+FORMAT = 1
+_PACKAGE_NAME = re.compile(r"[a-z][a-z0-9_]*")
+_COMMIT = re.compile(r"[0-9a-f]{40}")
+_FIELDS = ("name", "type", "name_parameter", "parameter_default", "via", "note")
+
+
+class ModelError(ValueError):
+    """A model file that is not of the documented format."""
+
+
+@dataclass(frozen=True, slots=True)
+class ModelSource:
+    """Where a model was extracted from: repository, branch, commit, package folder."""
+
+    repository: str
+    branch: str
+    commit: str
+    path: str  # the package's folder inside the repository ("" at its root)
+
+    def label(self) -> str:
+        """Return ``navigation2@f4108e5`` for messages and source locations."""
+        return f"{self.repository.rstrip('/').rsplit('/', 1)[-1]}@{self.commit[:7]}"
+
+    def describe(self) -> str:
+        """Return a sentence naming the repository, branch and commit."""
+        return f"{self.repository} branch {self.branch} at commit {self.commit[:12]}"
+
+
+@dataclass(frozen=True, slots=True)
+class PackageModel:
+    """One package's shipped interfaces and where they were extracted from."""
+
+    package: str
+    source: ModelSource
+    interfaces: tuple[NodeInterface, ...]
+    extracted_with: str = ""
+
+
+# --------------------------------------------------------------------------- writing
+
+
+def model_document(package: str, interfaces: list[NodeInterface], source: ModelSource,
+                   root: Path, extracted_with: str) -> dict[str, Any]:
+    """Return the model of one package; ``root`` is its source folder (paths below it)."""
+    return {
+        "format": FORMAT, "package": package,
+        "source": {"repository": source.repository, "branch": source.branch,
+                   "commit": source.commit, "path": source.path},
+        "extracted_with": extracted_with,
+        "interfaces": [_interface_document(i, root) for i in interfaces],
+    }
+
+
+def _interface_document(interface: NodeInterface, root: Path) -> dict[str, Any]:
+    endpoints: list[dict[str, Any]] = []
+    for endpoint in interface.endpoints:
+        item = _endpoint_document(endpoint, root)
+        if not any(_same(item, seen) for seen in endpoints):  # re-created in callbacks
+            endpoints.append(item)
+    return {"executable": interface.executable, "component": interface.component,
+            "node_name": interface.node_name,
+            "problems": [_relative_text(p, root) for p in interface.problems],
+            "endpoints": endpoints}
+
+
+def _endpoint_document(endpoint: Endpoint, root: Path) -> dict[str, Any]:
+    item: dict[str, Any] = {"kind": endpoint.kind.value}
+    for name in _FIELDS:
+        value = getattr(endpoint, name)
+        if value is not None:
+            item[name] = value
+    if endpoint.unresolved_reason is not None:
+        item["unresolved"] = endpoint.unresolved_reason
+    item["at"] = f"{_relative(endpoint.span.file, root)}:{endpoint.span.line}"
+    return item
+
+
+def _same(a: dict[str, Any], b: dict[str, Any]) -> bool:
+    """Return whether two endpoints differ only in where they are created."""
+    return {k: v for k, v in a.items() if k != "at"} == {k: v for k, v in b.items() if k != "at"}
+
+
+def _relative(path: Path, root: Path) -> str:
+    try:
+        return path.resolve().relative_to(root.resolve()).as_posix()
+    except ValueError:
+        return path.name
+
+
+def _relative_text(problem: str, root: Path) -> str:
+    """Return a problem with the extraction folder taken out of its paths."""
+    return problem.replace(f"{root.resolve().as_posix()}/", "")
+
+
+def dump_model(document: dict[str, Any]) -> str:
+    """Return a model as JSON text: one endpoint a line, so that diffs stay readable."""
+    lines = ["{"]
+    head = {k: v for k, v in document.items() if k != "interfaces"}
+    for key, value in head.items():
+        lines.append(f"  {json.dumps(key)}: {json.dumps(value, sort_keys=False)},")
+    lines.append('  "interfaces": [')
+    for i, interface in enumerate(document["interfaces"]):
+        fields = {k: v for k, v in interface.items() if k != "endpoints"}
+        lines.append("    {" + ", ".join(f"{json.dumps(k)}: {json.dumps(v)}"
+                                          for k, v in fields.items()) + ', "endpoints": [')
+        endpoints = interface["endpoints"]
+        for j, endpoint in enumerate(endpoints):
+            comma = "," if j < len(endpoints) - 1 else ""
+            lines.append(f"      {json.dumps(endpoint)}{comma}")
+        lines.append("    ]}" + ("," if i < len(document["interfaces"]) - 1 else ""))
+    lines.append("  ]")
+    lines.append("}")
+    return "\n".join(lines) + "\n"
+
+
+# --------------------------------------------------------------------------- reading
+
+
+def read_model(document: Any) -> PackageModel:
+    """Return the model a parsed JSON document holds; raise ``ModelError`` when malformed."""
+    if not isinstance(document, dict) or document.get("format") != FORMAT:
+        raise ModelError(f"not an interface model of format {FORMAT}")
+    package = _text(document, "package")
+    source_doc = document.get("source")
+    if not isinstance(source_doc, dict):
+        raise ModelError("'source' must be an object")
+    source = ModelSource(_text(source_doc, "repository"), _text(source_doc, "branch"),
+                         _text(source_doc, "commit"), _text(source_doc, "path", empty=True))
+    if not _COMMIT.fullmatch(source.commit):
+        raise ModelError(f"'source.commit' must be 40 hex digits, not {source.commit!r}")
+    interfaces = document.get("interfaces")
+    if not isinstance(interfaces, list):
+        raise ModelError("'interfaces' must be a list")
+    extracted = document.get("extracted_with", "")
+    return PackageModel(package, source,
+                        tuple(_interface(package, item, source) for item in interfaces),
+                        extracted if isinstance(extracted, str) else "")
+
+
+def _interface(package: str, item: Any, source: ModelSource) -> NodeInterface:
+    if not isinstance(item, dict):
+        raise ModelError("each interface must be an object")
+    endpoints = item.get("endpoints", [])
+    problems = item.get("problems", [])
+    if not isinstance(endpoints, list) or not isinstance(problems, list) or not all(
+            isinstance(p, str) for p in problems):
+        raise ModelError("'endpoints' and 'problems' must be lists")
+    return NodeInterface(package, _text(item, "executable"), _optional(item, "component"),
+                         _optional(item, "node_name"),
+                         tuple(_endpoint(e, source) for e in endpoints), (),
+                         tuple(problems), source.describe())
+
+
+def _endpoint(item: Any, source: ModelSource) -> Endpoint:
+    if not isinstance(item, dict):
+        raise ModelError("each endpoint must be an object")
+    try:
+        kind = EndpointKind(item.get("kind"))
+    except ValueError:
+        raise ModelError(f"unknown endpoint kind {item.get('kind')!r}") from None
+    values = {name: _optional(item, name) for name in _FIELDS}
+    where = _optional(item, "at") or ""
+    file, _, line = where.rpartition(":")
+    location = f"{source.label()}/{source.path}/{file}" if source.path else (
+        f"{source.label()}/{file}")
+    span = Span(Path(location), int(line) if line.isdigit() else 1)
+    reason = _optional(item, "unresolved")
+    if values["name"] is None and reason is None:
+        reason = "the name is not known"
+    return Endpoint(kind, values["name"], values["type"], span, values["name_parameter"],
+                    values["parameter_default"], None, values["via"], reason, None,
+                    values["note"])
+
+
+def _text(item: dict[str, Any], key: str, empty: bool = False) -> str:
+    value = item.get(key)
+    if not isinstance(value, str) or (not value and not empty):
+        raise ModelError(f"'{key}' must be a non-empty string")
+    return value
+
+
+def _optional(item: dict[str, Any], key: str) -> str | None:
+    value = item.get(key)
+    if value is not None and not isinstance(value, str):
+        raise ModelError(f"'{key}' must be a string or null")
+    return value
+
+
+# --------------------------------------------------------------------------- shipped files
+
+
+def shipped_packages() -> list[str]:
+    """Return the packages a model is shipped for, sorted."""
+    folder = resources.files("launchverify.models") / "interfaces"
+    if not folder.is_dir():
+        return []
+    return sorted(entry.name.removesuffix(".json") for entry in folder.iterdir()
+                  if entry.name.endswith(".json"))
+
+
+@lru_cache(maxsize=64)
+def shipped_model(package: str) -> PackageModel | None:
+    """Return the shipped model of one package (read on first use), ``None`` when none.
+
+    A model file that does not parse raises ``ModelError``: it ships with launchverify,
+    so that is our bug, and the test over every shipped file catches it.
+    """
+    if not _PACKAGE_NAME.fullmatch(package):
+        return None
+    entry = resources.files("launchverify.models") / "interfaces" / f"{package}.json"
+    if not entry.is_file():
+        return None
+    try:
+        document = json.loads(entry.read_text(encoding="utf-8"))
+    except (OSError, ValueError) as error:
+        raise ModelError(f"model of {package}: {error}") from error
+    model = read_model(document)
+    if model.package != package:
+        raise ModelError(f"model file {package}.json names package {model.package}")
+    return model
