@@ -210,15 +210,7 @@ class ResultCache:
         with contextlib.suppress(OSError):
             self.folder.mkdir(parents=True, exist_ok=True)
             _write_tag(self.folder)
-            handle, temporary = tempfile.mkstemp(dir=self.folder, suffix=".tmp")
-            try:
-                with os.fdopen(handle, "wb") as out:
-                    pickle.dump(entry, out, protocol=pickle.HIGHEST_PROTOCOL)
-                Path(temporary).replace(self._file(key))
-            except Exception:
-                with contextlib.suppress(OSError):
-                    Path(temporary).unlink()
-                return
+        if _write(self._file(key), entry):
             self.prune()
 
     def prune(self) -> None:
@@ -263,14 +255,24 @@ class BlobStore:
         """Write a value atomically (best effort)."""
         with contextlib.suppress(OSError):
             self.folder.mkdir(parents=True, exist_ok=True)
-            handle, temporary = tempfile.mkstemp(dir=self.folder, suffix=".tmp")
-            try:
-                with os.fdopen(handle, "wb") as out:
-                    pickle.dump(value, out, protocol=pickle.HIGHEST_PROTOCOL)
-                Path(temporary).replace(self.folder / f"{key}.pickle")
-            except Exception:
-                with contextlib.suppress(OSError):
-                    Path(temporary).unlink()
+        _write(self.folder / f"{key}.pickle", value)
+
+
+def _write(path: Path, value: object) -> bool:
+    """Pickle a value to ``path`` atomically (a reader never sees half a file)."""
+    try:
+        handle, temporary = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
+    except OSError:
+        return False
+    try:
+        with os.fdopen(handle, "wb") as out:
+            pickle.dump(value, out, protocol=pickle.HIGHEST_PROTOCOL)
+        Path(temporary).replace(path)
+    except Exception:
+        with contextlib.suppress(OSError):
+            Path(temporary).unlink()
+        return False
+    return True
 
 
 _IN_USE: list[ResultCache] = []  # the cache of the running check, innermost last
