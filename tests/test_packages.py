@@ -110,6 +110,29 @@ def test_installed_executables_are_listed(tmp_path: Path) -> None:
     assert found.names == {"driver_node"}
 
 
+def test_cmake_output_name_is_the_installed_name(tmp_path: Path) -> None:
+    """teleop_twist_joy installs ``teleop_node`` from the target ``teleop_twist_joy_node``."""
+    from launchverify.workspace.package_executables import build_targets, executables
+    from launchverify.workspace.packages import Package
+
+    source = make_package(tmp_path, "joy_teleop")
+    (source / "CMakeLists.txt").write_text(
+        "project(joy_teleop)\n"
+        "add_executable(${PROJECT_NAME}_node src/teleop_node.cpp)\n"
+        "set_target_properties(${PROJECT_NAME}_node\n"
+        "  PROPERTIES OUTPUT_NAME teleop_node PREFIX \"\")\n"
+        "add_executable(relay src/relay.cpp)\n"
+        "set_property(TARGET relay PROPERTY OUTPUT_NAME ${PROJECT_NAME}_relay)\n"
+        "install(TARGETS ${PROJECT_NAME}_node relay DESTINATION lib/${PROJECT_NAME})\n")
+    found = executables(Package("joy_teleop", source=source))
+    assert found is not None and found.complete
+    assert found.names == {"teleop_node", "joy_teleop_relay"}
+    targets = build_targets(source, "joy_teleop")
+    assert targets is not None
+    assert targets.output_names == {"joy_teleop_node": "teleop_node",
+                                    "relay": "joy_teleop_relay"}
+
+
 def test_cmake_variables_lists_and_branches(tmp_path: Path) -> None:
     from launchverify.workspace.package_executables import executables
     from launchverify.workspace.packages import Package

@@ -66,7 +66,8 @@ def _cmake(source: Path, name: str) -> list[Target]:
         files, problems = _target_files(source, target, targets)
         own = tuple(path for word in targets.sources.get(target, ())
                     for path in _expand_word(source, word, []))
-        out.append(Target(target, None, files, problems, main_sources=own))
+        out.append(Target(targets.output_names.get(target, target), None, files, problems,
+                          main_sources=own))
     for library, plugin, executable in targets.components:
         files, problems = _target_files(source, library, targets)
         if library not in targets.sources:

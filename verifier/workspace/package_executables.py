@@ -69,6 +69,7 @@ class BuildTargets:
     complete: bool
     links: dict[str, tuple[str, ...]] = field(default_factory=dict)  # target_link_libraries
     executables: frozenset[str] = frozenset()  # add_executable targets installed in lib/
+    output_names: dict[str, str] = field(default_factory=dict)  # target -> installed name
 
 
 def build_targets(source: Path, name: str) -> BuildTargets | None:
@@ -83,7 +84,8 @@ def build_targets(source: Path, name: str) -> BuildTargets | None:
     return BuildTargets({t: tuple(words) for t, words in cmake.sources.items()},
                         tuple(cmake.components), cmake.complete,
                         {t: tuple(words) for t, words in cmake.links.items()},
-                        frozenset(cmake.targets & cmake.installed or cmake.targets))
+                        frozenset(cmake.targets & cmake.installed or cmake.targets),
+                        dict(cmake.output_names))
 
 
 @dataclass(frozen=True)
@@ -182,6 +184,7 @@ class _CMake:
     sources: dict[str, list[str]] = field(default_factory=dict)
     components: list[tuple[str, str, str | None]] = field(default_factory=list)
     links: dict[str, list[str]] = field(default_factory=dict)
+    output_names: dict[str, str] = field(default_factory=dict)  # target -> its file's name
 
     def run(self, path: Path) -> Executables | None:
         text = _read(path)
@@ -191,7 +194,8 @@ class _CMake:
         self.execute(_commands(text), depth=0)
         if not self.installed and not self.complete:
             return None
-        return Executables(frozenset(self.installed), self.complete)
+        return Executables(frozenset(self.output_names.get(name, name)
+                                     for name in self.installed), self.complete)
 
     def expand(self, word: str) -> str | None:
         def value(match: re.Match[str]) -> str:
@@ -324,6 +328,8 @@ class _CMake:
                 self.complete = False
         elif "EXECUTABLE" in args:  # rclcpp_components_register_node and its wrappers
             self.register(args)
+        elif name in ("set_target_properties", "set_property"):
+            self.properties(name, args)
         elif name == "add_subdirectory" and args and Path(args[0]).name in _TEST_FOLDERS:
             pass  # tests install no executables into lib/<package>
         elif name not in _HARMLESS and not name.startswith(_HARMLESS_PREFIXES):
@@ -357,6 +363,35 @@ class _CMake:
                     self.installed.add(item)
                 elif kind == "PROGRAMS":
                     self.installed.add(Path(item).name)
+
+    def properties(self, name: str, args: list[str]) -> None:
+        """Follow ``OUTPUT_NAME``: the file installed into lib/ is named by it, not the target.
+
+        ``set_target_properties(t PROPERTIES OUTPUT_NAME x)`` and ``set_property(TARGET t
+        PROPERTY OUTPUT_NAME x)`` (teleop_twist_joy installs ``teleop_node`` so).
+        """
+        if name == "set_target_properties":
+            if "PROPERTIES" not in args:
+                return
+            split = args.index("PROPERTIES")
+            targets, rest = args[:split], args[split + 1:]
+            pairs = list(zip(rest[::2], rest[1::2], strict=False))
+        else:
+            if not args or args[0] != "TARGET" or "PROPERTY" not in args:
+                return
+            split = args.index("PROPERTY")
+            targets = [word for word in args[1:split] if word not in ("APPEND", "APPEND_STRING")]
+            pairs = [(args[split + 1], args[split + 2])] if len(args) > split + 2 else []
+        for key, value in pairs:
+            if key not in ("OUTPUT_NAME", "RUNTIME_OUTPUT_NAME"):
+                continue
+            renamed = self.expand(value)
+            for target in targets:
+                expanded = self.expand(target)
+                if renamed is None or expanded is None:
+                    self.complete = False
+                else:
+                    self.output_names[expanded] = renamed
 
     def register(self, args: list[str]) -> None:
         if "EXECUTABLE" in args:
