@@ -1,10 +1,11 @@
-"""The rules of a check, shared out between processes graph by graph.
+"""The rules of a check, shared out between processes.
 
 A rule judges one graph at a time, so the graphs of a check can be split between forked
 processes: they were built before the fork, and a child reads them without copying. Each
-child returns what every rule found in each of its graphs; the check then merges those
+child returns what its rules found in each of its graphs; the check then merges those
 lists in the order a single process visits them, so the findings do not depend on how
-many processes ran. Rules that gather across graphs (those with a ``finish``) run in the
+many processes ran. A rule asking for every context runs whole in one process (``plan``
+says why); rules that gather across graphs (those with a ``finish``) run in the
 checking process, over every graph, as before.
 
 Forking needs a POSIX system and no other thread in the process (the language server
