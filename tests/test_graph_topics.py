@@ -86,6 +86,8 @@ CASES: list[tuple[str, tuple[str, ...], Summary]] = [
         "/right/peer/count": {"clients": ["/right/counter"]}}}),
     ("ros_arguments.launch.py", (), {"topics": {"/first": {"publishers": ["/talker"]},
                                                 **TALKER}}),
+    ("arguments_remap.launch.py", (), {"topics": {"/zeroth": {"publishers": ["/talker"]},
+                                                  **TALKER}}),
     # the listener is off under the defaults ...
     ("conditional.launch.xml", (), {"topics": {"/chatter": {"publishers": ["/talker"]},
                                                **TALKER}}),
@@ -297,3 +299,19 @@ def test_node_identity_takes_special_rules_only_when_launch_leaves_them() -> Non
 def test_expand_reports_an_unknown_namespace_substitution_as_unknown() -> None:
     assert expand("{ns}/x", "/robot", "n").name == "/robot/x"
     assert expand("{namespace}/x", "/", "n").name == "/x"
+
+
+def test_remap_rules_are_read_only_inside_ros_args_sections() -> None:
+    from launchverify.ir.symbolic import Arg
+    from launchverify.topology.compose import _remap_rules
+    from launchverify.topology.resolve import Rule
+
+    unknown = Arg("level")
+    rules, why = _remap_rules(["-r", "a:=b", "--ros-args", "--log-level", unknown, "-r",
+                               "c:=d", "--", "-r", "e:=f"], False, "x.py:1")
+    assert [(r.src, r.dst) for r in rules if isinstance(r, Rule)] == [("c", "d")]
+    assert why is None
+    rules, why = _remap_rules(["-r", unknown, "-r", "e:=f"], True, "x.py:1")
+    assert rules == [] and why is not None and "remap rule" in why
+    rules, why = _remap_rules(["-r", "a:=b", unknown], True, "x.py:1")
+    assert len(rules) == 1 and why is not None  # the unknown word could be -r

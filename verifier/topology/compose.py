@@ -236,12 +236,12 @@ class Composer:
                 identity.namespace_reason = ("the node's namespace is not known before "
                                              "launch: " + self.describe(node.namespace))
         given, reason = self.ros_argument_rules(node)
-        if reason is not None:
-            identity.rules.append(UnknownRule(reason))
         if given:  # before launch's own __node/__ns: they win over name= and namespace=
             identity.name, identity.namespace, _ = node_identity(
                 identity.name, identity.namespace, given, False, False)
             identity.rules.extend(given)
+        if reason is not None:  # an unknown one after them: whatever it renames is unknown
+            identity.rules.append(UnknownRule(reason))
         for remap in node.remappings:
             if remap.scope and not self.symbolic and self.graph.runs(remap.origin) is False:
                 continue
@@ -257,10 +257,12 @@ class Composer:
         return identity
 
     def ros_argument_rules(self, node: NodeRecord) -> tuple[list[RuleLike], str | None]:
-        """Return the ``-r``/``--remap`` rules of a node's ``ros_arguments`` (they come first).
+        """Return the ``-r``/``--remap`` rules of a node's command line (they come first).
 
-        The second item says why they are not all known (an argument not known before
-        launch), ``None`` when they are.
+        rcl reads every ``--ros-args`` section of the command line, in order: those inside
+        the node's ``arguments`` (up to ``--``), then its ``ros_arguments`` (launch_ros
+        puts ``--ros-args`` before them). The second item says why the rules are not all
+        known (a word not known before launch where a rule could be), ``None`` when they are.
         """
         launches = self.graph.derived.get("launch_of_node")
         if launches is None:  # built once per graph: a fleet has many nodes
@@ -268,24 +270,32 @@ class Composer:
                         if launch.node is not None}
             self.graph.derived["launch_of_node"] = launches
         launch = launches.get(id(node))
-        if not isinstance(launch, LaunchRecord) or not launch.ros_arguments:
+        if not isinstance(launch, LaunchRecord) or not (launch.arguments
+                                                       or launch.ros_arguments):
             return [], None
-        words: list[str] = []
-        for argument in launch.ros_arguments:
+        where = f"{display_path(launch.origin.span.file)}:{launch.origin.span.line}"
+        rules: list[RuleLike] = []
+        for words, inside in ((self.words(launch.arguments), False),
+                              (self.words(launch.ros_arguments), True)):
+            found, unknown = _remap_rules(words, inside, where)
+            rules.extend(found)
+            if unknown is not None:  # the rules after it come after an unknown one
+                return rules, unknown
+        return rules, None
+
+    def words(self, arguments: tuple[Sub, ...]) -> list[str | Sub]:
+        """Return command-line words, split as launch splits them (a ``Sub`` when unknown)."""
+        words: list[str | Sub] = []
+        for argument in arguments:
             text = self.text(argument)
             if text is None:
-                return [], f"ros_arguments not known before launch: {self.describe(argument)}"
+                words.append(argument)
+                continue
             try:
                 words.extend(shlex.split(text))
             except ValueError:
                 words.append(text)
-        where = f"{display_path(launch.origin.span.file)}:{launch.origin.span.line}"
-        rules: list[RuleLike] = []
-        for flag, value in zip(words, [*words[1:], ""], strict=True):
-            if flag in ("-r", "--remap") and ":=" in value:
-                src, _, dst = value.partition(":=")
-                rules.append(parse_rule(src, dst, where))
-        return rules, None
+        return words
 
     def rule(self, src: Sub, dst: Sub, origin: Origin) -> RuleLike:
         """Return one remap rule, or an unknown one saying which side is not known."""
@@ -388,3 +398,41 @@ def compose(graph: LaunchGraph, source: InterfaceSource, *,
 def _has_inputs(sub: Sub) -> bool:
     """Return whether a value depends on launch arguments or the environment."""
     return any(isinstance(part, (Arg, EnvInput, Select)) for part in walk(sub))
+
+
+# ROS arguments that take a value (the value is no flag: ``--log-level -r`` is no rule)
+_VALUED_FLAGS = frozenset({"-r", "--remap", "-p", "--param", "--params-file", "-e", "--enclave",
+                           "--log-level", "--log-config-file", "--log-file-name"})
+
+
+def _remap_rules(words: list[str | Sub], inside: bool,
+                 where: str) -> tuple[list[RuleLike], str | None]:
+    """Return the remap rules of ROS arguments among command-line words, and why not all.
+
+    ``inside``: the words start inside a ``--ros-args`` section. Outside one, only
+    ``--ros-args`` matters; ``--`` ends a section.
+    """
+    rules: list[RuleLike] = []
+    index = 0
+    while index < len(words):
+        word = words[index]
+        index += 1
+        if not isinstance(word, str):
+            if inside:  # it could be -r and its rule: not known
+                return rules, f"a ROS argument not known before launch at {where}"
+            continue
+        if not inside:
+            inside = word == "--ros-args"
+        elif word == "--":
+            inside = False
+        elif word in _VALUED_FLAGS:
+            value = words[index] if index < len(words) else ""
+            index += 1
+            if word not in ("-r", "--remap"):
+                continue
+            if not isinstance(value, str):
+                return rules, f"a remap rule not known before launch at {where}"
+            if ":=" in value:
+                src, _, dst = value.partition(":=")
+                rules.append(parse_rule(src, dst, where))
+    return rules, None
