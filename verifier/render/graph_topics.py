@@ -106,6 +106,13 @@ def render_text(doc: dict[str, Any], out: TextIO) -> None:
                     out.write(f"        {role}: {names}\n")
             if entry["condition"]:
                 out.write(f"        when {entry['condition']}\n")
+    modelled = [node for node in doc["nodes"] if node.get("interface")
+                and node["interface"]["found"] and node["interface"]["note"]]
+    if modelled:
+        out.write("from shipped models:\n")
+        for node in modelled:
+            who = node["fqn"] or f"{node['package']}/{node['executable']}"
+            out.write(f"    {who}: {node['interface']['note']}\n")
     missing = [node for node in doc["nodes"]
                if node.get("interface") and not node["interface"]["found"]]
     if missing:
