@@ -422,6 +422,8 @@ class LaunchGraph:
         self._verdicts: dict[Guard, bool | None] = {}
         # the same guard objects, by identity: hashing a guard walks its whole expression
         self._verdicts_by_id: dict[int, tuple[Guard, bool | None]] = {}
+        # base texts by identity: rules ask again for the same names (the fleet: 270 000)
+        self._texts_by_id: dict[int, tuple[Sub, str | None]] = {}
 
     def read_file(self, path: str) -> str | None:
         """Return a workspace file's text for the base view (``None``: not readable)."""
@@ -444,7 +446,14 @@ class LaunchGraph:
         """
         if sub is None:
             return None
-        return text_of(self._base.reduce(sub))
+        if type(sub) is Text:
+            return sub.text
+        known = self._texts_by_id.get(id(sub))
+        if known is not None and known[0] is sub:
+            return known[1]
+        text = text_of(self._base.reduce(sub))
+        self._texts_by_id[id(sub)] = (sub, text)
+        return text
 
     @property
     def processes(self) -> list[LaunchRecord]:
