@@ -37,9 +37,29 @@ def test_shared_out_findings_are_those_of_one_process(alone: Report,
     assert _seen(shared) == _seen(alone)
 
 
+def test_a_child_says_how_many_solver_queries_it_asked(alone: Report) -> None:
+    """--statistics counts the z3 queries asked in forked children too."""
+    from launchverify.engine import _isolated, dead
+    from launchverify.rule import RuleContext
+
+    graphs = alone.graphs
+    for graph in graphs:  # as a child that makes its own reasoners
+        if hasattr(graph, "_reasoner"):
+            delattr(graph, "_reasoner")
+    rules = list(all_rules())
+    run = RuleRun(graphs, rules, RuleContext(), _isolated, dead)
+    fanout._SHARED["run"] = run
+    try:
+        _, queries = fanout._child(Share(tuple(range(len(rules))), (), ()))
+    finally:
+        fanout._SHARED.clear()
+    assert sum(queries.values()) == sum(g._reasoner.queries for g in graphs  # type: ignore[attr-defined]
+                                        if hasattr(g, "_reasoner")) > 0
+
+
 def test_a_failed_child_share_is_run_here(alone: Report,
                                           monkeypatch: pytest.MonkeyPatch) -> None:
-    def broken(share: Share) -> fanout.PerGraph:
+    def broken(share: Share) -> tuple[fanout.PerGraph, dict[int, int]]:
         raise RuntimeError("child lost")
 
     monkeypatch.setattr(fanout, "MIN_WORK", 0)

@@ -100,8 +100,19 @@ class Share:
 _SHARED: dict[str, RuleRun] = {}  # what a forked child works on (set before the fork)
 
 
-def _child(share: Share) -> PerGraph:
-    return share.run(_SHARED["run"])
+def _child(share: Share) -> tuple[PerGraph, dict[int, int]]:
+    """Run a share in a forked child; also say how many z3 queries it asked per graph."""
+    run = _SHARED["run"]
+    before = _queries(run.graphs)  # reasoners the parent made before the fork come along
+    found = share.run(run)
+    after = _queries(run.graphs)
+    return found, {g: n - before.get(g, 0) for g, n in after.items() if n != before.get(g, 0)}
+
+
+def _queries(graphs: list[LaunchGraph]) -> dict[int, int]:
+    """Return the z3 queries each graph's reasoner in this process has asked."""
+    return {g: reasoner.queries for g, graph in enumerate(graphs)
+            if (reasoner := getattr(graph, "_reasoner", None)) is not None}
 
 
 def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
@@ -123,13 +134,21 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
             out.update(run.run(gathering, everything))  # meanwhile, here
             out.update(shares[0].run(run))
             for share, future in futures:
-                out.update(_collected(future) or share.run(run))
+                collected = _collected(future)
+                if collected is None:
+                    out.update(share.run(run))
+                    continue
+                found, queries = collected
+                out.update(found)
+                for g, count in queries.items():
+                    run.graphs[g].queries_elsewhere += count
     finally:
         _SHARED.clear()
     return out
 
 
-def _collected(future: Future[PerGraph]) -> PerGraph | None:
+def _collected(future: Future[tuple[PerGraph, dict[int, int]]]
+               ) -> tuple[PerGraph, dict[int, int]] | None:
     """Return a child's findings; ``None`` when it failed (its share is then run here)."""
     try:
         return future.result()

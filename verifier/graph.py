@@ -416,6 +416,7 @@ class LaunchGraph:
     file_reader: Callable[[str], str | None] | None = field(default=None, repr=False)
     # What is computed from the records once and asked for again (effective parameters).
     derived: dict[str, dict[Hashable, object]] = field(default_factory=dict, repr=False)
+    queries_elsewhere: int = 0  # z3 queries its rules asked in forked processes (fanout)
 
     def __post_init__(self) -> None:
         self._base = BaseReducer(self.inputs(), read=self.read_file)

@@ -22,8 +22,10 @@ __all__ = ["Contradiction", "Witness", "reasoner_for"]
 
 def solver_queries(graphs: Iterable[LaunchGraph]) -> int:
     """Return how many times z3 was asked about these graphs (``check --statistics``)."""
-    return sum(found.queries for graph in graphs
-               if (found := getattr(graph, "_reasoner", None)) is not None)
+    return sum(graph.queries_elsewhere + (found.queries if found is not None else 0)
+               for graph in graphs
+               if (found := getattr(graph, "_reasoner", None)) is not None
+               or graph.queries_elsewhere)
 
 
 def reasoner_for(graph: LaunchGraph) -> Reasoner:
