@@ -310,3 +310,14 @@ def test_graph_composes_released_nodes_from_their_models(
     for node in document["nodes"]:
         assert node["interface"]["found"]
         assert "model shipped with launchverify" in node["interface"]["note"]
+
+
+def test_a_model_that_creates_nothing_is_not_taken_for_a_silent_node() -> None:
+    """joint_state_publisher_gui publishes through joint_state_publisher's class: its
+    extracted sources show no endpoint, which must read as unknown, not as none."""
+    from launchverify.topology.shipped import EMPTY_MODEL
+
+    model = shipped_model("joint_state_publisher_gui")
+    assert model is not None
+    empty = [i for i in model.interfaces if not i.endpoints]
+    assert empty and all(i.problems == (EMPTY_MODEL,) for i in empty)

@@ -43,6 +43,12 @@ _PACKAGE_NAME = re.compile(r"[a-z][a-z0-9_]*")
 _COMMIT = re.compile(r"[0-9a-f]{40}")
 _FIELDS = ("name", "type", "name_parameter", "parameter_default", "via", "note")
 
+# A released node whose extracted code creates nothing most likely creates its endpoints
+# through another package's class (joint_state_publisher_gui builds joint_state_publisher's
+# node; a controller derives from another package's base): not known, rather than none.
+EMPTY_MODEL = ("the extracted sources create no endpoint: they may create them through "
+               "another package's code, which was not read")
+
 
 class ModelError(ValueError):
     """A model file that is not of the documented format."""
@@ -185,6 +191,8 @@ def _interface(package: str, item: Any, source: ModelSource) -> NodeInterface:
     if not isinstance(endpoints, list) or not isinstance(problems, list) or not all(
             isinstance(p, str) for p in problems):
         raise ModelError("'endpoints' and 'problems' must be lists")
+    if not endpoints and not problems:  # never "creates nothing" on a model's word
+        problems = [EMPTY_MODEL]
     return NodeInterface(package, _text(item, "executable"), _optional(item, "component"),
                          _optional(item, "node_name"),
                          tuple(_endpoint(e, source) for e in endpoints), (),
