@@ -2,11 +2,11 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Hashable, Iterator
 from typing import TYPE_CHECKING
 
 from launchverify.graph import LaunchGraph
-from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+from launchverify.rule import Finding, PollingRule, Related, RuleContext, Severity
 
 if TYPE_CHECKING:
     from launchverify.topology.compose import ComposedEndpoint
@@ -15,7 +15,7 @@ if TYPE_CHECKING:
 DEFAULT_SINGLE_WRITER = ("*cmd_vel",)
 
 
-class CompetingPublishers(Rule):
+class CompetingPublishers(PollingRule):
     """Two nodes that run together publish a topic meant to have one publisher (`cmd_vel`).
 
     ## What it does
@@ -28,7 +28,10 @@ class CompetingPublishers(Rule):
     `unless` of one argument) or a node started once the other has exited keep them
     apart; the finding names the argument values under which they meet when the
     arguments as given do not start both. A mux in between (`twist_mux`, nav2's
-    velocity smoother) gives each input its own name, and is never reported.
+    velocity smoother) gives each input its own name, and is never reported. A file
+    that others include is judged by every launch that runs the node: it is reported
+    when each of them sees the two meet (one that keeps them apart, by a namespace or
+    another remap, says no; one where the node does not run has no say).
 
     ## Why it matters
     Velocity commands from two sources interleave: the robot jerks between them, or a
@@ -48,11 +51,18 @@ class CompetingPublishers(Rule):
     code = "LV604"
     slug = "competing-publishers"
     severity = Severity.WARNING
-    every_context = True  # an includer's namespaces may set the two apart
     message = ("{node} publishes {name}, which {peer} publishes too: {name} is meant to "
                "have one publisher ({why})")
 
-    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+    def answers(self, graph: LaunchGraph, ctx: RuleContext
+                ) -> Iterator[tuple[Hashable, Finding | None]]:
+        """Each publisher on a single-writer topic: does it meet another node's here?
+
+        Asked by place (the node's launch, the publisher in the code), so that an
+        evaluation where the node does not run abstains (an includer that starts the
+        file's other branch), one where an includer's namespaces set the two apart says
+        no, and one instance meeting another (a robot of a fleet) is enough for a yes.
+        """
         from launchverify.topology.wiring import (
             globs_option,
             name_matches,
@@ -66,25 +76,37 @@ class CompetingPublishers(Rule):
         why = ("single-writer-topics" if "single-writer-topics" in ctx.options
                else "the default single-writer topics: *cmd_vel")
         view = workspace_view(graph, ctx)
+        answers: dict[Hashable, Finding | None] = {}
         for name, connection in view.by_name["topics"].items():
-            if name_matches(name, patterns):
-                yield from self.topic(view, connection.ends.get("publishers", []), why)
+            if not name_matches(name, patterns):
+                continue
+            for end, finding in self.topic(view, connection.ends.get("publishers", []), why):
+                question = (end.node.origin.span, end.endpoint.span)
+                if answers.get(question) is None:
+                    answers[question] = finding
+        yield from answers.items()
 
     def topic(self, view: WiringView, publishers: list[ComposedEndpoint],
-              why: str) -> Iterator[Finding]:
-        """Yield a finding for each publisher that meets an earlier one of another node."""
+              why: str) -> Iterator[tuple[ComposedEndpoint, Finding | None]]:
+        """Yield each publisher with a finding when it meets an earlier one of another node."""
         from launchverify.topology.wiring import describe_node, together
 
+        # in the order of their places, the same in every evaluation: "earlier" must not
+        # depend on which root walked the nodes first
+        publishers = sorted(publishers, key=lambda e: (
+            str(e.node.origin.span.file), e.node.origin.span.line, e.node.origin.span.column,
+            str(e.endpoint.span.file), e.endpoint.span.line))
         for index, end in enumerate(publishers):
             before = publishers[:index]
             if any(earlier.node is end.node for earlier in before):
                 continue  # the same node again: its first publisher answered for it
+            met = None
             for earlier in before:
                 witness = together(view.graph, earlier.node, end.node)
                 if witness is None:
                     continue
                 peer = describe_node(view, earlier.node)
-                yield self.finding(
+                met = self.finding(
                     end.node.origin,
                     related=(Related(end.endpoint.span, f"publishes {end.name} here"),
                              Related(earlier.node.origin.span, f"{peer} is launched here"),
@@ -92,3 +114,4 @@ class CompetingPublishers(Rule):
                     witness=witness.values or None, node=describe_node(view, end.node),
                     name=end.name, peer=peer, why=why)
                 break
+            yield end, met
