@@ -16,11 +16,12 @@ process exited (``overlap_guards``: can two processes run at the same time).
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from launchverify.graph import HandlerRecord, LaunchGraph, RerunRecord
+from launchverify.graph import HandlerRecord, LaunchGraph, NodeRecord, Origin, RerunRecord
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import PathCondition, Truthy
@@ -90,6 +91,22 @@ def rerun_edges(graph: LaunchGraph) -> set[tuple[int, int]]:
 
 EXITED = "exited"  # its process exited; it runs again only if it respawns
 COMPLETED = "completed"  # its execution completed: its process ended for good
+
+
+def meeting_origin(graph: LaunchGraph, first: NodeRecord,
+                   second: NodeRecord) -> Origin | None:
+    """Return ``first``'s origin with what it takes to run while ``second`` does.
+
+    ``None`` when the event structure keeps them apart for good; else ``first``'s place
+    and path condition, extended by the guards under which they can still meet
+    (``overlap_guards``): what LV101 and the wiring rules ask the reasoner about.
+    """
+    overlap = overlap_guards(graph, first.execution, second.execution)
+    if overlap is None:
+        return None
+    if not overlap:
+        return first.origin
+    return dataclasses.replace(first.origin, path=(*first.origin.path, *overlap))
 
 
 def overlap_guards(graph: LaunchGraph, first: int | None,

@@ -2,11 +2,10 @@
 
 from __future__ import annotations
 
-import dataclasses
 from collections import defaultdict
 from collections.abc import Iterator
 
-from launchverify.events import overlap_guards
+from launchverify.events import meeting_origin
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import Arg, Opaque, Select
@@ -125,12 +124,9 @@ def collision(graph: LaunchGraph, first: NodeRecord, second: NodeRecord,
     switches, so only the path conditions matter.
     """
     assert first.fqn is not None and second.fqn is not None
-    overlap = overlap_guards(graph, first.execution, second.execution)
-    if overlap is None:
+    first_origin = meeting_origin(graph, first, second)
+    if first_origin is None:
         return None  # one starts only once the other has ended for good
-    first_origin = first.origin
-    if overlap:  # they meet only if the one that ended first respawns
-        first_origin = dataclasses.replace(first_origin, path=(*first_origin.path, *overlap))
     first_text, second_text = graph.base(first.fqn), graph.base(second.fqn)
     if (first_text is not None and first_text == second_text
             and graph.runs(first_origin) and graph.runs(second.origin)):

@@ -12,13 +12,12 @@ made when none of them could be.
 
 from __future__ import annotations
 
-import dataclasses
 import re
 from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
 from typing import TYPE_CHECKING
 
-from launchverify.events import overlap_guards
+from launchverify.events import meeting_origin
 from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord
 from launchverify.smt import Witness, reasoner_for
 from launchverify.topology.model import EndpointKind
@@ -176,12 +175,9 @@ def together(graph: LaunchGraph, first: NodeRecord, second: NodeRecord) -> Witne
     other has ended), and their conditions may exclude each other; an empty witness
     means under the arguments as given.
     """
-    overlap = overlap_guards(graph, first.execution, second.execution)
-    if overlap is None:
+    first_origin = meeting_origin(graph, first, second)
+    if first_origin is None:
         return None
-    first_origin = first.origin
-    if overlap:
-        first_origin = dataclasses.replace(first_origin, path=(*first_origin.path, *overlap))
     if graph.runs(first_origin) is True and graph.runs(second.origin) is True:
         return Witness()
     return reasoner_for(graph).together(first_origin.path, second.origin.path)
