@@ -112,7 +112,7 @@ def parse_substitution(text: str, locate: Locate | None = None) -> s.Sub:
             parts.append(reader.substitution(0, quote=None))
             start = reader.pos
         else:
-            literal.append(reader.literal_char(stop=""))
+            literal.append(reader.literal_run())
     parts.append(reader.literal(literal, start))
     return s.concat(parts)
 
@@ -181,6 +181,23 @@ class _Reader:
 
     def at_substitution(self) -> bool:
         return self.peek() == "$" and self.peek(1) == "("
+
+    def literal_run(self) -> str:
+        """Read literal text up to the next ``$`` or escape (at least one character).
+
+        Attribute values are mostly plain text: reading it a run at a time instead of a
+        character at a time is most of what parsing them costs.
+        """
+        if self.peek() in ("$", "\\"):
+            return self.literal_char(stop="")
+        end = len(self.text)
+        for mark in ("$", "\\"):
+            found = self.text.find(mark, self.pos)
+            if found != -1:
+                end = min(end, found)
+        run = self.text[self.pos:end]
+        self.pos = end
+        return run
 
     def literal_char(self, stop: str) -> str:
         """Read one literal character (an escape pair counts as one), honouring ``stop``."""

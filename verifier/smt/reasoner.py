@@ -126,14 +126,14 @@ class Reasoner:
             paths = all_hold(reducer, guards)
             if paths is False:
                 return False
-            left, right = reducer.text(first), reducer.text(second)
+            left, right = self.search.names.text(first), self.search.names.text(second)
             if left is None or right is None or paths is None:
                 return None
             return left == right
 
         tried = self.search.run(Mode.SWITCHES, [*guards, first, second], same)
         if tried.found is not None and tried.reducer is not None:
-            name = tried.reducer.text(first) or first.describe()
+            name = self.search.names.text(first) or first.describe()
             self._names[key] = (self._tried(tried.found) or Witness(), name)
         elif tried.exhaustive:
             self._names[key] = None

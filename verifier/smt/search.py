@@ -17,7 +17,17 @@ from dataclasses import dataclass
 
 from launchverify.evaluate.values import BaseReducer
 from launchverify.ir import subst as s
-from launchverify.ir.symbolic import Arg, Guard, Select, StrEquals, Truthy
+from launchverify.ir.symbolic import (
+    Arg,
+    CommandOutput,
+    EnvInput,
+    Guard,
+    Select,
+    StrEquals,
+    Truthy,
+    Unknown,
+    Unset,
+)
 from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
 from launchverify.smt.domains import ArgumentDomain, Mode
 
@@ -42,12 +52,20 @@ class Search:
         self.domains = domains
         self.pinned = pinned
         self._reducer = BaseReducer(dict(pinned))  # reused: its pinned values change
+        self.names = NameReducer(self._reducer.pinned)  # names, under the same assignment
         self._names: dict[int, tuple[frozenset[str], frozenset[str]]] = {}
         self._keep: list[object] = []
 
     def run(self, mode: Mode, items: Iterable[Guard | s.Sub],
             predicate: Callable[[BaseReducer], bool | None]) -> Outcome:
-        """Look for an assignment where ``predicate`` is true."""
+        """Look for an assignment where ``predicate`` is true.
+
+        Over the switches, the enumeration covers each switch's values; every other
+        argument keeps its default, or has none and stays symbolic. A verdict the
+        predicate reaches despite a symbolic argument holds for every value of it (the
+        reducer gives a text only when the value does not depend on what it could not
+        reduce), so the search is exhaustive as long as no verdict was "cannot tell".
+        """
         names: set[str] = set()
         literals: set[str] = set()
         for item in items:
@@ -57,10 +75,10 @@ class Search:
         choices = self.candidates(sorted(names), mode, literals)
         if choices is None:
             return Outcome(None, None, exhaustive=False)
-        exhaustive = all(self.finite(name, mode) for name in names)
+        exhaustive = mode is Mode.SWITCHES or all(self.finite(name) for name in names)
         reducer = self._reducer
         for assignment in _product(choices):
-            reducer.pinned = {**self.pinned, **assignment}
+            reducer.pinned = self.names.pinned = {**self.pinned, **assignment}
             verdict = predicate(reducer)
             if verdict is True:
                 return Outcome(assignment, reducer, exhaustive)
@@ -68,14 +86,10 @@ class Search:
                 exhaustive = False
         return Outcome(None, None, exhaustive)
 
-    def finite(self, name: str, mode: Mode) -> bool:
-        """Return whether the enumeration covers every value of this argument."""
+    def finite(self, name: str) -> bool:
+        """Return whether the enumeration covers every value ``ros2 launch`` accepts."""
         domain = self.domains.get(name)
-        if domain is None:
-            return False
-        if domain.values(mode) is not None:
-            return True
-        return mode is Mode.SWITCHES and not domain.required
+        return domain is not None and domain.values(Mode.ANY) is not None
 
     def candidates(self, names: list[str], mode: Mode,
                    literals: set[str]) -> list[tuple[str, tuple[str, ...]]] | None:
@@ -107,6 +121,41 @@ class Search:
             known = self._names[key] = inputs_of(item)
             self._keep.append(item)
         return known
+
+
+class NameReducer(BaseReducer):
+    """The base view of a ROS name, where z3 would see a fixed unknown: a fixed text.
+
+    Inside a name, ``Encoder.name`` turns what it cannot model (an unknown, an argument
+    that has no default and keeps none, an unset environment variable) into a sentinel,
+    a constant equal only to itself. Reducing them to the same sentinels lets the search
+    settle the name comparisons z3 would (most names of real trees hold an unknown: the
+    share folder of a package outside the workspace, a command's output). Guards are not
+    names: their unknowns are free, so they stay with ``BaseReducer``.
+    """
+
+    def __init__(self, pinned: dict[str, str]) -> None:
+        super().__init__(pinned)
+        for kind in (Unknown, CommandOutput, Unset):
+            self._dispatch[kind] = _sentinel
+
+    def arg(self, sub: Arg) -> s.Sub:
+        if sub.name not in self.pinned and sub.default is None:
+            return s.Text(SENTINEL.format(f"arg {sub.name}"))
+        return super().arg(sub)
+
+    def env_input(self, sub: EnvInput) -> s.Sub:
+        if "env:" + sub.name not in self.pinned and sub.default is None:
+            return s.Text(SENTINEL.format(f"env {sub.name}"))
+        return super().env_input(sub)
+
+
+SENTINEL = "\x01{}\x01"  # as ``Encoder._sentinel`` writes one
+
+
+def _sentinel(sub: s.Sub) -> s.Sub:
+    label = f"<{sub.reason}>" if isinstance(sub, Unknown) else sub.describe()
+    return s.Text(SENTINEL.format(label))
 
 
 def inputs_of(item: Guard | s.Sub) -> tuple[frozenset[str], frozenset[str]]:

@@ -21,7 +21,9 @@ from launchverify.workspace.discover import discover
 from launchverify.workspace.paths import resolved
 from launchverify.workspace.reading import read_file, unsaved
 
-_NAME = re.compile(rb"[\w.\-]+\.(?:py|xml|yaml|yml|launch|urdf|xacro|sdf)\b")
+# A name starts where a run of name characters does (the look-behind spares the regex
+# trying every later start inside a long word, which never matches where the start did not).
+_NAME = re.compile(rb"(?<![\w.\-])[\w.\-]+\.(?:py|xml|yaml|yml|launch|urdf|xacro|sdf)\b")
 _SCANNED_BYTES = 1 << 20
 RACY_SECONDS = 2.0  # a file changed this recently could change again unseen by its stamp
 MAX_REMEMBERED = 100_000
