@@ -212,7 +212,7 @@ class Reasoner:
         if assignment is None:
             return None
         return Witness({name: value for name, value in assignment.items()
-                        if self.domains[name].defaults != {value}})
+                        if name in self.domains and self.domains[name].defaults != {value}})
 
 
 @dataclasses.dataclass

@@ -11,6 +11,7 @@ reasoner asks z3. Nothing here imports z3.
 from __future__ import annotations
 
 import itertools
+import math
 import re
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
@@ -22,6 +23,7 @@ from launchverify.ir.symbolic import (
     CommandOutput,
     EnvInput,
     Guard,
+    Opaque,
     Select,
     StrEquals,
     Truthy,
@@ -31,9 +33,13 @@ from launchverify.ir.symbolic import (
 from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
 from launchverify.smt.domains import ArgumentDomain, Mode
 
+_QUOTES = re.compile("['\"]")
+_VALUE = re.compile(r"[\w./:-]*\w[\w./:-]*")
 _NUMBER = re.compile(r"(?<![\w.])\d{1,9}(?![\w.])")
 MAX_ASSIGNMENTS = 256
 MAX_CANDIDATES = 10
+MAX_SCANNED_TEXT = 120  # longer literals are prose or code, not values to try
+MAX_WORD = 48  # ``' == 'obstacle_cruise_planner'`` suggests the planner's name
 
 
 @dataclass(frozen=True)
@@ -51,9 +57,9 @@ class Search:
     def __init__(self, domains: dict[str, ArgumentDomain], pinned: dict[str, str]) -> None:
         self.domains = domains
         self.pinned = pinned
-        self._reducer = BaseReducer(dict(pinned))  # reused: its pinned values change
+        self._reducer = SearchReducer(dict(pinned))  # reused: its pinned values change
         self.names = NameReducer(self._reducer.pinned)  # names, under the same assignment
-        self._names: dict[int, tuple[frozenset[str], frozenset[str]]] = {}
+        self._names: dict[int, tuple[frozenset[str], frozenset[str], frozenset[str]]] = {}
         self._keep: list[object] = []
 
     def run(self, mode: Mode, items: Iterable[Guard | s.Sub],
@@ -68,16 +74,27 @@ class Search:
         """
         names: set[str] = set()
         literals: set[str] = set()
+        unset: set[str] = set()
+        opaque: set[str] = set()
         for item in items:
-            found_names, found_literals = self.inputs(item)
+            found_names, found_literals, found_unset, found_opaque = self._inputs(item)
             names |= found_names
             literals |= found_literals
+            unset |= found_unset
+            opaque |= found_opaque
         choices = self.candidates(sorted(names), mode, literals)
-        if choices is None:
-            return Outcome(None, None, exhaustive=False)
-        exhaustive = mode is Mode.SWITCHES or all(self.finite(name) for name in names)
+        choices += [(OPAQUE_KEY + d, ("true", "false")) for d in sorted(opaque)]
+        if mode is Mode.ANY:
+            choices += self.unset_candidates(sorted(unset), literals)
+        whole = math.prod(len(values) for _, values in choices) <= MAX_ASSIGNMENTS
+        if not whole and mode is Mode.SWITCHES:
+            return Outcome(None, None, exhaustive=False)  # z3 says whether one exists
+        exhaustive = mode is Mode.SWITCHES or (
+            whole and not unset and all(self.finite(name) for name in names))
+        assignments = _product(choices) if whole else itertools.islice(
+            _nearest_first(choices), MAX_ASSIGNMENTS)
         reducer = self._reducer
-        for assignment in _product(choices):
+        for assignment in assignments:
             reducer.pinned = self.names.pinned = {**self.pinned, **assignment}
             verdict = predicate(reducer)
             if verdict is True:
@@ -92,10 +109,9 @@ class Search:
         return domain is not None and domain.values(Mode.ANY) is not None
 
     def candidates(self, names: list[str], mode: Mode,
-                   literals: set[str]) -> list[tuple[str, tuple[str, ...]]] | None:
-        """Return the values to try per argument (``None``: too many combinations)."""
+                   literals: set[str]) -> list[tuple[str, tuple[str, ...]]]:
+        """Return the values to try per argument."""
         out: list[tuple[str, tuple[str, ...]]] = []
-        total = 1
         for name in names:
             domain = self.domains.get(name)
             if domain is None or domain.pinned is not None:
@@ -107,23 +123,56 @@ class Search:
                 extra = sorted(literals - domain.defaults)
                 values = (*sorted(domain.defaults), "true", "false", *extra)
                 values = tuple(dict.fromkeys(values))[:MAX_CANDIDATES]
-            total *= len(values)
-            if total > MAX_ASSIGNMENTS:
-                return None
             out.append((name, values))
         return out
 
-    def inputs(self, item: Guard | s.Sub) -> tuple[frozenset[str], frozenset[str]]:
-        """Return ``inputs_of(item)``, remembered per item (questions share guards)."""
+    def unset_candidates(self, names: list[str], literals: set[str]
+                         ) -> list[tuple[str, tuple[str, ...]]]:
+        """Return values to try for configurations unset where they are read.
+
+        Launch raises on reading one; z3 takes it as a free string, so whether a
+        condition *can* hold, the question asked over every value, may try some.
+        """
+        values = tuple(dict.fromkeys(("true", "false", *sorted(literals))))[:MAX_CANDIDATES]
+        return [(UNSET_KEY + name, values) for name in names]
+
+    def _inputs(self, item: Guard | s.Sub) -> _Inputs:
+        """Return ``inputs_of(item)``, its unset reads and opaque guards, remembered."""
         key = id(item)
         known = self._names.get(key)
         if known is None:
-            known = self._names[key] = inputs_of(item)
+            known = self._names[key] = _inputs_of(item)
             self._keep.append(item)
         return known
 
 
-class NameReducer(BaseReducer):
+# In ``pinned``, beside the arguments: the value tried for a configuration unset where it
+# is read, and whether a guard without a model holds (z3 takes each as free, by name).
+UNSET_KEY = "unset:"
+OPAQUE_KEY = "opaque:"
+_Inputs = tuple[frozenset[str], frozenset[str], frozenset[str], frozenset[str]]
+
+
+class SearchReducer(BaseReducer):
+    """``BaseReducer``, where unset configurations and opaque guards may be given values."""
+
+    def __init__(self, pinned: dict[str, str]) -> None:
+        super().__init__(pinned)
+        self._dispatch[Unset] = self._unset
+
+    def _unset(self, sub: s.Sub) -> s.Sub:
+        assert isinstance(sub, Unset)
+        value = self.pinned.get(UNSET_KEY + sub.name)
+        return sub if value is None else s.Text(value)
+
+    def guard(self, guard: Guard) -> bool | None:
+        if isinstance(guard, Opaque):
+            value = self.pinned.get(OPAQUE_KEY + guard.description)
+            return None if value is None else value == "true"
+        return super().guard(guard)
+
+
+class NameReducer(SearchReducer):
     """The base view of a ROS name, where z3 would see a fixed unknown: a fixed text.
 
     Inside a name, ``Encoder.name`` turns what it cannot model (an unknown, an argument
@@ -164,8 +213,16 @@ def inputs_of(item: Guard | s.Sub) -> tuple[frozenset[str], frozenset[str]]:
     Each shared part is visited once; a ``Select``'s guards count, as its encoding reads
     them.
     """
+    names, literals, _, _ = _inputs_of(item)
+    return names, literals
+
+
+def _inputs_of(item: Guard | s.Sub) -> _Inputs:
+    """Return ``inputs_of(item)``, the configurations read unset and the opaque guards."""
     names: set[str] = set()
     literals: set[str] = set()
+    unset: set[str] = set()
+    opaque: set[str] = set()
     seen: set[int] = set()
     stack: list[object] = [item]
     while stack:
@@ -180,12 +237,16 @@ def inputs_of(item: Guard | s.Sub) -> tuple[frozenset[str], frozenset[str]]:
         elif isinstance(current, s.Sub):
             if isinstance(current, Arg):
                 names.add(current.name)
-            elif isinstance(current, s.Text) and len(current.text) <= 20:
+            elif isinstance(current, Unset):
+                unset.add(current.name)
+            elif isinstance(current, s.Text) and len(current.text) <= MAX_SCANNED_TEXT:
                 literals.update(_words(current.text))
             elif isinstance(current, Select):
                 stack.extend(current.guards)
             stack.extend(current.children())
-    return frozenset(names), frozenset(literals)
+        elif isinstance(current, Opaque):
+            opaque.add(current.description)
+    return frozenset(names), frozenset(literals), frozenset(unset), frozenset(opaque)
 
 
 def holds(reducer: BaseReducer, guard: Guard) -> bool | None:
@@ -196,9 +257,7 @@ def holds(reducer: BaseReducer, guard: Guard) -> bool | None:
             return None
         value = text.strip().lower()
         return value in (CONDITION_FALSE if guard.negate else CONDITION_TRUE)
-    if isinstance(guard, StrEquals):
-        return reducer.guard(guard)
-    return None
+    return reducer.guard(guard)
 
 
 def all_hold(reducer: BaseReducer, guards: Iterable[Guard]) -> bool | None:
@@ -219,15 +278,34 @@ def _words(text: str) -> Iterator[str]:
     Those are the quoted words inside it (``r2`` in ``' == 'r2'``) and its numbers with
     their successors (``40`` and ``41`` in ``' >= 40'``).
     """
-    if not any(c.isspace() for c in text):
+    if len(text) <= MAX_WORD and not any(c.isspace() for c in text):
         yield text
-    for index, piece in enumerate(text.split("'")):
-        if index % 2 == 1:
+    # A literal between substitutions may start inside quotes or outside them
+    # (``' == 'r2'`` closes one first): every quoted-off piece that looks like a value.
+    for piece in _QUOTES.split(text):
+        if len(piece) <= MAX_WORD and _VALUE.fullmatch(piece):
             yield piece
     for number in _NUMBER.findall(text):
         yield number
         yield str(int(number) + 1)
         yield str(max(int(number) - 1, 0))
+
+
+def _nearest_first(choices: list[tuple[str, tuple[str, ...]]]) -> Iterator[dict[str, str]]:
+    """Yield every assignment, those changing fewer arguments from their first value first.
+
+    Where the whole product is too long to try, a condition that can hold usually does
+    with one or two arguments changed: those are tried before the budget runs out.
+    """
+    names = [name for name, _ in choices]
+    first = {name: values[0] for name, values in choices}
+    for count in range(len(choices) + 1):
+        for changed in itertools.combinations(range(len(choices)), count):
+            others = [choices[i][1][1:] for i in changed]
+            for values in itertools.product(*others):
+                assignment = dict(first)
+                assignment.update((names[i], v) for i, v in zip(changed, values, strict=True))
+                yield assignment
 
 
 def _product(choices: list[tuple[str, tuple[str, ...]]]) -> Iterator[dict[str, str]]:

@@ -1,0 +1,153 @@
+"""The reasoner's concrete search answers as z3 would, only sooner.
+
+Each question is settled by the search when it can (``smt.search``) and goes to z3
+otherwise. These tests generate small launch files mixing switches, choices, arguments
+without default, environment variables, command output, configurations read unset and
+guards without a model, and check that whenever the search settles a question, z3 asked
+the same question says the same: a collision or a way to hold together exists for both
+or for neither, a condition never or always holds for both or for neither.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+from xml.sax.saxutils import quoteattr
+
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from launchverify.evaluate.runner import evaluate
+from launchverify.graph import LaunchGraph
+from launchverify.smt import reasoner_for
+from launchverify.smt.search import _nearest_first, _words
+from launchverify.workspace.packages import PackageIndex
+
+HEADER = """<launch>
+  <arg name="sim" default="false"/>
+  <arg name="mode" default="a">
+    <choice value="a"/><choice value="b"/><choice value="c"/>
+  </arg>
+  <arg name="ns" default="r1"/>
+  <arg name="robot"/>
+"""
+
+NAMESPACES = ["", "$(var ns)", "$(var robot)", "$(env ROBOT_NS)", "$(command 'hostname')",
+              "$(var mode)", "fixed", "$(var undeclared)"]
+CONDITIONS = [None, "$(var sim)", "$(not $(var sim))", "$(equals $(var mode) a)",
+              "$(equals $(var mode) b)", "$(var robot)", "$(env USE_X)",
+              "$(eval '\"$(var mode)\" == \"c\"')", "$(var undeclared)",
+              "$(eval \"'$(var robot)' == 'scout'\")"]
+
+nodes = st.lists(st.tuples(st.sampled_from(["cam", "lidar"]), st.sampled_from(NAMESPACES),
+                           st.sampled_from(CONDITIONS)), min_size=2, max_size=4)
+
+
+def launch_text(entries: list[tuple[str, str, str | None]]) -> str:
+    lines = [HEADER]
+    for name, namespace, condition in entries:
+        guard = "" if condition is None else f" if={quoteattr(condition)}"
+        lines.append(f'  <node pkg="p" exec="e" name="{name}" namespace={quoteattr(namespace)}'
+                     f"{guard}/>")
+    lines.append("</launch>\n")
+    return "\n".join(lines)
+
+
+def graph_of(folder: Path, entries: list[tuple[str, str, str | None]]) -> LaunchGraph:
+    path = folder / "gen.launch.xml"
+    path.write_text(launch_text(entries))
+    graph = evaluate(path, index=PackageIndex(), workspace=folder)
+    assert len(graph.nodes) == len(entries), graph.problems
+    return graph
+
+
+def settled(graph: LaunchGraph, question: str, *args: Any) -> tuple[Any, Any] | None:
+    """Return (search's answer, z3's) when the search settles the question alone."""
+    reasoner = reasoner_for(graph)
+    before = reasoner.queries
+    answer = getattr(reasoner, question)(*args)
+    if reasoner.queries != before:
+        return None  # z3 was asked: nothing to compare
+    return answer, getattr(reasoner.z3, question)(*args)
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow,
+                                                                  HealthCheck.function_scoped_fixture])
+@given(entries=nodes)
+def test_the_search_agrees_with_z3(tmp_path: Path, entries: list[tuple[str, str, str | None]]
+                                   ) -> None:
+    graph = graph_of(tmp_path, entries)
+    named = [n for n in graph.nodes if n.fqn is not None]
+    for i, first in enumerate(named):
+        for second in named[i + 1:]:
+            both = settled(graph, "same_name", first.fqn, first.origin.path, second.fqn,
+                           second.origin.path)
+            if both is not None:
+                assert (both[0] is None) == (both[1] is None), (first.fqn, second.fqn)
+            paths = (first.origin.path, second.origin.path)
+            reasoner = reasoner_for(graph)
+            before = reasoner.queries
+            search = reasoner.together(*paths)
+            if reasoner.queries == before:
+                merged = tuple(dict.fromkeys(g for p in paths for g in p))
+                assert (search is None) == (reasoner.z3.together((merged,)) is None), paths
+        for guard in first.origin.path:
+            rest = tuple(g for g in first.origin.path if g is not guard)
+            both = settled(graph, "always", rest, guard)
+            if both is not None:
+                assert both[0] == both[1], (rest, guard)
+
+
+def test_names_with_unknowns_are_compared_without_z3(tmp_path: Path) -> None:
+    """Two nodes named after a command's output under exclusive modes: no collision."""
+    graph = graph_of(tmp_path, [
+        ("cam", "$(command 'hostname')", "$(equals $(var mode) a)"),
+        ("cam", "$(command 'hostname')", "$(equals $(var mode) b)"),
+        ("cam", "$(env ROBOT_NS)", "$(equals $(var mode) c)"),
+        ("cam", "$(env ROBOT_NS)", "$(var sim)"),
+    ])
+    reasoner = reasoner_for(graph)
+    first, second, third, fourth = graph.nodes
+    assert reasoner.same_name(first.fqn, first.origin.path, second.fqn, second.origin.path) \
+        is None
+    found = reasoner.same_name(third.fqn, third.origin.path, fourth.fqn, fourth.origin.path)
+    assert found is not None and found[0].values == {"mode": "c", "sim": "true"}
+    assert reasoner.queries == 0
+
+
+def test_a_required_argument_does_not_keep_a_settled_question_open(tmp_path: Path) -> None:
+    """``$(var robot)`` has no default, but the modes alone keep the nodes apart."""
+    graph = graph_of(tmp_path, [
+        ("cam", "$(var robot)", "$(equals $(var mode) a)"),
+        ("cam", "$(var robot)", "$(equals $(var mode) b)"),
+    ])
+    first, second = graph.nodes
+    reasoner = reasoner_for(graph)
+    assert reasoner.together(first.origin.path, second.origin.path) is None
+    assert reasoner.queries == 0
+
+
+def test_literals_suggest_the_values_they_compare_with() -> None:
+    """A literal between substitutions may start inside quotes (``' == 'r2'``)."""
+    assert list(_words("' == 'r2'")) == ["r2"]
+    assert "obstacle_cruise_planner" in set(_words("' == 'obstacle_cruise_planner'"))
+    assert list(_words("' >= 40")) == ["40", "41", "39"]
+
+
+def test_a_long_product_tries_few_changes_first() -> None:
+    choices = [(f"a{i}", ("x", "y", "z")) for i in range(6)]
+    tried = list(_nearest_first(choices))
+    assert len(tried) == 3 ** 6 and len({tuple(t.items()) for t in tried}) == 3 ** 6
+    assert tried[0] == {f"a{i}": "x" for i in range(6)}
+    assert all(sum(v != "x" for v in t.values()) == 1 for t in tried[1:13])
+
+
+def test_a_condition_read_unset_can_hold(tmp_path: Path) -> None:
+    """z3 takes an unset configuration as any string; so does the search, for "can"."""
+    graph = graph_of(tmp_path, [("cam", "", "$(eval \"'$(var undeclared)' == 'yes'\")")])
+    (node,) = graph.nodes
+    reasoner = reasoner_for(graph)
+    (guard,) = node.origin.path
+    assert reasoner.never((), guard) is None
+    assert reasoner.always((), guard) is False
+    assert reasoner.queries == 0
