@@ -32,6 +32,7 @@ from launchverify.findings.cache import (
 )
 from launchverify.findings.fixes import within
 from launchverify.findings.suppressions import apply_suppressions
+from launchverify.forked import Background
 from launchverify.frontends import launch_format
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
@@ -215,11 +216,20 @@ def run_check(options: CheckOptions) -> Report:
     config = options.config
     tree = ConfigTree(config, nested=options.nested_configs)
     workspace, index = build_index(options.paths, options.workspace, config.package_paths)
-    includers = Includers.of_workspace(index.workspaces)
     if options.affected:  # pre-commit: what the changed files may break, or nothing
-        found = affected_launch_files(options.paths, includers)
-    else:
-        found = discover(options.paths, filter_files=options.launch_files_only)
+        includers = Includers.of_workspace(index.workspaces)
+        return _check_files(options, tree, workspace, index, lambda: includers, started,
+                            affected_launch_files(options.paths, includers))
+    with Background(partial(Includers.of_workspace, index.workspaces)) as scan:
+        return _check_files(options, tree, workspace, index, scan.result, started,
+                            discover(options.paths, filter_files=options.launch_files_only))
+
+
+def _check_files(options: CheckOptions, tree: ConfigTree, workspace: Path,
+                 index: PackageIndex, includers_of: Callable[[], Includers], started: float,
+                 found: list[Path]) -> Report:
+    """Check the launch files found (the workspace's includers may be read meanwhile)."""
+    config = options.config
     if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
         given = ", ".join(str(p) for p in options.paths)
         raise UsageError(f"no launch files found in {given}")
@@ -247,6 +257,7 @@ def run_check(options: CheckOptions) -> Report:
                 options.progress(done + 1, len(files))
         python_files, protections = python.evaluated, python.protections
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
+    includers = includers_of()
     for graph in graphs:
         graph.included_elsewhere = graph.root in included or includers.included(graph.root)
     with distros.checking(options.distro):  # rules judge for it too (lifecycle labels)

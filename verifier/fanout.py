@@ -15,15 +15,13 @@ runs here.
 
 from __future__ import annotations
 
-import os
-import sys
-import threading
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from launchverify.forked import can_fork
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
 from launchverify.rule import Finding, Rule, RuleContext
@@ -118,7 +116,7 @@ def _queries(graphs: list[LaunchGraph]) -> dict[int, int]:
 def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
     """Return every rule's findings in every graph, computed by up to ``jobs`` processes."""
     everything = list(range(len(run.graphs)))
-    if jobs < 2 or len(run.graphs) < 2 or not _can_fork() or _work(run.graphs) < MIN_WORK:
+    if jobs < 2 or len(run.graphs) < 2 or not can_fork() or _work(run.graphs) < MIN_WORK:
         return run.run(list(range(len(run.rules))), everything)
     gathering = [r for r, rule in enumerate(run.rules) if rule.finish is not Rule.finish]
     shares = plan(run, jobs, exclude=gathering)
@@ -185,12 +183,3 @@ def _work(graphs: list[LaunchGraph]) -> int:
     """Return a rough measure of what the rules will do in these graphs."""
     return sum(len(g.nodes) + len(g.conditions) + len(g.includes) + len(g.reads) + 1
                for g in graphs)
-
-
-def _can_fork() -> bool:
-    """Return whether forking is possible and safe here (POSIX, and no other thread).
-
-    (macOS can fork, but its system libraries are not safe across a fork: not there.)
-    """
-    return (hasattr(os, "fork") and sys.platform != "darwin"
-            and threading.active_count() == 1)
