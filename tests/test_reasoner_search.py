@@ -20,6 +20,7 @@ from hypothesis import strategies as st
 from launchverify.evaluate.runner import evaluate
 from launchverify.graph import LaunchGraph
 from launchverify.smt import reasoner_for
+from launchverify.smt.domains import Mode
 from launchverify.smt.search import _nearest_first, _words
 from launchverify.workspace.packages import PackageIndex
 
@@ -37,7 +38,8 @@ NAMESPACES = ["", "$(var ns)", "$(var robot)", "$(env ROBOT_NS)", "$(command 'ho
 CONDITIONS = [None, "$(var sim)", "$(not $(var sim))", "$(equals $(var mode) a)",
               "$(equals $(var mode) b)", "$(var robot)", "$(env USE_X)",
               "$(eval '\"$(var mode)\" == \"c\"')", "$(var undeclared)",
-              "$(eval \"'$(var robot)' == 'scout'\")"]
+              "$(eval \"'$(var robot)' == 'scout'\")", "$(command 'probe')",
+              "$(not $(command 'probe'))", "$(find-exec lidar_driver)"]
 
 nodes = st.lists(st.tuples(st.sampled_from(["cam", "lidar"]), st.sampled_from(NAMESPACES),
                            st.sampled_from(CONDITIONS)), min_size=2, max_size=4)
@@ -151,3 +153,11 @@ def test_a_condition_read_unset_can_hold(tmp_path: Path) -> None:
     assert reasoner.never((), guard) is None
     assert reasoner.always((), guard) is False
     assert reasoner.queries == 0
+
+
+def test_the_search_knows_what_z3_models() -> None:
+    """A value the encoder does not model is a free string to z3: the search agrees."""
+    from launchverify.smt.encode import Encoder
+    from launchverify.smt.search import _ENCODED
+
+    assert set(Encoder({}, Mode.ANY)._dispatch) == set(_ENCODED)

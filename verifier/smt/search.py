@@ -20,9 +20,9 @@ from launchverify.evaluate.values import BaseReducer
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import (
     Arg,
-    CommandOutput,
     EnvInput,
     Guard,
+    NsPrefix,
     Opaque,
     Select,
     StrEquals,
@@ -76,14 +76,19 @@ class Search:
         literals: set[str] = set()
         unset: set[str] = set()
         opaque: set[str] = set()
+        whole: set[str] = set()
+        nested: set[str] = set()
         for item in items:
-            found_names, found_literals, found_unset, found_opaque = self._inputs(item)
-            names |= found_names
-            literals |= found_literals
-            unset |= found_unset
-            opaque |= found_opaque
+            found = self._inputs(item)
+            names |= found.names
+            literals |= found.literals
+            unset |= found.unset
+            opaque |= found.opaque
+            whole |= found.whole
+            nested |= found.nested
         choices = self.candidates(sorted(names), mode, literals)
         choices += [(OPAQUE_KEY + d, ("true", "false")) for d in sorted(opaque)]
+        choices += [(FREE_KEY + label, CLASSES) for label in sorted(whole - nested)]
         if mode is Mode.ANY:
             choices += self.unset_candidates(sorted(unset), literals)
         whole = math.prod(len(values) for _, values in choices) <= MAX_ASSIGNMENTS
@@ -137,7 +142,7 @@ class Search:
         return [(UNSET_KEY + name, values) for name in names]
 
     def _inputs(self, item: Guard | s.Sub) -> _Inputs:
-        """Return ``inputs_of(item)``, its unset reads and opaque guards, remembered."""
+        """Return what ``run`` varies for an item (``_inputs_of``), remembered per item."""
         key = id(item)
         known = self._names.get(key)
         if known is None:
@@ -147,10 +152,39 @@ class Search:
 
 
 # In ``pinned``, beside the arguments: the value tried for a configuration unset where it
-# is read, and whether a guard without a model holds (z3 takes each as free, by name).
+# is read, whether a guard without a model holds, and the value of a condition that is a
+# value without a model (z3 takes each as free, by name).
 UNSET_KEY = "unset:"
 OPAQUE_KEY = "opaque:"
-_Inputs = tuple[frozenset[str], frozenset[str], frozenset[str], frozenset[str]]
+FREE_KEY = "free:"
+# A value without a model that is only ever read as a whole condition matters only as
+# true or false: one of each settles whether guards hold (a value that is neither makes
+# every guard reading it fail, as one of the two already does).
+CLASSES = ("true", "false")
+# What ``Encoder`` models; any other value is a free string to z3, named after its text.
+_ENCODED = frozenset({
+    s.Text, s.Concat, Arg, EnvInput, Select, NsPrefix, s.PythonExpr, s.EqualsSub,
+    s.NotEqualsSub, s.NotSub, s.AndSub, s.OrSub, s.AnySub, s.AllSub, s.IfElse, s.AsBool,
+    s.PathJoin, s.StringJoin})
+
+
+@dataclass(frozen=True)
+class _Inputs:
+    """What a question's item reads that a search may vary."""
+
+    names: frozenset[str]  # launch arguments
+    literals: frozenset[str]  # short texts worth trying as their values
+    unset: frozenset[str]  # configurations read unset
+    opaque: frozenset[str]  # guards without a model
+    whole: frozenset[str]  # values without a model read as a whole condition...
+    nested: frozenset[str]  # ...and those read inside another value
+
+
+def free_label(sub: s.Sub) -> str | None:
+    """Return the name z3 gives a value it does not model (``None``: it models it)."""
+    if type(sub) in _ENCODED:
+        return None
+    return f"<{sub.reason}>" if isinstance(sub, Unknown) else sub.describe()
 
 
 class SearchReducer(BaseReducer):
@@ -169,7 +203,18 @@ class SearchReducer(BaseReducer):
         if isinstance(guard, Opaque):
             value = self.pinned.get(OPAQUE_KEY + guard.description)
             return None if value is None else value == "true"
+        if isinstance(guard, Truthy) and (text := self.condition_text(guard)) is not None:
+            return text.strip().lower() in (CONDITION_FALSE if guard.negate else CONDITION_TRUE)
         return super().guard(guard)
+
+    def condition_text(self, guard: Truthy) -> str | None:
+        """Return a condition's text: the value tried for it when it has no model."""
+        label = free_label(guard.expression)
+        if label is not None:
+            value = self.pinned.get(FREE_KEY + label)
+            if value is not None:
+                return value
+        return self.text(guard.expression)
 
 
 class NameReducer(SearchReducer):
@@ -183,10 +228,14 @@ class NameReducer(SearchReducer):
     names: their unknowns are free, so they stay with ``BaseReducer``.
     """
 
-    def __init__(self, pinned: dict[str, str]) -> None:
-        super().__init__(pinned)
-        for kind in (Unknown, CommandOutput, Unset):
-            self._dispatch[kind] = _sentinel
+    def reduce(self, sub: s.Sub) -> s.Sub:
+        label = free_label(sub)
+        if label is not None:
+            return s.Text(SENTINEL.format(label))
+        return super().reduce(sub)
+
+    def condition_text(self, guard: Truthy) -> str | None:
+        return self.text(guard.expression)  # a value without a model: its sentinel
 
     def arg(self, sub: Arg) -> s.Sub:
         if sub.name not in self.pinned and sub.default is None:
@@ -202,27 +251,24 @@ class NameReducer(SearchReducer):
 SENTINEL = "\x01{}\x01"  # as ``Encoder._sentinel`` writes one
 
 
-def _sentinel(sub: s.Sub) -> s.Sub:
-    label = f"<{sub.reason}>" if isinstance(sub, Unknown) else sub.describe()
-    return s.Text(SENTINEL.format(label))
-
-
 def inputs_of(item: Guard | s.Sub) -> tuple[frozenset[str], frozenset[str]]:
     """Return the argument names and short literals an expression or guard holds.
 
     Each shared part is visited once; a ``Select``'s guards count, as its encoding reads
     them.
     """
-    names, literals, _, _ = _inputs_of(item)
-    return names, literals
+    found = _inputs_of(item)
+    return found.names, found.literals
 
 
 def _inputs_of(item: Guard | s.Sub) -> _Inputs:
-    """Return ``inputs_of(item)``, the configurations read unset and the opaque guards."""
+    """Return everything a search may vary for an item (each shared part visited once)."""
     names: set[str] = set()
     literals: set[str] = set()
     unset: set[str] = set()
     opaque: set[str] = set()
+    whole: set[str] = set()
+    nested: set[str] = set()
     seen: set[int] = set()
     stack: list[object] = [item]
     while stack:
@@ -231,10 +277,16 @@ def _inputs_of(item: Guard | s.Sub) -> _Inputs:
             continue
         seen.add(id(current))
         if isinstance(current, Truthy):
-            stack.append(current.expression)
+            label = free_label(current.expression)
+            if label is None:
+                stack.append(current.expression)
+            else:
+                whole.add(label)
         elif isinstance(current, StrEquals):
             stack.extend(x for x in (current.left, current.right) if x is not None)
         elif isinstance(current, s.Sub):
+            if (label := free_label(current)) is not None:
+                nested.add(label)
             if isinstance(current, Arg):
                 names.add(current.name)
             elif isinstance(current, Unset):
@@ -246,13 +298,15 @@ def _inputs_of(item: Guard | s.Sub) -> _Inputs:
             stack.extend(current.children())
         elif isinstance(current, Opaque):
             opaque.add(current.description)
-    return frozenset(names), frozenset(literals), frozenset(unset), frozenset(opaque)
+    return _Inputs(frozenset(names), frozenset(literals), frozenset(unset), frozenset(opaque),
+                   frozenset(whole), frozenset(nested))
 
 
 def holds(reducer: BaseReducer, guard: Guard) -> bool | None:
     """Return whether a guard holds under a reducer's assignment (``None``: unknown)."""
     if isinstance(guard, Truthy):
-        text = reducer.text(guard.expression)
+        text = (reducer.condition_text(guard) if isinstance(reducer, SearchReducer)
+                else reducer.text(guard.expression))
         if text is None:
             return None
         value = text.strip().lower()
