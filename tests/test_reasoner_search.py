@@ -161,3 +161,26 @@ def test_the_search_knows_what_z3_models() -> None:
     from launchverify.smt.search import _ENCODED
 
     assert set(Encoder({}, Mode.ANY)._dispatch) == set(_ENCODED)
+
+
+def test_a_boolean_condition_is_valid_whatever_its_path(tmp_path: Path) -> None:
+    """The path reads an argument without default; the condition's value settles it."""
+    path = tmp_path / "nested.launch.xml"
+    path.write_text("""<launch>
+  <arg name="sim" default="false"/>
+  <arg name="robot"/>
+  <group if="$(var robot)">
+    <node pkg="p" exec="e" name="cam" if="$(var sim)"/>
+    <node pkg="p" exec="e" name="lidar" namespace="$(var sim)"/>
+    <node pkg="p" exec="e" name="lidar" namespace="real"/>
+  </group>
+</launch>
+""")
+    graph = evaluate(path, index=PackageIndex(), workspace=tmp_path)
+    cam, first, second = graph.nodes
+    reasoner = reasoner_for(graph)
+    outer, inner = cam.origin.path
+    assert reasoner.invalid_value((outer,), inner) is None
+    assert reasoner.same_name(first.fqn, first.origin.path, second.fqn, second.origin.path) \
+        is None  # /false/lidar or /true/lidar, never /real/lidar
+    assert reasoner.queries == 0

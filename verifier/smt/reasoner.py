@@ -123,13 +123,15 @@ class Reasoner:
         guards = (*first_path, *second_path)
 
         def same(reducer: BaseReducer) -> bool | None:
+            left, right = self.search.names.text(first), self.search.names.text(second)
+            if left is not None and right is not None and left != right:
+                return False  # whether the paths hold or not
             paths = all_hold(reducer, guards)
             if paths is False:
                 return False
-            left, right = self.search.names.text(first), self.search.names.text(second)
             if left is None or right is None or paths is None:
                 return None
-            return left == right
+            return True
 
         tried = self.search.run(Mode.SWITCHES, [*guards, first, second], same)
         if tried.found is not None and tried.reducer is not None:
@@ -189,13 +191,15 @@ class Reasoner:
             return self._invalid[key]
 
         def invalid(reducer: BaseReducer) -> bool | None:
+            text = reducer.text(guard.expression)
+            if text is not None and text.strip().lower() in CONDITION_TRUE + CONDITION_FALSE:
+                return False  # a boolean, whether the path holds or not
             inside = all_hold(reducer, path)
             if inside is False:
                 return False
-            text = reducer.text(guard.expression)
             if text is None or inside is None:
                 return None
-            return text.strip().lower() not in CONDITION_TRUE + CONDITION_FALSE
+            return True
 
         tried = self.search.run(Mode.SWITCHES, (*path, guard), invalid)
         if tried.found is not None and tried.reducer is not None:
