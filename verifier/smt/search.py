@@ -59,7 +59,7 @@ class Search:
         self.pinned = pinned
         self._reducer = SearchReducer(dict(pinned))  # reused: its pinned values change
         self.names = NameReducer(self._reducer.pinned)  # names, under the same assignment
-        self._names: dict[int, tuple[frozenset[str], frozenset[str], frozenset[str]]] = {}
+        self._names: dict[int, _Inputs] = {}
         self._keep: list[object] = []
 
     def run(self, mode: Mode, items: Iterable[Guard | s.Sub],
@@ -89,13 +89,24 @@ class Search:
         choices = self.candidates(sorted(names), mode, literals)
         choices += [(OPAQUE_KEY + d, ("true", "false")) for d in sorted(opaque)]
         choices += [(FREE_KEY + label, CLASSES) for label in sorted(whole - nested)]
-        if mode is Mode.ANY:
-            choices += self.unset_candidates(sorted(unset), literals)
+        complete = mode is Mode.SWITCHES or all(self.finite(name) for name in names)
+        outcome = self._try(mode, choices, predicate, complete)
+        if outcome.found is None and not outcome.exhaustive and unset:
+            # A configuration unset where it is read is any string to z3: trying a few
+            # may find what can happen, never prove that nothing can.
+            tried = self._try(mode, choices + self.unset_candidates(sorted(unset), literals),
+                              predicate, complete=False)
+            if tried.found is not None:
+                return tried
+        return outcome
+
+    def _try(self, mode: Mode, choices: list[tuple[str, tuple[str, ...]]],
+             predicate: Callable[[BaseReducer], bool | None], complete: bool) -> Outcome:
+        """Try the assignments of ``choices``; ``complete``: they cover every value."""
         whole = math.prod(len(values) for _, values in choices) <= MAX_ASSIGNMENTS
         if not whole and mode is Mode.SWITCHES:
             return Outcome(None, None, exhaustive=False)  # z3 says whether one exists
-        exhaustive = mode is Mode.SWITCHES or (
-            whole and not unset and all(self.finite(name) for name in names))
+        exhaustive = whole and complete
         assignments = _product(choices) if whole else itertools.islice(
             _nearest_first(choices), MAX_ASSIGNMENTS)
         reducer = self._reducer
@@ -135,8 +146,8 @@ class Search:
                          ) -> list[tuple[str, tuple[str, ...]]]:
         """Return values to try for configurations unset where they are read.
 
-        Launch raises on reading one; z3 takes it as a free string, so whether a
-        condition *can* hold, the question asked over every value, may try some.
+        Launch raises on reading one; z3 takes it as a free string: the literals it is
+        compared with are the values worth trying.
         """
         values = tuple(dict.fromkeys(("true", "false", *sorted(literals))))[:MAX_CANDIDATES]
         return [(UNSET_KEY + name, values) for name in names]
