@@ -19,6 +19,7 @@ from hypothesis import strategies as st
 
 from launchverify.evaluate.runner import evaluate
 from launchverify.graph import LaunchGraph
+from launchverify.ir.symbolic import Truthy
 from launchverify.smt import reasoner_for
 from launchverify.smt.domains import Mode
 from launchverify.smt.search import _nearest_first, _words
@@ -35,7 +36,8 @@ HEADER = """<launch>
 
 NAMESPACES = ["", "$(var ns)", "$(var robot)", "$(env ROBOT_NS)", "$(command 'hostname')",
               "$(var mode)", "fixed", "$(var undeclared)"]
-CONDITIONS = [None, "$(var sim)", "$(not $(var sim))", "$(equals $(var mode) a)",
+CONDITIONS = [None, "$(var sim)", "$(var undeclared)_on", "$(var mode)", "$(not $(var sim))",
+              "$(equals $(var mode) a)",
               "$(equals $(var mode) b)", "$(var robot)", "$(env USE_X)",
               "$(eval '\"$(var mode)\" == \"c\"')", "$(var undeclared)",
               "$(eval \"'$(var robot)' == 'scout'\")", "$(command 'probe')",
@@ -98,6 +100,10 @@ def test_the_search_agrees_with_z3(tmp_path: Path, entries: list[tuple[str, str,
             both = settled(graph, "always", rest, guard)
             if both is not None:
                 assert both[0] == both[1], (rest, guard)
+            if isinstance(guard, Truthy):
+                both = settled(graph, "invalid_value", rest, guard)
+                if both is not None:
+                    assert (both[0] is None) == (both[1] is None), (rest, guard)
 
 
 def test_names_with_unknowns_are_compared_without_z3(tmp_path: Path) -> None:
@@ -184,3 +190,11 @@ def test_a_boolean_condition_is_valid_whatever_its_path(tmp_path: Path) -> None:
     assert reasoner.same_name(first.fqn, first.origin.path, second.fqn, second.origin.path) \
         is None  # /false/lidar or /true/lidar, never /real/lidar
     assert reasoner.queries == 0
+
+
+def test_no_invalid_value_is_guessed_for_a_configuration_read_unset(tmp_path: Path) -> None:
+    """z3 judges no value that reads an unset configuration: neither does the search."""
+    graph = graph_of(tmp_path, [("cam", "", "$(var undeclared)_on")])
+    (node,) = graph.nodes
+    (guard,) = node.origin.path
+    assert reasoner_for(graph).invalid_value((), guard) is None

@@ -201,7 +201,7 @@ class Reasoner:
                 return None
             return True
 
-        tried = self.search.run(Mode.SWITCHES, (*path, guard), invalid)
+        tried = self.search.run(Mode.SWITCHES, (*path, guard), invalid, guess_unset=False)
         if tried.found is not None and tried.reducer is not None:
             value = tried.reducer.text(guard.expression) or ""
             self._invalid[key] = (value, self._tried(tried.found) or Witness())

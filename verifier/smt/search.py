@@ -6,6 +6,13 @@ values of the arguments a question depends on (their domain when it is finite, e
 telling candidates) and evaluates with ``BaseReducer``, exactly as the base view does. It
 answers "found", or "none exists" when the enumeration covered every value; otherwise the
 reasoner asks z3. Nothing here imports z3.
+
+Its answers must be z3's, so what z3 cannot model is treated as z3 treats it
+(``smt/encode.py``): a free value, named after its text, outside names (a guard without
+a model is a boolean tried both ways, a value without a model read as a whole condition
+is tried as true and as false, a configuration read unset takes a few telling values);
+a fixed sentinel inside names (``NameReducer``). ``tests/test_reasoner_search.py``
+checks that the two agree.
 """
 
 from __future__ import annotations
@@ -63,8 +70,12 @@ class Search:
         self._keep: list[object] = []
 
     def run(self, mode: Mode, items: Iterable[Guard | s.Sub],
-            predicate: Callable[[BaseReducer], bool | None]) -> Outcome:
+            predicate: Callable[[BaseReducer], bool | None], *,
+            guess_unset: bool = True) -> Outcome:
         """Look for an assignment where ``predicate`` is true.
+
+        ``guess_unset``: whether configurations read unset may be given values (z3 does
+        as much for whether conditions hold, but judges no value that reads one).
 
         Over the switches, the enumeration covers each switch's values; every other
         argument keeps its default, or has none and stays symbolic. A verdict the
@@ -91,7 +102,7 @@ class Search:
         choices += [(FREE_KEY + label, CLASSES) for label in sorted(whole - nested)]
         complete = mode is Mode.SWITCHES or all(self.finite(name) for name in names)
         outcome = self._try(mode, choices, predicate, complete)
-        if outcome.found is None and not outcome.exhaustive and unset:
+        if outcome.found is None and not outcome.exhaustive and unset and guess_unset:
             # A configuration unset where it is read is any string to z3: trying a few
             # may find what can happen, never prove that nothing can.
             tried = self._try(mode, choices + self.unset_candidates(sorted(unset), literals),
@@ -199,7 +210,11 @@ def free_label(sub: s.Sub) -> str | None:
 
 
 class SearchReducer(BaseReducer):
-    """``BaseReducer``, where unset configurations and opaque guards may be given values."""
+    """``BaseReducer``, where what z3 takes as free (see the module doc) is given values.
+
+    A condition's value that is not a boolean makes it fail, as z3's encoding has it
+    (``BaseReducer`` cannot tell, since launch would raise there: LV207 says so).
+    """
 
     def __init__(self, pinned: dict[str, str]) -> None:
         super().__init__(pinned)
@@ -235,8 +250,8 @@ class NameReducer(SearchReducer):
     that has no default and keeps none, an unset environment variable) into a sentinel,
     a constant equal only to itself. Reducing them to the same sentinels lets the search
     settle the name comparisons z3 would (most names of real trees hold an unknown: the
-    share folder of a package outside the workspace, a command's output). Guards are not
-    names: their unknowns are free, so they stay with ``BaseReducer``.
+    share folder of a package outside the workspace, a command's output). Outside names,
+    the same values are free (``SearchReducer``).
     """
 
     def reduce(self, sub: s.Sub) -> s.Sub:
