@@ -14,6 +14,12 @@ from launchverify.forked import Background
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
 
 
+@pytest.fixture(autouse=True)
+def _forking(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Fork even if an earlier test left a thread behind (these children take no lock)."""
+    monkeypatch.setattr(forked, "can_fork", lambda: True)
+
+
 def test_the_child_computes_the_answer() -> None:
     with Background(lambda: {"pid": os.getpid(), "names": frozenset({"a.launch.py"})}) as job:
         answer = job.result()
