@@ -15,6 +15,7 @@ this runs
 
     python bench/realrepos.py --corpus /tmp/lv-corpus \\
         --repo ros-navigation/navigation2 --repo autowarefoundation/autoware_launch
+    python bench/realrepos.py --corpus /tmp/lv-corpus --against /tmp/old/bin/launchverify
 
 The commit of each repository is printed from the corpus manifest, so figures can be
 compared between runs. Standard library only.
@@ -64,11 +65,21 @@ sys.exit(code)
 """
 
 
-def check_times(corpus: Path, folder: Path, repeat: int) -> dict[str, object]:
-    """Time cold and warm checks of one repository folder."""
-    base = [*launchverify(), "check", str(folder), "--workspace", str(corpus),
-            "--format", "json", "--exit-zero", "-q"]
-    cold = [timed([*base, "--no-cache"]) for _ in range(repeat)]
+def check_times(corpus: Path, folder: Path, repeat: int,
+                against: list[str] | None = None) -> dict[str, object]:
+    """Time cold and warm checks of one repository folder.
+
+    ``against``: another launchverify, whose cold checks alternate with ours round by
+    round, so that both see the machine in the same state.
+    """
+    arguments = ["check", str(folder), "--workspace", str(corpus),
+                 "--format", "json", "--exit-zero", "-q"]
+    base = [*launchverify(), *arguments]
+    cold, other = [], []
+    for _ in range(repeat):
+        cold.append(timed([*base, "--no-cache"]))
+        if against is not None:
+            other.append(timed([*against, *arguments, "--no-cache"]))
     cache = Path(tempfile.mkdtemp(prefix="lv-bench-cache-"))
     try:
         warm = []
@@ -83,6 +94,7 @@ def check_times(corpus: Path, folder: Path, repeat: int) -> dict[str, object]:
     return {
         "files": summary["files"],
         "cold": statistics.median(s for s, _ in cold),
+        "against": statistics.median(s for s, _ in other) if other else None,
         "warm": statistics.median(s for s, _ in warm),
         "peak_mb": max(m for _, m in cold),
     }
@@ -112,24 +124,29 @@ def main() -> int:
     parser.add_argument("--repo", action="append", metavar="OWNER/NAME",
                         help=f"a repository of the corpus (default: {', '.join(DEFAULT_REPOS)})")
     parser.add_argument("--repeat", type=int, default=3, help="runs per figure (median)")
+    parser.add_argument("--against", metavar="LAUNCHVERIFY",
+                        help="another launchverify executable (an older install) to time "
+                             "cold, alternating with this one")
     args = parser.parse_args()
+    against = [args.against] if args.against else None
     manifest = json.loads((args.corpus / "manifest.json").read_text())
     commits = {r.get("repo", r.get("name")): r.get("commit", "?")
                for r in manifest.get("repos", []) if isinstance(r, dict)}
     print(f"{'repository':<42} {'files':>5} {'cold s':>7} {'warm s':>7} {'peak MB':>7} "
-          f"{'oracle s':>8} {'ratio':>6}")
+          f"{'oracle s':>8} {'ratio':>6}" + (f" {'against s':>9}" if against else ""))
     for repo in args.repo or DEFAULT_REPOS:
         folder = args.corpus / repo.replace("/", "+")
         if not folder.is_dir():
             print(f"{repo}: not in the corpus", file=sys.stderr)
             continue
-        figures = check_times(args.corpus, folder, args.repeat)
+        figures = check_times(args.corpus, folder, args.repeat, against)
         oracle = oracle_seconds(args.corpus, repo)
         ratio = f"{oracle[0] / figures['cold']:.1f}x" if oracle else "-"
         print(f"{repo:<42} {figures['files']:>5} {figures['cold']:>7.2f} "
               f"{figures['warm']:>7.2f} {figures['peak_mb']:>7} "
               f"{(f'{oracle[0]:.1f}' if oracle else '-'):>8} {ratio:>6}"
-              f"   commit {str(commits.get(repo, '?'))[:12]}")
+              + (f" {figures['against']:>9.2f}" if against else "")
+              + f"   commit {str(commits.get(repo, '?'))[:12]}")
     return 0
 
 
