@@ -33,6 +33,9 @@ HEADER = """<launch>
   </arg>
   <arg name="ns" default="r1"/>
   <arg name="robot"/>
+  <arg name="side">
+    <choice value="left"/><choice value="right"/>
+  </arg>
 """
 
 NAMESPACES = ["", "$(var ns)", "$(var robot)", "$(env ROBOT_NS)", "$(command 'hostname')",
@@ -42,7 +45,8 @@ CONDITIONS = [None, "$(var sim)", "$(var undeclared)_on", "$(var mode)", "$(not 
               "$(equals $(var mode) b)", "$(var robot)", "$(env USE_X)",
               "$(eval '\"$(var mode)\" == \"c\"')", "$(var undeclared)",
               "$(eval \"'$(var robot)' == 'scout'\")", "$(command 'probe')",
-              "$(not $(command 'probe'))", "$(find-exec lidar_driver)"]
+              "$(not $(command 'probe'))", "$(find-exec lidar_driver)", "$(var side)",
+              "$(equals $(var side) left)"]
 
 # a condition is written ``if=`` or, with a leading "!", ``unless=``
 nodes = st.lists(st.tuples(st.sampled_from(["cam", "lidar"]), st.sampled_from(NAMESPACES),

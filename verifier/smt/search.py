@@ -99,7 +99,8 @@ class Search:
             nested |= found.nested
         choices = self.candidates(sorted(names), mode, literals)
         choices += [(OPAQUE_KEY + d, ("true", "false")) for d in sorted(opaque)]
-        choices += [(FREE_KEY + label, CLASSES) for label in sorted(whole - nested)]
+        choices += [(FREE_KEY + label, CLASSES) for label in sorted(whole - nested)
+                    if self._free(label, mode)]
         complete = mode is Mode.SWITCHES or all(self.finite(name) for name in names)
         outcome = self._try(mode, choices, predicate, complete)
         if outcome.found is None and not outcome.exhaustive and unset and guess_unset:
@@ -129,6 +130,18 @@ class Search:
             if verdict is None:
                 exhaustive = False
         return Outcome(None, None, exhaustive)
+
+    def _free(self, label: str, mode: Mode) -> bool:
+        """Return whether z3 takes a value read as a whole condition as a free string.
+
+        Values without a model always are; an argument without default is only over
+        the switches, when it is no switch and keeps no pinned value (``Encoder._arg``).
+        """
+        if not label.startswith(ARG_LABEL):
+            return True
+        domain = self.domains.get(label[len(ARG_LABEL):])
+        return mode is Mode.SWITCHES and (domain is None or (
+            not domain.switch and domain.pinned is None))
 
     def finite(self, name: str) -> bool:
         """Return whether the enumeration covers every value ``ros2 launch`` accepts."""
@@ -209,6 +222,16 @@ def free_label(sub: s.Sub) -> str | None:
     return f"<{sub.reason}>" if isinstance(sub, Unknown) else sub.describe()
 
 
+ARG_LABEL = "arg "  # an argument without default, named as z3 names it when it is free
+
+
+def condition_label(sub: s.Sub) -> str | None:
+    """Return ``free_label``, or the name of an argument without default (maybe free)."""
+    if isinstance(sub, Arg) and sub.default is None:
+        return ARG_LABEL + sub.name
+    return free_label(sub)
+
+
 class SearchReducer(BaseReducer):
     """``BaseReducer``, where what z3 takes as free (see the module doc) is given values.
 
@@ -235,7 +258,7 @@ class SearchReducer(BaseReducer):
 
     def condition_text(self, guard: Truthy) -> str | None:
         """Return a condition's text: the value tried for it when it has no model."""
-        label = free_label(guard.expression)
+        label = condition_label(guard.expression)
         if label is not None:
             value = self.pinned.get(FREE_KEY + label)
             if value is not None:
@@ -303,15 +326,17 @@ def _inputs_of(item: Guard | s.Sub) -> _Inputs:
             continue
         seen.add(id(current))
         if isinstance(current, Truthy):
-            label = free_label(current.expression)
+            label = condition_label(current.expression)
             if label is None:
                 stack.append(current.expression)
             else:
                 whole.add(label)
+                if isinstance(current.expression, Arg):
+                    names.add(current.expression.name)
         elif isinstance(current, StrEquals):
             stack.extend(x for x in (current.left, current.right) if x is not None)
         elif isinstance(current, s.Sub):
-            if (label := free_label(current)) is not None:
+            if (label := condition_label(current)) is not None:
                 nested.add(label)
             if isinstance(current, Arg):
                 names.add(current.name)
