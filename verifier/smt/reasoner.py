@@ -13,7 +13,6 @@ from __future__ import annotations
 import dataclasses
 from typing import TYPE_CHECKING
 
-from launchverify.evaluate.values import BaseReducer
 from launchverify.graph import LaunchGraph
 from launchverify.ir.subst import Opaque as s_Opaque
 from launchverify.ir.subst import Sub, walk
@@ -29,7 +28,7 @@ from launchverify.ir.symbolic import (
 )
 from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
 from launchverify.smt.domains import ArgumentDomain, Mode, argument_domains
-from launchverify.smt.search import Search, all_hold, holds
+from launchverify.smt.search import Search, SearchReducer, all_hold
 from launchverify.smt.types import Contradiction, Witness
 
 if TYPE_CHECKING:
@@ -122,7 +121,7 @@ class Reasoner:
             return self._names[key]
         guards = (*first_path, *second_path)
 
-        def same(reducer: BaseReducer) -> bool | None:
+        def same(reducer: SearchReducer) -> bool | None:
             left, right = self.search.names.text(first), self.search.names.text(second)
             if left is not None and right is not None and left != right:
                 return False  # whether the paths hold or not
@@ -172,9 +171,9 @@ class Reasoner:
             result = True  # the enclosing condition says the same
         else:
 
-            def refutes(reducer: BaseReducer) -> bool | None:
+            def refutes(reducer: SearchReducer) -> bool | None:
                 inside = all_hold(reducer, path)
-                verdict = holds(reducer, guard)
+                verdict = reducer.guard(guard)
                 if inside is False or verdict is True:
                     return False
                 return None if inside is None or verdict is None else True
@@ -190,7 +189,7 @@ class Reasoner:
         if key in self._invalid:
             return self._invalid[key]
 
-        def invalid(reducer: BaseReducer) -> bool | None:
+        def invalid(reducer: SearchReducer) -> bool | None:
             text = reducer.text(guard.expression)
             if text is not None and text.strip().lower() in CONDITION_TRUE + CONDITION_FALSE:
                 return False  # a boolean, whether the path holds or not

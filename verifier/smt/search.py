@@ -17,6 +17,7 @@ checks that the two agree.
 
 from __future__ import annotations
 
+import dataclasses
 import itertools
 import math
 import re
@@ -54,7 +55,7 @@ class Outcome:
     """What a search found: an assignment, or whether it covered every value."""
 
     found: dict[str, str] | None
-    reducer: BaseReducer | None  # set to ``found`` until the next search
+    reducer: SearchReducer | None  # set to ``found`` until the next search
     exhaustive: bool
 
 
@@ -66,11 +67,11 @@ class Search:
         self.pinned = pinned
         self._reducer = SearchReducer(dict(pinned))  # reused: its pinned values change
         self.names = NameReducer(self._reducer.pinned)  # names, under the same assignment
-        self._names: dict[int, _Inputs] = {}
+        self._memo: dict[int, _Inputs] = {}  # per item, by identity (``_keep``)
         self._keep: list[object] = []
 
     def run(self, mode: Mode, items: Iterable[Guard | s.Sub],
-            predicate: Callable[[BaseReducer], bool | None], *,
+            predicate: Callable[[SearchReducer], bool | None], *,
             guess_unset: bool = True) -> Outcome:
         """Look for an assignment where ``predicate`` is true.
 
@@ -83,37 +84,24 @@ class Search:
         reducer gives a text only when the value does not depend on what it could not
         reduce), so the search is exhaustive as long as no verdict was "cannot tell".
         """
-        names: set[str] = set()
-        literals: set[str] = set()
-        unset: set[str] = set()
-        opaque: set[str] = set()
-        whole: set[str] = set()
-        nested: set[str] = set()
-        for item in items:
-            found = self._inputs(item)
-            names |= found.names
-            literals |= found.literals
-            unset |= found.unset
-            opaque |= found.opaque
-            whole |= found.whole
-            nested |= found.nested
-        choices = self.candidates(sorted(names), mode, literals)
-        choices += [(OPAQUE_KEY + d, ("true", "false")) for d in sorted(opaque)]
-        choices += [(FREE_KEY + label, CLASSES) for label in sorted(whole - nested)
+        read = _Inputs.union(self._inputs(item) for item in items)
+        choices = self.candidates(sorted(read.names), mode, read.literals)
+        choices += [(OPAQUE_KEY + d, ("true", "false")) for d in sorted(read.opaque)]
+        choices += [(FREE_KEY + label, CLASSES) for label in sorted(read.whole - read.nested)
                     if self._free(label, mode)]
-        complete = mode is Mode.SWITCHES or all(self.finite(name) for name in names)
+        complete = mode is Mode.SWITCHES or all(self.finite(name) for name in read.names)
         outcome = self._try(mode, choices, predicate, complete)
-        if outcome.found is None and not outcome.exhaustive and unset and guess_unset:
+        if outcome.found is None and not outcome.exhaustive and read.unset and guess_unset:
             # A configuration unset where it is read is any string to z3: trying a few
             # may find what can happen, never prove that nothing can.
-            tried = self._try(mode, choices + self.unset_candidates(sorted(unset), literals),
-                              predicate, complete=False)
+            guesses = self.unset_candidates(sorted(read.unset), read.literals)
+            tried = self._try(mode, choices + guesses, predicate, complete=False)
             if tried.found is not None:
                 return tried
         return outcome
 
     def _try(self, mode: Mode, choices: list[tuple[str, tuple[str, ...]]],
-             predicate: Callable[[BaseReducer], bool | None], complete: bool) -> Outcome:
+             predicate: Callable[[SearchReducer], bool | None], complete: bool) -> Outcome:
         """Try the assignments of ``choices``; ``complete``: they cover every value."""
         whole = math.prod(len(values) for _, values in choices) <= MAX_ASSIGNMENTS
         if not whole and mode is Mode.SWITCHES:
@@ -149,7 +137,7 @@ class Search:
         return domain is not None and domain.values(Mode.ANY) is not None
 
     def candidates(self, names: list[str], mode: Mode,
-                   literals: set[str]) -> list[tuple[str, tuple[str, ...]]]:
+                   literals: frozenset[str]) -> list[tuple[str, tuple[str, ...]]]:
         """Return the values to try per argument."""
         out: list[tuple[str, tuple[str, ...]]] = []
         for name in names:
@@ -166,7 +154,7 @@ class Search:
             out.append((name, values))
         return out
 
-    def unset_candidates(self, names: list[str], literals: set[str]
+    def unset_candidates(self, names: list[str], literals: frozenset[str]
                          ) -> list[tuple[str, tuple[str, ...]]]:
         """Return values to try for configurations unset where they are read.
 
@@ -179,9 +167,9 @@ class Search:
     def _inputs(self, item: Guard | s.Sub) -> _Inputs:
         """Return what ``run`` varies for an item (``_inputs_of``), remembered per item."""
         key = id(item)
-        known = self._names.get(key)
+        known = self._memo.get(key)
         if known is None:
-            known = self._names[key] = _inputs_of(item)
+            known = self._memo[key] = _inputs_of(item)
             self._keep.append(item)
         return known
 
@@ -213,6 +201,16 @@ class _Inputs:
     opaque: frozenset[str]  # guards without a model
     whole: frozenset[str]  # values without a model read as a whole condition...
     nested: frozenset[str]  # ...and those read inside another value
+
+    @staticmethod
+    def union(parts: Iterable[_Inputs]) -> _Inputs:
+        """Return what several items read together."""
+        fields = [field.name for field in dataclasses.fields(_Inputs)]
+        merged: dict[str, set[str]] = {name: set() for name in fields}
+        for part in parts:
+            for name in fields:
+                merged[name] |= getattr(part, name)
+        return _Inputs(**{name: frozenset(values) for name, values in merged.items()})
 
 
 def free_label(sub: s.Sub) -> str | None:
@@ -353,23 +351,11 @@ def _inputs_of(item: Guard | s.Sub) -> _Inputs:
                    frozenset(whole), frozenset(nested))
 
 
-def holds(reducer: BaseReducer, guard: Guard) -> bool | None:
-    """Return whether a guard holds under a reducer's assignment (``None``: unknown)."""
-    if isinstance(guard, Truthy):
-        text = (reducer.condition_text(guard) if isinstance(reducer, SearchReducer)
-                else reducer.text(guard.expression))
-        if text is None:
-            return None
-        value = text.strip().lower()
-        return value in (CONDITION_FALSE if guard.negate else CONDITION_TRUE)
-    return reducer.guard(guard)
-
-
-def all_hold(reducer: BaseReducer, guards: Iterable[Guard]) -> bool | None:
+def all_hold(reducer: SearchReducer, guards: Iterable[Guard]) -> bool | None:
     """Return whether every guard holds (``False`` as soon as one surely does not)."""
     result: bool | None = True
     for guard in guards:
-        verdict = holds(reducer, guard)
+        verdict = reducer.guard(guard)
         if verdict is False:
             return False
         if verdict is None:
