@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -130,6 +132,32 @@ def test_version_and_module_entry_point() -> None:
                             capture_output=True, text=True, check=False)
     assert result.returncode == 0
     assert result.stdout.strip() == f"launchverify {__version__}"
+
+
+def test_the_command_flushes_everything_before_its_quick_exit(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """The command leaves without freeing its objects: what it printed must all be out."""
+    nodes = "".join(f'<node pkg="demo_nodes_cpp" exec="talker" name="twin" '
+                    f'namespace="/n{i // 2}"/>' for i in range(400))
+    launch = tmp_path / "many.launch.xml"
+    launch.write_text(f"<launch>{nodes}</launch>")
+    buffered = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}
+    code, out, _ = run(capsys, "check", str(launch), "--format", "json", "--no-cache")
+    done = subprocess.run([sys.executable, "-m", "launchverify", "check", str(launch),
+                           "--format", "json", "--no-cache"],
+                          capture_output=True, text=True, check=False, env=buffered)
+    assert done.returncode == code == 1
+    assert len(done.stdout) > 65536  # more than a pipe holds: written while we read
+    assert _without_times(json.loads(done.stdout)) == _without_times(json.loads(out))
+    code, out, _ = run(capsys, "rules")  # printed, never flushed by the command itself
+    done = subprocess.run([sys.executable, "-m", "launchverify", "rules"],
+                          capture_output=True, text=True, check=False, env=buffered)
+    assert (done.returncode, done.stdout) == (code, out)
+
+
+def _without_times(report: dict[str, Any]) -> dict[str, Any]:
+    return {**report, "summary": {k: v for k, v in report["summary"].items()
+                                  if k != "seconds"}}
 
 
 def test_checking_never_writes_into_the_tree(tmp_path: Path,

@@ -62,6 +62,20 @@ def test_records_shared_by_identity_stay_shared() -> None:
     assert isinstance(second, a.RegisterEventHandler) and second.handler.target is first
 
 
+def test_equal_places_are_sent_once() -> None:
+    """A loop's calls have equal spans (other objects): one record, then references."""
+    from launchverify.span import Span
+
+    actions = tuple(a.ExecuteProcess(span=Span(Path("/x.launch.py"), 3), cmd=())
+                    for _ in range(50))
+    launch = a.LaunchFile(path=Path("/x.launch.py"), format="python", actions=actions,
+                          span=Span(Path("/x.launch.py"), 1))
+    data = Encoder(lambda function: 0).encode(launch)
+    assert json.dumps(data).count('"Span"') == 2
+    first, second = _roundtrip(launch)
+    assert first == second == data  # actions compare by identity: compare what is sent
+
+
 SPAN = ["Span", ["#p", "/x"], 1, 1, None, None]
 MALFORMED = {
     "not a record": ["Popen", "rm -rf /"],

@@ -1,5 +1,5 @@
 """Allow ``python -m launchverify``."""
 
-from launchverify.cli import main
+from launchverify.cli import entry
 
-raise SystemExit(main())
+entry()

@@ -61,11 +61,17 @@ def _positions(code: CodeType) -> tuple[_Position, ...] | None:
 
 
 def _frame_span(frame: FrameType) -> Span:
-    path = Path(frame.f_code.co_filename)
-    line = frame.f_lineno or 1
-    positions = _positions(frame.f_code)
+    return _span_at(frame.f_code, frame.f_lasti, frame.f_lineno)
+
+
+@functools.lru_cache(maxsize=4096)
+def _span_at(code: CodeType, lasti: int, lineno: int | None) -> Span:
+    """Return the span of one instruction (a loop gets the same object: sent once)."""
+    path = Path(code.co_filename)
+    line = lineno or 1
+    positions = _positions(code)
     if positions is not None:
-        index = frame.f_lasti // 2
+        index = lasti // 2
         if 0 <= index < len(positions):
             start, end, column, end_column = positions[index]
             if start is not None and column is not None:

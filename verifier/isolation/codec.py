@@ -68,6 +68,7 @@ class Encoder:
     def __init__(self, register: Callable[[Callable[..., Any]], int]) -> None:
         self.register = register
         self._seen: dict[int, int] = {}
+        self._spans: dict[Span, int] = {}  # equal places are sent once (a loop's calls)
         self._keep: list[object] = []  # ids stay unique while the encoding runs
 
     def encode(self, value: object, depth: int = 0) -> object:
@@ -77,12 +78,16 @@ class Encoder:
         names = _NAMES.get(kind)
         if names is not None:  # a record: the common case, dispatched first
             known = self._seen.get(id(value))
+            if known is None and kind is Span:
+                known = self._spans.get(value)  # type: ignore[call-overload]
             if known is not None:
                 return ["#r", known]
             if depth > MAX_DEPTH:
                 raise CodecError(f"the launch description nests deeper than {MAX_DEPTH} "
                                  "levels")
-            self._seen[id(value)] = len(self._seen)
+            self._seen[id(value)] = len(self._keep)
+            if kind is Span:
+                self._spans[value] = len(self._keep)  # type: ignore[index]
             self._keep.append(value)
             encode = self.encode
             depth += 1
@@ -133,6 +138,7 @@ class Decoder:
         self.callback = callback
         self.span = span  # may move a place the parent does not accept
         self._records: list[object | None] = []
+        self._paths: dict[str, Path] = {}  # each file named once (its spans name it often)
 
     def decode(self, data: object, depth: int = 0) -> object:
         if data is None or data.__class__ in _SCALARS:
@@ -152,7 +158,11 @@ class Decoder:
             pairs = zip(rest[::2], rest[1::2], strict=True)
             return {k: self.decode(v, depth + 1) for k, v in pairs}
         if tag == "#p":
-            return Path(_one(rest, str))
+            text = _one(rest, str)
+            path = self._paths.get(text)
+            if path is None:
+                path = self._paths[text] = Path(text)
+            return path
         if tag == "#e":
             return _enum(rest)
         if tag == "#f":
