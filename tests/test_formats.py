@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import io
 import json
+import re
 import shutil
 import xml.etree.ElementTree as ET
 from email.message import Message
@@ -11,6 +12,8 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from jsonschema import validators  # type: ignore[import-untyped, unused-ignore]
 
 from launchverify import __version__
@@ -18,6 +21,7 @@ from launchverify.engine import CheckOptions, Report, run_check
 from launchverify.findings.fingerprint import fingerprint_fields
 from launchverify.registry import all_rules
 from launchverify.render import sarif
+from launchverify.render import text as text_output
 from launchverify.render.github import escape_data, escape_property, render_github
 from launchverify.render.junit import render_junit
 from launchverify.render.sarif import render_sarif
@@ -192,6 +196,60 @@ def test_sarif_of_a_missing_file_still_renders(tmp_path: Path) -> None:
     validate(document)
     region = document["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["region"]
     assert region == {"startLine": 7, "startColumn": 1}
+
+
+# ----------------------------------------------------------------------------- text
+
+
+class _ThroughRich(text_output.Lines):
+    """The reference: every line printed by rich, even where it would only strip styles."""
+
+    def __init__(self, out: Any, color: bool | None) -> None:
+        super().__init__(out, color)
+        self.plain = False
+
+
+def _text(report: Report, monkeypatch: pytest.MonkeyPatch, *, rich: bool) -> str:
+    out = io.StringIO()
+    with monkeypatch.context() as patch:
+        if rich:
+            patch.setattr(text_output, "Lines", _ThroughRich)
+        text_output.render_text(report, out, explain=True)
+    return out.getvalue()
+
+
+def test_plain_text_is_what_rich_prints_without_colours(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    report = check(TRACE, WITNESS, INCLUDES, DUPLICATES, workspace=CORPUS)
+    assert report.findings and text_output.Lines(io.StringIO(), None).plain
+    assert _text(report, monkeypatch, rich=False) == _text(report, monkeypatch, rich=True)
+
+
+_PIECES = st.sampled_from([*"ab :[]/\\*\t\u3042\r\x07\x08\x0b\x0c\x1b\u00e9\n", ":100:", ":smile:",
+                           "[bold]", "[/]"])
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.lists(_PIECES, max_size=12).map("".join), min_size=1, max_size=4))
+def test_any_message_prints_the_same_both_ways(messages: list[str]) -> None:
+    findings = [Finding("LV101", "duplicate-node-name", Severity.ERROR, message,
+                        Span(Path("/nowhere/a.launch.xml"), 100, 7)) for message in messages]
+    report = Report(findings, 1, 0.0, {})
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        assert _text(report, monkeypatch, rich=False) == _text(report, monkeypatch, rich=True)
+
+
+def test_places_and_messages_print_verbatim() -> None:
+    """rich would read ``:100:`` as an emoji code and ``[bold]`` as markup."""
+    odd = Finding("LV101", "duplicate-node-name", Severity.ERROR, "see [bold]x[/] :smile:",
+                  Span(Path("/nowhere/a.launch.xml"), 100, 7))
+    for color in (None, True):
+        out = io.StringIO()
+        text_output.render_text(Report([odd], 1, 0.0, {}), out, color=color)
+        assert "a.launch.xml" in out.getvalue()
+        plain = re.sub(r"\x1b\[[0-9;]*m", "", out.getvalue())
+        assert "a.launch.xml:100:7: error LV101 [duplicate-node-name] see [bold]x[/] :smile:" \
+            in plain
 
 
 # ----------------------------------------------------------------------------- JUnit

@@ -280,7 +280,7 @@ def entry() -> None:
     one at exit took 0.4 s of a 3 s check of the fleet bench. By the time ``main`` returns,
     worker pools, forked children and temporary folders are closed, so only the output is
     left to flush (mypy exits the same way). With a thread still running (none of ours
-    should be), the ordinary exit waits for it.
+    should be), or a profiler or coverage measuring, the ordinary exit runs.
     """
     status = main()
     try:
@@ -288,8 +288,8 @@ def entry() -> None:
         sys.stderr.flush()
     except OSError:  # a closed pipe (`launchverify check | head`): the usual exit reports it
         raise SystemExit(status) from None
-    if threading.active_count() > 1:
-        raise SystemExit(status)
+    if threading.active_count() > 1 or sys.getprofile() or sys.gettrace():
+        raise SystemExit(status)  # a profiler or coverage writes its data at exit
     os._exit(status)
 
 

@@ -11,6 +11,7 @@ parse time, as in launch.
 from __future__ import annotations
 
 import contextlib
+import re
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -156,6 +157,14 @@ def variable_references(text: str) -> list[tuple[str, int, int]]:
     return sorted(found, key=lambda ref: (ref[1], ref[2]))
 
 
+# Runs of characters that an argument reads one by one with the same outcome: none ends
+# it, starts a substitution, escapes or is refused (keyed by the quote it is inside).
+_PLAIN_ARGUMENT = {quote: re.compile("[^" + re.escape(" )($\\" + (quote or "'\"")) + "]+")
+                   for quote in (None, "'", '"')}
+_PLAIN_QUOTED = {quote: re.compile("[^" + re.escape("$\\" + quote) + "]+")
+                 for quote in ("'", '"')}
+
+
 class _Reader:
     def __init__(self, text: str, locate: Locate | None = None,
                  variables: set[tuple[str, int, int]] | None = None) -> None:
@@ -255,11 +264,16 @@ class _Reader:
         if quote is None and self.peek() in ("'", '"'):
             return self.quoted(depth, self.peek())
         stop = " '\"()" if quote is None else f" {quote}()"
+        plain = _PLAIN_ARGUMENT[quote]
         parts: list[s.Sub] = []
         literal: list[str] = []
         start = self.pos
         while not self.done() and self.peek() not in (" ", ")"):
-            if self.at_substitution():
+            run = plain.match(self.text, self.pos)
+            if run is not None:  # a stretch with no character of note: taken whole
+                literal.append(run.group())
+                self.pos = run.end()
+            elif self.at_substitution():
                 parts.append(self.literal(literal, start))
                 literal = []
                 parts.append(self.substitution(depth + 1, quote))
@@ -283,7 +297,11 @@ class _Reader:
                 parts.append(self.literal(literal, run))
                 self.pos += 1
                 break
-            if self.at_substitution():
+            plain = _PLAIN_QUOTED[quote].match(self.text, self.pos)
+            if plain is not None:
+                literal.append(plain.group())
+                self.pos = plain.end()
+            elif self.at_substitution():
                 parts.append(self.literal(literal, run))
                 literal = []
                 parts.append(self.substitution(depth + 1, quote))

@@ -26,6 +26,8 @@ _ENTITY_DECL = re.compile(rb"<!ENTITY", re.IGNORECASE)
 
 _PREDEFINED_ENTITIES = frozenset({"lt", "gt", "amp", "quot", "apos"})
 _ENTITY_REF = re.compile(r"&([A-Za-z_][\w.-]*);")
+_TAG_REST = re.compile(r"""[^"'>]*(?:(?:"[^"]*"|'[^']*')[^"'>]*)*>""")  # up to the closing >
+_TAG_NAME = re.compile(r"[^\s/>]*")
 _ATTRIBUTE = re.compile(r"""([^\s=/>]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 
 
@@ -66,9 +68,8 @@ def scan_start_tags(text: str) -> list[_StartTag]:
         end = _start_tag_end(text, index)
         if not text.startswith("</", index):
             body = text[index:end]
-            name_end = index + 1
-            while name_end < end and not text[name_end].isspace() and text[name_end] not in "/>":
-                name_end += 1
+            name = _TAG_NAME.match(text, index + 1, end)
+            name_end = name.end() if name is not None else index + 1
             matches = list(_ATTRIBUTE.finditer(body, name_end - index))
             attributes = {match.group(1): (index + match.start(1), index + match.end())
                           for match in matches}
@@ -100,18 +101,13 @@ def _declaration_end(text: str, index: int) -> int:
 
 
 def _start_tag_end(text: str, index: int) -> int:
-    """Return the index just past the ``>`` that closes the tag starting at ``index``."""
-    quote = ""
-    for position in range(index + 1, len(text)):
-        char = text[position]
-        if quote:
-            if char == quote:
-                quote = ""
-        elif char in "\"'":
-            quote = char
-        elif char == ">":
-            return position + 1
-    return len(text)
+    """Return the index just past the ``>`` that closes the tag starting at ``index``.
+
+    A ``>`` inside a quoted attribute value does not close it; without a closing ``>``
+    (an unclosed quote) the tag runs to the end of the text.
+    """
+    match = _TAG_REST.match(text, index + 1)
+    return match.end() if match is not None else len(text)
 
 
 class _Locator:
