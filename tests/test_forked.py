@@ -7,9 +7,10 @@ from pathlib import Path
 
 import pytest
 
-from launchverify import engine, forked
+from launchverify import forked
 from launchverify.engine import CheckOptions, run_check
 from launchverify.forked import Background
+from launchverify.workspace.includers import Includers
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
 
@@ -70,6 +71,6 @@ def test_the_forked_scan_finds_the_includers_outside_the_check(
     assert codes() == []
     monkeypatch.setattr(forked, "can_fork", lambda: False)
     assert codes() == []
-    monkeypatch.setattr(engine.Includers, "of_workspace", classmethod(
+    monkeypatch.setattr(Includers, "of_workspace", classmethod(
         lambda cls, folders: cls([])))  # the scan sees no includer: it is a root
     assert codes() == ["LV201"]

@@ -14,7 +14,7 @@ import threading
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, TextIO
+from typing import TYPE_CHECKING, Any, TextIO
 
 from launchverify import __version__
 from launchverify.ament import excluded_by_ament
@@ -34,7 +34,6 @@ from launchverify.engine import (
 from launchverify.findings.baseline import BaselineError, write_baseline
 from launchverify.findings.cache import ResultCache, default_cache_dir, disabled_by_environment
 from launchverify.findings.fixes import Outcome, fix_all, hidden, unified_diff
-from launchverify.graph import LaunchGraph
 from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.rule import Rule, Severity
@@ -42,6 +41,9 @@ from launchverify.topology import command as topology_command
 from launchverify.workspace import reading
 from launchverify.workspace.includers import Includers
 from launchverify.workspace.paths import display_path
+
+if TYPE_CHECKING:
+    from launchverify.graph import LaunchGraph
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 

@@ -16,12 +16,9 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from launchverify.config import Config, ConfigTree, matches
-from launchverify.evaluate.files import FileCache
-from launchverify.evaluate.runner import evaluate
-from launchverify.fanout import RuleRun, rule_findings
-from launchverify.findings.baseline import apply_baseline
 from launchverify.findings.cache import (
     Entry,
     ResultCache,
@@ -30,25 +27,20 @@ from launchverify.findings.cache import (
     options_text,
     stamps_of,
 )
-from launchverify.findings.fixes import within
-from launchverify.findings.suppressions import apply_suppressions
-from launchverify.forked import Background
-from launchverify.frontends import launch_format
-from launchverify.graph import LaunchGraph
-from launchverify.ir.symbolic import PathCondition
-from launchverify.isolation.confine import Limits
-from launchverify.isolation.pool import IsolatedPython
-from launchverify.models import distros
-from launchverify.registry import select as select_rules
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.span import Span
 from launchverify.workspace import reading
-from launchverify.workspace.affected import affected_launch_files
-from launchverify.workspace.discover import discover
-from launchverify.workspace.includers import Includers
-from launchverify.workspace.interfaces import Interfaces
 from launchverify.workspace.packages import PackageIndex, find_workspace, workspace_prefixes
 from launchverify.workspace.paths import display_path, relative_file
+
+if TYPE_CHECKING:
+    from launchverify.graph import LaunchGraph
+    from launchverify.ir.symbolic import PathCondition
+    from launchverify.workspace.includers import Includers
+
+# The evaluator, the rules and the worker pool are imported where a check runs: a cached
+# run (the report stored, nothing changed) never needs them, and importing them all took
+# half of such a run.
 
 DEFAULT_TIME_LIMIT = 10.0
 
@@ -211,6 +203,11 @@ def _require_paths(options: CheckOptions) -> None:
 
 def run_check(options: CheckOptions) -> Report:
     """Check launch files and return the findings, de-duplicated and sorted."""
+    from launchverify.forked import Background
+    from launchverify.workspace.affected import affected_launch_files
+    from launchverify.workspace.discover import discover
+    from launchverify.workspace.includers import Includers
+
     started = time.perf_counter()
     _require_paths(options)
     config = options.config
@@ -229,6 +226,16 @@ def _check_files(options: CheckOptions, tree: ConfigTree, workspace: Path,
                  index: PackageIndex, includers_of: Callable[[], Includers], started: float,
                  found: list[Path]) -> Report:
     """Check the launch files found (the workspace's includers may be read meanwhile)."""
+    from launchverify.evaluate.files import FileCache
+    from launchverify.evaluate.runner import evaluate
+    from launchverify.findings.baseline import apply_baseline
+    from launchverify.findings.fixes import within
+    from launchverify.frontends import launch_format
+    from launchverify.isolation.confine import Limits
+    from launchverify.isolation.pool import IsolatedPython
+    from launchverify.models import distros
+    from launchverify.workspace.interfaces import Interfaces
+
     config = options.config
     if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
         given = ", ".join(str(p) for p in options.paths)
@@ -355,6 +362,7 @@ def _excluded(file: Path, patterns: list[str]) -> bool:
 def _suppress(findings: list[Finding], files: set[Path],
               rules: list[type[Rule]]) -> tuple[list[Finding], int]:
     """Apply inline suppressions; judge the comments that silenced nothing (LV004)."""
+    from launchverify.findings.suppressions import apply_suppressions
     from launchverify.registry import all_rules
     from launchverify.rules.health.unused_suppression import UnusedSuppression
 
@@ -381,6 +389,8 @@ class Selection:
 
     def of(self, config: Config) -> list[type[Rule]]:
         """Return the rules a configuration selects (the check's own: ``options``)."""
+        from launchverify.registry import select as select_rules
+
         if config is self.tree.root:
             return select_rules(self.options.select, self.options.ignore)
         chosen = (self.options.command_select if self.options.command_select is not None
@@ -462,6 +472,8 @@ def _isolated(rule: Rule, findings: Callable[[], Iterable[Finding]], file: Path 
 def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
               ctx: RuleContext, jobs: int = 1) -> list[Finding]:
     """Run every rule on every graph (in up to ``jobs`` processes) and merge the findings."""
+    from launchverify.fanout import RuleRun, rule_findings
+
     merged: dict[tuple[object, ...], Finding] = {}
     votes: dict[tuple[object, ...], set[int]] = defaultdict(set)  # graphs that agree
     reach: dict[Path, int] = defaultdict(int)

@@ -11,14 +11,16 @@ from __future__ import annotations
 import enum
 from collections.abc import Hashable, Iterator, Mapping
 from dataclasses import dataclass, field
-from typing import ClassVar
+from typing import TYPE_CHECKING, ClassVar
 
 from launchverify.findings.trace import Step
-from launchverify.graph import LaunchGraph, Origin
-from launchverify.ir.symbolic import PathCondition
 from launchverify.span import Span
-from launchverify.workspace.interfaces import Interfaces
-from launchverify.workspace.packages import PackageIndex
+
+if TYPE_CHECKING:  # a finding read back from the cache needs none of these
+    from launchverify.graph import LaunchGraph, Origin
+    from launchverify.ir.symbolic import PathCondition
+    from launchverify.workspace.interfaces import Interfaces
+    from launchverify.workspace.packages import PackageIndex
 
 
 class Severity(enum.Enum):
@@ -120,6 +122,12 @@ class Finding:
         return (str(self.span.file), self.span.line, self.span.column, self.code, self.message)
 
 
+def _no_interfaces() -> Interfaces:
+    from launchverify.workspace.interfaces import Interfaces
+
+    return Interfaces()
+
+
 @dataclass
 class RuleContext:
     """What a rule may use besides the graph.
@@ -130,7 +138,7 @@ class RuleContext:
     """
 
     packages: PackageIndex | None = None
-    interfaces: Interfaces = field(default_factory=Interfaces)  # of every checked root
+    interfaces: Interfaces = field(default_factory=_no_interfaces)  # of every checked root
     # What the check's configuration says for rules (``engine.rule_options``): name globs
     # under ``external-names`` and ``single-writer-topics``.
     options: dict[str, object] = field(default_factory=dict)
@@ -200,9 +208,9 @@ class Rule:
         **values: object,
     ) -> Finding:
         """Build a finding from the message template at a record's origin (or a span)."""
-        span, chain, path = ((origin.span, origin.chain, origin.path)
-                             if isinstance(origin, Origin) else (origin, (), ()))
-        if isinstance(origin, Origin) and origin.call is not None:
+        span, chain, path = ((origin, (), ()) if isinstance(origin, Span)
+                             else (origin.span, origin.chain, origin.path))
+        if not isinstance(origin, Span) and origin.call is not None:
             related = (*related, Related(origin.call, IN_CALL))
         return Finding(
             code=self.code,

@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import contextlib
 import hashlib
+import importlib.util
 import os
 import pickle
 import stat
@@ -73,12 +74,12 @@ def key_of(parts: Iterable[object]) -> str:
 
 def own_code_stamp() -> str:
     """Return a stamp of launchverify's installed code (an edited checkout changes it)."""
-    import launchverify.models
-    import launchverify.rules
-
-    # an editable install maps the three packages to three folders of the checkout
-    roots = {str(Path(module.__file__).parent) for module in (
-        launchverify, launchverify.rules, launchverify.models) if module.__file__}
+    # an editable install maps the three packages to three folders of the checkout; they
+    # are found, not imported (a cached run needs no rule)
+    specs = [importlib.util.find_spec(name)
+             for name in ("launchverify", "launchverify.rules", "launchverify.models")]
+    roots = {str(Path(spec.origin).parent) for spec in specs
+             if spec is not None and spec.origin}
     digest = hashlib.blake2b(digest_size=16)
     for path, stamp in sorted(_walk(sorted(roots)).items()):
         if path.endswith((".py", ".txt", ".json")):
