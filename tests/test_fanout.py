@@ -8,7 +8,7 @@ import pytest
 
 from launchverify import fanout
 from launchverify.engine import CheckOptions, Report, run_check
-from launchverify.fanout import RuleRun, Share, plan
+from launchverify.fanout import Counter, RuleRun, Share, pieces
 from launchverify.registry import all_rules
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
@@ -48,18 +48,23 @@ def test_a_child_says_how_many_solver_queries_it_asked(alone: Report) -> None:
             delattr(graph, "_reasoner")
     rules = list(all_rules())
     run = RuleRun(graphs, rules, RuleContext(), _isolated, dead)
-    fanout._SHARED["run"] = run
+    fanout._SHARED.update(run=run, pieces=[Share(tuple(range(len(rules))), (), ())],
+                          counter=Counter(1))
     try:
-        _, queries = fanout._child(Share(tuple(range(len(rules))), (), ()))
+        _, queries = fanout._child()
     finally:
         fanout._SHARED.clear()
     assert sum(queries.values()) == sum(g._reasoner.queries for g in graphs  # type: ignore[attr-defined]
                                         if hasattr(g, "_reasoner")) > 0
 
 
-def test_a_failed_child_share_is_run_here(alone: Report,
-                                          monkeypatch: pytest.MonkeyPatch) -> None:
-    def broken(share: Share) -> tuple[fanout.PerGraph, dict[int, int]]:
+def test_pieces_a_failed_child_took_are_run_here(alone: Report,
+                                                monkeypatch: pytest.MonkeyPatch) -> None:
+    def broken() -> tuple[fanout.PerGraph, dict[int, int]]:
+        counter = fanout._SHARED["counter"]
+        assert isinstance(counter, Counter)
+        while counter.take() is not None:  # takes everything, then is lost
+            pass
         raise RuntimeError("child lost")
 
     monkeypatch.setattr(fanout, "MIN_WORK", 0)
@@ -67,13 +72,27 @@ def test_a_failed_child_share_is_run_here(alone: Report,
     assert _seen(_check(jobs=2)) == _seen(alone)
 
 
-def test_the_plan_covers_each_rule_and_graph_once(alone: Report) -> None:
+def test_a_lock_never_given_back_stops_no_one(alone: Report,
+                                              monkeypatch: pytest.MonkeyPatch) -> None:
+    """A child killed holding the counter's lock: the checking process does the rest."""
+    real = Counter.__init__
+
+    def held(self: Counter, count: int) -> None:
+        real(self, count)
+        self._next.get_lock().acquire()
+
+    monkeypatch.setattr(fanout, "MIN_WORK", 0)
+    monkeypatch.setattr(fanout, "LOCK_SECONDS", 0.01)
+    monkeypatch.setattr(Counter, "__init__", held)
+    assert _seen(_check(jobs=2)) == _seen(alone)
+
+
+def test_the_pieces_cover_each_rule_and_graph_once(alone: Report) -> None:
     rules = list(all_rules())
     run = RuleRun(alone.graphs, rules, None, None, None)  # type: ignore[arg-type]
     gathering = [r for r, rule in enumerate(rules) if rule.finish is not fanout.Rule.finish]
-    shares = plan(run, 3, exclude=gathering)
-    assert plan(run, 3, exclude=gathering) == shares  # deterministic
-    assert 1 < len(shares) <= 3
+    shares = pieces(run, exclude=gathering)
+    assert pieces(run, exclude=gathering) == shares  # deterministic
     covered = [(r, g) for share in shares for r in share.whole for g in range(len(alone.graphs))]
     covered += [(r, g) for share in shares for r in share.split for g in share.graphs]
     expected = [(r, g) for r in range(len(rules)) if r not in gathering

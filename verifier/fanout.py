@@ -1,12 +1,13 @@
 """The rules of a check, shared out between processes.
 
 A rule judges one graph at a time, so the graphs of a check can be split between forked
-processes: they were built before the fork, and a child reads them without copying. Each
-child returns what its rules found in each of its graphs; the check then merges those
-lists in the order a single process visits them, so the findings do not depend on how
-many processes ran. A rule asking for every context runs whole in one process (``plan``
-says why); rules that gather across graphs (those with a ``finish``) run in the
-checking process, over every graph, as before.
+processes: they were built before the fork, and a child reads them without copying. The
+work is cut into pieces (``pieces``), which every process takes one after another until
+none is left; each child returns what its rules found in each graph, and the check merges
+those lists in the order a single process visits them, so the findings do not depend on
+how many processes ran or which took what. A rule asking for every context is one piece
+(``pieces`` says why); rules that gather across graphs (those with a ``finish``) run in
+the checking process, over every graph, as before, while the children start on the rest.
 
 Forking needs a POSIX system and no other thread in the process (the language server
 checks from a thread): otherwise, and for checks too small to gain from it, everything
@@ -82,7 +83,7 @@ class RuleRun:
 
 @dataclass(frozen=True)
 class Share:
-    """One process's part: rules to run on every graph, and rules to run on some graphs."""
+    """A piece of the work: rules to run on every graph, and rules to run on some graphs."""
 
     whole: tuple[int, ...] = ()  # rules asking every context: on every graph, here
     split: tuple[int, ...] = ()  # the other rules...
@@ -94,15 +95,60 @@ class Share:
         out.update(run.run(list(self.split), list(self.graphs)))
         return out
 
+    def done(self, found: PerGraph, graphs: list[int]) -> bool:
+        """Return whether ``found`` holds this part's findings (``graphs``: every graph)."""
+        return (all((r, g) in found for r in self.whole for g in graphs)
+                and all((r, g) in found for r in self.split for g in self.graphs))
 
-_SHARED: dict[str, RuleRun] = {}  # what a forked child works on (set before the fork)
+
+_SHARED: dict[str, object] = {}  # what a forked child works on (set before the fork)
+LOCK_SECONDS = 5.0  # a process killed holding the counter's lock must not stop the others
 
 
-def _child(share: Share) -> tuple[PerGraph, dict[int, int]]:
-    """Run a share in a forked child; also say how many z3 queries it asked per graph."""
+class Counter:
+    """The next piece to take, shared by the processes of one check (forked with them).
+
+    Each process takes pieces until none is left, so none waits while another works:
+    the cost of a rule varies from tree to tree (navigation2's lifecycle rules, which only
+    the checking process can run, took as long as half of all the others).
+    """
+
+    def __init__(self, pieces: int) -> None:
+        import multiprocessing
+
+        self.pieces = pieces
+        self._next = multiprocessing.get_context("fork").Value("i", 0)
+
+    def take(self) -> int | None:
+        """Return the index of a piece nobody has taken, or ``None`` when none is left."""
+        lock = self._next.get_lock()
+        if not lock.acquire(timeout=LOCK_SECONDS):
+            return None  # what is left is run by the checking process, at the end
+        try:
+            index = self._next.value
+            self._next.value = index + 1
+        finally:
+            lock.release()
+        return index if index < self.pieces else None
+
+
+def _drain(run: RuleRun, pieces: list[Share], counter: Counter) -> PerGraph:
+    """Run pieces, here, as long as some are left."""
+    out: PerGraph = {}
+    while (index := counter.take()) is not None:
+        out.update(pieces[index].run(run))
+    return out
+
+
+def _child() -> tuple[PerGraph, dict[int, int]]:
+    """Run pieces in a forked child; also say how many z3 queries it asked per graph."""
     run = _SHARED["run"]
+    pieces = _SHARED["pieces"]
+    counter = _SHARED["counter"]
+    assert isinstance(run, RuleRun) and isinstance(pieces, list)
+    assert isinstance(counter, Counter)
     before = _queries(run.graphs)  # reasoners the parent made before the fork come along
-    found = share.run(run)
+    found = _drain(run, pieces, counter)
     after = _queries(run.graphs)
     return found, {g: n - before.get(g, 0) for g, n in after.items() if n != before.get(g, 0)}
 
@@ -114,27 +160,32 @@ def _queries(graphs: list[LaunchGraph]) -> dict[int, int]:
 
 
 def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
-    """Return every rule's findings in every graph, computed by up to ``jobs`` processes."""
+    """Return every rule's findings in every graph, computed by up to ``jobs`` processes.
+
+    Which process computes which piece varies from run to run; the findings do not (a
+    piece's findings depend on the piece alone). z3's query count may: a reasoner warmed
+    by one piece saves the next piece of its graph a question only in the same process.
+    """
     everything = list(range(len(run.graphs)))
     if jobs < 2 or len(run.graphs) < 2 or not can_fork() or _work(run.graphs) < MIN_WORK:
         return run.run(list(range(len(run.rules))), everything)
     gathering = [r for r, rule in enumerate(run.rules) if rule.finish is not Rule.finish]
-    shares = plan(run, jobs, exclude=gathering)
+    shared = pieces(run, exclude=gathering)
     import multiprocessing  # here: a small check never pays for importing them
     from concurrent.futures import ProcessPoolExecutor
 
-    _SHARED["run"] = run
+    counter = Counter(len(shared))
+    _SHARED.update(run=run, pieces=shared, counter=counter)
     out: PerGraph = {}
     try:
-        with ProcessPoolExecutor(max_workers=max(1, len(shares) - 1),
+        with ProcessPoolExecutor(max_workers=jobs - 1,
                                  mp_context=multiprocessing.get_context("fork")) as pool:
-            futures = [(share, pool.submit(_child, share)) for share in shares[1:]]
-            out.update(run.run(gathering, everything))  # meanwhile, here
-            out.update(shares[0].run(run))
-            for share, future in futures:
+            futures = [pool.submit(_child) for _ in range(jobs - 1)]
+            out.update(run.run(gathering, everything))  # only here: ``finish`` needs them
+            out.update(_drain(run, shared, counter))
+            for future in futures:
                 collected = _collected(future)
                 if collected is None:
-                    out.update(share.run(run))
                     continue
                 found, queries = collected
                 out.update(found)
@@ -142,41 +193,38 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
                     run.graphs[g].queries_elsewhere += count
     finally:
         _SHARED.clear()
+    for piece in shared:  # taken by a child that failed: done here
+        if not piece.done(out, everything):
+            out.update(piece.run(run))
     return out
 
 
 def _collected(future: Future[tuple[PerGraph, dict[int, int]]]
                ) -> tuple[PerGraph, dict[int, int]] | None:
-    """Return a child's findings; ``None`` when it failed (its share is then run here)."""
+    """Return a child's findings; ``None`` when it failed (its pieces are then run here)."""
     try:
         return future.result()
     except Exception:  # a child killed, or a finding that does not pickle
         return None
 
 
-def plan(run: RuleRun, jobs: int, exclude: Iterable[int] = ()) -> list[Share]:
-    """Split the rules' work into at most ``jobs`` shares of about equal size.
+def pieces(run: RuleRun, exclude: Iterable[int] = ()) -> list[Share]:
+    """Split the rules' work into pieces, the largest first (deterministic).
 
-    A rule asking for every context stays whole: the graphs it has seen settle places
+    A rule asking for every context is one piece: the graphs it has seen settle places
     for the others (``RuleContext.settled``), so split, it would ask more in total. The
-    other rules are split by graph. The largest piece first, each to the share with the
-    least work so far (deterministic: the same check gives the same shares).
+    other rules make one piece per graph (a graph's reasoner then answers them all).
     """
     skipped = set(exclude)
     whole = [r for r, rule in enumerate(run.rules)
              if r not in skipped and getattr(rule, "every_context", False)]
-    split = [r for r in range(len(run.rules)) if r not in skipped and r not in whole]
+    split = tuple(r for r in range(len(run.rules)) if r not in skipped and r not in whole)
     total = _work(run.graphs)
-    pieces: list[tuple[int, str, int]] = [(total, "rule", r) for r in whole]
-    pieces += [(len(split) * _work([g]), "graph", i) for i, g in enumerate(run.graphs)]
-    loads = [0] * jobs
-    parts: list[tuple[list[int], list[int]]] = [([], []) for _ in range(jobs)]
-    for cost, kind, index in sorted(pieces, key=lambda p: (-p[0], p[1], p[2])):
-        lightest = loads.index(min(loads))
-        parts[lightest][0 if kind == "rule" else 1].append(index)
-        loads[lightest] += cost
-    return [Share(tuple(sorted(rules)), tuple(split) if graphs else (), tuple(sorted(graphs)))
-            for rules, graphs in parts if rules or graphs]
+    sized = [(total, Share(whole=(r,))) for r in whole]
+    if split:
+        sized += [(len(split) * _work([graph]), Share(split=split, graphs=(g,)))
+                  for g, graph in enumerate(run.graphs)]
+    return [share for _, share in sorted(sized, key=lambda item: -item[0])]
 
 
 def _work(graphs: list[LaunchGraph]) -> int:
