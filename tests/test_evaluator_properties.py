@@ -14,6 +14,9 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from launchverify.evaluate.runner import evaluate
+from launchverify.evaluate.values import argument_names, is_unset
+from launchverify.ir.subst import Concat, LaunchConfig, Sub, Text, walk
+from launchverify.ir.symbolic import Arg, Select, Truthy, Unset
 from launchverify.render.graph_out import GraphView
 from launchverify.workspace.packages import PackageIndex
 
@@ -143,3 +146,40 @@ def test_yaml_matches_xml(tmp_path_factory: object, tree: tuple[object, ...]) ->
     body = to_yaml(tree)
     path.write_text("launch:\n" + (body + "\n" if body else "  []\n"))
     assert fqns(path) == expected(tree)
+
+
+# ----------------------------------------------------------------------------- summaries
+
+
+def _values() -> st.SearchStrategy[Sub]:
+    leaves = st.one_of(
+        st.sampled_from(["a", "b", ""]).map(Text),
+        st.sampled_from(["x", "y"]).map(Unset),
+        st.sampled_from(["x", "y", "z"]).map(Arg),
+    )
+
+    def branches(inner: st.SearchStrategy[Sub]) -> st.SearchStrategy[Sub]:
+        return st.one_of(
+            st.lists(inner, min_size=1, max_size=3).map(lambda parts: Concat(tuple(parts))),
+            st.tuples(st.sampled_from(["x", "y"]), inner).map(lambda p: Arg(p[0], p[1])),
+            st.tuples(inner, inner).map(
+                lambda p: Select((Truthy(Arg("c")),), p[0], p[1])),
+            inner.map(LaunchConfig),
+        )
+
+    return st.recursive(leaves, branches, max_leaves=12)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(_values(), min_size=1, max_size=6), st.data())
+def test_value_summaries_are_those_of_a_full_walk(values: list[Sub], data: st.DataObject
+                                                  ) -> None:
+    """Summaries reuse those of shared parts (a chain of assignments): same answers."""
+    chain = values[0]
+    for value in values[1:]:  # each link holds the previous value, as assignments do
+        chain = Select((Truthy(Arg("c")),), value, chain) if data.draw(st.booleans()) \
+            else Concat((chain, value))
+        for part in (chain, value):
+            walked = walk(part)
+            assert is_unset(part) == any(isinstance(x, Unset) for x in walked)
+            assert argument_names(part) == {x.name for x in walked if isinstance(x, Arg)}

@@ -38,6 +38,8 @@ class NodeBuilder:
 
     def __init__(self, walker: Walker) -> None:
         self.walker = walker
+        # each SetParameter in scope becomes one record, shared by the nodes it reaches
+        self._scope_records: dict[int, tuple[object, ParamRecord]] = {}
 
     def run_node(self, action: a.Node, ctx: Ctx) -> NodeRecord:
         """Execute a Node-like action as launch_ros does and record it."""
@@ -154,9 +156,15 @@ class NodeBuilder:
 
     def scope_params(self, ctx: Ctx) -> list[ParamRecord]:
         """Return SetParameter/SetParametersFromFile values in scope (they come first)."""
-        return [ParamRecord(p.origin, file=p.file, name=p.name, value=p.value, scope=True,
-                            value_type=p.value_type, source=p.source)
-                for p in self.walker.scopes.shared(GLOBAL_PARAMS)]
+        records = []
+        for param in self.walker.scopes.shared(GLOBAL_PARAMS):
+            known = self._scope_records.get(id(param))
+            if known is None or known[0] is not param:
+                known = self._scope_records[id(param)] = (param, ParamRecord(
+                    param.origin, file=param.file, name=param.name, value=param.value,
+                    scope=True, value_type=param.value_type, source=param.source))
+            records.append(known[1])
+        return records
 
     def own_params(self, entries: tuple[a.ParamEntry, ...], ctx: Ctx) -> list[ParamRecord]:
         """Evaluate a node's own parameters: files are checked, values reduced."""

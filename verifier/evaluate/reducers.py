@@ -239,7 +239,7 @@ def fill_unset(value: s.Sub, fill: s.Sub) -> s.Sub:
     """Replace the "unset" branches of a path-dependent value with ``fill``."""
     if isinstance(value, Unset):
         return fill
-    if isinstance(value, Select):
+    if isinstance(value, Select) and is_unset(value):  # a branch never unset stays as it is
         then = fill_unset(value.then, fill)
         return Select(value.guards, then, fill_unset(value.otherwise, fill))
     return value

@@ -88,7 +88,10 @@ class Measures:
             return known[1], known[2]
         parts, chars = 1, len(value.text) if isinstance(value, Text) else 0
         for child in value.children():  # each distinct part once: linear even in a doubled value
-            child_parts, child_chars = self._measure(child)
+            if type(child) is Text:  # most parts: measured here, not remembered
+                child_parts, child_chars = 1, len(child.text)
+            else:
+                child_parts, child_chars = self._measure(child)
             parts = min(parts + child_parts, MAX_VALUE_SIZE + 1)
             chars = min(chars + child_chars, MAX_TEXT_SIZE + 1)
         self._known[id(value)] = (value, parts, chars)

@@ -48,7 +48,58 @@ def text_of(sub: s.Sub | None) -> str | None:
 
 def is_unset(sub: s.Sub) -> bool:
     """Return whether a value may be unset on some path."""
-    return any(isinstance(x, Unset) for x in s.walk(sub))
+    return _summary(sub)[0]
+
+
+def argument_names(sub: s.Sub) -> frozenset[str]:
+    """Return the names of the launch arguments a value is (or includes)."""
+    return _summary(sub)[1]
+
+
+_Summary = tuple[bool, frozenset[str]]  # may be unset; the arguments in it
+_SUMMARIES: dict[int, tuple[s.Sub, bool, frozenset[str]]] = {}  # by identity, object kept
+MAX_SUMMARIES = 200_000
+_NO_NAMES: frozenset[str] = frozenset()
+
+
+def _summary(sub: s.Sub) -> _Summary:
+    """Return what ``is_unset`` and ``argument_names`` ask, each part summarised once.
+
+    A configuration assigned under a condition wraps its previous value in a ``Select``:
+    the chains grow long (a root of autoware_launch declares the same argument in dozens
+    of files), and walking a whole chain at each declaration was a tenth of evaluating.
+    The summary of a new link reuses its tail's.
+    """
+    known = _SUMMARIES.get(id(sub))
+    if known is not None and known[0] is sub:
+        return known[1], known[2]
+    if len(_SUMMARIES) >= MAX_SUMMARIES:
+        _SUMMARIES.clear()
+    stack: list[tuple[s.Sub, bool]] = [(sub, False)]
+    while stack:
+        item, expanded = stack.pop()
+        if _summarised(item):
+            continue
+        children = item.children()
+        if not expanded:
+            stack.append((item, True))
+            stack.extend((child, False) for child in children if not _summarised(child))
+            continue
+        unset = isinstance(item, Unset)
+        names = frozenset((item.name,)) if isinstance(item, Arg) else _NO_NAMES
+        for child in children:
+            _, child_unset, child_names = _SUMMARIES[id(child)]
+            unset = unset or child_unset
+            if child_names and not child_names <= names:
+                names = child_names if not names else names | child_names
+        _SUMMARIES[id(item)] = (item, unset, names)
+    _, unset, names = _SUMMARIES[id(sub)]
+    return unset, names
+
+
+def _summarised(sub: s.Sub) -> bool:
+    known = _SUMMARIES.get(id(sub))
+    return known is not None and known[0] is sub
 
 
 class Reducer:
@@ -521,6 +572,7 @@ __all__ = [
     "BaseReducer",
     "Opaque",
     "Reducer",
+    "argument_names",
     "describe_value",
     "is_unset",
     "machine_dependent",

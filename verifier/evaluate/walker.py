@@ -32,7 +32,13 @@ from launchverify.evaluate.scope import (
     guarded,
 )
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
-from launchverify.evaluate.values import is_unset, machine_dependent, ns_prefix, text_of
+from launchverify.evaluate.values import (
+    argument_names,
+    is_unset,
+    machine_dependent,
+    ns_prefix,
+    text_of,
+)
 from launchverify.events import loop_closing_reruns
 from launchverify.frontends import LoadedFile
 from launchverify.graph import (
@@ -935,7 +941,7 @@ def is_literal(expression: s.Sub) -> bool:
 
 def depends_on_argument(value: s.Sub, name: str) -> bool:
     """Return whether a configuration's value is (or includes) the argument ``name``."""
-    return any(isinstance(part, Arg) and part.name == name for part in s.walk(value))
+    return name in argument_names(value)
 
 
 def read_names(condition: c.Condition) -> list[str]:

@@ -331,8 +331,10 @@ def scalar(node: yaml.ScalarNode) -> tuple[object, str]:
 
 def _c_integer(text: str) -> int | None:
     """Return the integer strtol(text, 0) reads in full without overflow, else ``None``."""
+    if len(text) > 24:  # longer than any 64-bit integer: out of range (long texts: no scan)
+        return None
     match = _INTEGER.fullmatch(text)
-    if match is None or len(text) > 24:  # longer than any 64-bit integer: out of range
+    if match is None:
         return None
     body = match.group(1)
     base = 16 if body[:2] in ("0x", "0X") else 8 if body.startswith("0") and body != "0" else 10
