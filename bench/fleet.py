@@ -12,6 +12,7 @@ rule ask its real questions. ``--inject`` adds one collision that only happens w
 ``mode:=mapping`` and checks that it is found.
 
     python bench/fleet.py [--robots 10 100 1000] [--nodes 20] [--repeat 3] [--inject]
+        [--against OLD/bin/launchverify]
 
 It prints, per robot count, the nodes the evaluation reaches, findings, wall seconds
 (min/median/max of ``launchverify check fleet.launch.py``) and seconds per node.
@@ -139,22 +140,38 @@ def write_tree(folder: Path, robots: int, nodes: int, inject: bool) -> Path:
     return root
 
 
-def measure(root: Path, repeat: int) -> tuple[list[float], dict[str, object]]:
-    """Run the check ``repeat`` times after a warm-up; return wall times and the report."""
+def measure(root: Path, repeat: int, against: str | None = None
+            ) -> tuple[list[float], dict[str, object], list[float]]:
+    """Run the check ``repeat`` times after a warm-up; return wall times and the report.
+
+    ``against``: another launchverify, run right after ours in every round (the machine's
+    speed drifts within minutes: only checks run side by side compare); its times last.
+    """
     times: list[float] = []
+    other: list[float] = []
     report: dict[str, object] = {}
     for attempt in range(repeat + 1):
-        started = time.perf_counter()
-        done = subprocess.run([str(LAUNCHVERIFY), "check", str(root), "--format", "json",
-                               "--workspace", str(root.parents[2]), "--no-cache"],
-                              capture_output=True, text=True, check=False)
-        elapsed = time.perf_counter() - started
-        if done.returncode not in (0, 1):
-            sys.exit(f"launchverify failed: {done.stderr}")
-        report = json.loads(done.stdout)
+        elapsed, report = _check(str(LAUNCHVERIFY), root)
         if attempt:
             times.append(elapsed)
-    return times, report
+        if against is not None:
+            elapsed, _ = _check(against, root)
+            if attempt:
+                other.append(elapsed)
+    return times, report, other
+
+
+def _check(launchverify: str, root: Path) -> tuple[float, dict[str, object]]:
+    """Time one cold check of the fleet; return the wall seconds and the JSON report."""
+    started = time.perf_counter()
+    done = subprocess.run([launchverify, "check", str(root), "--format", "json",
+                           "--workspace", str(root.parents[2]), "--no-cache"],
+                          capture_output=True, text=True, check=False)
+    elapsed = time.perf_counter() - started
+    if done.returncode not in (0, 1):
+        sys.exit(f"{launchverify} failed: {done.stderr}")
+    report: dict[str, object] = json.loads(done.stdout)
+    return elapsed, report
 
 
 def nodes_in(root: Path) -> int:
@@ -171,13 +188,16 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--nodes", type=int, default=20)
     parser.add_argument("--repeat", type=int, default=3)
     parser.add_argument("--inject", action="store_true", help="add one mode-only duplicate")
+    parser.add_argument("--against", metavar="LAUNCHVERIFY",
+                        help="another launchverify (an older install), timed round by round "
+                             "with this one")
     args = parser.parse_args(argv)
     print(f"{'robots':>7} {'nodes':>7} {'findings':>9}  wall s (min/median/max)   "
-          f"ms per node")
+          f"ms per node" + ("   against s (median)" if args.against else ""))
     for robots in args.robots:
         with tempfile.TemporaryDirectory() as scratch:
             root = write_tree(Path(scratch), robots, args.nodes, args.inject)
-            times, report = measure(root, args.repeat)
+            times, report, other = measure(root, args.repeat, args.against)
             evaluated = nodes_in(root)
         findings = report.get("findings", [])
         assert isinstance(findings, list)
@@ -185,7 +205,8 @@ def main(argv: list[str] | None = None) -> int:
         median = statistics.median(times)
         print(f"{robots:>7} {evaluated:>7} {len(findings):>4} {','.join(codes) or '-':>4}  "
               f"{min(times):.3f} / {median:.3f} / {max(times):.3f}   "
-              f"{1000 * median / evaluated:.3f}")
+              f"{1000 * median / evaluated:.3f}"
+              + (f"   {statistics.median(other):.3f}" if other else ""))
         if args.inject and not any(f["code"] == "LV101" for f in findings):
             sys.exit("the injected duplicate was not found")
     return 0
