@@ -6,6 +6,7 @@ The hostile suite (test_hostile.py) attacks the whole; these pin the parts down.
 from __future__ import annotations
 
 import contextlib
+import gc
 import io
 import json
 import socket
@@ -311,6 +312,29 @@ def test_hundreds_of_python_files_do_not_stall_the_zygote(tmp_path: Path) -> Non
     report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path, time_limit=2))
     assert report.python_files == 360
     assert [f.code for f in report.findings] == []
+
+
+def test_the_collector_pauses_for_a_check_but_not_for_launch_files(tmp_path: Path) -> None:
+    """A check pauses Python's cycle collector (its graphs live to its end) and resumes
+    it; the workers running a launch file's code have it on, as that code expects."""
+    (tmp_path / "gc.launch.py").write_text(
+        "import gc\n\nfrom launch import LaunchDescription\nfrom launch_ros.actions import Node\n"
+        "\n\ndef generate_launch_description():\n"
+        "    name = 'collector_on' if gc.isenabled() else 'collector_off'\n"
+        "    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker',\n"
+        "                                   name=name)])\n")
+    assert gc.isenabled()
+    report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+    assert gc.isenabled()
+    names = [node.name.describe() for graph in report.graphs for node in graph.nodes
+             if node.name is not None]
+    assert names == ["collector_on"]
+    gc.disable()
+    try:
+        run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+        assert not gc.isenabled()  # as it found it
+    finally:
+        gc.enable()
 
 
 def test_an_enumeration_named_by_a_list_is_a_codec_error() -> None:

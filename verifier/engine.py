@@ -9,10 +9,12 @@ reached its file agrees (an argument unused standalone may be read by an include
 from __future__ import annotations
 
 import dataclasses
+import gc
 import os
 import time
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
@@ -212,14 +214,34 @@ def run_check(options: CheckOptions) -> Report:
     _require_paths(options)
     config = options.config
     tree = ConfigTree(config, nested=options.nested_configs)
-    workspace, index = build_index(options.paths, options.workspace, config.package_paths)
-    if options.affected:  # pre-commit: what the changed files may break, or nothing
-        includers = Includers.of_workspace(index.workspaces)
-        return _check_files(options, tree, workspace, index, lambda: includers, started,
-                            affected_launch_files(options.paths, includers))
-    with Background(partial(Includers.of_workspace, index.workspaces)) as scan:
-        return _check_files(options, tree, workspace, index, scan.result, started,
-                            discover(options.paths, filter_files=options.launch_files_only))
+    with collector_paused():
+        workspace, index = build_index(options.paths, options.workspace, config.package_paths)
+        if options.affected:  # pre-commit: what the changed files may break, or nothing
+            includers = Includers.of_workspace(index.workspaces)
+            return _check_files(options, tree, workspace, index, lambda: includers, started,
+                                affected_launch_files(options.paths, includers))
+        with Background(partial(Includers.of_workspace, index.workspaces)) as scan:
+            return _check_files(options, tree, workspace, index, scan.result, started,
+                                discover(options.paths, filter_files=options.launch_files_only))
+
+
+@contextmanager
+def collector_paused() -> Iterator[None]:
+    """Pause Python's cycle collector while a check runs (it resumes after).
+
+    What a check builds lives until its end: the graphs of every root, which the rules
+    read last. The collector, triggered by allocations, walked those growing graphs again
+    and again: 30% of a check of autoware_launch or of the 41-repository corpus. Objects
+    are still freed when unreferenced; only cycles wait for the end of the check (the
+    corpus's peak memory: 507 -> 524 MB).
+    """
+    enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if enabled:
+            gc.enable()
 
 
 def _check_files(options: CheckOptions, tree: ConfigTree, workspace: Path,

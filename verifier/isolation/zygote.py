@@ -170,6 +170,7 @@ class _Server:
         self.confinement = Confinement(self.setting.limits)
         _warm_up(self.setting)
         gc.freeze()  # workers' collections never touch (and copy) the inherited heap
+        gc.enable()  # forked from a check that paused it: a launch file's code runs as usual
         wake_read, wake_write = os.pipe()
         os.set_blocking(wake_write, False)
         signal.set_wakeup_fd(wake_write)
