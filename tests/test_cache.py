@@ -87,6 +87,28 @@ def test_a_new_file_is_seen(tree: Path, capsys: pytest.CaptureFixture[str]) -> N
     assert not cached and "LV101:other.launch.xml:1" in findings
 
 
+def test_a_removed_file_is_seen(tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tree / "notes.txt").write_text("not read by the check, but below the workspace")
+    check(capsys, tree)
+    assert check(capsys, tree)[1]
+    (tree / "notes.txt").unlink()
+    assert not check(capsys, tree)[1]
+
+
+def test_a_file_read_outside_the_workspace_is_followed(
+        tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A baseline (or an installed package's file) outside the walked folders counts."""
+    baseline = tree.parent / "baseline.json"
+    main(["check", str(tree), "--workspace", str(tree), "--write-baseline", str(baseline)])
+    capsys.readouterr()
+    assert check(capsys, tree, "--baseline", str(baseline)) == (set(), False)
+    assert check(capsys, tree, "--baseline", str(baseline)) == (set(), True)
+    recorded = json.loads(baseline.read_text())
+    baseline.write_text(json.dumps({**recorded, "findings": []}))
+    findings, cached = check(capsys, tree, "--baseline", str(baseline))
+    assert not cached and findings == {"LV204:top.launch.xml:3"}
+
+
 def test_other_options_are_another_result(tree: Path,
                                           capsys: pytest.CaptureFixture[str]) -> None:
     check(capsys, tree)

@@ -8,7 +8,7 @@ import pytest
 
 from launchverify import fanout
 from launchverify.engine import CheckOptions, Report, run_check
-from launchverify.fanout import Counter, RuleRun, Share, pieces
+from launchverify.fanout import NextPiece, Piece, RuleRun, pieces
 from launchverify.registry import all_rules
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
@@ -48,8 +48,8 @@ def test_a_child_says_how_many_solver_queries_it_asked(alone: Report) -> None:
             delattr(graph, "_reasoner")
     rules = list(all_rules())
     run = RuleRun(graphs, rules, RuleContext(), _isolated, dead)
-    fanout._SHARED.update(run=run, pieces=[Share(tuple(range(len(rules))), (), ())],
-                          counter=Counter(1))
+    fanout._SHARED.update(run=run, pieces=[Piece(tuple(range(len(rules))), (), ())],
+                          counter=NextPiece(1))
     try:
         _, queries = fanout._child()
     finally:
@@ -62,7 +62,7 @@ def test_pieces_a_failed_child_took_are_run_here(alone: Report,
                                                 monkeypatch: pytest.MonkeyPatch) -> None:
     def broken() -> tuple[fanout.PerGraph, dict[int, int]]:
         counter = fanout._SHARED["counter"]
-        assert isinstance(counter, Counter)
+        assert isinstance(counter, NextPiece)
         while counter.take() is not None:  # takes everything, then is lost
             pass
         raise RuntimeError("child lost")
@@ -75,15 +75,15 @@ def test_pieces_a_failed_child_took_are_run_here(alone: Report,
 def test_a_lock_never_given_back_stops_no_one(alone: Report,
                                               monkeypatch: pytest.MonkeyPatch) -> None:
     """A child killed holding the counter's lock: the checking process does the rest."""
-    real = Counter.__init__
+    real = NextPiece.__init__
 
-    def held(self: Counter, count: int) -> None:
+    def held(self: NextPiece, count: int) -> None:
         real(self, count)
         self._next.get_lock().acquire()
 
     monkeypatch.setattr(fanout, "MIN_WORK", 0)
     monkeypatch.setattr(fanout, "LOCK_SECONDS", 0.01)
-    monkeypatch.setattr(Counter, "__init__", held)
+    monkeypatch.setattr(NextPiece, "__init__", held)
     assert _seen(_check(jobs=2)) == _seen(alone)
 
 
@@ -91,12 +91,12 @@ def test_the_pieces_cover_each_rule_and_graph_once(alone: Report) -> None:
     rules = list(all_rules())
     run = RuleRun(alone.graphs, rules, None, None, None)  # type: ignore[arg-type]
     gathering = [r for r, rule in enumerate(rules) if rule.finish is not fanout.Rule.finish]
-    shares = pieces(run, exclude=gathering)
-    assert pieces(run, exclude=gathering) == shares  # deterministic
-    covered = [(r, g) for share in shares for r in share.whole for g in range(len(alone.graphs))]
-    covered += [(r, g) for share in shares for r in share.split for g in share.graphs]
+    found = pieces(run, exclude=gathering)
+    assert pieces(run, exclude=gathering) == found  # deterministic
+    covered = [(r, g) for piece in found for r in piece.whole for g in range(len(alone.graphs))]
+    covered += [(r, g) for piece in found for r in piece.split for g in piece.graphs]
     expected = [(r, g) for r in range(len(rules)) if r not in gathering
                 for g in range(len(alone.graphs))]
     assert sorted(covered) == sorted(expected)
-    whole = {r for share in shares for r in share.whole}
+    whole = {r for piece in found for r in piece.whole}
     assert whole == {r for r, rule in enumerate(rules) if getattr(rule, "every_context", False)}

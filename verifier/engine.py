@@ -118,9 +118,15 @@ class Report:
         return solver_queries(self.graphs)
 
     def detached(self) -> Report:
-        """Return this report without its graphs, what reporters need kept (to store)."""
-        return dataclasses.replace(self, graphs=[], unseen=self.not_judged(),
-                                   queries=self.solver_queries(), loaded=self.loaded_files())
+        """Return this report without its graphs, what reporters need kept (to store).
+
+        Findings keep no path condition either: it only chose which findings to keep, and
+        reading it back would import the evaluator's values for nothing.
+        """
+        findings = [dataclasses.replace(f, path=()) if f.path else f for f in self.findings]
+        return dataclasses.replace(self, findings=findings, graphs=[],
+                                   unseen=self.not_judged(), queries=self.solver_queries(),
+                                   loaded=self.loaded_files())
 
     def not_judged(self) -> list[tuple[str, Span]]:
         """Return where evaluations were incomplete (reason, place), each once, as met.

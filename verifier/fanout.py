@@ -82,7 +82,7 @@ class RuleRun:
 
 
 @dataclass(frozen=True)
-class Share:
+class Piece:
     """A piece of the work: rules to run on every graph, and rules to run on some graphs."""
 
     whole: tuple[int, ...] = ()  # rules asking every context: on every graph, here
@@ -105,7 +105,7 @@ _SHARED: dict[str, object] = {}  # what a forked child works on (set before the 
 LOCK_SECONDS = 5.0  # a process killed holding the counter's lock must not stop the others
 
 
-class Counter:
+class NextPiece:
     """The next piece to take, shared by the processes of one check (forked with them).
 
     Each process takes pieces until none is left, so none waits while another works:
@@ -132,7 +132,7 @@ class Counter:
         return index if index < self.pieces else None
 
 
-def _drain(run: RuleRun, pieces: list[Share], counter: Counter) -> PerGraph:
+def _drain(run: RuleRun, pieces: list[Piece], counter: NextPiece) -> PerGraph:
     """Run pieces, here, as long as some are left."""
     out: PerGraph = {}
     while (index := counter.take()) is not None:
@@ -146,7 +146,7 @@ def _child() -> tuple[PerGraph, dict[int, int]]:
     pieces = _SHARED["pieces"]
     counter = _SHARED["counter"]
     assert isinstance(run, RuleRun) and isinstance(pieces, list)
-    assert isinstance(counter, Counter)
+    assert isinstance(counter, NextPiece)
     before = _queries(run.graphs)  # reasoners the parent made before the fork come along
     found = _drain(run, pieces, counter)
     after = _queries(run.graphs)
@@ -174,7 +174,7 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
     import multiprocessing  # here: a small check never pays for importing them
     from concurrent.futures import ProcessPoolExecutor
 
-    counter = Counter(len(shared))
+    counter = NextPiece(len(shared))
     _SHARED.update(run=run, pieces=shared, counter=counter)
     out: PerGraph = {}
     try:
@@ -208,7 +208,7 @@ def _collected(future: Future[tuple[PerGraph, dict[int, int]]]
         return None
 
 
-def pieces(run: RuleRun, exclude: Iterable[int] = ()) -> list[Share]:
+def pieces(run: RuleRun, exclude: Iterable[int] = ()) -> list[Piece]:
     """Split the rules' work into pieces, the largest first (deterministic).
 
     A rule asking for every context is one piece: the graphs it has seen settle places
@@ -220,11 +220,11 @@ def pieces(run: RuleRun, exclude: Iterable[int] = ()) -> list[Share]:
              if r not in skipped and getattr(rule, "every_context", False)]
     split = tuple(r for r in range(len(run.rules)) if r not in skipped and r not in whole)
     total = _work(run.graphs)
-    sized = [(total, Share(whole=(r,))) for r in whole]
+    sized = [(total, Piece(whole=(r,))) for r in whole]
     if split:
-        sized += [(len(split) * _work([graph]), Share(split=split, graphs=(g,)))
+        sized += [(len(split) * _work([graph]), Piece(split=split, graphs=(g,)))
                   for g, graph in enumerate(run.graphs)]
-    return [share for _, share in sorted(sized, key=lambda item: -item[0])]
+    return [piece for _, piece in sorted(sized, key=lambda item: -item[0])]
 
 
 def _work(graphs: list[LaunchGraph]) -> int:

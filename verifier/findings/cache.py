@@ -95,9 +95,15 @@ def _walk(folders: Iterable[str], skip: str | None = None) -> dict[str, Stamp]:
     link to a parent is no endless walk). Paths stay strings: this runs on every check,
     over every file of the workspace.
     """
-    found: dict[str, Stamp] = {}
+    return {path: (info.st_size, info.st_mtime_ns, None)
+            for path, info in _files(folders, skip)}
+
+
+def _files(folders: Iterable[str], skip: str | None) -> Iterator[tuple[str, os.stat_result]]:
+    """Yield every regular file below the folders with its status (see ``_walk``)."""
     pending = list(folders)
     visited: set[tuple[int, int]] = set()
+    regular = stat.S_ISREG
     while pending:
         folder = pending.pop()
         try:
@@ -110,17 +116,16 @@ def _walk(folders: Iterable[str], skip: str | None = None) -> dict[str, Stamp]:
             continue
         for entry in entries:
             try:
-                if entry.is_dir(follow_symlinks=True):
-                    if (entry.name not in SKIP_DIRS and not entry.name.startswith(".")
-                            and entry.path != skip):
+                if entry.is_dir():
+                    name = entry.name
+                    if name not in SKIP_DIRS and name[0] != "." and entry.path != skip:
                         pending.append(entry.path)
                     continue
-                info = entry.stat(follow_symlinks=True)
+                info = entry.stat()
             except OSError:
                 continue
-            if stat.S_ISREG(info.st_mode):  # FIFOs, devices, sockets hold no content
-                found[entry.path] = (info.st_size, info.st_mtime_ns, None)
-    return found
+            if regular(info.st_mode):  # FIFOs, devices, sockets hold no content
+                yield entry.path, info
 
 
 def _stat(path: str) -> Stamp | None:
@@ -167,15 +172,21 @@ def stamps_of(folders: list[str], files: Iterable[str], now: float,
 
 
 def unchanged(entry: Entry, skip: str | None = None) -> bool:
-    """Return whether every file the result rests on is as it was."""
-    now = _walk(entry.folders, skip)
-    for path in entry.stamps:
-        if path not in now and (stamp := _stat(path)) is not None:
-            now[path] = stamp  # a file outside the folders
-    if now.keys() != entry.stamps.keys():
-        return False  # a file appeared or went away
-    for path, (size, mtime, content) in entry.stamps.items():
-        if now[path][:2] != (size, mtime):
+    """Return whether every file the result rests on is as it was (the first change says)."""
+    stamps = entry.stamps
+    walked: set[str] = set()
+    for path, info in _files(entry.folders, skip):
+        stamp = stamps.get(path)
+        if stamp is None or stamp[0] != info.st_size or stamp[1] != info.st_mtime_ns:
+            return False  # a new file, or a changed one
+        if stamp[2] is not None and _hash(path) != stamp[2]:
+            return False
+        walked.add(path)
+    for path, (size, mtime, content) in stamps.items():
+        if path in walked:
+            continue
+        now = _stat(path)  # gone, or read outside the folders (an ament index folder)
+        if now is None or now[:2] != (size, mtime):
             return False
         if content is not None and _hash(path) != content:
             return False
