@@ -87,6 +87,16 @@ def test_a_lock_never_given_back_stops_no_one(alone: Report,
     assert _seen(_check(jobs=2)) == _seen(alone)
 
 
+def test_without_semaphores_everything_runs_here(alone: Report,
+                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    def refused(self: NextPiece, count: int) -> None:
+        raise PermissionError("no /dev/shm")
+
+    monkeypatch.setattr(fanout, "MIN_WORK", 0)
+    monkeypatch.setattr(NextPiece, "__init__", refused)
+    assert _seen(_check(jobs=2)) == _seen(alone)
+
+
 def test_the_pieces_cover_each_rule_and_graph_once(alone: Report) -> None:
     rules = list(all_rules())
     run = RuleRun(alone.graphs, rules, None, None, None)  # type: ignore[arg-type]

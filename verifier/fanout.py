@@ -174,12 +174,16 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
     import multiprocessing  # here: a small check never pays for importing them
     from concurrent.futures import ProcessPoolExecutor
 
-    counter = NextPiece(len(shared))
+    try:
+        counter = NextPiece(len(shared))
+        pool = ProcessPoolExecutor(max_workers=jobs - 1,
+                                   mp_context=multiprocessing.get_context("fork"))
+    except OSError:  # no semaphores here (a container without /dev/shm): one process
+        return run.run(list(range(len(run.rules))), everything)
     _SHARED.update(run=run, pieces=shared, counter=counter)
     out: PerGraph = {}
     try:
-        with ProcessPoolExecutor(max_workers=jobs - 1,
-                                 mp_context=multiprocessing.get_context("fork")) as pool:
+        with pool:
             futures = [pool.submit(_child) for _ in range(jobs - 1)]
             out.update(run.run(gathering, everything))  # only here: ``finish`` needs them
             out.update(_drain(run, shared, counter))
