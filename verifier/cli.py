@@ -26,6 +26,7 @@ from launchverify.engine import (
     UsageError,
     build_index,
     canonical,
+    collector_paused,
     parse_arguments,
     parse_environment,
     run_check,
@@ -678,8 +679,9 @@ def _graph(args: argparse.Namespace) -> int:
     if not path.is_file():
         raise UsageError(f"no such file: {paths[0]!r}")
     workspace, index = build_index([path], args.workspace)
-    graph = evaluate(canonical(path), index=index, workspace=workspace, pinned=arguments,
-                     environment=parse_environment(args.env))
+    with collector_paused():  # as a check does (engine.collector_paused says why)
+        graph = evaluate(canonical(path), index=index, workspace=workspace,
+                         pinned=arguments, environment=parse_environment(args.env))
     graph.included_elsewhere = Includers.of_workspace(index.workspaces).included(graph.root)
     from launchverify.topology.compose import WorkspaceInterfaces
 
