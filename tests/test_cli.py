@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import gc
 import json
 import os
 import subprocess
@@ -153,6 +154,20 @@ def test_the_command_flushes_everything_before_its_quick_exit(
     done = subprocess.run([sys.executable, "-m", "launchverify", "rules"],
                           capture_output=True, text=True, check=False, env=buffered)
     assert (done.returncode, done.stdout) == (code, out)
+
+
+def test_the_collector_is_paused_for_one_shot_commands_only(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """The command pauses Python's cycle collector from its start; a launch run by
+    ``launchverify run`` (or the language server) must collect its garbage as it goes."""
+    gc.disable()
+    try:
+        assert main(["rules"]) == 0 and not gc.isenabled()  # as found: paused till the end
+        assert main(["run", "/nonexistent/x.launch.py"]) == 2 and gc.isenabled()
+    finally:
+        gc.enable()
+    capsys.readouterr()
+    assert main(["rules"]) == 0 and gc.isenabled()  # a library caller gets it back on
 
 
 def _without_times(report: dict[str, Any]) -> dict[str, Any]:

@@ -1,5 +1,5 @@
 """Allow ``python -m launchverify``."""
 
-from launchverify.cli import entry
+from launchverify.command import run
 
-entry()
+run()

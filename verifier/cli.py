@@ -7,12 +7,12 @@ one, 2 for a usage error or an internal failure (never a traceback on the user's
 from __future__ import annotations
 
 import argparse
+import gc
 import json
 import os
 import sys
-import threading
 from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager
+from contextlib import contextmanager, nullcontext
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TextIO
 
@@ -47,6 +47,7 @@ if TYPE_CHECKING:
     from launchverify.graph import LaunchGraph
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
+LONG_RUNNING = frozenset({"lsp", "run"})  # commands that serve or supervise until stopped
 
 
 FORMATS = ("text", "json", "sarif", "junit", "github")
@@ -263,8 +264,15 @@ def main(argv: Sequence[str] | None = None) -> int:
     handlers = {"check": _check, "report": _report, "graph": _graph, "rules": _rules,
                 "explain": _explain, "run": _run, "completion": _completion, "lsp": _lsp,
                 "interfaces": topology_command.run}
+    # Until the output is written (engine.collector_paused says why); not for the commands
+    # that run long, a server and a launch, whose garbage must go as they run.
+    long_running = args.command in LONG_RUNNING
+    if long_running:
+        gc.enable()  # paused from the start by the command (launchverify.command)
+    paused = nullcontext() if long_running else collector_paused()
     try:
-        return handlers[args.command](args)
+        with paused:
+            return handlers[args.command](args)
     except (UsageError, RegistryError, ConfigError, BaselineError) as error:
         print(f"launchverify: error: {error}", file=sys.stderr)
         return EXIT_ERROR
@@ -274,26 +282,6 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(f"launchverify: internal error: {type(error).__name__}: {error}\n"
               "Please report this with the launch file that caused it.", file=sys.stderr)
         return EXIT_ERROR
-
-
-def entry() -> None:
-    """The ``launchverify`` command: ``main``, then an exit that frees nothing.
-
-    A check of a large tree holds millions of objects; the interpreter freeing them one by
-    one at exit took 0.4 s of a 3 s check of the fleet bench. By the time ``main`` returns,
-    worker pools, forked children and temporary folders are closed, so only the output is
-    left to flush (mypy exits the same way). With a thread still running (none of ours
-    should be), or a profiler or coverage measuring, the ordinary exit runs.
-    """
-    status = main()
-    try:
-        sys.stdout.flush()
-        sys.stderr.flush()
-    except OSError:  # a closed pipe (`launchverify check | head`): the usual exit reports it
-        raise SystemExit(status) from None
-    if threading.active_count() > 1 or sys.getprofile() or sys.gettrace():
-        raise SystemExit(status)  # a profiler or coverage writes its data at exit
-    os._exit(status)
 
 
 def check_options(args: argparse.Namespace, *, progress: bool = False
