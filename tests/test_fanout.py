@@ -6,9 +6,9 @@ from pathlib import Path
 
 import pytest
 
-from launchverify import fanout
 from launchverify.engine import CheckOptions, Report, run_check
-from launchverify.fanout import NextPiece, Piece, RuleRun, pieces
+from launchverify.parallel import fanout
+from launchverify.parallel.fanout import NextPiece, Piece, RuleRun, pieces
 from launchverify.registry import all_rules
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"

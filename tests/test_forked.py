@@ -7,9 +7,9 @@ from pathlib import Path
 
 import pytest
 
-from launchverify import forked
 from launchverify.engine import CheckOptions, run_check
-from launchverify.forked import Background
+from launchverify.parallel import forked
+from launchverify.parallel.forked import Background
 from launchverify.workspace.includers import Includers
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"

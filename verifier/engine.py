@@ -211,7 +211,7 @@ def _require_paths(options: CheckOptions) -> None:
 
 def run_check(options: CheckOptions) -> Report:
     """Check launch files and return the findings, de-duplicated and sorted."""
-    from launchverify.forked import Background
+    from launchverify.parallel.forked import Background
     from launchverify.workspace.affected import affected_launch_files
     from launchverify.workspace.discover import discover
     from launchverify.workspace.includers import Includers
@@ -500,7 +500,7 @@ def _isolated(rule: Rule, findings: Callable[[], Iterable[Finding]], file: Path 
 def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
               ctx: RuleContext, jobs: int = 1) -> list[Finding]:
     """Run every rule on every graph (in up to ``jobs`` processes) and merge the findings."""
-    from launchverify.fanout import RuleRun, rule_findings
+    from launchverify.parallel.fanout import RuleRun, rule_findings
 
     merged: dict[tuple[object, ...], Finding] = {}
     votes: dict[tuple[object, ...], set[int]] = defaultdict(set)  # graphs that agree

@@ -22,9 +22,9 @@ from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from launchverify.forked import can_fork
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
+from launchverify.parallel.forked import can_fork
 from launchverify.rule import Finding, Rule, RuleContext
 
 if TYPE_CHECKING:
