@@ -271,9 +271,9 @@ def _check_files(options: CheckOptions, tree: ConfigTree, workspace: Path,
     files = [f for f in found
              if not tree.nearest(f).excludes(f) and not _excluded(f, options.exclude)]
     selection = Selection(options, tree)
-    rules = selection.rules()
     display = {canonical(f): str(f) for f in files}
     if not files:
+        selection.rules()  # a selection that names no rule is still an error
         return Report([], 0, time.perf_counter() - started, display)
     limits = Limits(seconds=options.time_limit)
     graphs = []
@@ -284,6 +284,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree, workspace: Path,
                            arguments=options.arguments) as python:
         loader = FileCache(index, workspace, python)
         python.prefetch(canonical(f) for f in files if launch_format(f) == "python")
+        rules = selection.rules()  # the rules load while the workers start
         for done, file in enumerate(files):
             graphs.append(evaluate(canonical(file), index=index, workspace=workspace,
                                    pinned=options.arguments, environment=options.environment,
