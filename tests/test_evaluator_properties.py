@@ -14,7 +14,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from launchverify.evaluate.runner import evaluate
-from launchverify.evaluate.values import argument_names, is_unset
+from launchverify.evaluate.values import argument_names, is_literal, is_unset
 from launchverify.ir.subst import Concat, LaunchConfig, Sub, Text, walk
 from launchverify.ir.symbolic import Arg, Select, Truthy, Unset
 from launchverify.render.graph_out import GraphView
@@ -174,7 +174,10 @@ def _values() -> st.SearchStrategy[Sub]:
 @given(st.lists(_values(), min_size=1, max_size=6), st.data())
 def test_value_summaries_are_those_of_a_full_walk(values: list[Sub], data: st.DataObject
                                                   ) -> None:
-    """Summaries reuse those of shared parts (a chain of assignments): same answers."""
+    """Summaries reuse those of shared parts (a chain of assignments): same answers.
+
+    (Of the literal kinds, the values generated here hold only ``Text`` and ``Concat``.)
+    """
     chain = values[0]
     for value in values[1:]:  # each link holds the previous value, as assignments do
         chain = Select((Truthy(Arg("c")),), value, chain) if data.draw(st.booleans()) \
@@ -183,3 +186,4 @@ def test_value_summaries_are_those_of_a_full_walk(values: list[Sub], data: st.Da
             walked = walk(part)
             assert is_unset(part) == any(isinstance(x, Unset) for x in walked)
             assert argument_names(part) == {x.name for x in walked if isinstance(x, Arg)}
+            assert is_literal(part) == all(isinstance(x, (Text, Concat)) for x in walked)

@@ -56,23 +56,31 @@ def argument_names(sub: s.Sub) -> frozenset[str]:
     return _summary(sub)[1]
 
 
-_Summary = tuple[bool, frozenset[str]]  # may be unset; the arguments in it
-_SUMMARIES: dict[int, tuple[s.Sub, bool, frozenset[str]]] = {}  # by identity, object kept
+def is_literal(sub: s.Sub) -> bool:
+    """Return whether a condition is written without any input (``if="true"``)."""
+    return _summary(sub)[2]
+
+
+_LITERAL_PARTS = (s.Text, s.Concat, s.PythonExpr, s.NotSub, s.AndSub, s.OrSub, s.AnySub,
+                  s.AllSub, s.EqualsSub, s.NotEqualsSub, s.IfElse)
+_Summary = tuple[bool, frozenset[str], bool]  # may be unset; its arguments; literal
+_SUMMARIES: dict[int, tuple[s.Sub, bool, frozenset[str], bool]] = {}  # by id, object kept
 MAX_SUMMARIES = 200_000
 _NO_NAMES: frozenset[str] = frozenset()
 
 
 def _summary(sub: s.Sub) -> _Summary:
-    """Return what ``is_unset`` and ``argument_names`` ask, each part summarised once.
+    """Return what ``is_unset``, ``argument_names`` and ``is_literal`` ask, each part once.
 
     A configuration assigned under a condition wraps its previous value in a ``Select``:
     the chains grow long (a root of autoware_launch declares the same argument in dozens
     of files), and walking a whole chain at each declaration was a tenth of evaluating.
-    The summary of a new link reuses its tail's.
+    The summary of a new link reuses its tail's; an included file's conditions, asked
+    again by every root, are summarised once.
     """
     known = _SUMMARIES.get(id(sub))
     if known is not None and known[0] is sub:
-        return known[1], known[2]
+        return known[1:]
     if len(_SUMMARIES) >= MAX_SUMMARIES:
         _SUMMARIES.clear()
     stack: list[tuple[s.Sub, bool]] = [(sub, False)]
@@ -87,14 +95,15 @@ def _summary(sub: s.Sub) -> _Summary:
             continue
         unset = isinstance(item, Unset)
         names = frozenset((item.name,)) if isinstance(item, Arg) else _NO_NAMES
+        literal = isinstance(item, _LITERAL_PARTS)
         for child in children:
-            _, child_unset, child_names = _SUMMARIES[id(child)]
+            _, child_unset, child_names, child_literal = _SUMMARIES[id(child)]
             unset = unset or child_unset
+            literal = literal and child_literal
             if child_names and not child_names <= names:
                 names = child_names if not names else names | child_names
-        _SUMMARIES[id(item)] = (item, unset, names)
-    _, unset, names = _SUMMARIES[id(sub)]
-    return unset, names
+        _SUMMARIES[id(item)] = (item, unset, names, literal)
+    return _SUMMARIES[id(sub)][1:]
 
 
 def _summarised(sub: s.Sub) -> bool:
@@ -574,6 +583,7 @@ __all__ = [
     "Reducer",
     "argument_names",
     "describe_value",
+    "is_literal",
     "is_unset",
     "machine_dependent",
     "ns_prefix",

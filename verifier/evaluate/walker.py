@@ -34,6 +34,7 @@ from launchverify.evaluate.scope import (
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
 from launchverify.evaluate.values import (
     argument_names,
+    is_literal,
     is_unset,
     machine_dependent,
     ns_prefix,
@@ -917,26 +918,6 @@ def _opaque(description: str, where: Span) -> Guard:
     from launchverify.ir.symbolic import Opaque
 
     return Opaque(description, where=where)
-
-
-_LITERAL_PARTS = (s.Text, s.Concat, s.PythonExpr, s.NotSub, s.AndSub, s.OrSub, s.AnySub,
-                  s.AllSub, s.EqualsSub, s.NotEqualsSub, s.IfElse)
-
-
-_LITERAL: dict[int, tuple[s.Sub, bool]] = {}  # by id: an include's conditions, asked again
-MAX_LITERAL = 50_000
-
-
-def is_literal(expression: s.Sub) -> bool:
-    """Return whether a condition is written without any input (``if="true"``)."""
-    known = _LITERAL.get(id(expression))
-    if known is not None and known[0] is expression:
-        return known[1]
-    found = all(isinstance(part, _LITERAL_PARTS) for part in s.walk(expression))
-    if len(_LITERAL) >= MAX_LITERAL:
-        _LITERAL.clear()
-    _LITERAL[id(expression)] = (expression, found)
-    return found
 
 
 def depends_on_argument(value: s.Sub, name: str) -> bool:
