@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 from launchverify import __version__
 from launchverify.ament import excluded_by_ament
+from launchverify.command import LONG_RUNNING
 from launchverify.config import Config, ConfigError, find_config, load_config
 from launchverify.engine import (
     DEFAULT_TIME_LIMIT,
@@ -47,7 +48,6 @@ if TYPE_CHECKING:
     from launchverify.graph import LaunchGraph
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
-LONG_RUNNING = frozenset({"lsp", "run"})  # commands that serve or supervise until stopped
 
 
 FORMATS = ("text", "json", "sarif", "junit", "github")
@@ -667,9 +667,8 @@ def _graph(args: argparse.Namespace) -> int:
     if not path.is_file():
         raise UsageError(f"no such file: {paths[0]!r}")
     workspace, index = build_index([path], args.workspace)
-    with collector_paused():  # as a check does (engine.collector_paused says why)
-        graph = evaluate(canonical(path), index=index, workspace=workspace,
-                         pinned=arguments, environment=parse_environment(args.env))
+    graph = evaluate(canonical(path), index=index, workspace=workspace, pinned=arguments,
+                     environment=parse_environment(args.env))
     graph.included_elsewhere = Includers.of_workspace(index.workspaces).included(graph.root)
     from launchverify.topology.compose import WorkspaceInterfaces
 

@@ -6,7 +6,7 @@ end; the collector walking it again and again was a third of a large check, and 
 of a one-file check went to collections during the imports), and the process leaves
 without freeing its objects (freeing a large check's objects one by one took 0.4 s of a
 3 s check of the fleet bench). ``cli.main`` turns the collector back on for the commands
-that run long (``cli.LONG_RUNNING``).
+that run long (``LONG_RUNNING``).
 """
 
 import gc
@@ -14,11 +14,13 @@ import os
 import sys
 import threading
 
+LONG_RUNNING = frozenset({"lsp", "run"})  # commands that serve or supervise until stopped
+
 
 def run() -> None:
     """Run the command line, then exit at once (its output flushed)."""
     command = next((arg for arg in sys.argv[1:] if not arg.startswith("-")), None)
-    if command not in ("lsp", "run"):  # cli.LONG_RUNNING, not imported yet on purpose
+    if command not in LONG_RUNNING:
         gc.disable()
     from launchverify.cli import main
 
