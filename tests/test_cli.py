@@ -170,6 +170,36 @@ def test_the_collector_is_paused_for_one_shot_commands_only(
     assert main(["rules"]) == 0 and gc.isenabled()  # a library caller gets it back on
 
 
+@pytest.mark.parametrize(("argv", "collecting"), [(["check", "x"], False),
+                                                   (["lsp"], True), (["run", "x"], True)])
+def test_the_command_pauses_the_collector_from_its_start(
+        argv: list[str], collecting: bool, monkeypatch: pytest.MonkeyPatch) -> None:
+    import launchverify.cli
+    from launchverify import command
+
+    seen: list[bool] = []
+
+    def main() -> int:  # what the collector is doing while the command runs
+        seen.append(gc.isenabled())
+        return 3
+
+    monkeypatch.setattr(launchverify.cli, "main", main)
+    monkeypatch.setattr(sys, "argv", ["launchverify", *argv])
+    monkeypatch.setattr(command.threading, "active_count", lambda: 1)
+
+    def leave(status: int) -> None:
+        raise SystemExit(f"left with {status}")
+
+    monkeypatch.setattr(command.os, "_exit", leave)
+    monkeypatch.setattr(sys, "gettrace", lambda: None)  # coverage would keep the usual exit
+    try:
+        with pytest.raises(SystemExit, match="left with 3"):
+            command.run()
+    finally:
+        gc.enable()
+    assert seen == [collecting]
+
+
 def _without_times(report: dict[str, Any]) -> dict[str, Any]:
     return {**report, "summary": {k: v for k, v in report["summary"].items()
                                   if k != "seconds"}}
