@@ -46,7 +46,8 @@ CONDITIONS = [None, "$(var sim)", "$(var undeclared)_on", "$(var mode)", "$(not 
               "$(eval '\"$(var mode)\" == \"c\"')", "$(var undeclared)",
               "$(eval \"'$(var robot)' == 'scout'\")", "$(command 'probe')",
               "$(not $(command 'probe'))", "$(find-exec lidar_driver)", "$(var side)",
-              "$(equals $(var side) left)"]
+              "$(equals $(var side) left)", "$(eval \"'$(env MODE_X 0)' == '1'\")",
+              "$(eval \"'$(env ROBOT_NS)' == 'scout' and '$(var robot)' == 'r1'\")"]
 
 # a condition is written ``if=`` or, with a leading "!", ``unless=``
 nodes = st.lists(st.tuples(st.sampled_from(["cam", "lidar"]), st.sampled_from(NAMESPACES),
@@ -167,6 +168,25 @@ def test_a_condition_read_unset_can_hold(tmp_path: Path) -> None:
     (node,) = graph.nodes
     reasoner = reasoner_for(graph)
     (guard,) = node.origin.path
+    assert reasoner.never((), guard) is None
+    assert reasoner.always((), guard) is False
+    assert reasoner.queries == 0
+
+
+def test_free_strings_inside_values_are_tried_with_the_literals_they_meet(
+        tmp_path: Path) -> None:
+    """An argument without default over the switches, an environment variable: z3 takes
+    each as any string; the search tries the literals they are compared with."""
+    graph = graph_of(tmp_path, [
+        ("cam", "", "$(eval \"'$(var robot)' == 'scout'\")"),
+        ("cam", "", "$(var sim)"),
+        ("lidar", "", "$(eval \"'$(env MODE_X 0)' == '1'\")"),
+    ])
+    first, second, third = graph.nodes
+    reasoner = reasoner_for(graph)
+    witness = reasoner.together(first.origin.path, second.origin.path)
+    assert witness is not None and witness.values == {"sim": "true"}  # robot: never a witness
+    (guard,) = third.origin.path
     assert reasoner.never((), guard) is None
     assert reasoner.always((), guard) is False
     assert reasoner.queries == 0
