@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from pathlib import Path
 
 import pytest
 
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.static_args import Found, StaticSubtree, static_arguments
+from launchverify.problems import ProblemSink
 from launchverify.workspace.discover import discover
 from launchverify.workspace.packages import PackageIndex
 
@@ -38,3 +40,33 @@ def test_shared_answers_equal_fresh_ones(group: str) -> None:
                 assert reused == fresh, path
         finally:
             cache.close()
+
+
+class _Recorder:
+    """A Python loader that records what it is asked, and when."""
+
+    def __init__(self) -> None:
+        self.events: list[tuple[str, str]] = []
+
+    def prefetch(self, paths: Iterable[Path]) -> None:
+        self.events += [("prefetch", path.name) for path in paths]
+
+    def load(self, path: Path, sink: ProblemSink) -> None:
+        self.events.append(("load", path.name))
+
+
+def test_reading_ahead_starts_included_python_files_before_the_walk(tmp_path: Path) -> None:
+    """root.xml -> mid.xml -> leaf.launch.py: the Python file is started, not loaded."""
+    (tmp_path / "leaf.launch.py").write_text("def generate_launch_description(): ...\n")
+    (tmp_path / "mid.launch.xml").write_text(
+        f'<launch><group if="$(var x)"><include file="{tmp_path}/leaf.launch.py"/></group>'
+        "</launch>")
+    (tmp_path / "root.launch.xml").write_text(
+        f'<launch><include file="{tmp_path}/mid.launch.xml"/>'
+        f'<include file="{tmp_path}/missing.launch.py"/></launch>')
+    python = _Recorder()
+    cache = FileCache(PackageIndex([tmp_path]), tmp_path, python)
+    cache.read_ahead([tmp_path / "root.launch.xml"])
+    assert python.events == [("prefetch", "leaf.launch.py")]
+    cache(tmp_path / "leaf.launch.py")  # the walk reaches it: loaded, not started again
+    assert python.events == [("prefetch", "leaf.launch.py"), ("load", "leaf.launch.py")]

@@ -284,6 +284,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree, workspace: Path,
                            arguments=options.arguments) as python:
         loader = FileCache(index, workspace, python)
         python.prefetch(canonical(f) for f in files if launch_format(f) == "python")
+        loader.read_ahead(canonical(f) for f in files)
         rules = selection.rules()  # the rules load while the workers start
         for done, file in enumerate(files):
             graphs.append(evaluate(canonical(file), index=index, workspace=workspace,

@@ -9,7 +9,7 @@ wins.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -122,6 +122,23 @@ def static_arguments(launch: a.LaunchFile, loader: Loader, index: PackageIndex,
             seen.add(declaration.name)
             found.append((declaration, via, conditional))
     return found
+
+
+def included_files(actions: tuple[a.Action, ...], index: PackageIndex) -> Iterator[Path]:
+    """Yield the files actions include by a path known without a context, in their order.
+
+    Includes under conditions, groups, timers and handlers count: whether they run is not
+    known here. (Static discovery follows the same paths.)
+    """
+    reducer = ContextFreeReducer(index)
+    stack = list(reversed(actions))
+    while stack:
+        action = stack.pop()
+        if isinstance(action, a.Include):
+            target = _resolve(action, reducer, index)
+            if target is not None:
+                yield target
+        stack.extend(reversed(action.sub_actions()))
 
 
 def include_argument_names(include: a.Include, index: PackageIndex) -> set[str]:

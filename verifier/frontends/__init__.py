@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Protocol
@@ -24,6 +25,9 @@ class PythonLoader(Protocol):
 
     def load(self, path: Path, sink: ProblemSink) -> LaunchFile | None:
         """Return the file's IR, recording its problems in ``sink``."""
+
+    def prefetch(self, paths: Iterable[Path]) -> None:
+        """Start on files that will be loaded soon, if the loader can work ahead."""
 
 
 @dataclass

@@ -15,7 +15,7 @@ import io
 import re
 import sys
 import traceback
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from contextlib import contextmanager
 from pathlib import Path
 from types import CodeType
@@ -76,6 +76,9 @@ class PythonFrontend:
         owner = self.index.owner(path)
         where = [owner.name, path.name] if owner is not None else [str(path)]
         return ["ros2", "launch", *where, *(f"{k}:={v}" for k, v in self.arguments.items())]
+
+    def prefetch(self, paths: Iterable[Path]) -> None:
+        """Nothing to start ahead: a file is run in this process when it is loaded."""
 
     def load(self, path: Path, sink: ProblemSink) -> a.LaunchFile | None:
         """Run a Python launch file and return its IR, recording problems in ``sink``."""
