@@ -153,11 +153,16 @@ class MissingConfiguration(KeyError):
 
 
 class RecordingDict(dict[str, str]):
-    """The configurations an OpaqueFunction sees; remembers which ones it read."""
+    """The configurations an OpaqueFunction sees; remembers which ones it read.
+
+    Reading them as a whole (iterating, measuring, copying, comparing or printing them)
+    sets ``whole``: what the function does may then depend on any of them.
+    """
 
     def __init__(self, values: dict[str, str]) -> None:
         super().__init__(values)
         self.read: list[tuple[str, bool, bool]] = []  # name, found, has a default
+        self.whole = False
 
     def __getitem__(self, key: str) -> str:
         found = super().__contains__(key)
@@ -174,6 +179,34 @@ class RecordingDict(dict[str, str]):
         if isinstance(key, str):
             self.read.append((key, super().__contains__(key), True))
         return super().__contains__(key)
+
+    def setdefault(self, key: str, default: Any = None) -> Any:
+        self.read.append((key, super().__contains__(key), True))
+        return super().setdefault(key, default)
+
+    def pop(self, key: str, *default: Any) -> Any:
+        self.read.append((key, super().__contains__(key), bool(default)))
+        return super().pop(key, *default)
+
+
+def _reading_all(name: str) -> Callable[..., Any]:
+    """Return ``dict``'s method ``name``, noting that the mapping is read as a whole."""
+    method = getattr(dict, name)
+
+    def whole(self: RecordingDict, *args: Any, **kwargs: Any) -> Any:
+        self.whole = True
+        return method(self, *args, **kwargs)
+
+    whole.__name__ = name
+    return whole
+
+
+# Overriding ``__iter__`` also takes ``dict(d)``, ``{**d}`` and ``f(**d)`` off CPython's
+# fast path, through ``keys``; ``repr`` and comparisons read the entries in C.
+for _name in ("__iter__", "__len__", "__reversed__", "__repr__", "__eq__", "__ne__",
+              "__or__", "__ror__", "__reduce__", "__reduce_ex__", "keys", "values", "items",
+              "copy", "popitem"):
+    setattr(RecordingDict, _name, _reading_all(_name))
 
 
 def normalize_to_list_of_substitutions(subs: Any) -> list[Any]:

@@ -116,12 +116,15 @@ class Walker:
     # ------------------------------------------------------------------ recording
 
     def problem(self, kind: ProblemKind, message: str, span: Span, ctx: Ctx | None,
-                *, contextual: bool = False, rule: str | None = None) -> None:
+                *, contextual: bool = False, rule: str | None = None,
+                harmless: bool = False) -> None:
         """Record an evaluation problem (``contextual``: an includer might prevent it).
 
         A failure in a part that does not run with the values it was evaluated with (an
         OpaqueFunction or include under a condition false by default) says nothing about
         what launch does: that part is not judged (LV003), and the evaluation is incomplete.
+        ``harmless``: what was not understood could start nothing (code run at shutdown),
+        so the evaluation stays complete.
         """
         chain = ctx.chain if ctx else ()
         if (kind is ProblemKind.EVALUATION and ctx is not None and ctx.path
@@ -132,7 +135,7 @@ class Walker:
                        "check it)")
         self.graph.problems.append(ProblemRecord(Problem(kind, message, span, contextual, rule),
                                                  chain, ctx.path if ctx else ()))
-        if kind is ProblemKind.UNMODELED:
+        if kind is ProblemKind.UNMODELED and not harmless:
             self.mark_incomplete()
 
     def mark_incomplete(self) -> None:
@@ -776,8 +779,8 @@ class Walker:
 
     def do_OpaqueFunction(self, action: a.OpaqueFunction, ctx: Ctx) -> None:
         """Run the function's body with the configurations as they are here."""
-        configurations = self.concrete_configurations()
-        result = action.run(configurations, self.current_file)
+        result = self.loader.opaque_result(action, self.concrete_configurations(),
+                                           self.current_file, id(self.graph))
         failed = {read[0]: read[3] for read in result.reads if len(read) == 4}
         for name, found, has_default, *_ in dict.fromkeys(result.reads):
             if name in failed and not found:
@@ -795,9 +798,11 @@ class Walker:
             record.mentioned.update(result.mentions)
         for problem in result.problems:
             assert isinstance(problem, Problem)
+            # At shutdown launch starts nothing more: what a failing body would have given
+            # (a temporary file removed, say) leaves the evaluation complete.
             self.problem(problem.kind, problem.message, problem.span, ctx,
-                         contextual=problem.contextual)
-            if problem.kind is ProblemKind.EVALUATION:
+                         contextual=problem.contextual, harmless=self.at_shutdown)
+            if problem.kind is ProblemKind.EVALUATION and not self.at_shutdown:
                 # the body stopped at an exception: what it would have read and started
                 # is unknown, so absence rules (unused arguments...) must not judge
                 self.mark_incomplete()

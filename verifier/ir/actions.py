@@ -501,6 +501,9 @@ class OpaqueResult:
     reads: tuple[tuple[str, bool, bool] | tuple[str, bool, bool, Span], ...] = ()
     lookups: tuple[tuple[str, Span], ...] = ()  # packages looked up by Python code
     mentions: tuple[str, ...] = ()  # strings its code holds: reads on untaken paths
+    # it read the configurations as a whole (iterated, copied, printed them): what it gave
+    # may depend on any of them, not only on ``reads``
+    reads_all: bool = False
 
 
 @dataclass(frozen=True, eq=False, kw_only=True)

@@ -347,8 +347,10 @@ class _Session:
                    current: Path) -> a.OpaqueResult:
         """Run an OpaqueFunction's body with a concrete context."""
         sink = ProblemSink()
-        saved, saved_lookups = self.sink, self.lookups
-        self.sink, self.lookups = sink, []
+        saved, saved_lookups, saved_reported = self.sink, self.lookups, self.reported
+        # each run says what it met, whatever earlier runs (other roots) said: its result
+        # is then the same for the same inputs
+        self.sink, self.lookups, self.reported = sink, [], set()
         self.in_opaque, self.failed_read = True, None
         self.fallback = model._span
         performer = _Performer(self.frontend, configurations, current)
@@ -364,7 +366,7 @@ class _Session:
             self.failure(error)
         finally:
             lookups = tuple(self.lookups)
-            self.sink, self.lookups = saved, saved_lookups
+            self.sink, self.lookups, self.reported = saved, saved_lookups, saved_reported
             self.in_opaque, self.fallback = False, None
         reads: tuple[tuple[str, bool, bool] | tuple[str, bool, bool, Span], ...] = (
             *performer.reducer.reads, *context.launch_configurations.read)
@@ -373,7 +375,8 @@ class _Session:
             reads = (*reads, (name, False, False, span))
         return a.OpaqueResult(actions=actions, problems=tuple(sink.problems), reads=reads,
                               lookups=lookups,
-                              mentions=tuple(sorted(mentioned_strings(model.function))))
+                              mentions=tuple(sorted(mentioned_strings(model.function))),
+                              reads_all=context.launch_configurations.whole)
 
 
 class _Performer:

@@ -80,6 +80,7 @@ class ConcreteReducer(Reducer):
             return value if isinstance(condition, c.IfCondition) else not value
         if isinstance(condition, c.ConfigEquals):
             name = self.perform(condition.name)
+            self.reads.append((name, name in self.configurations, True))
             current = self.configurations.get(name)
             expected = None if condition.expected is None else self.perform(condition.expected)
             return (current == expected) != condition.negate
