@@ -22,7 +22,7 @@ from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import Truthy
 from launchverify.smt import reasoner_for
 from launchverify.smt.domains import Mode
-from launchverify.smt.reasoner import _SHARED
+from launchverify.smt.reasoner import _ANSWERS
 from launchverify.smt.search import _nearest_first, _words
 from launchverify.workspace.packages import PackageIndex
 
@@ -91,7 +91,7 @@ def settled(graph: LaunchGraph, question: str, *args: Any) -> tuple[Any, Any] | 
 @given(entries=nodes)
 def test_the_search_agrees_with_z3(tmp_path: Path, entries: list[tuple[str, str, str | None]]
                                    ) -> None:
-    _SHARED.clear()  # answers shared between roots would hide what the search says
+    _ANSWERS.clear()  # answers shared between roots would hide what the search says
     graph = graph_of(tmp_path, entries)
     named = [n for n in graph.nodes if n.fqn is not None]
     for i, first in enumerate(named):

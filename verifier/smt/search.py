@@ -186,6 +186,12 @@ class Search:
                      if label.startswith(ARG_LABEL) and self._free(label, mode)]
         return [(key, values) for key in dict.fromkeys(keys)]
 
+    def argument_names(self, item: object) -> frozenset[str]:
+        """Return the launch arguments a guard or value reads (``frozenset()`` for others)."""
+        if isinstance(item, (Truthy, StrEquals, Opaque, s.Sub)):
+            return self._inputs(item).names
+        return frozenset()
+
     def _inputs(self, item: Guard | s.Sub) -> _Inputs:
         """Return what ``run`` varies for an item (``_inputs_of``), remembered per item."""
         key = id(item)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+from functools import lru_cache
 from pathlib import Path
 
 
@@ -28,6 +29,12 @@ def display_path(path: Path | str) -> str:
     if not candidate.is_absolute():
         return str(candidate)
     try:
-        return str(candidate.relative_to(resolved(Path.cwd())))
+        return str(candidate.relative_to(_real_folder(os.getcwd())))  # noqa: PTH109 (a string key)
     except ValueError:
         return str(candidate)
+
+
+@lru_cache(maxsize=16)
+def _real_folder(folder: str) -> Path:
+    """Return a folder's real path (remembered: rules show thousands of paths)."""
+    return resolved(Path(folder))
