@@ -76,6 +76,8 @@ class Measures:
 
     def too_large(self, value: Sub) -> bool:
         """Return whether a value is past either limit (shared parts: see ``text_size``)."""
+        if type(value) is Text:  # most values: one part, measured here, not remembered
+            return len(value.text) > MAX_TEXT_SIZE
         parts, chars = self._measure(value)
         if parts > MAX_VALUE_SIZE:
             return True

@@ -165,6 +165,11 @@ _PLAIN_QUOTED = {quote: re.compile("[^" + re.escape("$\\" + quote) + "]+")
                  for quote in ("'", '"')}
 
 
+# The rest of a substitution's name: what ``str.isalnum`` accepts, ``_`` and ``-``
+# (``\w`` is exactly the characters ``isalnum`` accepts and ``_``).
+_NAME_REST = re.compile(r"[\w-]*")
+
+
 class _Reader:
     def __init__(self, text: str, locate: Locate | None = None,
                  variables: set[tuple[str, int, int]] | None = None) -> None:
@@ -228,8 +233,7 @@ class _Reader:
         name_start = self.pos
         if not self.peek().isalpha():
             raise SubstitutionSyntaxError("expected a substitution name after '$('", self.pos)
-        while self.peek() and (self.peek().isalnum() or self.peek() in "_-"):
-            self.pos += 1
+        self.pos = _NAME_REST.match(self.text, self.pos + 1).end()  # type: ignore[union-attr]
         name = self.text[name_start : self.pos]
         args: list[s.Sub] = []
         while self.peek() == " ":

@@ -33,22 +33,31 @@ class Interface:
 
 
 class Interfaces:
-    """The interfaces of a check's roots, found by folder and by file name."""
+    """The interfaces of a check's roots, found by folder and by file name.
+
+    Each is worked out when a rule first asks about its family (a large tree's roots
+    read tens of thousands of configurations; few roots are ever asked about).
+    """
 
     def __init__(self, graphs: Iterable[LaunchGraph] = ()) -> None:
-        self.of: dict[Path, Interface] = {
-            graph.root: Interface(
+        self._graphs = {graph.root: graph for graph in graphs}
+        self._of: dict[Path, Interface] = {}
+        self._by_folder: dict[Path, list[Path]] = {}
+        self._by_name: dict[str, list[Path]] = {}
+        for path in sorted(self._graphs):
+            self._by_folder.setdefault(path.parent, []).append(path)
+            self._by_name.setdefault(path.name, []).append(path)
+
+    def of(self, root: Path) -> Interface | None:
+        """Return the interface of a checked root (``None`` for another file)."""
+        known = self._of.get(root)
+        if known is None and (graph := self._graphs.get(root)) is not None:
+            known = self._of[root] = Interface(
                 {a.name: a.origin.span for a in graph.arguments
                  if a.origin.span.file == graph.root},
                 frozenset(graph.read_names() | graph.mentioned_names()),
             )
-            for graph in graphs
-        }
-        self._by_folder: dict[Path, list[Path]] = {}
-        self._by_name: dict[str, list[Path]] = {}
-        for path in sorted(self.of):
-            self._by_folder.setdefault(path.parent, []).append(path)
-            self._by_name.setdefault(path.name, []).append(path)
+        return known
 
     def mirrored(self, file: Path, name: str) -> Span | None:
         """Return where a file of ``file``'s family declares ``name`` and uses it, if any.
@@ -56,14 +65,15 @@ class Interfaces:
         The family: launch files in the same folder, or of the same file name elsewhere
         (one per package), whose declared arguments ``file`` mostly shares.
         """
-        own = self.of.get(file)
+        own = self.of(file)
         if own is None:
             return None
         family = dict.fromkeys([*self._by_folder.get(file.parent, []),
                                 *self._by_name.get(file.name, [])])
         for other in sorted(family):
-            interface = self.of[other]
-            if other == file or name not in interface.declared or name not in interface.used:
+            interface = self.of(other)
+            if interface is None or other == file or name not in interface.declared \
+                    or name not in interface.used:
                 continue
             shared = len(own.declared.keys() & interface.declared.keys())
             if shared >= MIRROR_SHARED and shared >= MIRROR_SHARE * len(own.declared):

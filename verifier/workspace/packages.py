@@ -138,6 +138,7 @@ class PackageIndex:
     def __init__(self, workspaces: Iterable[Path] = (), prefixes: Iterable[Path] = ()) -> None:
         self._packages: dict[str, Package] = {}
         self._roots: dict[Path, Package] | None = None  # share/source folder -> package
+        self._located: dict[Path, Path | None] = {}
         self.sources: dict[str, list[Path]] = {}  # every source folder of each name
         self.workspaces = [resolved(w) for w in workspaces]
         self.prefixes = [resolved(p) for p in prefixes]
@@ -227,8 +228,16 @@ class PackageIndex:
     def locate(self, path: Path) -> Path | None:
         """Find a file as ros2 launch would, falling back from install layout to sources.
 
-        Returns the existing file, or ``None``.
+        Returns the existing file, or ``None``. Remembered: an index lives for one check,
+        during which files do not change, and every root asks again for the files its
+        includes and nodes name.
         """
+        if path in self._located:
+            return self._located[path]
+        found = self._located[path] = self._locate(path)
+        return found
+
+    def _locate(self, path: Path) -> Path | None:
         if path.is_file():
             return path
         package = self.owner(path)
