@@ -170,16 +170,24 @@ class Reasoner:
         if guard in path and _satisfiable_alone(path):
             result = True  # the enclosing condition says the same
         else:
+            held = False  # some value tried makes the path hold
 
             def refutes(reducer: SearchReducer) -> bool | None:
+                nonlocal held
                 inside = all_hold(reducer, path)
+                held = held or inside is True
                 verdict = reducer.guard(guard)
                 if inside is False or verdict is True:
                     return False
                 return None if inside is None or verdict is None else True
 
-            refuted = self.search.run(Mode.ANY, (*path, guard), refutes).found is not None
-            result = not refuted and self.z3.always(path, guard)
+            tried = self.search.run(Mode.ANY, (*path, guard), refutes)
+            if tried.found is not None:
+                result = False
+            elif tried.exhaustive:  # every value tried: it holds wherever the path can
+                result = held
+            else:
+                result = self.z3.always(path, guard)
         _remember(key, result)
         return result
 
