@@ -286,6 +286,7 @@ class ConfigTree:
         self.root = root
         self.nested = nested
         self._by_folder: dict[Path, Config] = {}
+        self._by_file: dict[Path, Config] = {}
         self._by_path: dict[Path, Config] = {} if root.path is None else {
             resolved(root.path): root}
 
@@ -293,7 +294,12 @@ class ConfigTree:
         """Return the configuration that holds for a file."""
         if not self.nested:
             return self.root
-        folder = resolved(file).parent
+        known = self._by_file.get(file)  # every finding asks for its file's
+        if known is None:
+            known = self._by_file[file] = self._nearest(resolved(file).parent)
+        return known
+
+    def _nearest(self, folder: Path) -> Config:
         known = self._by_folder.get(folder)
         if known is None:
             path = find_config(folder)
