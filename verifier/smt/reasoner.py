@@ -11,7 +11,7 @@ Answers are cached per question.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from typing import TYPE_CHECKING
 
 from launchverify.graph import LaunchGraph
@@ -46,6 +46,7 @@ class Reasoner:
         self._backend: Z3Backend | None = None
         self._inputs = tuple(sorted(graph.inputs().items()))
         self._domain_keys: dict[str, tuple[object, ...]] = {}
+        self._answers: dict[tuple[object, ...], object] = {}  # by question (a fast path)
         # contradictions name the guards' places, which differ between roots
         self._never: dict[tuple[PathCondition, Guard], Contradiction | None] = {}
 
@@ -72,15 +73,15 @@ class Reasoner:
         one scope share their guards, and the question is then the one already answered.
         """
         merged = tuple(dict.fromkeys(g for p in paths for g in p))
-        key = self._shared_key("together", merged, merged)
-        if key not in _ANSWERS:
+
+        def answer() -> Witness | None:
             guards = list(merged)
             tried = self.search.run(Mode.SWITCHES, guards, lambda r: all_hold(r, guards))
             if tried.found is not None or tried.exhaustive:
-                _remember(key, self._tried(tried.found))
-            else:
-                _remember(key, self.z3.together((merged,)))
-        return _ANSWERS[key]  # type: ignore[return-value]
+                return self._tried(tried.found)
+            return self.z3.together((merged,))
+
+        return self._answer("together", merged, merged, answer)  # type: ignore[return-value]
 
     def unreachable(self, path: PathCondition) -> bool:
         """Return whether a path holds under no value the user can give the arguments.
@@ -116,10 +117,6 @@ class Reasoner:
                   second_path: PathCondition) -> tuple[Witness, str] | None:
         """Return (assignment, name) where two names are equal and both paths hold."""
         guards = (*first_path, *second_path)
-        key = self._shared_key("same name", (first, first_path, second, second_path),
-                               (*guards, first, second))
-        if key in _ANSWERS:
-            return _ANSWERS[key]  # type: ignore[return-value]
 
         def same(reducer: SearchReducer) -> bool | None:
             left, right = self.search.names.text(first), self.search.names.text(second)
@@ -132,15 +129,18 @@ class Reasoner:
                 return None
             return True
 
-        tried = self.search.run(Mode.SWITCHES, [*guards, first, second], same)
-        if tried.found is not None and tried.reducer is not None:
-            name = self.search.names.text(first) or first.describe()
-            _remember(key, (self._tried(tried.found) or Witness(), name))
-        elif tried.exhaustive:
-            _remember(key, None)
-        else:
-            _remember(key, self.z3.same_name(first, first_path, second, second_path))
-        return _ANSWERS[key]  # type: ignore[return-value]
+        def answer() -> tuple[Witness, str] | None:
+            tried = self.search.run(Mode.SWITCHES, [*guards, first, second], same)
+            if tried.found is not None and tried.reducer is not None:
+                name = self.search.names.text(first) or first.describe()
+                return self._tried(tried.found) or Witness(), name
+            if tried.exhaustive:
+                return None
+            return self.z3.same_name(first, first_path, second, second_path)
+
+        return self._answer(  # type: ignore[return-value]
+            "same name", (first, first_path, second, second_path), (*guards, first, second),
+            answer)
 
     def never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
         """Return why ``guard`` cannot hold where ``path`` does (for any argument values).
@@ -164,12 +164,10 @@ class Reasoner:
 
     def always(self, path: PathCondition, guard: Guard) -> bool:
         """Return whether ``guard`` holds for every argument value where ``path`` holds."""
-        key = self._shared_key("always", (path, guard), (*path, guard))
-        if key in _ANSWERS:
-            return _ANSWERS[key]  # type: ignore[return-value]
-        if guard in path and _satisfiable_alone(path):
-            result = True  # the enclosing condition says the same
-        else:
+
+        def answer() -> bool:
+            if guard in path and _satisfiable_alone(path):
+                return True  # the enclosing condition says the same
             held = False  # some value tried makes the path hold
 
             def refutes(reducer: SearchReducer) -> bool | None:
@@ -183,19 +181,15 @@ class Reasoner:
 
             tried = self.search.run(Mode.ANY, (*path, guard), refutes)
             if tried.found is not None:
-                result = False
-            elif tried.exhaustive:  # every value tried: it holds wherever the path can
-                result = held
-            else:
-                result = self.z3.always(path, guard)
-        _remember(key, result)
-        return result
+                return False
+            if tried.exhaustive:  # every value tried: it holds wherever the path can
+                return held
+            return self.z3.always(path, guard)
+
+        return bool(self._answer("always", (path, guard), (*path, guard), answer))
 
     def invalid_value(self, path: PathCondition, guard: Truthy) -> tuple[str, Witness] | None:
         """Return a value the condition can take that launch rejects, with the switches."""
-        key = self._shared_key("invalid value", (path, guard), (*path, guard))
-        if key in _ANSWERS:
-            return _ANSWERS[key]  # type: ignore[return-value]
 
         def invalid(reducer: SearchReducer) -> bool | None:
             text = reducer.text(guard.expression)
@@ -208,15 +202,31 @@ class Reasoner:
                 return None
             return True
 
-        tried = self.search.run(Mode.SWITCHES, (*path, guard), invalid, guess_unset=False)
-        if tried.found is not None and tried.reducer is not None:
-            value = tried.reducer.text(guard.expression) or ""
-            _remember(key, (value, self._tried(tried.found) or Witness()))
-        elif tried.exhaustive:
-            _remember(key, None)
-        else:
-            _remember(key, self.z3.invalid_value(path, guard))
-        return _ANSWERS[key]  # type: ignore[return-value]
+        def answer() -> tuple[str, Witness] | None:
+            tried = self.search.run(Mode.SWITCHES, (*path, guard), invalid, guess_unset=False)
+            if tried.found is not None and tried.reducer is not None:
+                value = tried.reducer.text(guard.expression) or ""
+                return value, self._tried(tried.found) or Witness()
+            if tried.exhaustive:
+                return None
+            return self.z3.invalid_value(path, guard)
+
+        return self._answer(  # type: ignore[return-value]
+            "invalid value", (path, guard), (*path, guard), answer)
+
+    def _answer(self, kind: str, question: tuple[object, ...], items: Iterable[object],
+                compute: Callable[[], object]) -> object:
+        """Return a question's answer: this reasoner's, another's (same key), or computed."""
+        local = (kind, question)
+        if local in self._answers:
+            return self._answers[local]
+        key = self._shared_key(kind, question, items)
+        found = _ANSWERS.get(key, _UNKNOWN)
+        if found is _UNKNOWN:
+            found = compute()
+            _remember(key, found)
+        self._answers[local] = found
+        return found
 
     def _shared_key(self, kind: str, question: tuple[object, ...],
                     items: Iterable[object]) -> tuple[object, ...]:
@@ -246,6 +256,7 @@ class Reasoner:
 
 
 _ANSWERS: dict[tuple[object, ...], object] = {}
+_UNKNOWN = object()  # no answer yet (an answer may be None)
 MAX_ANSWERS = 200_000  # answers remembered in one process (a long-lived server)
 
 
