@@ -98,7 +98,7 @@ class FileCache:
         """Start evaluating the Python files a file includes before the walk reaches them.
 
         A worker evaluates each; reached one at a time, each kept the walk waiting
-        (autoware_launch: 21 included Python files, 0.33 s). Only includes whose path is
+        (autoware_launch: 21 included Python files, 0.27 s). Only includes whose path is
         known without a context are seen: the others are evaluated when reached.
         """
         self.python.prefetch(
@@ -112,9 +112,10 @@ class FileCache:
         A body gives the same result for the same configurations it reads and the same
         current file (the files it reads do not change during a check): roots that
         include the same file mostly pass it the same values (autoware_launch: 153 of 182
-        runs). Not reused: a result with problems (the worker reports some once per
-        file), one whose body read the configurations as a whole, and a result within the
-        root that had it (launch runs an object once; a body run again makes new ones).
+        runs). Not reused: a result with problems (a failure need not repeat: a module is
+        imported once, a time limit depends on the machine), one whose body read the
+        configurations as a whole, and a result within the root that had it (launch runs
+        an object once; a body run again makes new ones).
         ``root``: the ``id`` of the graph being built (graphs outlive the cache).
         """
         runs = self._opaque_runs.setdefault(action, [])
