@@ -8,11 +8,14 @@ findings and graphs with reuse as without it.
 
 from __future__ import annotations
 
+import tempfile
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from launchverify.engine import CheckOptions, run_check
 from launchverify.evaluate import files
@@ -194,3 +197,63 @@ def test_a_check_gives_the_same_with_and_without_reuse(tmp_path: Path,
     assert all(complete)  # the body failing at shutdown leaves every evaluation complete
     assert any(code == "LV003" and "temporary file" in str(message)
                for code, _, _, message, _ in found)
+
+
+NAMES = ("a", "b", "c")
+reads = st.lists(st.sampled_from(["get", "item", "perform", "in", "whole"]),
+                 min_size=1, max_size=2)
+bodies = st.lists(st.tuples(st.frozensets(st.sampled_from(NAMES), min_size=1), reads,
+                            st.booleans()), min_size=1, max_size=3)
+roots = st.lists(st.lists(st.dictionaries(st.sampled_from(NAMES), st.sampled_from("xyz")),
+                          min_size=1, max_size=2), min_size=2, max_size=4)
+
+
+def _generated_body(functions: list[tuple[frozenset[str], list[str], bool]]) -> str:
+    """Bodies that read some configurations in various ways; some raise on a value."""
+    lines = ["from launch import LaunchDescription",
+             "from launch.actions import DeclareLaunchArgument, OpaqueFunction",
+             "from launch.substitutions import LaunchConfiguration",
+             "from launch_ros.actions import Node", ""]
+    for index, (names, ways, raises) in enumerate(functions):
+        lines.append(f"def body{index}(context):")
+        lines.append("    seen = []")
+        for name in sorted(names):
+            for way in ways:
+                lines.append({
+                    "get": f"    seen.append(context.launch_configurations.get('{name}', '-'))",
+                    "item": f"    seen.append(context.launch_configurations['{name}'])",
+                    "perform": f"    seen.append(LaunchConfiguration('{name}').perform(context))",
+                    "in": f"    seen.append(str('{name}' in context.launch_configurations))",
+                    "whole": "    seen.append(str(len(context.launch_configurations)))",
+                }[way])
+        if raises:
+            lines.append("    if 'z' in seen:\n        raise ValueError('z is not a value')")
+        lines.append(f"    return [Node(package='p', executable='e', name='n{index}_' + "
+                     "'_'.join(s.replace('/', '') for s in seen))]")
+        lines.append("")
+    lines.append("def generate_launch_description():")
+    lines.append("    return LaunchDescription([")
+    lines += [f"        DeclareLaunchArgument('{name}', default_value='x')," for name in NAMES]
+    lines += [f"        OpaqueFunction(function=body{index})," for index in range(len(functions))]
+    lines.append("    ])")
+    return "\n".join(lines) + "\n"
+
+
+@settings(max_examples=5, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(functions=bodies, includes=roots)
+def test_generated_trees_give_the_same_with_and_without_reuse(
+        functions: list[tuple[frozenset[str], list[str], bool]],
+        includes: list[list[dict[str, str]]]) -> None:
+    with tempfile.TemporaryDirectory() as folder:
+        tree = Path(folder)
+        (tree / "body.launch.py").write_text(_generated_body(functions))
+        for index, arguments in enumerate(includes):
+            (tree / f"r{index}.launch.xml").write_text("<launch>" + "".join(
+                f'<group><push-ros-namespace namespace="g{i}"/>'
+                '<include file="$(dirname)/body.launch.py">'
+                + "".join(f'<arg name="{k}" value="{v}"/>' for k, v in sorted(passed.items()))
+                + "</include></group>" for i, passed in enumerate(arguments)) + "</launch>")
+        reused = _check(tree)
+        with pytest.MonkeyPatch.context() as patch:
+            patch.setattr(files, "MAX_OPAQUE_RUNS", 0)
+            assert _check(tree) == reused
