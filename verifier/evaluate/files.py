@@ -57,6 +57,8 @@ class FileCache:
         # the names each include action passes, by action (actions live as long as the files)
         self.include_names: dict[int, frozenset[str]] = {}
         self._opaque_runs: dict[a.OpaqueFunction, list[_OpaqueRun]] = {}
+        # the files each loaded file includes by a path known without a context
+        self._includes: dict[Path, tuple[Path, ...]] = {}
         self._owned = (IsolatedPython(index, workspace, environment=environment)
                        if python is None else None)
         self.python: PythonLoader = python or self._owned  # type: ignore[assignment]
@@ -73,14 +75,15 @@ class FileCache:
             loaded = load_launch_file(path, self.python)
             self._files[path] = loaded
             if loaded.launch is not None:
-                self._read_ahead(loaded.launch)
+                self._includes[path] = tuple(included_files(loaded.launch.actions, self.index))
+                self._start_python(self._includes[path])
         return loaded
 
     def read_ahead(self, roots: Iterable[Path]) -> None:
         """Read the files the roots include, breadth first, before any is walked.
 
         Only reading is moved earlier (every file read here would be read by the walk),
-        so that the Python files among them start in workers (``_read_ahead``) while the
+        so that the Python files among them start in workers (``_start_python``) while the
         rest is read: the walk then finds them evaluated instead of waiting for each.
         """
         pending = deque(roots)
@@ -90,20 +93,18 @@ class FileCache:
             if path in seen or launch_format(path) == "python":
                 continue  # what a Python file includes is known once a worker ran it
             seen.add(path)
-            launch = self(path).launch
-            if launch is not None:
-                pending.extend(included_files(launch.actions, self.index))
+            self(path)
+            pending.extend(self._includes.get(path, ()))
 
-    def _read_ahead(self, launch: a.LaunchFile) -> None:
+    def _start_python(self, targets: Iterable[Path]) -> None:
         """Start evaluating the Python files a file includes before the walk reaches them.
 
         A worker evaluates each; reached one at a time, each kept the walk waiting
         (autoware_launch: 21 included Python files, 0.27 s). Only includes whose path is
         known without a context are seen: the others are evaluated when reached.
         """
-        self.python.prefetch(
-            target for target in included_files(launch.actions, self.index)
-            if target not in self._files and launch_format(target) == "python")
+        self.python.prefetch(target for target in targets
+                             if target not in self._files and launch_format(target) == "python")
 
     def opaque_result(self, action: a.OpaqueFunction, configurations: Mapping[str, Any],
                       current: Path, root: int) -> a.OpaqueResult:
