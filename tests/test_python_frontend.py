@@ -343,3 +343,30 @@ def generate_launch_description():
 """
     found = findings(write(tmp_path, "example.launch.py", body))
     assert [code for code, _, _ in found] == ["LV101"], found
+
+
+def test_a_condition_a_body_evaluates_reads_its_configuration(tmp_path: Path) -> None:
+    """``LaunchConfigurationEquals`` judged inside an OpaqueFunction reads ``mode``.
+
+    (The name is built, so that the body's own strings do not count it as mentioned.)
+    """
+    path = write(tmp_path, "equals.launch.py", """
+from launch.conditions import LaunchConfigurationEquals
+
+
+def setup(context):
+    if LaunchConfigurationEquals('mo' + 'de', 'fast').evaluate(context):
+        return [Node(package='demo_nodes_cpp', executable='talker', name='fast')]
+    return [Node(package='demo_nodes_cpp', executable='talker', name='slow')]
+
+
+def generate_launch_description():
+    return LaunchDescription([DeclareLaunchArgument('mode', default_value='slow'),
+                              OpaqueFunction(function=setup)])
+""")
+    from launchverify.evaluate.runner import evaluate
+    from launchverify.workspace.packages import PackageIndex
+
+    graph = evaluate(path, index=PackageIndex(), workspace=tmp_path)
+    assert [read.name for read in graph.reads] == ["mode"]
+    assert [node.fqn.describe() for node in graph.nodes if node.fqn] == ["/slow"]
