@@ -27,6 +27,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, NoReturn
 
+from launchverify.frontends.python import fast_yaml
 from launchverify.frontends.python.sandbox import SCRATCH_PREFIX
 from launchverify.isolation.confine import Confinement
 from launchverify.isolation.worker import Setting, serve
@@ -168,6 +169,7 @@ class _Server:
         signal.signal(signal.SIGINT, signal.SIG_IGN)
         _forget_environment()
         self.confinement = Confinement(self.setting.limits)
+        fast_yaml.install()  # workers load YAML with libyaml where it reads alike
         _warm_up(self.setting)
         gc.freeze()  # workers' collections never touch (and copy) the inherited heap
         gc.enable()  # forked from a check that paused it: a launch file's code runs as usual

@@ -1,0 +1,132 @@
+"""PyYAML's loading functions backed by libyaml in workers, where both read alike.
+
+Launch files, and our models of the libraries they call (``moveit_configs_utils``), load
+parameter files with ``yaml.safe_load``, which PyYAML runs in pure Python: a MoveIt
+robot's configuration took 60-100 ms of every worker that evaluated a MoveIt launch
+file. Where PyYAML was built with libyaml, the functions installed here parse with it
+and build values with the same Python constructor and resolver.
+
+The two parsers do not accept the same documents: libyaml takes tabs, ``|#`` and some
+lone ``!`` and ``?`` that PyYAML refuses (or reads otherwise), and Unicode line and
+byte-order marks differ. ros2 launch runs PyYAML's own, so a document holding any of
+those characters, or anything unprintable, is read by it; on the rest (about four
+parameter files in five), millions of generated documents read the same. A document
+libyaml refuses is read again by PyYAML, whose error is the one launch gives. A loader
+class of the user's own keeps its own parser.
+"""
+
+from __future__ import annotations
+
+import io
+from collections.abc import Callable
+from typing import Any
+
+import yaml
+
+_installed: list[bool] = []
+_MISSING: Any = object()
+# PyYAML's own (typed loosely: called without a loader, they raise PyYAML's own error)
+_LOAD: Callable[..., Any] = yaml.load
+_LOAD_ALL: Callable[..., Any] = yaml.load_all
+# What libyaml says of a document it cannot read (then the pure-Python loader reads it,
+# and says what launch would say). Anything else, the time limit's interruption included,
+# is the caller's, as it would be from the pure-Python loader.
+_REFUSED = (yaml.YAMLError, UnicodeError)
+# Where the two parsers were seen to disagree (see the module's docstring).
+_DISAGREEING = "\t!?|>%@`\\"
+_BYTE_ORDER_MARKS = (b"\xff\xfe", b"\xfe\xff", b"\xef\xbb\xbf")
+
+
+def install() -> None:
+    """Replace PyYAML's module-level loading functions in this process (once)."""
+    if _installed or not getattr(yaml, "__with_libyaml__", False):
+        return
+    for name, function in replacements().items():
+        setattr(yaml, name, function)
+    _installed.append(True)
+
+
+def replacements() -> dict[str, Callable[..., Any]]:
+    """Return the functions ``install`` puts in ``yaml`` (name -> function)."""
+    twins = {getattr(yaml, name): getattr(yaml, "C" + name)
+             for name in ("BaseLoader", "SafeLoader", "FullLoader", "Loader", "UnsafeLoader")
+             if hasattr(yaml, name) and hasattr(yaml, "C" + name)}
+    original_load, original_load_all = _LOAD, _LOAD_ALL
+
+    def load(stream: Any, Loader: Any = _MISSING) -> Any:
+        twin = twins.get(Loader) if isinstance(Loader, type) else None
+        if twin is None:  # (no loader given: PyYAML's own error)
+            return original_load(stream) if Loader is _MISSING else original_load(stream, Loader)
+        text = _text(stream)
+        if not _alike(text):
+            return original_load(_again(text, stream), Loader)
+        try:
+            return original_load(text, twin)
+        except _REFUSED:
+            return original_load(_again(text, stream), Loader)
+
+    def load_all(stream: Any, Loader: Any = _MISSING) -> Any:
+        twin = twins.get(Loader) if isinstance(Loader, type) else None
+        if twin is None:
+            return (original_load_all(stream) if Loader is _MISSING
+                    else original_load_all(stream, Loader))
+        text = _text(stream)
+        if not _alike(text):
+            return original_load_all(_again(text, stream), Loader)
+        try:
+            return iter(list(original_load_all(text, twin)))
+        except _REFUSED:
+            return original_load_all(_again(text, stream), Loader)
+
+    out: dict[str, Callable[..., Any]] = {"load": load, "load_all": load_all}
+    for prefix, loader in (("safe", "SafeLoader"), ("full", "FullLoader"),
+                           ("unsafe", "UnsafeLoader")):
+        if hasattr(yaml, loader):
+            out[f"{prefix}_load"] = _with(load, getattr(yaml, loader))
+            out[f"{prefix}_load_all"] = _with(load_all, getattr(yaml, loader))
+    return out
+
+
+def _with(function: Callable[[Any, Any], Any], loader: Any) -> Callable[[Any], Any]:
+    def bound(stream: Any) -> Any:
+        return function(stream, loader)
+
+    return bound
+
+
+def _text(stream: Any) -> Any:
+    """Return a stream's whole content (a string or bytes stay as they are).
+
+    Read once, so that the pure-Python loader can start again from the beginning.
+    """
+    read = getattr(stream, "read", None)
+    return read() if callable(read) else stream
+
+
+def _alike(text: Any) -> bool:
+    """Return whether both parsers read this text alike (as far as we have seen)."""
+    if isinstance(text, bytes):
+        if text.startswith(_BYTE_ORDER_MARKS):
+            return False
+        try:
+            text = text.decode("utf-8")
+        except UnicodeDecodeError:
+            return False
+    if not isinstance(text, str):
+        return False
+    return (text.replace("\n", "").replace("\r", "").isprintable()
+            and not any(character in text for character in _DISAGREEING))
+
+
+def _again(text: Any, stream: Any) -> Any:
+    """Return what to give the pure-Python loader: the stream as it was given.
+
+    A stream's content is given as a stream again, under the same name, so that an error
+    names the place as it would have (``"<file>"`` or the file's name, not a string).
+    """
+    if stream is text or not isinstance(text, (str, bytes)):
+        return text
+    again = io.StringIO(text) if isinstance(text, str) else io.BytesIO(text)
+    if hasattr(stream, "name"):
+        again.name = stream.name
+    return again
