@@ -89,6 +89,37 @@ def test_where_the_parsers_disagree_pyyamls_reading_is_kept(name: str) -> None:
         yaml.safe_load, io.BytesIO(text.encode()))
 
 
+# What libyaml may read, though it holds characters where the parsers disagree: they
+# are in comments.
+IN_COMMENTS = {
+    "a comment": "range: 0.0  # motion added ==> maxDistance_? default: 0.0 | none\n",
+    "a comment after a quoted value": 'planners: "RRT,PRM"  # which? -> both\n',
+    "a comment after a flow list": 'joints: ["j1", j2]  # order? as the URDF\n',
+    "a comment line": "# it's the robot's `config`: 100% tested!\na: 1\n",
+}
+# Where a "#" is not a comment: read by PyYAML whatever it holds.
+NOT_COMMENTS = {
+    "inside a quoted value": 'a: "x # y?"\n',
+    "inside a quoted value over two lines": 'a: "one\n  two # ?"\n',
+    "inside single quotes with an escape": "a: 'it''s # ?\n  more'\n",
+    "after an apostrophe in a plain value": "a: it's\nb: 'multi\n  line # ?'\n",
+    "inside a block scalar": "a: |\n  x # ?\n",
+    "after a carriage return": "a: 1 # c\rb: ?\n",
+}
+
+
+@pytest.mark.parametrize("name", sorted(IN_COMMENTS))
+def test_what_comments_hold_does_not_matter(name: str) -> None:
+    text = IN_COMMENTS[name]
+    assert fast_yaml._alike(text)
+    assert FAST["safe_load"](text) == yaml.safe_load(text)
+
+
+@pytest.mark.parametrize("name", sorted(NOT_COMMENTS))
+def test_a_hash_inside_a_value_is_not_taken_for_a_comment(name: str) -> None:
+    assert not fast_yaml._alike(NOT_COMMENTS[name])
+
+
 def test_streams_are_read_as_pyyaml_reads_them() -> None:
     text = DOCUMENTS["parameters"]
     expected = yaml.safe_load(text)

@@ -18,6 +18,7 @@ class of the user's own keeps its own parser.
 from __future__ import annotations
 
 import io
+import re
 from collections.abc import Callable
 from typing import Any
 
@@ -34,6 +35,11 @@ _LOAD_ALL: Callable[..., Any] = yaml.load_all
 _REFUSED = (yaml.YAMLError, UnicodeError)
 # Where the two parsers were seen to disagree (see the module's docstring).
 _DISAGREEING = "\t!?|>%@`\\"
+_COMMENT = re.compile(r"(?:^| )#")
+_QUOTE = r"""(?:"[^"\\]*"|'[^']*')"""
+_ITEM = rf"(?:{_QUOTE}|[\w./+-]+)"
+_QUOTED_LINE = re.compile(  # a line whose quotes all open and close on it
+    rf" *(?:- )*(?:[\w./-]+: *)?(?:{_QUOTE}|\[ *(?:{_ITEM} *(?:, *{_ITEM} *)*)?\]) *")
 _BYTE_ORDER_MARKS = (b"\xff\xfe", b"\xfe\xff", b"\xef\xbb\xbf")
 
 
@@ -112,10 +118,30 @@ def _alike(text: Any) -> bool:
             text = text.decode("utf-8")
         except UnicodeDecodeError:
             return False
-    if not isinstance(text, str):
+    if not isinstance(text, str) or not text.replace("\n", "").replace("\r", "").isprintable():
         return False
-    return (text.replace("\n", "").replace("\r", "").isprintable()
-            and not any(character in text for character in _DISAGREEING))
+    code = _without_comments(text)
+    return not any(character in code for character in _DISAGREEING)
+
+
+def _without_comments(text: str) -> str:
+    """Return the text without what both parsers surely read as comments.
+
+    A ``#`` at the start of a line or after a space starts a comment, unless it is inside
+    a quoted or block scalar. A block scalar's header (``|``, ``>``) is kept, so its text
+    is read by PyYAML anyway. Quotes are understood on lines that hold a whole quoted
+    value (``key: "text"``, ``- 'text'``, ``key: ["a", "b"]``); after any other quote, a
+    quoted scalar may run on across lines, so nothing more is removed.
+    """
+    kept: list[str] = []
+    quoted = False
+    for line in text.splitlines():
+        start = _COMMENT.search(line)
+        code = line if quoted or start is None else line[:start.start()]
+        if not quoted and ("'" in code or '"' in code) and not _QUOTED_LINE.fullmatch(code):
+            code, quoted = line, True  # (the "comment" may be inside the quotes)
+        kept.append(code)
+    return "\n".join(kept)
 
 
 def _again(text: Any, stream: Any) -> Any:
