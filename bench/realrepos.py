@@ -16,6 +16,7 @@ this runs
     python bench/realrepos.py --corpus /tmp/lv-corpus \\
         --repo ros-navigation/navigation2 --repo autowarefoundation/autoware_launch
     python bench/realrepos.py --corpus /tmp/lv-corpus --against /tmp/old/bin/launchverify
+    python bench/realrepos.py --corpus /tmp/lv-corpus --min-files 20 --repeat 1
 
 The commit of each repository is printed from the corpus manifest, so figures can be
 compared between runs. Standard library only.
@@ -117,12 +118,26 @@ def oracle_seconds(corpus: Path, repo: str) -> tuple[float, int] | None:
     return seconds, files
 
 
+def largest(manifest: dict[str, object], at_least: int) -> list[str]:
+    """Return the corpus's repositories with at least ``at_least`` launch files, largest first."""
+    counts: dict[str, int] = {}
+    launch_files = manifest.get("launch_files", [])
+    for entry in launch_files if isinstance(launch_files, list) else []:
+        if isinstance(entry, dict) and isinstance(entry.get("repo"), str):
+            counts[entry["repo"]] = counts.get(entry["repo"], 0) + 1
+    return sorted((r for r, n in counts.items() if n >= at_least),
+                  key=lambda r: (-counts[r], r))
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--corpus", type=Path, required=True,
                         help="the corpus ../shared/realworld/extract_corpus.py built")
     parser.add_argument("--repo", action="append", metavar="OWNER/NAME",
                         help=f"a repository of the corpus (default: {', '.join(DEFAULT_REPOS)})")
+    parser.add_argument("--min-files", type=int, metavar="N",
+                        help="every repository of the corpus with at least N launch files, "
+                             "largest first (instead of --repo)")
     parser.add_argument("--repeat", type=int, default=3, help="runs per figure (median)")
     parser.add_argument("--against", metavar="LAUNCHVERIFY",
                         help="another launchverify executable (an older install) to time "
@@ -134,7 +149,10 @@ def main() -> int:
                for r in manifest.get("repos", []) if isinstance(r, dict)}
     print(f"{'repository':<42} {'files':>5} {'cold s':>7} {'warm s':>7} {'peak MB':>7} "
           f"{'oracle s':>8} {'ratio':>6}" + (f" {'against s':>9}" if against else ""))
-    for repo in args.repo or DEFAULT_REPOS:
+    repos = args.repo or DEFAULT_REPOS
+    if args.min_files is not None:
+        repos = largest(manifest, args.min_files)
+    for repo in repos:
         folder = args.corpus / repo.replace("/", "+")
         if not folder.is_dir():
             print(f"{repo}: not in the corpus", file=sys.stderr)
