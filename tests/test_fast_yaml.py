@@ -140,6 +140,36 @@ def test_a_stream_libyaml_refuses_is_read_again_from_its_start() -> None:
     assert str(fast.value) == str(pure.value)
 
 
+class Endless(io.RawIOBase):
+    """A stream that never ends (``/dev/zero``): PyYAML refuses its first piece.
+
+    (Read to more than a megabyte, it says so: reading it whole would never end.)
+    """
+
+    def __init__(self) -> None:
+        self.given = 0
+
+    def readable(self) -> bool:
+        return True
+
+    def readinto(self, buffer: Any) -> int:
+        self.given += len(buffer)
+        if self.given > 1 << 20:
+            raise RuntimeError("read without end")
+        buffer[:] = bytes(len(buffer))
+        return len(buffer)
+
+
+def test_a_stream_is_read_only_so_far(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Beyond ``MAX_READ`` PyYAML reads on from where reading stopped (no endless read)."""
+    monkeypatch.setattr(fast_yaml, "MAX_READ", 16)
+    load = fast_yaml.replacements()["safe_load"]
+    text = DOCUMENTS["parameters"]
+    assert load(io.StringIO(text)) == yaml.safe_load(text)
+    assert load(io.BytesIO(text.encode())) == yaml.safe_load(text)
+    assert _outcome(load, Endless()) == _outcome(yaml.safe_load, Endless())
+
+
 def test_pyyamls_own_errors_and_loaders_are_kept() -> None:
     with pytest.raises(TypeError) as fast:
         FAST["load"]("a: 1")

@@ -41,6 +41,7 @@ _QUOTE = r"""(?:"[^"\\]*"|'[^']*')"""
 _ITEM = rf"(?:{_QUOTE}|[\w./+-]+)"
 _QUOTED_LINE = re.compile(  # a line whose quotes all open and close on it
     rf" *(?:- )*(?:[\w./-]+: *)?(?:{_QUOTE}|\[ *(?:{_ITEM} *(?:, *{_ITEM} *)*)?\]) *")
+MAX_READ = 8 * 1024 * 1024  # characters or bytes of a stream parsed at once
 _BYTE_ORDER_MARKS = (b"\xff\xfe", b"\xfe\xff", b"\xef\xbb\xbf")
 
 
@@ -102,12 +103,36 @@ def _with(function: Callable[[Any, Any], Any], loader: Any) -> Callable[[Any], A
 
 
 def _text(stream: Any) -> Any:
-    """Return a stream's whole content (a string or bytes stay as they are).
+    """Return what a stream holds (a string or bytes stay as they are).
 
-    Read once, so that the pure-Python loader can start again from the beginning.
+    Read once, so that the pure-Python loader can start again from the beginning; at
+    most ``MAX_READ``: a longer stream (``/dev/urandom``...) is left to PyYAML, which
+    reads it a piece at a time, after what was read (``_Rest``).
     """
     read = getattr(stream, "read", None)
-    return read() if callable(read) else stream
+    if not callable(read):
+        return stream
+    head = read(MAX_READ + 1)
+    return head if len(head) <= MAX_READ else _Rest(head, stream)
+
+
+class _Rest:
+    """A stream read too far to parse at once: what was read, then the rest of it."""
+
+    def __init__(self, head: Any, stream: Any) -> None:
+        self.head = head
+        self.stream = stream
+        if hasattr(stream, "name"):  # PyYAML names the stream in its errors
+            self.name = stream.name
+
+    def read(self, size: int = -1) -> Any:
+        if not self.head:
+            return self.stream.read(size)
+        if size is None or size < 0:
+            out, self.head = self.head + self.stream.read(), self.head[:0]
+            return out
+        out, self.head = self.head[:size], self.head[size:]
+        return out
 
 
 def _alike(text: Any) -> bool:
@@ -152,7 +177,7 @@ def _again(text: Any, stream: Any) -> Any:
     names the place as it would have (``"<file>"`` or the file's name, not a string).
     """
     if stream is text or not isinstance(text, (str, bytes)):
-        return text
+        return text  # (a _Rest is a stream already)
     again = io.StringIO(text) if isinstance(text, str) else io.BytesIO(text)
     if hasattr(stream, "name"):
         again.name = stream.name
