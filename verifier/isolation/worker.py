@@ -134,8 +134,8 @@ def _keep_only(fd: int, *, keep_stderr: bool = False) -> None:
         if stream != fd:
             os.dup2(null, stream)
     keep = {0, 1, 2, fd}
-    try:
-        open_fds = [int(entry.name) for entry in Path("/proc/self/fd").iterdir()]
+    try:  # (os.listdir: pathlib here cost a quarter of a millisecond per worker)
+        open_fds = [int(name) for name in os.listdir("/proc/self/fd")]  # noqa: PTH208
     except OSError:
         open_fds = list(range(3, 1024))
     for other in open_fds:
