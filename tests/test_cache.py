@@ -8,6 +8,7 @@ from pathlib import Path
 import pytest
 
 from launchverify.cli import main
+from launchverify.findings import cache
 
 TOP = """<launch>
   <include file="$(dirname)/robot.launch.xml">
@@ -34,6 +35,9 @@ def tree(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     monkeypatch.delenv("LAUNCHVERIFY_NO_CACHE", raising=False)
     monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "cache"))
+    # files written a moment before a check are kept (a user's are seconds old): results
+    # are stored or not by what happened during the check alone
+    monkeypatch.setattr(cache, "CLOCK_SLACK", 0.0)
     root = tmp_path / "ws"
     root.mkdir()
     (root / "top.launch.xml").write_text(TOP)
@@ -74,6 +78,27 @@ def test_an_edited_parameter_file_of_the_same_size_is_seen(
         tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
     check(capsys, tree)
     (tree / "params.yaml").write_text(PARAMS.replace("talker:", "talkex:"))
+    findings, cached = check(capsys, tree)
+    assert not cached and "LV402:params.yaml:1" in findings
+
+
+def test_a_file_edited_while_the_check_runs_is_checked_again(
+        tree: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    """Saved after the check read it: what was checked is not what is there, so the result
+    is not kept (stamped after the check, it would have matched the new content)."""
+    import launchverify.engine as engine
+
+    real = engine.run_check
+
+    def edited_meanwhile(options: engine.CheckOptions) -> engine.Report:
+        report = real(options)
+        (tree / "params.yaml").write_text(PARAMS.replace("talker:", "talkex:"))
+        return report
+
+    monkeypatch.setattr(engine, "run_check", edited_meanwhile)
+    findings, cached = check(capsys, tree)
+    assert "LV402:params.yaml:1" not in findings and not cached
+    monkeypatch.setattr(engine, "run_check", real)
     findings, cached = check(capsys, tree)
     assert not cached and "LV402:params.yaml:1" in findings
 

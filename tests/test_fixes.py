@@ -21,6 +21,7 @@ from test_formats import sarif_of, validate
 
 from launchverify.cli import main
 from launchverify.engine import CheckOptions, Report, run_check
+from launchverify.findings import cache as result_cache
 from launchverify.findings.fixes import fix_all, plan
 from launchverify.render.github import render_github
 from launchverify.render.junit import render_junit
@@ -167,6 +168,7 @@ def test_standard_input_is_fixed_to_standard_output(tmp_path: Path) -> None:
 def test_a_fix_invalidates_the_cached_result(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
                                              capsys: pytest.CaptureFixture[str]) -> None:
     monkeypatch.delenv("LAUNCHVERIFY_NO_CACHE", raising=False)
+    monkeypatch.setattr(result_cache, "CLOCK_SLACK", 0.0)  # the files were written just now
     case = DATA / "cases" / "lv303_package.launch.xml"
     root = workspace(tmp_path, case)
     path = root / "src" / "demo" / "launch" / case.name

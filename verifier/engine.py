@@ -27,6 +27,7 @@ from launchverify.findings.cache import (
     in_use,
     key_of,
     options_text,
+    settled,
     stamps_of,
 )
 from launchverify.rule import Finding, Rule, RuleContext, Severity
@@ -343,8 +344,9 @@ def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report
         report = run_check(options)
     read = {str(path) for graph in report.graphs
             for path in (*graph.files, *graph.param_files)}
-    cache.store(key, Entry(report.detached(), folders,
-                           stamps_of(folders, [*files, *read], now, skip=str(cache.folder))))
+    stamps = stamps_of(folders, [*files, *read], now, skip=str(cache.folder))
+    if settled(stamps, now):  # else a file was saved meanwhile: its stamp is not what we read
+        cache.store(key, Entry(report.detached(), folders, stamps))
     return report
 
 

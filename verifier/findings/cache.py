@@ -13,7 +13,10 @@ packages' launch and parameter files, the ament index of each prefix).
 A file is compared by size and modification time; one modified within
 ``RACY_SECONDS`` of the check (it could change again within the clock's resolution
 without its time changing) by its content hash too, as git does. Any change invalidates
-the whole result: never stale, at the price of checking everything again.
+the whole result: never stale, at the price of checking everything again. Files are
+stamped after the check (only then is it known what it read): a result is not kept when
+a file changed while the check ran (``settled``), since its stamp would describe content
+the check may not have read.
 """
 
 from __future__ import annotations
@@ -36,6 +39,7 @@ from launchverify.workspace.packages import SKIP_DIRS
 
 FORMAT = 2  # bump when what is stored changes shape (2: findings carry fixes)
 RACY_SECONDS = 2.0
+CLOCK_SLACK = 0.01  # seconds a file's modification time may trail the real time (a jiffy)
 MAX_AGE_DAYS = 30  # cache files unused for longer are removed
 Stamp = tuple[int, int, str | None]  # size, mtime_ns, content hash for racy files
 
@@ -169,6 +173,16 @@ def stamps_of(folders: list[str], files: Iterable[str], now: float,
         if mtime >= racy:
             stamps[path] = (size, mtime, _hash(path))
     return stamps
+
+
+def settled(stamps: dict[str, Stamp], started: float) -> bool:
+    """Return whether no file was modified since a check started (its result may be kept).
+
+    A file's time may trail the moment it was written by the kernel's coarse clock
+    (milliseconds): one within ``CLOCK_SLACK`` of the start counts as written during it.
+    """
+    limit = int((started - CLOCK_SLACK) * 1e9)
+    return all(mtime < limit for _, mtime, _ in stamps.values())
 
 
 def unchanged(entry: Entry, skip: str | None = None) -> bool:
