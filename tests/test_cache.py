@@ -103,6 +103,29 @@ def test_a_file_edited_while_the_check_runs_is_checked_again(
     assert not cached and "LV402:params.yaml:1" in findings
 
 
+def test_a_file_removed_while_the_check_runs_is_checked_again(
+        tree: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch) -> None:
+    """A removed file leaves no stamp: its folder's time says the tree changed meanwhile."""
+    import launchverify.engine as engine
+
+    (tree / "extra.launch.xml").write_text(
+        '<launch><node pkg="demo_nodes_cpp" exec="talker" name="a"/>'
+        '<node pkg="demo_nodes_cpp" exec="talker" name="a"/></launch>\n')
+    real = engine.run_check
+
+    def removed_meanwhile(options: engine.CheckOptions) -> engine.Report:
+        report = real(options)
+        (tree / "extra.launch.xml").unlink()
+        return report
+
+    monkeypatch.setattr(engine, "run_check", removed_meanwhile)
+    findings, cached = check(capsys, tree)
+    assert "LV101:extra.launch.xml:1" in findings and not cached
+    monkeypatch.setattr(engine, "run_check", real)
+    findings, cached = check(capsys, tree)
+    assert not cached and "LV101:extra.launch.xml:1" not in findings
+
+
 def test_a_new_file_is_seen(tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
     check(capsys, tree)
     (tree / "other.launch.xml").write_text(

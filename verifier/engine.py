@@ -344,8 +344,10 @@ def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report
         report = run_check(options)
     read = {str(path) for graph in report.graphs
             for path in (*graph.files, *graph.param_files)}
-    stamps = stamps_of(folders, [*files, *read], now, skip=str(cache.folder))
-    if settled(stamps, now):  # else a file was saved meanwhile: its stamp is not what we read
+    folder_times: list[int] = []
+    stamps = stamps_of(folders, [*files, *read], now, skip=str(cache.folder),
+                       folder_times=folder_times)
+    if settled(stamps, now, folder_times):  # else what was read may not be what is there
         cache.store(key, Entry(report.detached(), folders, stamps))
     return report
 

@@ -91,7 +91,8 @@ def own_code_stamp() -> str:
     return digest.hexdigest()
 
 
-def _walk(folders: Iterable[str], skip: str | None = None) -> dict[str, Stamp]:
+def _walk(folders: Iterable[str], skip: str | None = None,
+          folder_times: list[int] | None = None) -> dict[str, Stamp]:
     """Return the size and modification time of every file below the folders.
 
     ``skip``: a folder left out (the cache's own, when it lies in the workspace). Linked
@@ -100,11 +101,16 @@ def _walk(folders: Iterable[str], skip: str | None = None) -> dict[str, Stamp]:
     over every file of the workspace.
     """
     return {path: (info.st_size, info.st_mtime_ns, None)
-            for path, info in _files(folders, skip)}
+            for path, info in _files(folders, skip, folder_times)}
 
 
-def _files(folders: Iterable[str], skip: str | None) -> Iterator[tuple[str, os.stat_result]]:
-    """Yield every regular file below the folders with its status (see ``_walk``)."""
+def _files(folders: Iterable[str], skip: str | None,
+           folder_times: list[int] | None = None) -> Iterator[tuple[str, os.stat_result]]:
+    """Yield every regular file below the folders with its status (see ``_walk``).
+
+    ``folder_times`` receives each folder's modification time (a file added, removed or
+    renamed in it changes it).
+    """
     pending = list(folders)
     visited: set[tuple[int, int]] = set()
     regular = stat.S_ISREG
@@ -115,6 +121,8 @@ def _files(folders: Iterable[str], skip: str | None) -> Iterator[tuple[str, os.s
             if (info.st_dev, info.st_ino) in visited:
                 continue
             visited.add((info.st_dev, info.st_ino))
+            if folder_times is not None:
+                folder_times.append(info.st_mtime_ns)
             entries = list(os.scandir(folder))
         except OSError:
             continue
@@ -162,9 +170,13 @@ def _hash(path: str) -> str | None:
 
 
 def stamps_of(folders: list[str], files: Iterable[str], now: float,
-              skip: str | None = None) -> dict[str, Stamp]:
-    """Return the stamps a result rests on; racy files carry their content hash."""
-    stamps = _walk(folders, skip)
+              skip: str | None = None, folder_times: list[int] | None = None
+              ) -> dict[str, Stamp]:
+    """Return the stamps a result rests on; racy files carry their content hash.
+
+    ``folder_times`` receives the modification time of every folder walked.
+    """
+    stamps = _walk(folders, skip, folder_times)
     for path in files:
         if path not in stamps and (stamp := _stat(path)) is not None:
             stamps[path] = stamp
@@ -175,14 +187,18 @@ def stamps_of(folders: list[str], files: Iterable[str], now: float,
     return stamps
 
 
-def settled(stamps: dict[str, Stamp], started: float) -> bool:
-    """Return whether no file was modified since a check started (its result may be kept).
+def settled(stamps: dict[str, Stamp], started: float, folder_times: Iterable[int] = ()
+            ) -> bool:
+    """Return whether nothing was modified since a check started (its result may be kept).
 
-    A file's time may trail the moment it was written by the kernel's coarse clock
-    (milliseconds): one within ``CLOCK_SLACK`` of the start counts as written during it.
+    A file written, or a folder whose files were added, removed or renamed (a file
+    deleted leaves no stamp of its own), after the start: what the check read may not be
+    what is there. A time may trail the moment it was written by the kernel's coarse
+    clock (milliseconds): one within ``CLOCK_SLACK`` of the start counts as during it.
     """
     limit = int((started - CLOCK_SLACK) * 1e9)
-    return all(mtime < limit for _, mtime, _ in stamps.values())
+    return (all(mtime < limit for _, mtime, _ in stamps.values())
+            and all(mtime < limit for mtime in folder_times))
 
 
 def unchanged(entry: Entry, skip: str | None = None) -> bool:
