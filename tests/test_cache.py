@@ -126,6 +126,25 @@ def test_a_file_removed_while_the_check_runs_is_checked_again(
     assert not cached and "LV101:extra.launch.xml:1" not in findings
 
 
+def test_only_times_before_the_check_settle_a_result() -> None:
+    """A time within the clock's slack of the start counts as during the check; a time in
+    whole seconds (a file system without finer ones) within two seconds does too."""
+    started = 1_000_000.0
+    second = 1_000_000_000
+
+    def settled_at(offset: float, whole: bool = False) -> bool:
+        time_ns = int((started + offset) * second)
+        time_ns -= time_ns % second if whole else -123  # (never whole when it should not be)
+        return cache.settled({"f": (1, time_ns, None)}, started) and cache.settled(
+            {}, started, [time_ns])
+
+    assert settled_at(-1.0)
+    assert not settled_at(-cache.CLOCK_SLACK / 2)
+    assert not settled_at(+0.5)
+    assert not settled_at(-1.0, whole=True)
+    assert settled_at(-cache.RACY_SECONDS - 1, whole=True)
+
+
 def test_a_new_file_is_seen(tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
     check(capsys, tree)
     (tree / "other.launch.xml").write_text(

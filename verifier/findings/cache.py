@@ -194,11 +194,18 @@ def settled(stamps: dict[str, Stamp], started: float, folder_times: Iterable[int
     A file written, or a folder whose files were added, removed or renamed (a file
     deleted leaves no stamp of its own), after the start: what the check read may not be
     what is there. A time may trail the moment it was written by the kernel's coarse
-    clock (milliseconds): one within ``CLOCK_SLACK`` of the start counts as during it.
+    clock (milliseconds): one within ``CLOCK_SLACK`` of the start counts as during it. A
+    time in whole seconds comes from a file system that keeps no finer ones (HFS+, FAT:
+    up to two seconds): there, one within ``RACY_SECONDS`` does.
     """
-    limit = int((started - CLOCK_SLACK) * 1e9)
-    return (all(mtime < limit for _, mtime, _ in stamps.values())
-            and all(mtime < limit for mtime in folder_times))
+    fine = int((started - CLOCK_SLACK) * 1e9)
+    coarse = int((started - RACY_SECONDS) * 1e9)
+
+    def before(time_ns: int) -> bool:
+        return time_ns < (coarse if time_ns % 1_000_000_000 == 0 else fine)
+
+    return (all(before(mtime) for _, mtime, _ in stamps.values())
+            and all(before(mtime) for mtime in folder_times))
 
 
 def unchanged(entry: Entry, skip: str | None = None) -> bool:
