@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import time
 from pathlib import Path
 
 import pytest
@@ -52,6 +53,9 @@ def check(capsys: pytest.CaptureFixture[str], root: Path, *extra: str) -> tuple[
           *extra])
     document = json.loads(capsys.readouterr().out)
     codes = {f"{f['code']}:{Path(f['file']).name}:{f['line']}" for f in document["findings"]}
+    # what a test changes next gets a later time than what this check stamped (the
+    # clock's ticks are milliseconds; the slack that guards it is 0 in these tests)
+    time.sleep(0.02)
     return codes, document["summary"].get("cached", False)
 
 
@@ -136,13 +140,45 @@ def test_only_times_before_the_check_settle_a_result() -> None:
         time_ns = int((started + offset) * second)
         time_ns -= time_ns % second if whole else -123  # (never whole when it should not be)
         return cache.settled({"f": (1, time_ns, None)}, started) and cache.settled(
-            {}, started, [time_ns])
+            {}, started, {"folder": (1, 2, time_ns)})
 
     assert settled_at(-1.0)
     assert not settled_at(-cache.CLOCK_SLACK / 2)
     assert not settled_at(+0.5)
     assert not settled_at(-1.0, whole=True)
     assert settled_at(-cache.RACY_SECONDS - 1, whole=True)
+
+
+def test_a_new_file_in_a_folder_below_is_seen(tree: Path,
+                                              capsys: pytest.CaptureFixture[str]) -> None:
+    """No folder is listed again: the folder's own time says a file came."""
+    (tree / "launch").mkdir()
+    (tree / "launch" / "a.launch.xml").write_text("<launch/>\n")
+    check(capsys, tree)
+    assert check(capsys, tree)[1]
+    (tree / "launch" / "b.launch.xml").write_text(
+        '<launch><node pkg="demo_nodes_cpp" exec="talker" name="a"/>'
+        '<node pkg="demo_nodes_cpp" exec="talker" name="a"/></launch>\n')
+    findings, cached = check(capsys, tree)
+    assert not cached and "LV101:b.launch.xml:1" in findings
+
+
+def test_a_removed_folder_is_seen(tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (tree / "doc" / "old").mkdir(parents=True)
+    check(capsys, tree)
+    assert check(capsys, tree)[1]
+    (tree / "doc" / "old").rmdir()
+    assert not check(capsys, tree)[1]
+
+
+def test_what_happens_in_build_folders_keeps_the_result(
+        tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """colcon's build, install and log folders are never walked: building changes nothing."""
+    (tree / "build").mkdir()
+    check(capsys, tree)
+    (tree / "build" / "CMakeCache.txt").write_text("rebuilt")
+    (tree / "build" / "pkg").mkdir()
+    assert check(capsys, tree)[1]
 
 
 def test_a_new_file_is_seen(tree: Path, capsys: pytest.CaptureFixture[str]) -> None:

@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 from launchverify.config import Config, ConfigTree, matches
 from launchverify.findings.cache import (
     Entry,
+    FolderStamp,
     ResultCache,
     in_use,
     key_of,
@@ -339,16 +340,17 @@ def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report
     if entry is not None and isinstance(entry.report, Report):
         return dataclasses.replace(entry.report, seconds=time.perf_counter() - started,
                                    cached=True)
+    cache.prepare()
     now = time.time()
     with in_use(cache):
         report = run_check(options)
     read = {str(path) for graph in report.graphs
             for path in (*graph.files, *graph.param_files)}
-    folder_times: list[int] = []
+    folder_stamps: dict[str, FolderStamp] = {}
     stamps = stamps_of(folders, [*files, *read], now, skip=str(cache.folder),
-                       folder_times=folder_times)
-    if settled(stamps, now, folder_times):  # else what was read may not be what is there
-        cache.store(key, Entry(report.detached(), folders, stamps))
+                       folder_stamps=folder_stamps)
+    if settled(stamps, now, folder_stamps):  # else what was read may not be what is there
+        cache.store(key, Entry(report.detached(), folders, stamps, folder_stamps))
     return report
 
 

@@ -12,7 +12,9 @@ packages' launch and parameter files, the ament index of each prefix).
 
 A file is compared by size and modification time; one modified within
 ``RACY_SECONDS`` of the check (it could change again within the clock's resolution
-without its time changing) by its content hash too, as git does. Any change invalidates
+without its time changing) by its content hash too, as git does. A folder is compared by
+its change time, which a file added, removed or renamed in it changes: a cached run
+lists no folder again. Any change invalidates
 the whole result: never stale, at the price of checking everything again. Files are
 stamped after the check (only then is it known what it read): a result is not kept when
 a file changed while the check ran (``settled``), since its stamp would describe content
@@ -37,11 +39,15 @@ from pathlib import Path
 import launchverify
 from launchverify.workspace.packages import SKIP_DIRS
 
-FORMAT = 2  # bump when what is stored changes shape (2: findings carry fixes)
+FORMAT = 3  # bump when what is stored changes shape (2: findings carry fixes; 3: folders)
 RACY_SECONDS = 2.0
 CLOCK_SLACK = 0.01  # seconds a file's modification time may trail the real time (a jiffy)
 MAX_AGE_DAYS = 30  # cache files unused for longer are removed
 Stamp = tuple[int, int, str | None]  # size, mtime_ns, content hash for racy files
+# device, inode, ctime_ns: a folder's changes when a file is added, removed or renamed in
+# it (or its permissions change); (-1, -1, -1) for one that could not be read
+FolderStamp = tuple[int, int, int]
+UNREADABLE: FolderStamp = (-1, -1, -1)
 
 
 def default_cache_dir() -> Path:
@@ -62,6 +68,7 @@ class Entry:
     report: object
     folders: list[str]  # walked whole: any change below them counts
     stamps: dict[str, Stamp] = field(default_factory=dict)
+    folder_stamps: dict[str, FolderStamp] = field(default_factory=dict)  # every one walked
     format: int = FORMAT
 
 
@@ -92,7 +99,7 @@ def own_code_stamp() -> str:
 
 
 def _walk(folders: Iterable[str], skip: str | None = None,
-          folder_times: list[int] | None = None) -> dict[str, Stamp]:
+          folder_stamps: dict[str, FolderStamp] | None = None) -> dict[str, Stamp]:
     """Return the size and modification time of every file below the folders.
 
     ``skip``: a folder left out (the cache's own, when it lies in the workspace). Linked
@@ -101,15 +108,15 @@ def _walk(folders: Iterable[str], skip: str | None = None,
     over every file of the workspace.
     """
     return {path: (info.st_size, info.st_mtime_ns, None)
-            for path, info in _files(folders, skip, folder_times)}
+            for path, info in _files(folders, skip, folder_stamps)}
 
 
 def _files(folders: Iterable[str], skip: str | None,
-           folder_times: list[int] | None = None) -> Iterator[tuple[str, os.stat_result]]:
+           folder_stamps: dict[str, FolderStamp] | None = None
+           ) -> Iterator[tuple[str, os.stat_result]]:
     """Yield every regular file below the folders with its status (see ``_walk``).
 
-    ``folder_times`` receives each folder's modification time (a file added, removed or
-    renamed in it changes it).
+    ``folder_stamps`` receives each folder's stamp (``FolderStamp``).
     """
     pending = list(folders)
     visited: set[tuple[int, int]] = set()
@@ -118,11 +125,16 @@ def _files(folders: Iterable[str], skip: str | None,
         folder = pending.pop()
         try:
             info = os.stat(folder)  # noqa: PTH116 (string paths)
-            if (info.st_dev, info.st_ino) in visited:
-                continue
-            visited.add((info.st_dev, info.st_ino))
-            if folder_times is not None:
-                folder_times.append(info.st_mtime_ns)
+        except OSError:
+            if folder_stamps is not None:
+                folder_stamps[folder] = UNREADABLE
+            continue
+        if (info.st_dev, info.st_ino) in visited:
+            continue
+        visited.add((info.st_dev, info.st_ino))
+        if folder_stamps is not None:
+            folder_stamps[folder] = (info.st_dev, info.st_ino, info.st_ctime_ns)
+        try:
             entries = list(os.scandir(folder))
         except OSError:
             continue
@@ -170,13 +182,13 @@ def _hash(path: str) -> str | None:
 
 
 def stamps_of(folders: list[str], files: Iterable[str], now: float,
-              skip: str | None = None, folder_times: list[int] | None = None
+              skip: str | None = None, folder_stamps: dict[str, FolderStamp] | None = None
               ) -> dict[str, Stamp]:
     """Return the stamps a result rests on; racy files carry their content hash.
 
-    ``folder_times`` receives the modification time of every folder walked.
+    ``folder_stamps`` receives the stamp of every folder walked.
     """
-    stamps = _walk(folders, skip, folder_times)
+    stamps = _walk(folders, skip, folder_stamps)
     for path in files:
         if path not in stamps and (stamp := _stat(path)) is not None:
             stamps[path] = stamp
@@ -187,8 +199,8 @@ def stamps_of(folders: list[str], files: Iterable[str], now: float,
     return stamps
 
 
-def settled(stamps: dict[str, Stamp], started: float, folder_times: Iterable[int] = ()
-            ) -> bool:
+def settled(stamps: dict[str, Stamp], started: float,
+            folder_stamps: dict[str, FolderStamp] | None = None) -> bool:
     """Return whether nothing was modified since a check started (its result may be kept).
 
     A file written, or a folder whose files were added, removed or renamed (a file
@@ -205,24 +217,27 @@ def settled(stamps: dict[str, Stamp], started: float, folder_times: Iterable[int
         return time_ns < (coarse if time_ns % 1_000_000_000 == 0 else fine)
 
     return (all(before(mtime) for _, mtime, _ in stamps.values())
-            and all(before(mtime) for mtime in folder_times))
+            and all(before(changed) for _, _, changed in (folder_stamps or {}).values()))
 
 
-def unchanged(entry: Entry, skip: str | None = None) -> bool:
-    """Return whether every file the result rests on is as it was (the first change says)."""
-    stamps = entry.stamps
-    walked: set[str] = set()
-    for path, info in _files(entry.folders, skip):
-        stamp = stamps.get(path)
-        if stamp is None or stamp[0] != info.st_size or stamp[1] != info.st_mtime_ns:
-            return False  # a new file, or a changed one
-        if stamp[2] is not None and _hash(path) != stamp[2]:
-            return False
-        walked.add(path)
-    for path, (size, mtime, content) in stamps.items():
-        if path in walked:
+def unchanged(entry: Entry) -> bool:
+    """Return whether every file the result rests on is as it was (the first change says).
+
+    No folder is listed again: a folder's stamp changes when a file is added, removed or
+    renamed in it, and a file's when it is written. ``settled`` kept only results whose
+    times all precede their check, so any later change shows as a later time.
+    """
+    for folder, stamp in entry.folder_stamps.items():
+        try:
+            info = os.stat(folder)  # noqa: PTH116 (string paths)
+        except OSError:
+            if stamp != UNREADABLE:
+                return False
             continue
-        now = _stat(path)  # gone, or read outside the folders (an ament index folder)
+        if (info.st_dev, info.st_ino, info.st_ctime_ns) != stamp:
+            return False  # a file added, removed or renamed there, or another folder
+    for path, (size, mtime, content) in entry.stamps.items():
+        now = _stat(path)
         if now is None or now[:2] != (size, mtime):
             return False
         if content is not None and _hash(path) != content:
@@ -248,17 +263,25 @@ class ResultCache:
         except Exception:  # missing, unreadable, or from another version: recompute
             return None
         if (not isinstance(entry, Entry) or entry.format != FORMAT
-                or not unchanged(entry, str(self.folder))):
+                or not unchanged(entry)):
             return None
         with contextlib.suppress(OSError):
             os.utime(path)  # recently used: kept by the pruning
         return entry
 
-    def store(self, key: str, entry: Entry) -> None:
-        """Write an entry atomically; a cache that cannot be written is no error."""
+    def prepare(self) -> None:
+        """Make the folder before a check (a cache that cannot be made is no error).
+
+        Made during the check inside the workspace, it would change a folder the result
+        rests on, and that result would not be kept.
+        """
         with contextlib.suppress(OSError):
             self.folder.mkdir(parents=True, exist_ok=True)
             _write_tag(self.folder)
+
+    def store(self, key: str, entry: Entry) -> None:
+        """Write an entry atomically; a cache that cannot be written is no error."""
+        self.prepare()
         if _write(self._file(key), entry):
             self.prune()
 
