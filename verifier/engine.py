@@ -350,7 +350,7 @@ def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report
     stamps = stamps_of(folders, [*files, *read], now, skip=str(cache.folder),
                        folder_stamps=folder_stamps)
     if settled(stamps, now, folder_stamps):  # else what was read may not be what is there
-        cache.store(key, Entry(report.detached(), folders, stamps, folder_stamps))
+        cache.store(key, Entry(report.detached(), stamps, folder_stamps))
     return report
 
 

@@ -14,11 +14,10 @@ A file is compared by size and modification time; one modified within
 ``RACY_SECONDS`` of the check (it could change again within the clock's resolution
 without its time changing) by its content hash too, as git does. A folder is compared by
 its change time, which a file added, removed or renamed in it changes: a cached run
-lists no folder again. Any change invalidates
-the whole result: never stale, at the price of checking everything again. Files are
-stamped after the check (only then is it known what it read): a result is not kept when
-a file changed while the check ran (``settled``), since its stamp would describe content
-the check may not have read.
+lists no folder again. Any change invalidates the whole result: never stale, at the
+price of checking everything again. Files are stamped after the check (only then is it
+known what it read): a result is not kept when a file changed while the check ran
+(``settled``), since its stamp would describe content the check may not have read.
 """
 
 from __future__ import annotations
@@ -66,8 +65,7 @@ class Entry:
     """One stored result: the report and what it rested on."""
 
     report: object
-    folders: list[str]  # walked whole: any change below them counts
-    stamps: dict[str, Stamp] = field(default_factory=dict)
+    stamps: dict[str, Stamp] = field(default_factory=dict)  # every file it may rest on
     folder_stamps: dict[str, FolderStamp] = field(default_factory=dict)  # every one walked
     format: int = FORMAT
 
@@ -104,8 +102,8 @@ def _walk(folders: Iterable[str], skip: str | None = None,
 
     ``skip``: a folder left out (the cache's own, when it lies in the workspace). Linked
     folders are followed, as the package index follows them, each real folder once (a
-    link to a parent is no endless walk). Paths stay strings: this runs on every check,
-    over every file of the workspace.
+    link to a parent is no endless walk). Paths stay strings: this runs after every
+    check that stores its result, over every file of the workspace.
     """
     return {path: (info.st_size, info.st_mtime_ns, None)
             for path, info in _files(folders, skip, folder_stamps)}
