@@ -59,33 +59,28 @@ def replacements() -> dict[str, Callable[..., Any]]:
     twins = {getattr(yaml, name): getattr(yaml, "C" + name)
              for name in ("BaseLoader", "SafeLoader", "FullLoader", "Loader", "UnsafeLoader")
              if hasattr(yaml, name) and hasattr(yaml, "C" + name)}
-    original_load, original_load_all = _LOAD, _LOAD_ALL
 
-    def load(stream: Any, Loader: Any = _MISSING) -> Any:
-        twin = twins.get(Loader) if isinstance(Loader, type) else None
-        if twin is None:  # (no loader given: PyYAML's own error)
-            return original_load(stream) if Loader is _MISSING else original_load(stream, Loader)
-        text = _text(stream)
-        if not _alike(text):
-            return original_load(_again(text, stream), Loader)
-        try:
-            return original_load(text, twin)
-        except _REFUSED:
-            return original_load(_again(text, stream), Loader)
+    def reading(original: Callable[..., Any],
+                collect: Callable[[Any], Any]) -> Callable[..., Any]:
+        """Return ``original`` (``yaml.load`` or ``load_all``) reading with libyaml."""
 
-    def load_all(stream: Any, Loader: Any = _MISSING) -> Any:
-        twin = twins.get(Loader) if isinstance(Loader, type) else None
-        if twin is None:
-            return (original_load_all(stream) if Loader is _MISSING
-                    else original_load_all(stream, Loader))
-        text = _text(stream)
-        if not _alike(text):
-            return original_load_all(_again(text, stream), Loader)
-        try:
-            return iter(list(original_load_all(text, twin)))
-        except _REFUSED:
-            return original_load_all(_again(text, stream), Loader)
+        def read(stream: Any, Loader: Any = _MISSING) -> Any:
+            twin = twins.get(Loader) if isinstance(Loader, type) else None
+            if twin is None:  # a loader of the user's own, or none given (PyYAML's error)
+                return original(stream) if Loader is _MISSING else original(stream, Loader)
+            text = _text(stream)
+            if _alike(text):
+                try:
+                    return collect(original(text, twin))
+                except _REFUSED:
+                    pass
+            return original(_again(text, stream), Loader)
 
+        return read
+
+    load = reading(_LOAD, lambda value: value)
+    # every document read at once: a failure part way is then PyYAML's, from the start
+    load_all = reading(_LOAD_ALL, lambda documents: iter(list(documents)))
     out: dict[str, Callable[..., Any]] = {"load": load, "load_all": load_all}
     for prefix, loader in (("safe", "SafeLoader"), ("full", "FullLoader"),
                            ("unsafe", "UnsafeLoader")):
