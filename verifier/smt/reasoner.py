@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Callable, Iterable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar, cast
 
 from launchverify.graph import LaunchGraph
 from launchverify.ir.subst import Opaque as s_Opaque
@@ -35,6 +35,8 @@ from launchverify.smt.types import Contradiction, Witness
 if TYPE_CHECKING:
     from launchverify.smt.solver import Z3Backend
 
+
+Answer = TypeVar("Answer")  # what one kind of question is answered with
 
 class Reasoner:
     """Answers questions about one graph (one root launch file and its arguments)."""
@@ -81,7 +83,7 @@ class Reasoner:
                 return self._tried(tried.found)
             return self.z3.together((merged,))
 
-        return self._answer("together", merged, merged, answer)  # type: ignore[return-value]
+        return self._answer("together", merged, merged, answer)
 
     def unreachable(self, path: PathCondition) -> bool:
         """Return whether a path holds under no value the user can give the arguments.
@@ -138,9 +140,8 @@ class Reasoner:
                 return None
             return self.z3.same_name(first, first_path, second, second_path)
 
-        return self._answer(  # type: ignore[return-value]
-            "same name", (first, first_path, second, second_path), (*guards, first, second),
-            answer)
+        return self._answer("same name", (first, first_path, second, second_path),
+                            (*guards, first, second), answer)
 
     def never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
         """Return why ``guard`` cannot hold where ``path`` does (for any argument values).
@@ -186,7 +187,7 @@ class Reasoner:
                 return held
             return self.z3.always(path, guard)
 
-        return bool(self._answer("always", (path, guard), (*path, guard), answer))
+        return self._answer("always", (path, guard), (*path, guard), answer)
 
     def invalid_value(self, path: PathCondition, guard: Truthy) -> tuple[str, Witness] | None:
         """Return a value the condition can take that launch rejects, with the switches."""
@@ -211,22 +212,25 @@ class Reasoner:
                 return None
             return self.z3.invalid_value(path, guard)
 
-        return self._answer(  # type: ignore[return-value]
-            "invalid value", (path, guard), (*path, guard), answer)
+        return self._answer("invalid value", (path, guard), (*path, guard), answer)
 
     def _answer(self, kind: str, question: tuple[object, ...], items: Iterable[object],
-                compute: Callable[[], object]) -> object:
-        """Return a question's answer: this reasoner's, another's (same key), or computed."""
+                compute: Callable[[], Answer]) -> Answer:
+        """Return a question's answer: this reasoner's, another's (same key), or computed.
+
+        (``kind`` names what ``compute`` answers, so an answer found under a key is of
+        the type ``compute`` returns.)
+        """
         local = (kind, question)
         if local in self._answers:
-            return self._answers[local]
+            return cast("Answer", self._answers[local])
         key = self._shared_key(kind, question, items)
         found = _ANSWERS.get(key, _UNKNOWN)
         if found is _UNKNOWN:
             found = compute()
             _remember(key, found)
         self._answers[local] = found
-        return found
+        return cast("Answer", found)
 
     def _shared_key(self, kind: str, question: tuple[object, ...],
                     items: Iterable[object]) -> tuple[object, ...]:
