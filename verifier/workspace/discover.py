@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import re
+from collections.abc import Iterator
 from pathlib import Path
 
 from launchverify.workspace.packages import SKIP_DIRS
@@ -37,29 +38,70 @@ def is_launch_file(path: Path) -> bool:
     left to ``launch_test``); other ``.xml``/``.yaml`` files count when
     they sit in a ``launch`` folder and their root is ``launch``.
     """
-    name = path.name.lower()
-    if name.endswith(LAUNCH_SUFFIXES):
+    return _looks_like_launch(os.fspath(path))
+
+
+def _looks_like_launch(path: str) -> bool:
+    """``is_launch_file`` on a path string (a walk over every file makes no Path)."""
+    folder, _, name = path.rpartition(os.sep)
+    lowered = name.lower()
+    if lowered.endswith(LAUNCH_SUFFIXES):
         return True
-    if name.endswith(PYTHON_SUFFIX):
+    if lowered.endswith(PYTHON_SUFFIX):
         return _PYTHON_ENTRY.search(_head(path, 256 * 1024)) is not None
-    if name.endswith(".py") and _in_launch_folder(path):
+    if lowered.endswith(".py") and _in_launch_folder(folder):
         return _MODULE_ENTRY.search(_head(path, 256 * 1024)) is not None
-    if not name.endswith(FRONTEND_SUFFIXES) or "launch" not in path.parent.name.lower():
+    if not lowered.endswith(FRONTEND_SUFFIXES) or "launch" not in _name(folder).lower():
         return False
-    pattern = _XML_ROOT if name.endswith(".xml") else _YAML_ROOT
+    pattern = _XML_ROOT if lowered.endswith(".xml") else _YAML_ROOT
     return pattern.search(_head(path, 8192)) is not None
 
 
-def _in_launch_folder(path: Path) -> bool:
-    """Return whether a file sits in (or just below) a folder named for launch files."""
-    return any("launch" in part.lower() for part in path.parent.parts[-2:])
+def _in_launch_folder(folder: str) -> bool:
+    """Return whether a folder is (or is just below) one named for launch files."""
+    parent, _, own = folder.rpartition(os.sep)
+    return "launch" in own.lower() or "launch" in _name(parent).lower()
 
 
-def _head(path: Path, size: int) -> bytes:
+def _name(folder: str) -> str:
+    return folder.rpartition(os.sep)[2]
+
+
+def _head(path: str, size: int) -> bytes:
     try:
         return read_file(path, prefix=size)
     except OSError:
         return b""  # a FIFO, a device, unreadable: the loader says why
+
+
+def _files(top: str) -> Iterator[str]:
+    """Yield each file below ``top`` (path strings), in ``os.walk``'s order.
+
+    Sorted, depth first; linked folders and skipped ones (build output, dot folders) are
+    not entered, unreadable ones are passed over. (``os.walk``'s generators took a third
+    of a scan of the real-world corpus's 4,400 folders.)
+    """
+    pending = [top]
+    while pending:
+        folder = pending.pop()
+        try:
+            with os.scandir(folder) as listing:
+                entries = list(listing)
+        except OSError:
+            continue
+        folders, files = [], []
+        for entry in entries:
+            try:
+                is_folder = entry.is_dir()
+            except OSError:
+                is_folder = False
+            if not is_folder:
+                files.append(entry.path)
+            elif (entry.name not in SKIP_DIRS and not entry.name.startswith(".")
+                  and not entry.is_symlink()):
+                folders.append(entry.path)
+        yield from sorted(files)  # (paths in one folder sort as their names)
+        pending.extend(sorted(folders, reverse=True))
 
 
 def discover(paths: list[Path], *, filter_files: bool = False) -> list[Path]:
@@ -71,12 +113,7 @@ def discover(paths: list[Path], *, filter_files: bool = False) -> list[Path]:
     found: list[Path] = []
     for path in paths:
         if path.is_dir():
-            for current, dirs, files in os.walk(path):
-                dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS and not d.startswith("."))
-                for name in sorted(files):
-                    candidate = Path(current) / name
-                    if is_launch_file(candidate):
-                        found.append(candidate)
+            found.extend(Path(file) for file in _files(str(path)) if _looks_like_launch(file))
         elif not filter_files or is_launch_file(path):
             found.append(path)
     unique: dict[Path, Path] = {}

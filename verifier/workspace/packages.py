@@ -84,29 +84,42 @@ def scan_sources(root: Path) -> Iterator[tuple[str, Path]]:
     """
     scanned = 0
     seen: set[tuple[int, int]] = set()
-    for current, dirs, files in os.walk(root, followlinks=True):
+    pending = [os.fspath(root)]  # strings: the walk visits every folder of the workspace
+    while pending:
+        current = pending.pop()
+        try:
+            with os.scandir(current) as listing:
+                entries = list(listing)
+        except OSError:
+            continue
         scanned += 1
         if scanned > MAX_SCANNED_DIRS:
             return
         try:
-            identity = Path(current).stat()
+            identity = os.stat(current)  # noqa: PTH116 (string paths)
         except OSError:
-            dirs[:] = []
             continue
         if (identity.st_dev, identity.st_ino) in seen:
-            dirs[:] = []
             continue
         seen.add((identity.st_dev, identity.st_ino))
+        dirs, files = [], set()
+        for entry in entries:
+            try:
+                is_folder = entry.is_dir()  # a link to a folder too: followed, as colcon does
+            except OSError:
+                is_folder = False
+            if not is_folder:
+                files.add(entry.name)
+            elif entry.name not in SKIP_DIRS and not entry.name.startswith("."):
+                dirs.append(entry.path)
         if any(marker in files for marker in IGNORE_MARKERS):
-            dirs[:] = []
             continue
         if "package.xml" in files:
-            name = package_name(Path(current) / "package.xml")
+            name = package_name(Path(current, "package.xml"))
             if name:
                 yield name, Path(current)
-            dirs[:] = []
             continue
-        dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS and not d.startswith("."))
+        pending.extend(sorted(dirs, reverse=True))  # (paths in one folder sort as names)
 
 
 def scan_prefix(prefix: Path) -> Iterator[str]:

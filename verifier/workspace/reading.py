@@ -58,7 +58,7 @@ def unsaved_buffers(contents: Mapping[Path, bytes], *, only: bool = False) -> It
         _UNSAVED.update(saved)
 
 
-def unsaved(path: Path) -> bytes | None:
+def unsaved(path: str | Path) -> bytes | None:
     """Return the unsaved content standing for a file, if any."""
     if not _UNSAVED:
         return None
@@ -80,7 +80,7 @@ def limit() -> int:
     return _LIMIT.get()
 
 
-def read_file(path: Path, *, prefix: int | None = None) -> bytes:
+def read_file(path: str | Path, *, prefix: int | None = None) -> bytes:
     """Return a regular file's bytes.
 
     ``prefix``: return at most that many bytes of a larger file instead of refusing it
