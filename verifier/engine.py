@@ -187,6 +187,13 @@ def build_index(paths: list[Path], workspace: Path | None,
     ``extra`` folders are searched for packages too: an install prefix (with
     ``share/ament_index``) as installed packages, any other folder as sources.
     """
+    root, sources, prefixes = package_folders(paths, workspace, extra)
+    return root, PackageIndex.from_environment(sources, prefixes)
+
+
+def package_folders(paths: list[Path], workspace: Path | None, extra: list[Path] | None = None
+                    ) -> tuple[Path, list[Path], list[Path]]:
+    """Return the workspace, the folders of package sources and the install prefixes."""
     if workspace is not None:
         if not workspace.is_dir():
             raise UsageError(f"workspace {str(workspace)!r} is not a folder")
@@ -201,7 +208,7 @@ def build_index(paths: list[Path], workspace: Path | None,
             prefixes.append(canonical(folder))
         else:
             sources.append(canonical(folder))
-    return root, PackageIndex.from_environment(sources, prefixes)
+    return root, sources, prefixes
 
 
 def _require_paths(options: CheckOptions) -> None:
@@ -223,13 +230,19 @@ def run_check(options: CheckOptions) -> Report:
     config = options.config
     tree = ConfigTree(config, nested=options.nested_configs)
     with collector_paused():
-        workspace, index = build_index(options.paths, options.workspace, config.package_paths)
+        workspace, sources, prefixes = package_folders(options.paths, options.workspace,
+                                                       config.package_paths)
         if options.affected:  # pre-commit: what the changed files may break, or nothing
-            includers = Includers.of_workspace(index.workspaces)
-            return _check_files(options, tree, workspace, index, lambda: includers, started,
+            includers = Includers.of_workspace(sources)
+            return _check_files(options, tree, workspace,
+                                PackageIndex.from_environment(sources, prefixes),
+                                lambda: includers, started,
                                 affected_launch_files(options.paths, includers))
-        with Background(partial(Includers.of_workspace, index.workspaces)) as scan:
-            return _check_files(options, tree, workspace, index, scan.result, started,
+        # the scan starts first: small trees waited for it (it reads the whole workspace)
+        with Background(partial(Includers.of_workspace, sources)) as scan:
+            return _check_files(options, tree, workspace,
+                                PackageIndex.from_environment(sources, prefixes),
+                                scan.result, started,
                                 discover(options.paths, filter_files=options.launch_files_only))
 
 
