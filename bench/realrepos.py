@@ -76,18 +76,21 @@ def check_times(corpus: Path, folder: Path, repeat: int,
     arguments = ["check", str(folder), "--workspace", str(corpus),
                  "--format", "json", "--exit-zero", "-q"]
     base = [*launchverify(), *arguments]
+    # as installed: with PYTHONDONTWRITEBYTECODE set, an editable install (the checkout)
+    # compiled every module again on every run
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
     cold, other = [], []
     for _ in range(repeat):
-        cold.append(timed([*base, "--no-cache"]))
+        cold.append(timed([*base, "--no-cache"], env))
         if against is not None:
-            other.append(timed([*against, *arguments, "--no-cache"]))
+            other.append(timed([*against, *arguments, "--no-cache"], env))
     cache = Path(tempfile.mkdtemp(prefix="lv-bench-cache-"))
     try:
         warm = []
         for _ in range(repeat):
             shutil.rmtree(cache, ignore_errors=True)
-            timed([*base, "--cache-dir", str(cache)])  # fills the cache
-            warm.append(timed([*base, "--cache-dir", str(cache)]))
+            timed([*base, "--cache-dir", str(cache)], env)  # fills the cache
+            warm.append(timed([*base, "--cache-dir", str(cache)], env))
     finally:
         shutil.rmtree(cache, ignore_errors=True)
     out = subprocess.run([*base, "--no-cache"], capture_output=True, text=True, check=False)
