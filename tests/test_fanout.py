@@ -12,7 +12,8 @@ from launchverify.parallel.fanout import NextPiece, Piece, RuleRun, pieces
 from launchverify.registry import all_rules
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
-TREES = [CORPUS / "conditions", CORPUS / "naming", CORPUS / "arguments", CORPUS / "parameters"]
+TREES = [CORPUS / "conditions", CORPUS / "naming", CORPUS / "arguments", CORPUS / "parameters",
+         CORPUS / "lifecycle", CORPUS / "wiring"]  # (the last two: rules gathering by poll)
 
 
 def _check(jobs: int) -> Report:
@@ -34,6 +35,7 @@ def test_shared_out_findings_are_those_of_one_process(alone: Report,
     monkeypatch.setattr(fanout, "MIN_WORK", 0)
     shared = _check(jobs=3)
     assert len(alone.findings) > 50  # the trees hold many findings of many rules
+    assert {"LV503", "LV602", "LV604"} <= {f.code for f in alone.findings}  # polled
     assert _seen(shared) == _seen(alone)
 
 
@@ -51,7 +53,7 @@ def test_a_child_says_how_many_solver_queries_it_asked(alone: Report) -> None:
     fanout._SHARED.update(run=run, pieces=[Piece(tuple(range(len(rules))), (), ())],
                           counter=NextPiece(1))
     try:
-        _, queries = fanout._child()
+        _, _, queries = fanout._child()
     finally:
         fanout._SHARED.clear()
     assert sum(queries.values()) == sum(g._reasoner.queries for g in graphs  # type: ignore[attr-defined]
@@ -60,7 +62,7 @@ def test_a_child_says_how_many_solver_queries_it_asked(alone: Report) -> None:
 
 def test_pieces_a_failed_child_took_are_run_here(alone: Report,
                                                 monkeypatch: pytest.MonkeyPatch) -> None:
-    def broken() -> tuple[fanout.PerGraph, dict[int, int]]:
+    def broken() -> fanout.Collected:
         counter = fanout._SHARED["counter"]
         assert isinstance(counter, NextPiece)
         while counter.take() is not None:  # takes everything, then is lost
@@ -100,7 +102,8 @@ def test_without_semaphores_everything_runs_here(alone: Report,
 def test_the_pieces_cover_each_rule_and_graph_once(alone: Report) -> None:
     rules = list(all_rules())
     run = RuleRun(alone.graphs, rules, None, None, None)  # type: ignore[arg-type]
-    gathering = [r for r, rule in enumerate(rules) if rule.finish is not fanout.Rule.finish]
+    gathering = fanout.gathering(rules)
+    assert [rules[r].code for r in gathering] == ["LV402"]  # polling rules are shared out
     found = pieces(run, exclude=gathering)
     assert pieces(run, exclude=gathering) == found  # deterministic
     covered = [(r, g) for piece in found for r in piece.whole for g in range(len(alone.graphs))]

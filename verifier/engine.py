@@ -542,6 +542,7 @@ def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
                 if known is None or len(finding.chain) < len(known.chain):
                     merged[key] = finding
         rule = run.instance(r)
+        run.poll(r)  # the answers its checks gathered, wherever they ran
         for finding in _isolated(rule, partial(rule.finish, ctx),
                                  graphs[0].root if graphs else None):
             merged.setdefault(finding.key(), finding)

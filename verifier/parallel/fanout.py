@@ -7,7 +7,11 @@ none is left; each child returns what its rules found in each graph, and the che
 those lists in the order a single process visits them, so the findings do not depend on
 how many processes ran or which took what. A rule asking for every context is one piece
 (``pieces`` says why); rules that gather across graphs (those with a ``finish``) run in
-the checking process, over every graph, as before, while the children start on the rest.
+the checking process, over every graph, while the children start on the rest. Rules that
+gather by poll (``PollingRule``) are shared out like the others: each graph's answers
+come back with its findings, and the checking process puts them to the poll in the
+order one process would (their views of a graph, the wiring or the lifecycle bring-up,
+were built twice: once for them here, once in the child that had the graph's other rules).
 
 Forking needs a POSIX system and no other thread in the process (the language server
 checks from a thread): otherwise, and for checks too small to gain from it, everything
@@ -16,7 +20,7 @@ runs here.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Hashable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
@@ -25,7 +29,7 @@ from typing import TYPE_CHECKING
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
 from launchverify.parallel.forked import can_fork
-from launchverify.rule import Finding, Rule, RuleContext
+from launchverify.rule import Finding, Poll, PollingRule, Rule, RuleContext
 
 if TYPE_CHECKING:
     from concurrent.futures import Future
@@ -36,6 +40,8 @@ MIN_WORK = 2000
 
 # (rule index, graph index) -> the findings of that rule in that graph, in its order
 PerGraph = dict[tuple[int, int], list[Finding]]
+# (rule index, graph index) -> a polling rule's answers in that graph, in its order
+Answers = dict[tuple[int, int], list[tuple[Hashable, Finding | None]]]
 Isolate = Callable[[Rule, Callable[[], Iterable[Finding]], Path | None], Iterator[Finding]]
 Dead = Callable[[LaunchGraph, PathCondition], bool]
 
@@ -50,6 +56,7 @@ class RuleRun:
     isolate: Isolate  # a rule's failure becomes a finding (engine._isolated)
     dead: Dead  # a finding's place can run under no arguments (engine.dead)
     instances: dict[int, Rule] = field(default_factory=dict)  # one per rule and process
+    answers: Answers = field(default_factory=dict)  # polling rules', gathered in this process
 
     def instance(self, index: int) -> Rule:
         """Return this process's instance of a rule (its ``check`` and ``finish`` share it)."""
@@ -74,11 +81,32 @@ class RuleRun:
             rule = self.instance(r)
             for g in self.order(self.rules[r], graph_indices):
                 graph = self.graphs[g]
+                check = partial(rule.check, graph, self.ctx)
+                if isinstance(rule, PollingRule):
+                    check = partial(_answering, rule, graph, self.ctx,
+                                    self.answers.setdefault((r, g), []))
                 out[(r, g)] = [
-                    finding for finding in self.isolate(
-                        rule, partial(rule.check, graph, self.ctx), graph.root)
+                    finding for finding in self.isolate(rule, check, graph.root)
                     if not (finding.path and self.dead(graph, finding.path))]
         return out
+
+    def poll(self, index: int) -> None:
+        """Put a polling rule's answers to its poll, graph by graph as one process would."""
+        rule = self.instance(index)
+        if not isinstance(rule, PollingRule):
+            return
+        poll = Poll(self.ctx, rule.code)
+        for g in self.order(self.rules[index], list(range(len(self.graphs)))):
+            for question, finding in self.answers.get((index, g), ()):
+                poll.answer(question, finding)
+
+
+def _answering(rule: PollingRule, graph: LaunchGraph, ctx: RuleContext,
+               answers: list[tuple[Hashable, Finding | None]]) -> Iterator[Finding]:
+    """``PollingRule.check`` keeping the answers for ``RuleRun.poll`` (a child's go back)."""
+    for answer in rule.answers(graph, ctx):  # (one by one: those before a failure count)
+        answers.append(answer)
+    yield from rule.direct(graph, ctx)
 
 
 @dataclass(frozen=True)
@@ -140,8 +168,14 @@ def _drain(run: RuleRun, pieces: list[Piece], counter: NextPiece) -> PerGraph:
     return out
 
 
-def _child() -> tuple[PerGraph, dict[int, int]]:
-    """Run pieces in a forked child; also say how many z3 queries it asked per graph."""
+Collected = tuple[PerGraph, Answers, dict[int, int]]
+
+
+def _child() -> Collected:
+    """Run pieces in a forked child; return what ``rule_findings`` merges.
+
+    Their findings, the polling rules' answers, and how many z3 queries it asked per graph.
+    """
     run = _SHARED["run"]
     pieces = _SHARED["pieces"]
     counter = _SHARED["counter"]
@@ -150,7 +184,9 @@ def _child() -> tuple[PerGraph, dict[int, int]]:
     before = _queries(run.graphs)  # reasoners the parent made before the fork come along
     found = _drain(run, pieces, counter)
     after = _queries(run.graphs)
-    return found, {g: n - before.get(g, 0) for g, n in after.items() if n != before.get(g, 0)}
+    answers = {key: run.answers[key] for key in found if key in run.answers}
+    return found, answers, {g: n - before.get(g, 0) for g, n in after.items()
+                            if n != before.get(g, 0)}
 
 
 def _queries(graphs: list[LaunchGraph]) -> dict[int, int]:
@@ -169,8 +205,7 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
     everything = list(range(len(run.graphs)))
     if jobs < 2 or len(run.graphs) < 2 or not can_fork() or _work(run.graphs) < MIN_WORK:
         return run.run(list(range(len(run.rules))), everything)
-    gathering = [r for r, rule in enumerate(run.rules) if rule.finish is not Rule.finish]
-    shared = pieces(run, exclude=gathering)
+    shared = pieces(run, exclude=gathering(run.rules))
     import multiprocessing  # here: a small check never pays for importing them
     from concurrent.futures import ProcessPoolExecutor
 
@@ -185,14 +220,15 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
     try:
         with pool:
             futures = [pool.submit(_child) for _ in range(jobs - 1)]
-            out.update(run.run(gathering, everything))  # only here: ``finish`` needs them
+            out.update(run.run(gathering(run.rules), everything))  # here: ``finish`` needs them
             out.update(_drain(run, shared, counter))
             for future in futures:
                 collected = _collected(future)
                 if collected is None:
                     continue
-                found, queries = collected
+                found, answers, queries = collected
                 out.update(found)
+                run.answers.update(answers)
                 for g, count in queries.items():
                     run.graphs[g].queries_elsewhere += count
     finally:
@@ -203,13 +239,18 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
     return out
 
 
-def _collected(future: Future[tuple[PerGraph, dict[int, int]]]
-               ) -> tuple[PerGraph, dict[int, int]] | None:
+def _collected(future: Future[Collected]) -> Collected | None:
     """Return a child's findings; ``None`` when it failed (its pieces are then run here)."""
     try:
         return future.result()
     except Exception:  # a child killed, or a finding that does not pickle
         return None
+
+
+def gathering(rules: list[type[Rule]]) -> list[int]:
+    """Return the rules that must see every graph in one process (a ``finish`` of their own)."""
+    return [r for r, rule in enumerate(rules)
+            if rule.finish is not Rule.finish and not issubclass(rule, PollingRule)]
 
 
 def pieces(run: RuleRun, exclude: Iterable[int] = ()) -> list[Piece]:
