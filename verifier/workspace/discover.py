@@ -7,7 +7,7 @@ import re
 from collections.abc import Iterator
 from pathlib import Path
 
-from launchverify.workspace.packages import SKIP_DIRS
+from launchverify.workspace.packages import listing
 from launchverify.workspace.reading import read_file
 
 LAUNCH_SUFFIXES = ("launch.xml", "launch.yaml", "launch.yml")
@@ -78,30 +78,16 @@ def _files(top: str) -> Iterator[str]:
     """Yield each file below ``top`` (path strings), in ``os.walk``'s order.
 
     Sorted, depth first; linked folders and skipped ones (build output, dot folders) are
-    not entered, unreadable ones are passed over. (``os.walk``'s generators took a third
-    of a scan of the real-world corpus's 4,400 folders.)
+    not entered, unreadable ones are passed over.
     """
     pending = [top]
     while pending:
-        folder = pending.pop()
-        try:
-            with os.scandir(folder) as listing:
-                entries = list(listing)
-        except OSError:
+        listed = listing(pending.pop(), links=False)
+        if listed is None:
             continue
-        folders, files = [], []
-        for entry in entries:
-            try:
-                is_folder = entry.is_dir()
-            except OSError:
-                is_folder = False
-            if not is_folder:
-                files.append(entry.path)
-            elif (entry.name not in SKIP_DIRS and not entry.name.startswith(".")
-                  and not entry.is_symlink()):
-                folders.append(entry.path)
-        yield from sorted(files)  # (paths in one folder sort as their names)
-        pending.extend(sorted(folders, reverse=True))
+        folders, files = listed
+        yield from sorted(entry.path for entry in files)
+        pending.extend(reversed(folders))
 
 
 def discover(paths: list[Path], *, filter_files: bool = False) -> list[Path]:

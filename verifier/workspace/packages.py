@@ -75,6 +75,33 @@ def package_name(package_xml: Path) -> str | None:
     return match.group(1).decode("utf-8", "replace") if match else None
 
 
+def listing(folder: str, *, links: bool) -> tuple[list[str], list[os.DirEntry[str]]] | None:
+    """Return the folders a walk enters below ``folder`` (paths, sorted), and the rest.
+
+    Build output and dot folders are not entered; linked folders only with ``links``
+    (neither kind counts among the rest). ``None`` for a folder that cannot be listed.
+    Walks over every folder of a workspace use this on strings: ``os.walk`` and a
+    ``Path`` per entry took most of their time.
+    """
+    try:
+        with os.scandir(folder) as found:
+            entries = list(found)
+    except OSError:
+        return None
+    folders, rest = [], []
+    for entry in entries:
+        try:
+            is_folder = entry.is_dir()
+        except OSError:
+            is_folder = False
+        if not is_folder:
+            rest.append(entry)
+        elif (entry.name not in SKIP_DIRS and not entry.name.startswith(".")
+              and (links or not entry.is_symlink())):
+            folders.append(entry.path)
+    return sorted(folders), rest  # (paths in one folder sort as their names)
+
+
 def scan_sources(root: Path) -> Iterator[tuple[str, Path]]:
     """Yield ``(name, folder)`` for every package manifest below ``root``.
 
@@ -87,10 +114,8 @@ def scan_sources(root: Path) -> Iterator[tuple[str, Path]]:
     pending = [os.fspath(root)]  # strings: the walk visits every folder of the workspace
     while pending:
         current = pending.pop()
-        try:
-            with os.scandir(current) as listing:
-                entries = list(listing)
-        except OSError:
+        listed = listing(current, links=True)  # linked folders followed, as colcon does
+        if listed is None:
             continue
         scanned += 1
         if scanned > MAX_SCANNED_DIRS:
@@ -102,16 +127,8 @@ def scan_sources(root: Path) -> Iterator[tuple[str, Path]]:
         if (identity.st_dev, identity.st_ino) in seen:
             continue
         seen.add((identity.st_dev, identity.st_ino))
-        dirs, files = [], set()
-        for entry in entries:
-            try:
-                is_folder = entry.is_dir()  # a link to a folder too: followed, as colcon does
-            except OSError:
-                is_folder = False
-            if not is_folder:
-                files.add(entry.name)
-            elif entry.name not in SKIP_DIRS and not entry.name.startswith("."):
-                dirs.append(entry.path)
+        dirs, others = listed
+        files = {entry.name for entry in others}
         if any(marker in files for marker in IGNORE_MARKERS):
             continue
         if "package.xml" in files:
@@ -119,7 +136,7 @@ def scan_sources(root: Path) -> Iterator[tuple[str, Path]]:
             if name:
                 yield name, Path(current)
             continue
-        pending.extend(sorted(dirs, reverse=True))  # (paths in one folder sort as names)
+        pending.extend(reversed(dirs))
 
 
 def scan_prefix(prefix: Path) -> Iterator[str]:
