@@ -24,7 +24,7 @@ from collections.abc import Callable, Hashable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeGuard
 
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
@@ -82,7 +82,7 @@ class RuleRun:
             for g in self.order(self.rules[r], graph_indices):
                 graph = self.graphs[g]
                 check = partial(rule.check, graph, self.ctx)
-                if isinstance(rule, PollingRule):
+                if _polls(rule):
                     check = partial(_answering, rule, graph, self.ctx,
                                     self.answers.setdefault((r, g), []))
                 out[(r, g)] = [
@@ -93,12 +93,17 @@ class RuleRun:
     def poll(self, index: int) -> None:
         """Put a polling rule's answers to its poll, graph by graph as one process would."""
         rule = self.instance(index)
-        if not isinstance(rule, PollingRule):
+        if not _polls(rule):
             return
         poll = Poll(self.ctx, rule.code)
         for g in self.order(self.rules[index], list(range(len(self.graphs)))):
             for question, finding in self.answers.get((index, g), ()):
                 poll.answer(question, finding)
+
+
+def _polls(rule: Rule) -> TypeGuard[PollingRule]:
+    """Return whether a rule gathers by ``PollingRule``'s own poll (its check not changed)."""
+    return isinstance(rule, PollingRule) and type(rule).check is PollingRule.check
 
 
 def _answering(rule: PollingRule, graph: LaunchGraph, ctx: RuleContext,
@@ -250,7 +255,8 @@ def _collected(future: Future[Collected]) -> Collected | None:
 def gathering(rules: list[type[Rule]]) -> list[int]:
     """Return the rules that must see every graph in one process (a ``finish`` of their own)."""
     return [r for r, rule in enumerate(rules)
-            if rule.finish is not Rule.finish and not issubclass(rule, PollingRule)]
+            if rule.finish is not Rule.finish
+            and not (issubclass(rule, PollingRule) and rule.check is PollingRule.check)]
 
 
 def pieces(run: RuleRun, exclude: Iterable[int] = ()) -> list[Piece]:
