@@ -232,17 +232,15 @@ def run_check(options: CheckOptions) -> Report:
     with collector_paused():
         workspace, sources, prefixes = package_folders(options.paths, options.workspace,
                                                        config.package_paths)
+        folders = (workspace, sources, prefixes)
         if options.affected:  # pre-commit: what the changed files may break, or nothing
             includers = Includers.of_workspace(sources)
-            return _check_files(options, tree, workspace,
-                                PackageIndex.from_environment(sources, prefixes),
-                                lambda: includers, started,
+            return _check_files(options, tree, folders, lambda: includers, started,
                                 affected_launch_files(options.paths, includers))
-        # the scan starts first: small trees waited for it (it reads the whole workspace)
+        # the scan starts before the index is built: small trees waited for it (it reads
+        # every launch file of the workspace)
         with Background(partial(Includers.of_workspace, sources)) as scan:
-            return _check_files(options, tree, workspace,
-                                PackageIndex.from_environment(sources, prefixes),
-                                scan.result, started,
+            return _check_files(options, tree, folders, scan.result, started,
                                 discover(options.paths, filter_files=options.launch_files_only))
 
 
@@ -265,10 +263,14 @@ def collector_paused() -> Iterator[None]:
             gc.enable()
 
 
-def _check_files(options: CheckOptions, tree: ConfigTree, workspace: Path,
-                 index: PackageIndex, includers_of: Callable[[], Includers], started: float,
+def _check_files(options: CheckOptions, tree: ConfigTree,
+                 folders: tuple[Path, list[Path], list[Path]],
+                 includers_of: Callable[[], Includers], started: float,
                  found: list[Path]) -> Report:
-    """Check the launch files found (the workspace's includers may be read meanwhile)."""
+    """Check the launch files found (the workspace's includers may be read meanwhile).
+
+    ``folders``: the workspace, package sources and install prefixes (``package_folders``).
+    """
     from launchverify.evaluate.files import FileCache
     from launchverify.evaluate.runner import evaluate
     from launchverify.findings.baseline import apply_baseline
@@ -280,6 +282,8 @@ def _check_files(options: CheckOptions, tree: ConfigTree, workspace: Path,
     from launchverify.workspace.interfaces import Interfaces
 
     config = options.config
+    workspace, sources, prefixes = folders
+    index = PackageIndex.from_environment(sources, prefixes)
     if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
         given = ", ".join(str(p) for p in options.paths)
         raise UsageError(f"no launch files found in {given}")

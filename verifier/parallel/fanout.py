@@ -101,9 +101,13 @@ class RuleRun:
                 poll.answer(question, finding)
 
 
-def _polls(rule: Rule) -> TypeGuard[PollingRule]:
+def polled(rule: type[Rule]) -> bool:
     """Return whether a rule gathers by ``PollingRule``'s own poll (its check not changed)."""
-    return isinstance(rule, PollingRule) and type(rule).check is PollingRule.check
+    return issubclass(rule, PollingRule) and rule.check is PollingRule.check
+
+
+def _polls(rule: Rule) -> TypeGuard[PollingRule]:
+    return polled(type(rule))
 
 
 def _answering(rule: PollingRule, graph: LaunchGraph, ctx: RuleContext,
@@ -255,8 +259,7 @@ def _collected(future: Future[Collected]) -> Collected | None:
 def gathering(rules: list[type[Rule]]) -> list[int]:
     """Return the rules that must see every graph in one process (a ``finish`` of their own)."""
     return [r for r, rule in enumerate(rules)
-            if rule.finish is not Rule.finish
-            and not (issubclass(rule, PollingRule) and rule.check is PollingRule.check)]
+            if rule.finish is not Rule.finish and not polled(rule)]
 
 
 def pieces(run: RuleRun, exclude: Iterable[int] = ()) -> list[Piece]:

@@ -38,6 +38,7 @@ if TYPE_CHECKING:
 
 Answer = TypeVar("Answer")  # what one kind of question is answered with
 
+
 class Reasoner:
     """Answers questions about one graph (one root launch file and its arguments)."""
 
