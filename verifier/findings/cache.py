@@ -56,7 +56,13 @@ def default_cache_dir() -> Path:
 
 
 def disabled_by_environment() -> bool:
-    """Return whether ``LAUNCHVERIFY_NO_CACHE`` asks for no cache."""
+    """Return whether ``LAUNCHVERIFY_NO_CACHE`` asks for no cache.
+
+    A check with knowledge taken away (``LAUNCHVERIFY_ABLATE``) is never cached either: its
+    result is not the check's.
+    """
+    if os.environ.get("LAUNCHVERIFY_ABLATE"):
+        return True
     return os.environ.get("LAUNCHVERIFY_NO_CACHE", "").strip().lower() not in ("", "0", "false")
 
 

@@ -21,6 +21,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+from launchverify.frontends.python.importer import absent_modules_asked
 from launchverify.ir import actions as a
 from launchverify.isolation.channel import Channel, ChannelError, Closed
 from launchverify.isolation.codec import CodecError, Decoder, Encoder
@@ -86,7 +87,8 @@ class IsolatedPython:
         self.setting = Setting(index, workspace, readable_folders(index, workspace),
                                self.limits, distro, dict(environment or {}),
                                dict(arguments or {}),
-                               debug=bool(os.environ.get("LAUNCHVERIFY_DEBUG_WORKERS")))
+                               debug=bool(os.environ.get("LAUNCHVERIFY_DEBUG_WORKERS")),
+                               absent_modules=absent_modules_asked())
         self.jobs = max(1, jobs)
         self.protections: str | None = None  # as the first worker reported them
         self.evaluated = 0  # files evaluated by workers

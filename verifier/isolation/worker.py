@@ -40,6 +40,7 @@ class Setting:
     environment: dict[str, str]  # --env: the machine's variables a launch file may read
     arguments: dict[str, str] = field(default_factory=dict)  # name:=value on the command line
     debug: bool = False  # keep stderr and print our own failures (LAUNCHVERIFY_DEBUG_WORKERS)
+    absent_modules: bool = False  # ablation: only launch, launch_ros and Python's own exist
 
 
 def serve(fd: int, request: dict[str, Any], scratch: str, setting: Setting,
@@ -97,7 +98,8 @@ class _Worker:
         path = Path(request["path"])
         sink = ProblemSink()
         frontend = PythonFrontend(self.setting.index, self.setting.workspace,
-                                  self.setting.arguments)
+                                  self.setting.arguments,
+                                  absent_modules=self.setting.absent_modules)
         launch = frontend.load(path, sink)
         encoder = Encoder(self.register)
         data = encoder.encode((launch, tuple(sink.problems)))

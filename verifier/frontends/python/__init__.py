@@ -23,7 +23,7 @@ from typing import Any
 
 from launchverify.frontends.python.concrete import SubstitutionFailure
 from launchverify.frontends.python.convert import PythonConverter
-from launchverify.frontends.python.importer import Opaque, import_context
+from launchverify.frontends.python.importer import Opaque, absent_import, import_context
 from launchverify.frontends.python.mentions import mentioned_strings
 from launchverify.frontends.python.sandbox import (
     SCRATCH_NAME,
@@ -62,10 +62,12 @@ class PythonFrontend:
     """Loads Python launch files for one run (one package index, one workspace)."""
 
     def __init__(self, index: PackageIndex, workspace: Path,
-                 arguments: Mapping[str, str] | None = None) -> None:
+                 arguments: Mapping[str, str] | None = None, *,
+                 absent_modules: bool = False) -> None:
         self.index = index
         self.workspace = workspace
         self.arguments = dict(arguments or {})  # name:=value given on the command line
+        self.absent_modules = absent_modules  # ablation: only launch and Python's own exist
 
     def argv(self, path: Path) -> list[str]:
         """Return ``sys.argv`` as ``ros2 launch`` leaves it for a launch file.
@@ -299,6 +301,8 @@ class _Session:
     def _builtins(self) -> dict[str, Any]:
         namespace = dict(vars(builtins))
         namespace["open"] = self._open
+        if self.frontend.absent_modules:
+            namespace["__import__"] = absent_import(self.module_unmodeled)
         return namespace
 
     def _open(self, file: Any, mode: str = "r", *args: Any, **kwargs: Any) -> Any:

@@ -17,11 +17,13 @@ one launch file's helpers never leak into the next.
 
 from __future__ import annotations
 
+import builtins
 import dis
 import importlib
 import importlib.abc
 import importlib.machinery
 import importlib.util
+import os
 import sys
 import types
 from collections.abc import Callable, Iterator, Sequence
@@ -284,6 +286,40 @@ class OpaqueBase:
         if name.startswith("__"):
             raise AttributeError(name)
         return Opaque(f"{type(self).__name__}.{name}")
+
+
+# What the modules ablation keeps: the launch library, and Python's own.
+KEPT_ROOTS = frozenset({"launch", "launch_ros"})
+
+
+def absent_modules_asked() -> bool:
+    """Return whether the check runs with every other module taken away (an ablation).
+
+    ``LAUNCHVERIFY_ABLATE=modules`` is for ``bench/ablation.py``: what launchverify cannot
+    see must never become an error, so taking knowledge away may add no error.
+    """
+    return "modules" in os.environ.get("LAUNCHVERIFY_ABLATE", "").split(",")
+
+
+def absent_import(report: Callable[[str], None]) -> Callable[..., Any]:
+    """Return an ``__import__`` for which only the launch library and Python's own exist.
+
+    Every other module a launch file imports (a vendor's helpers, the workspace's, an
+    installed library, launchverify's models of other packages) is an opaque stand-in, as
+    a module nothing provides is.
+    """
+    real = builtins.__import__
+
+    def ablated(name: str, globals: Any = None, locals: Any = None,
+                fromlist: Sequence[str] = (), level: int = 0) -> Any:
+        root = name.partition(".")[0]
+        if level or root in KEPT_ROOTS or root in sys.stdlib_module_names:
+            return real(name, globals, locals, fromlist, level)
+        report(root)
+        module = OpaqueModule(name if fromlist else root)
+        return module
+
+    return ablated
 
 
 @contextmanager
