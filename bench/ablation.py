@@ -97,6 +97,8 @@ def check(target: Path, workspace: Path, *, env: dict[str, str] | None = None,
                "--format", "json", "--no-cache", "--exit-zero", *extra]
     done = subprocess.run(command, capture_output=True, text=True, check=False,
                           cwd=workspace, env={**os.environ, **(env or {})})
+    if done.returncode == 2 and "no launch files found" in done.stderr:
+        return []  # a package whose launch files are all ROS 1 ones, say
     if done.returncode != 0:
         raise SystemExit(f"failed ({done.returncode}): {' '.join(command)}\n{done.stderr}")
     found = []

@@ -84,6 +84,7 @@ def test_typos_are_errors_close_names_warn_names_like_nothing_inform(
         ("robot.launch.xml", 12): (Severity.WARNING, "'acme_simulation'"),
         ("sim.launch.py", 16): (Severity.WARNING, "'acme_simulation'"),
         ("sim.launch.py", 17): (Severity.INFO, ""),
+        ("sim.launch.py", 25): (Severity.INFO, ""),  # a numbered sibling, not a typo
     }
 
 

@@ -143,9 +143,18 @@ class IncludeRecord:
     complete: bool = True
     note: str = ""
     relative: bool = False
+    # an argument's name comes from what launchverify cannot know (code it does not see):
+    # it may be any name
+    unknown_names: bool = False
 
     def missing_required(self) -> list[StaticArgument]:
-        """Return the required arguments this include does not pass (launch raises)."""
+        """Return the required arguments this include does not pass (launch raises).
+
+        An argument whose name launchverify cannot know may be any of them: then none is
+        missing. (A name from a launch argument is the user's value, an IP address say.)
+        """
+        if self.unknown_names:
+            return []
         given = {name for name, _value, _span in self.arguments if name is not None}
         return [
             argument for argument in self.static_arguments

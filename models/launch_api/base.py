@@ -191,7 +191,7 @@ def unmodelled_attribute(obj: Any, name: str, depth: int = 2) -> Any:
     if (name.startswith("__") or runtime.current is None or frame is None
             or not _user_code(frame.f_code.co_filename)):
         raise missing
-    from launchverify.frontends.python.importer import Opaque
+    from launchverify.models.launch_api.unknown import Opaque
 
     what = f"{_model_name(obj)}.{name}"
     while frame is not None and not blamable(frame.f_code.co_filename):

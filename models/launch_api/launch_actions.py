@@ -24,6 +24,7 @@ from launchverify.models.launch_api.base import (
     normalized,
     typed,
 )
+from launchverify.models.launch_api.unknown import Opaque
 from launchverify.span import Span
 
 
@@ -312,6 +313,9 @@ class IncludeLaunchDescription(Action):
         super().__init__(**kwargs)
         self._source = launch_description_source
         self._given_arguments = () if launch_arguments is None else tuple(launch_arguments)
+        if isinstance(launch_arguments, Opaque):  # arguments of any name: unknown ones
+            self._given_arguments = ((Opaque(f"name in {launch_arguments}"),
+                                      Opaque(f"value in {launch_arguments}")),)
         pairs = []
         for pair in self._given_arguments:  # a dict iterates its keys: launch fails there too
             name, value = pair

@@ -9,15 +9,54 @@ such as ``⟨env:ROBOT⟩``. The Python frontend turns placeholders back into sy
 from __future__ import annotations
 
 import re
+from collections.abc import Iterator
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+from typing import TypeVar
 
 OPEN, CLOSE = "\u27e8", "\u27e9"
-PATTERN = re.compile(OPEN + r"(env|pkg|prefix|arg|opaque):([^" + CLOSE + r"]*)" + CLOSE)
+# Inside the brackets, ASCII is written in the Private Use Area: what a launch file does to
+# the string (split('_'), replace('-', '_'), upper()) cannot cut a placeholder or change
+# its name, and any piece of one still shows that it is a piece of an unknown.
+_INSIDE = 0xE000
+_WRITE = {code: _INSIDE + code for code in range(128)}
+_READ = {_INSIDE + code: code for code in range(128)}
+PATTERN = re.compile(OPEN + "([^" + OPEN + CLOSE + "]*)" + CLOSE)
+_MARK = re.compile("[" + OPEN + CLOSE + chr(_INSIDE) + "-" + chr(_INSIDE + 127) + "]")
+KINDS = ("env", "pkg", "prefix", "arg", "opaque")
+
+
+# In the varied world an unknown text holds what a launch file's code may cut it at, so
+# that code relying on what it holds (``value.split('_')[1]``) behaves otherwise there.
+_VARIED_TEXT = " _/:.-,;=" * 3
 
 
 def placeholder(kind: str, name: str) -> str:
-    """Return the placeholder for an unknown value (``kind``: env, pkg, prefix, arg, opaque)."""
-    clean = name.replace(OPEN, "<").replace(CLOSE, ">")  # no placeholder inside another
-    return f"{OPEN}{kind}:{clean}{CLOSE}"
+    """Return the placeholder for an unknown value (``kind``: env, pkg, prefix, arg, opaque).
+
+    Handing one to a launch file's code is an assumption about what it holds (counted).
+    """
+    clean = read(name).replace(OPEN, "<").replace(CLOSE, ">")  # no placeholder inside another
+    inside = f"{kind}:{clean}".translate(_WRITE)
+    return OPEN + inside + (_VARIED_TEXT if assumed(False, True, clean) else "") + CLOSE
+
+
+def read(text: str) -> str:
+    """Return text with placeholders' insides readable (``⟨env:ROBOT⟩``).
+
+    Also where a ``repr`` in an error message escaped them (a backslash, ``ue065``).
+    """
+    return _ESCAPED.sub(lambda m: chr(int(m.group(1), 16)), text).translate(_READ)
+
+
+_ESCAPED = re.compile(r"\\u(e0[0-7][0-9a-f])")
+
+
+def parsed(match: re.Match[str]) -> tuple[str, str] | None:
+    """Return (kind, name) of a ``PATTERN`` match, or ``None`` for a bracket of the user's."""
+    inside = match.group(1)
+    kind, colon, name = read(inside).partition(":")
+    return (kind, name) if colon and kind in KINDS and inside != read(inside) else None
 
 
 def environment_variable(name: str, default: str | None = None) -> str:
@@ -30,8 +69,60 @@ def environment_variable(name: str, default: str | None = None) -> str:
 
 
 def has_placeholder(text: str) -> bool:
-    """Return whether a string carries a value that is not known statically."""
-    return OPEN in text
+    """Return whether a string carries a value that is not known statically (or a piece)."""
+    return _MARK.search(text) is not None
+
+
+@dataclass
+class World:
+    """Which way unknown values answer where Python wants a plain answer.
+
+    ``bool``, ``len``, ``int``, a comparison, a loop's length: an unknown value must answer
+    something. In the plain world it answers "no", "empty", "zero"; in the varied one,
+    "yes", "one". Each answer is counted: an evaluation that gave none rests on no
+    assumption, so a failure there is a fact without running it again.
+    """
+
+    varied: bool = False
+    answers: int = 0  # assumptions made so far
+    fixed: int = 0  # of which the varied world cannot vary (an unknown value's type)
+    # what answered, in order, each once (the last few: for a finding's explanation)
+    answered: dict[str, None] = field(default_factory=dict)
+
+    def mark(self) -> tuple[int, int]:
+        """Return where the counts stand, to ask later what was assumed since."""
+        return self.answers, self.fixed
+
+
+WORLD = World()
+_T = TypeVar("_T")
+_REMEMBERED = 8
+
+
+def assumed(plain: _T, varied: _T, what: str = "a value", *, fixed: bool = False) -> _T:
+    """Return the answer the unknown ``what`` gives in the current world, and count it.
+
+    ``fixed``: the answer is the same in both worlds (the varied run cannot tell).
+    """
+    WORLD.answers += 1
+    WORLD.fixed += fixed
+    answered = WORLD.answered
+    answered.pop(what, None)
+    answered[what] = None
+    if len(answered) > _REMEMBERED:
+        del answered[next(iter(answered))]
+    return varied if WORLD.varied else plain
+
+
+@contextmanager
+def varied_world() -> Iterator[None]:
+    """Run a block with every unknown value answering the other way."""
+    saved = WORLD.varied
+    WORLD.varied = True
+    try:
+        yield
+    finally:
+        WORLD.varied = saved
 
 
 class UnknownMapping(dict):  # type: ignore[type-arg]
@@ -39,3 +130,9 @@ class UnknownMapping(dict):  # type: ignore[type-arg]
 
     def __missing__(self, key: object) -> UnknownMapping:
         return UnknownMapping()
+
+    def __bool__(self) -> bool:
+        return assumed(False, True, "the content of a file only the robot has")
+
+    def __contains__(self, key: object) -> bool:
+        return assumed(False, True, "the content of a file only the robot has")

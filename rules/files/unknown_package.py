@@ -25,11 +25,12 @@ class UnknownPackage(Rule):
     launch runs, so it is weighed against the packages ROS 2 distributions release:
 
     - a released package (`nav2_bringup`, `rviz2`) is a dependency to install: quiet;
-    - an unreleased package within one or two edits of a workspace or released package
-      is a typo: an error;
     - a package that the launch file's own package declares in its `package.xml`
       (`<exec_depend>`...) comes from elsewhere (a `.repos` file, another overlay):
       quiet;
+    - an unreleased package within one or two edits of a workspace or released package
+      is a typo: an error (not one that differs only in its numbers, `example_1` beside
+      `example_10`: a sibling that is not here);
     - another unreleased package whose name is close to a workspace package's (shares
       most words, whole or shortened) is a warning: nothing declares it, and a renamed or
       mistyped package is likely;
@@ -103,7 +104,7 @@ class UnknownPackage(Rule):
         typo, unique = self._typo(ref.name, local)
         if not installed and typo is None and not local:
             return None  # loose launch files: no workspace to miss it from
-        if (not installed and typo is None and ctx.packages is not None
+        if (not installed and ctx.packages is not None
                 and ctx.packages.declares(ref.origin.span.file, ref.name)):
             return None  # a declared dependency from elsewhere (.repos): not here yet
         hint = typo or self._closest_package(ref.name, local)
@@ -124,6 +125,9 @@ class UnknownPackage(Rule):
         """Return the package ``name`` misspells, if any, and whether it is the only one."""
         if name not in self._typos:
             close = typos(name, local) or typos(name, released_packages())
+            # numbered siblings (example_1 beside example_10, ur5 beside ur10) are other
+            # packages, not misspellings
+            close = [c for c in close if _digitless(c) != _digitless(name)]
             self._typos[name] = (close[0] if close else None, len(close) == 1)
         return self._typos[name]
 
@@ -132,3 +136,7 @@ class UnknownPackage(Rule):
         if name not in self._closest:
             self._closest[name] = closest_package(name, local)
         return self._closest[name]
+
+
+def _digitless(name: str) -> str:
+    return "".join(c for c in name if not c.isdigit())

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from launchverify.events import meeting_origin
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.ir import subst as s
-from launchverify.ir.symbolic import Arg, Opaque, Select
+from launchverify.ir.symbolic import Arg, Select, rests_on_unknowns
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 from launchverify.smt import Witness, reasoner_for
 
@@ -32,7 +32,9 @@ class DuplicateNodeName(Rule):
     every namespaced node collide with every other one. What the launch cannot know (an
     argument without default, an environment variable) only makes two names equal when
     they use it in the same place. Nodes under conditions launchverify cannot model are
-    not compared.
+    not compared, nor are nodes under conditions on what launchverify cannot know (a
+    value of code it does not see, an environment variable): the user's arguments do
+    not decide whether they run.
 
     Two nodes that never run at the same time are not duplicates either: a node started
     by an `OnProcessExit` handler of the other one's process (or later in a chain of
@@ -72,7 +74,7 @@ class DuplicateNodeName(Rule):
         seen: list[NodeRecord] = []
         position: dict[int, int] = {}  # launch order of the nodes seen
         for node in graph.nodes:
-            if node.fqn is None or any(isinstance(g, Opaque) for g in node.origin.path):
+            if node.fqn is None or any(rests_on_unknowns(g) for g in node.origin.path):
                 continue
             fixed = fixed_name(graph, node, switches)
             key = name_key(graph, node)

@@ -72,6 +72,7 @@ from launchverify.ir.symbolic import (
     Truthy,
     Unknown,
     Unset,
+    depends_on_unknowns,
 )
 from launchverify.models.launch_api.placeholders import placeholder
 from launchverify.models.parameter_values import typed_parameter
@@ -506,7 +507,9 @@ class Walker:
         arguments = []
         for argument in action.arguments:  # one after another: later ones see earlier ones
             arg_reducer = self.reducer.at(ctx, argument.span)
-            name = arg_reducer.text(argument.name)
+            name_value = arg_reducer.reduce(argument.name)
+            name = text_of(name_value)
+            record.unknown_names |= name is None and depends_on_unknowns(name_value)
             value = arg_reducer.reduce(argument.value)
             arguments.append((name, value, argument.span))
             if name is not None:

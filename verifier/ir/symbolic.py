@@ -11,7 +11,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from launchverify.ir.subst import Sub
+from launchverify.ir.subst import Opaque as SubOpaque
+from launchverify.ir.subst import Sub, walk
 from launchverify.span import Span
 
 
@@ -185,3 +186,23 @@ class NsPrefix(Sub):
 
     def children(self) -> tuple[Sub, ...]:
         return (self.ns,) if self.base is None else (self.base, self.ns)
+
+
+def rests_on_unknowns(guard: Guard) -> bool:
+    """Return whether a guard's truth depends on what launchverify cannot know.
+
+    An ``Opaque`` guard, or a condition over a value of code it does not see, of a file
+    outside the tree or of the machine's environment: no error may claim that it holds
+    (or does not), as the user's arguments do not decide it.
+    """
+    if isinstance(guard, Opaque):
+        return True
+    expressions: tuple[Sub | None, ...] = (
+        (guard.expression,) if isinstance(guard, Truthy)
+        else (guard.left, guard.right) if isinstance(guard, StrEquals) else ())
+    return any(depends_on_unknowns(e) for e in expressions if e is not None)
+
+
+def depends_on_unknowns(value: Sub) -> bool:
+    """Return whether a value holds what launchverify cannot know (not the user's inputs)."""
+    return any(isinstance(part, (Unknown, EnvInput, SubOpaque)) for part in walk(value))

@@ -9,6 +9,7 @@ recorded as a problem at the user's line, never raised.
 from __future__ import annotations
 
 import builtins
+import dataclasses
 import errno
 import inspect
 import io
@@ -21,9 +22,10 @@ from pathlib import Path
 from types import CodeType
 from typing import Any
 
+from launchverify.frontends.python.assumptions import checked
 from launchverify.frontends.python.concrete import SubstitutionFailure
 from launchverify.frontends.python.convert import PythonConverter
-from launchverify.frontends.python.importer import Opaque, absent_import, import_context
+from launchverify.frontends.python.importer import absent_import, import_context
 from launchverify.frontends.python.mentions import mentioned_strings
 from launchverify.frontends.python.sandbox import (
     SCRATCH_NAME,
@@ -44,8 +46,9 @@ from launchverify.models.launch_api.placeholders import (
     placeholder,
 )
 from launchverify.models.launch_api.runtime import blamable
+from launchverify.models.launch_api.unknown import Opaque
 from launchverify.own_code import is_own_file
-from launchverify.problems import ProblemSink
+from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
 from launchverify.workspace.paths import resolved
@@ -98,12 +101,25 @@ class PythonFrontend:
         except (ValueError, MemoryError, RecursionError) as error:
             sink.parse(f"invalid Python: {error}", Span.of_file(path))
             return None
-        session = _Session(self, path, sink)
-        description = session.run_module(code)
-        if description is None:
-            return None
-        with session.environment():  # models may call back into the launch file's code
-            return session.convert(description)
+        start = len(sink.problems)
+
+        def evaluate(into: ProblemSink) -> a.LaunchFile | None:
+            session = _Session(self, path, into)
+            description = session.run_module(code)
+            if description is None:
+                return None
+            with session.environment():  # models may call back into the file's code
+                return session.convert(description)
+
+        def again() -> list[Problem]:
+            varied = ProblemSink()
+            evaluate(varied)
+            return varied.problems
+
+        launch, problems = checked(lambda: evaluate(sink), lambda _: sink.problems[start:],
+                                   again)
+        sink.problems[start:] = problems
+        return launch
 
 
 class _Session:
@@ -350,6 +366,14 @@ class _Session:
     def run_opaque(self, model: Any, configurations: Mapping[str, str],
                    current: Path) -> a.OpaqueResult:
         """Run an OpaqueFunction's body with a concrete context."""
+        def run() -> a.OpaqueResult:
+            return self._run_opaque(model, configurations, current)
+
+        result, problems = checked(run, _problems, lambda: _problems(run()))
+        return dataclasses.replace(result, problems=tuple(problems))
+
+    def _run_opaque(self, model: Any, configurations: Mapping[str, str],
+                    current: Path) -> a.OpaqueResult:
         sink = ProblemSink()
         saved, saved_lookups, saved_reported = self.sink, self.lookups, self.reported
         # each run says what it met, whatever earlier runs (other roots) said: its result
@@ -381,6 +405,10 @@ class _Session:
                               lookups=lookups,
                               mentions=tuple(sorted(mentioned_strings(model.function))),
                               reads_all=context.launch_configurations.whole)
+
+
+def _problems(result: a.OpaqueResult) -> list[Problem]:
+    return [p for p in result.problems if isinstance(p, Problem)]
 
 
 class _Performer:
@@ -442,11 +470,16 @@ def _no_opaque(model: Any) -> a.Action:
 
 def _shown(text: str) -> str:
     """Show placeholders the way users write the values they stand for."""
-    from launchverify.models.launch_api.placeholders import PATTERN
+    from launchverify.models.launch_api.placeholders import PATTERN, parsed, read
 
     spelled = {"env": "$(env {})", "arg": "$(var {})", "pkg": "$(find-pkg-share {})",
                "prefix": "$(find-pkg-prefix {})", "opaque": "<{}>"}
-    text = PATTERN.sub(lambda m: spelled[m.group(1)].format(m.group(2)), text)
+
+    def shown(match: re.Match[str]) -> str:
+        found = parsed(match)
+        return match.group(0) if found is None else spelled[found[0]].format(found[1])
+
+    text = read(PATTERN.sub(shown, text))
     return _SCRATCH_PATH.sub("<a temporary file>", text)[:200]
 
 

@@ -19,21 +19,29 @@ from launchverify.ir import actions as a
 from launchverify.ir import conditions as c
 from launchverify.ir import subst as s
 from launchverify.models.launch_api import base, launch_ros
-from launchverify.models.launch_api.placeholders import PATTERN
+from launchverify.models.launch_api.placeholders import PATTERN, has_placeholder, parsed, read
+from launchverify.models.launch_api.unknown import Opaque
 from launchverify.span import Span
 
 Unmodeled = Callable[[str, Span], None]
 
 
 def placeholder_sub(text: str) -> s.Sub:
-    """Return text as an expression, with placeholders as the symbolic values they stand for."""
-    if "\u27e8" not in text:
+    """Return text as an expression, with placeholders as the symbolic values they stand for.
+
+    Text holding a piece of a placeholder (``'⟨env:ROBOT_ID⟩'.split('_')[1]``) is a piece
+    of an unknown value: unknown as a whole.
+    """
+    if not has_placeholder(text):
         return s.Text(text)
     parts: list[s.Sub] = []
     position = 0
     for match in PATTERN.finditer(text):
-        parts.append(s.Text(text[position:match.start()]))
-        kind, name = match.group(1), match.group(2)
+        found = parsed(match)
+        if found is None:
+            continue  # brackets of the launch file's own: pieces of an unknown, below
+        parts.append(_known(text[position:match.start()]))
+        kind, name = found
         if kind == "env":
             variable, equals, default = name.partition("=")
             parts.append(s.EnvVar(s.Text(variable), s.Text(default) if equals else None))
@@ -45,8 +53,13 @@ def placeholder_sub(text: str) -> s.Sub:
         else:
             parts.append(s.Opaque(name))
         position = match.end()
-    parts.append(s.Text(text[position:]))
+    parts.append(_known(text[position:]))
     return s.concat(parts)
+
+
+def _known(text: str) -> s.Sub:
+    """Return text between placeholders: a piece of one is unknown."""
+    return s.Opaque("a part of an unknown value") if has_placeholder(text) else s.Text(text)
 
 
 class PythonConverter:
@@ -109,6 +122,9 @@ class PythonConverter:
             return None
         if isinstance(value, base.Condition):
             return value.to_condition(self)
+        if isinstance(value, Opaque):
+            return c.OpaqueCondition(f"condition {read(str(value))}, of code launchverify "
+                                     "cannot see")
         return c.OpaqueCondition(f"condition {type(value).__name__}")
 
     def keyword_keys(self, call: Span, keyword: str) -> dict[str, Span]:
@@ -258,7 +274,7 @@ class PythonConverter:
 
     def plain_text(self, text: str) -> a.ParamValue:
         """A Python ``str`` reaches the node as a string, never YAML-parsed."""
-        if PATTERN.search(text):  # computed from values we only know symbolically
+        if has_placeholder(text):  # computed from values we only know symbolically
             return a.ParamValue(value=self.sub(text), value_type="str")
         return a.ParamValue(value=text)
 

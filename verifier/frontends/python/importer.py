@@ -18,7 +18,6 @@ one launch file's helpers never leak into the next.
 from __future__ import annotations
 
 import builtins
-import dis
 import importlib
 import importlib.abc
 import importlib.machinery
@@ -32,6 +31,7 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.models.launch_api import MODULES, QUIET_ROOTS, exports_for, is_modelled
+from launchverify.models.launch_api.unknown import Opaque, OpaqueModule
 from launchverify.own_code import is_own_file
 from launchverify.workspace.packages import PackageIndex
 
@@ -148,144 +148,6 @@ class OpaqueFinder(importlib.abc.MetaPathFinder):
                 return any(name.startswith(folder) for folder in self.user_folders)
             frame = frame.f_back  # type: ignore[assignment]
         return False
-
-
-class OpaqueModule(types.ModuleType):
-    """A module we cannot see into: every attribute is an opaque value."""
-
-    def __init__(self, name: str) -> None:
-        super().__init__(name)
-        self.__path__: list[str] = []
-
-    def __getattr__(self, name: str) -> Any:
-        if name.startswith("__"):
-            raise AttributeError(name)
-        return Opaque(f"{self.__name__}.{name}")
-
-
-class Opaque:
-    """A value from unmodelled code: calling it or reading attributes gives more of it."""
-
-    def __init__(self, description: str) -> None:
-        self._description = description
-
-    def __call__(self, *args: Any, **kwargs: Any) -> Opaque:
-        return Opaque(f"{self._description}()")
-
-    def __getattr__(self, name: str) -> Opaque:
-        if name.startswith("__"):
-            raise AttributeError(name)
-        return Opaque(f"{self._description}.{name}")
-
-    def __iter__(self) -> Iterator[Any]:
-        # ``a, b, c = unknown`` asks for exactly three values: give three unknowns; a loop
-        # over an unknown runs no round (its length is unknown too).
-        wanted = _unpacked_count(sys._getframe(1))
-        return iter([Opaque(f"{self._description}[{i}]") for i in range(wanted)])
-
-    def __contains__(self, item: object) -> bool:
-        return False
-
-    def __fspath__(self) -> str:
-        return str(self)
-
-    def __format__(self, spec: str) -> str:
-        return str(self)
-
-    def __bool__(self) -> bool:
-        return False
-
-    def __str__(self) -> str:
-        from launchverify.models.launch_api.placeholders import placeholder
-
-        return placeholder("opaque", self._description)
-
-    def __repr__(self) -> str:
-        return f"<opaque {self._description}>"
-
-    def __mro_entries__(self, bases: tuple[Any, ...]) -> tuple[type, ...]:
-        return (OpaqueBase,)
-
-    def __or__(self, other: Any) -> Opaque:
-        return self
-
-    __ror__ = __or__
-
-    def __enter__(self) -> Opaque:
-        return self
-
-    def __exit__(self, *exc: Any) -> None:
-        return None
-
-    def __getitem__(self, key: Any) -> Opaque:
-        return Opaque(f"{self._description}[]")
-
-    def __len__(self) -> int:
-        return 0
-
-    def __int__(self) -> int:
-        return 0
-
-    def __float__(self) -> float:
-        return 0.0
-
-    def __index__(self) -> int:
-        return 0
-
-    def _same(self, *args: Any) -> Opaque:
-        return self
-
-    __add__ = __radd__ = __sub__ = __rsub__ = __mul__ = __rmul__ = _same
-    __truediv__ = __rtruediv__ = __floordiv__ = __rfloordiv__ = __mod__ = __rmod__ = _same
-    __neg__ = __pow__ = __rpow__ = __and__ = __rand__ = __xor__ = __rxor__ = _same
-
-    def __eq__(self, other: object) -> bool:
-        return other is self
-
-    def _false(self, other: object) -> bool:
-        return False
-
-    __lt__ = __le__ = __gt__ = __ge__ = _false
-
-    def __round__(self, digits: int | None = None) -> Opaque:
-        return self
-
-    __abs__ = __pos__ = __invert__ = __round__
-
-    def __hash__(self) -> int:
-        return id(self)
-
-
-_UNPACK_SEQUENCE = dis.opmap["UNPACK_SEQUENCE"]
-_UNPACK_EX = dis.opmap["UNPACK_EX"]
-
-
-def _unpacked_count(frame: types.FrameType | None) -> int:
-    """Return how many values the instruction running in ``frame`` unpacks (0: none)."""
-    if frame is None:
-        return 0
-    code = frame.f_code.co_code
-    at = frame.f_lasti
-    if not 0 <= at < len(code) - 1:
-        return 0
-    operation, argument = code[at], code[at + 1]
-    if operation == _UNPACK_SEQUENCE:
-        return argument
-    if operation == _UNPACK_EX:  # a, *rest, b: the fixed ones, and the rest empty
-        return (argument & 0xFF) + (argument >> 8)
-    return 0
-
-
-class OpaqueBase:
-    """What a class deriving from an opaque one derives from: accepts anything."""
-
-    def __init__(self, *args: Any, **kwargs: Any) -> None:
-        pass
-
-    def __getattr__(self, name: str) -> Any:
-        if name.startswith("__"):
-            raise AttributeError(name)
-        return Opaque(f"{type(self).__name__}.{name}")
 
 
 # What the modules ablation keeps: the launch library, and Python's own.

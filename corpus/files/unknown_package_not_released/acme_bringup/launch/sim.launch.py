@@ -21,4 +21,6 @@ def generate_launch_description():
         IncludeLaunchDescription(PythonLaunchDescriptionSource(  # expect-not: LV303
             PathJoinSubstitution([FindPackageShare('ros_gz_sim'), 'launch', 'gz_sim.launch.py']))),
         Node(package='rviz2', executable='rviz2', name='rviz'),  # expect-not: LV303
+        # A numbered sibling of a workspace package (acme_arm_10): another arm, not a typo.
+        Node(package='acme_arm_1', executable='driver', name='arm'),  # expect-info: LV303
     ])

@@ -1,0 +1,12 @@
+from launch import LaunchDescription
+from launch_ros.actions import Node
+from vendor_helpers import robot_config
+
+CONFIG = robot_config()
+
+
+def generate_launch_description():
+    rate = max(CONFIG.rates)  # expect-info: LV003
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', parameters=[{'rate': rate}]),
+    ])

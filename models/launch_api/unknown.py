@@ -1,0 +1,232 @@
+"""Values launchverify cannot see, as a launch file's code holds them.
+
+A module nothing provides, a name of the launch API nobody modelled, an attribute of
+either: each is an ``Opaque`` value. It stands for *any* value, so every operation on it
+gives another one, and where Python insists on a plain answer (``bool``, ``len``, ``int``,
+a comparison, a loop) the answer is an assumption, and it is counted (``WORLD``).
+
+Two things keep an assumption from becoming an error claim:
+
+- An ``Opaque`` is a ``str`` whose text is a placeholder (``⟨opaque:what⟩``), and the name
+  of its class and its ``repr`` are placeholders too. So what Python's own code does with
+  it (``'/'.join``, ``json.dumps``, ``os.path.join``, f-strings, a type error naming its
+  type) keeps the mark, and a message that names it says it rests on an unknown.
+- The evaluation can be run again with every assumption the other way
+  (``varied()``): a failure that does not happen again rested on an assumption.
+"""
+
+from __future__ import annotations
+
+import dis
+import sys
+import types
+from collections.abc import Iterator
+from typing import Any
+
+from launchverify.models.launch_api.placeholders import WORLD, assumed, placeholder
+from launchverify.own_code import is_own_file
+
+
+def _by_own_code(depth: int) -> bool:
+    """Return whether the frame ``depth`` levels up runs launchverify's own code."""
+    frame = sys._getframe(depth + 1)
+    return is_own_file(frame.f_code.co_filename)
+
+
+class Opaque(str):
+    """A value from unmodelled code: any value, so everything done with it gives more of it.
+
+    Only the launch file's code (and the libraries it calls) sees that. launchverify's
+    own code sees the placeholder's text, as it sees any other string, so it turns the
+    value into a symbolic unknown like every placeholder.
+    """
+
+    _description: str
+
+    def __new__(cls, description: str) -> Opaque:
+        value = super().__new__(cls, placeholder("opaque", description))
+        value._description = description
+        return value
+
+    def __call__(self, *args: Any, **kwargs: Any) -> Opaque:
+        return Opaque(f"{self._description}()")
+
+    @property  # type: ignore[misc]
+    def __class__(self) -> type:
+        # ``isinstance(unknown, dict)`` asks for its type: an assumption neither world
+        # can vary (launchverify's own checks are not assumptions)
+        if not _by_own_code(1):
+            assumed(None, None, self._description, fixed=True)
+        return Opaque
+
+    def __getattr__(self, name: str) -> Opaque:
+        # launchverify's own code probing a value (getattr(x, '_span', None)) learns that
+        # it has nothing; the launch file's code gets more of the unknown
+        if name.startswith("__") or _by_own_code(1):
+            raise AttributeError(name)
+        return Opaque(f"{self._description}.{name}")
+
+    def __iter__(self) -> Iterator[Any]:
+        if _by_own_code(1):
+            return iter(())  # a collection of unknown items (a model checks for Opaque)
+        # ``a, b, c = unknown`` asks for exactly three values: give three unknowns; a loop
+        # over an unknown runs no round, or one when assumptions are varied.
+        wanted = _unpacked_count(sys._getframe(1)) or assumed(0, 1, self._description)
+        return iter([Opaque(f"{self._description}[{i}]") for i in range(wanted)])
+
+    def __fspath__(self) -> str:
+        return str(self)
+
+    def __format__(self, spec: str) -> str:
+        return str(self)
+
+    def __str__(self) -> str:
+        return placeholder("opaque", self._description)
+
+    def __repr__(self) -> str:
+        return str(self)
+
+    def __mro_entries__(self, bases: tuple[Any, ...]) -> tuple[type, ...]:
+        return (OpaqueBase,)
+
+    def __enter__(self) -> Opaque:
+        return self
+
+    def __exit__(self, *exc: Any) -> None:
+        return None
+
+    def __setitem__(self, key: Any, value: Any) -> None:
+        return None  # the unknown stays unknown
+
+    def __delitem__(self, key: Any) -> None:
+        return None
+
+    def __getitem__(self, key: Any) -> Any:
+        if _by_own_code(1):
+            return str.__getitem__(self, key)
+        return Opaque(f"{self._description}[]")
+
+    def __int__(self) -> int:
+        return assumed(0, 1, self._description)
+
+    def __float__(self) -> float:
+        return assumed(0.0, 1.0, self._description)
+
+    def __index__(self) -> int:
+        return assumed(0, 1, self._description)
+
+    def __eq__(self, other: object) -> bool:
+        if _by_own_code(1):
+            return str.__eq__(self, other)
+        return other is self or assumed(False, True, self._description)
+
+    def __ne__(self, other: object) -> bool:
+        if _by_own_code(1):
+            return str.__ne__(self, other)
+        return other is not self and not assumed(False, True, self._description)
+
+    def __hash__(self) -> int:
+        return str.__hash__(self)
+
+    def __reduce__(self) -> Any:
+        return (Opaque, (self._description,))
+
+    def __copy__(self) -> Opaque:
+        return self
+
+    def __deepcopy__(self, memo: Any) -> Opaque:
+        return self
+
+
+def _answering(name: str, answer: str) -> Any:
+    """Return a method for ``name``: more unknown, or an assumption (``answer``).
+
+    launchverify's own code gets ``str``'s method (or the answer a string gives).
+    """
+    own = getattr(str, name, None)
+
+    def method(self: Opaque, *args: Any, **kwargs: Any) -> Any:
+        if _by_own_code(1):
+            return own(self, *args, **kwargs) if own is not None else len(self) > 0
+        if answer == "bool":
+            return assumed(False, True, self._description)
+        if answer == "int":
+            return assumed(0, 1, self._description)
+        if answer == "self":
+            return self
+        return Opaque(f"{self._description}.{name.strip('_')}()")
+
+    method.__name__ = name
+    return method
+
+
+# A str method used on an unknown value must not read the placeholder's text: it answers
+# with more of the unknown, or, where Python wants a plain answer, an assumption.
+_ANSWERS = {
+    **{name: "bool" for name in ("__bool__", "__contains__", "__lt__", "__le__", "__gt__",
+                                 "__ge__", "startswith", "endswith")},
+    **{name: "int" for name in ("__len__", "count", "find", "rfind", "index", "rindex")},
+    **{name: "self" for name in (
+        "__add__", "__radd__", "__sub__", "__rsub__", "__mul__", "__rmul__", "__truediv__",
+        "__rtruediv__", "__floordiv__", "__rfloordiv__", "__mod__", "__rmod__", "__neg__",
+        "__pow__", "__rpow__", "__and__", "__rand__", "__xor__", "__rxor__", "__or__",
+        "__ror__", "__round__", "__abs__", "__pos__", "__invert__", "__lshift__",
+        "__rlshift__", "__rshift__", "__rrshift__", "__matmul__", "__rmatmul__")},
+}
+for _name in dir(str):
+    if not _name.startswith("_") and _name != "maketrans":
+        _ANSWERS.setdefault(_name, "bool" if _name.startswith("is") else "unknown")
+for _name, _answer in _ANSWERS.items():
+    setattr(Opaque, _name, _answering(_name, _answer))
+
+# Named so that a message naming an unknown value's type ("expected str instance,
+# ⟨opaque:value⟩ found") says that it rests on an unknown.
+Opaque.__name__ = Opaque.__qualname__ = placeholder("opaque", "value")
+
+
+class OpaqueModule(types.ModuleType):
+    """A module we cannot see into: every attribute is an opaque value."""
+
+    def __init__(self, name: str) -> None:
+        super().__init__(name)
+        self.__path__: list[str] = []
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__"):
+            raise AttributeError(name)
+        return Opaque(f"{self.__name__}.{name}")
+
+
+class OpaqueBase:
+    """What a class deriving from an opaque one derives from: accepts anything."""
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        pass
+
+    def __getattr__(self, name: str) -> Any:
+        if name.startswith("__") or _by_own_code(1):
+            raise AttributeError(name)
+        return Opaque(f"{type(self).__name__}.{name}")
+
+
+_UNPACK_SEQUENCE = dis.opmap["UNPACK_SEQUENCE"]
+_UNPACK_EX = dis.opmap["UNPACK_EX"]
+
+
+def _unpacked_count(frame: types.FrameType | None) -> int:
+    """Return how many values the instruction running in ``frame`` unpacks (0: none)."""
+    if frame is None:
+        return 0
+    code = frame.f_code.co_code
+    at = frame.f_lasti
+    if not 0 <= at < len(code) - 1:
+        return 0
+    operation, argument = code[at], code[at + 1]
+    if operation == _UNPACK_SEQUENCE:
+        return argument
+    if operation == _UNPACK_EX:  # a, *rest, b: the fixed ones, and the rest empty
+        return (argument & 0xFF) + (argument >> 8)
+    return 0
+
+
+__all__ = ["WORLD", "Opaque", "OpaqueBase", "OpaqueModule"]
