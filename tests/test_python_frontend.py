@@ -79,7 +79,7 @@ def generate_launch_description():
 """
     path = write(tmp_path, "runs.launch.py", body)
     [(code, line, message)] = findings(path)
-    assert code == "LV003" and line == 8 and "subprocess.Popen is not allowed" in message
+    assert code == "LV003" and line == 8 and "subprocess.run would run" in message
 
 
 def test_endless_loop_is_stopped(tmp_path: Path) -> None:
@@ -272,21 +272,25 @@ def generate_launch_description():
 
 def test_a_temporary_file_written_at_run_time_is_an_unknown(tmp_path: Path) -> None:
     # nav2's simulation launch files name a temporary world file that xacro writes when
-    # the launch runs, and read or remove it in an OpaqueFunction
+    # the launch runs, and look at or remove it in an OpaqueFunction: its size needs what
+    # only the run has; removing it (the cleanup at shutdown) misses nothing
     body = """
 import tempfile
 
-def remove(context):
-    os.remove(WORLD)
+def {verb}(context):
+    {statement}
     return []
 
 WORLD = tempfile.mktemp(prefix='nav2_', suffix='.sdf')
 
 def generate_launch_description():
-    return LaunchDescription([OpaqueFunction(function=remove)])
+    return LaunchDescription([OpaqueFunction(function={verb})])
 """
-    [(code, line, message)] = findings(write(tmp_path, "world.launch.py", body))
+    read = body.format(verb="size", statement="os.path.getsize(WORLD)")
+    [(code, line, message)] = findings(write(tmp_path, "read.launch.py", read))
     assert (code, line) == ("LV003", 10) and "only exists at run time" in message
+    removed = body.format(verb="remove", statement="os.remove(WORLD)")
+    assert findings(write(tmp_path, "remove.launch.py", removed)) == []
 
 
 def test_a_named_temporary_file_is_written_in_the_scratch_folder(tmp_path: Path) -> None:
@@ -370,3 +374,38 @@ def generate_launch_description():
     graph = evaluate(path, index=PackageIndex(), workspace=tmp_path)
     assert [read.name for read in graph.reads] == ["mode"]
     assert [node.fqn.describe() for node in graph.nodes if node.fqn] == ["/slow"]
+
+
+def test_the_robots_files_commands_and_host_are_unknowns(tmp_path: Path) -> None:
+    # A vendor's helper checks for the robot's configuration file, runs a command and asks
+    # the host name while the file loads: on the robot they answer, here they are unknown,
+    # and a failure resting on them is no error.
+    robot = """
+import socket, subprocess, sys
+
+def generate_launch_description():
+    out = subprocess.run(['ros2', 'component', 'types'], capture_output=True).stdout
+    if out.find('RealSenseNodeFactory') == -1:
+        sys.exit('the component is not built')
+    host = socket.gethostname()
+    if not os.path.exists('/etc/acme/robot.yaml'):
+        raise FileNotFoundError('run the acme setup first')
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker', name=host)])
+"""
+    found = findings(write(tmp_path, "robot.launch.py", robot))
+    assert [(code, line) for code, line, _ in found] == [("LV003", 10), ("LV003", 15)]
+    assert "would run 'ros2 component types'" in found[0][2]
+    assert "cannot tell whether ros2 launch fails here" in found[1][2]
+    assert "/etc/acme/robot.yaml exists on the robot" in found[1][2]
+
+
+def test_a_missing_file_of_the_workspace_is_a_fact(tmp_path: Path) -> None:
+    # The twin: the file would be in the workspace, which launchverify sees.
+    body = f"""
+def generate_launch_description():
+    if not os.path.exists({str(tmp_path / 'config' / 'robot.yaml')!r}):
+        raise FileNotFoundError('robot.yaml is missing')
+    return LaunchDescription([])
+"""
+    [(code, line, message)] = findings(write(tmp_path, "local.launch.py", body))
+    assert (code, line) == ("LV002", 9) and "robot.yaml is missing" in message

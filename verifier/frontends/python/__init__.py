@@ -26,6 +26,7 @@ from launchverify.frontends.python.assumptions import checked
 from launchverify.frontends.python.concrete import SubstitutionFailure
 from launchverify.frontends.python.convert import PythonConverter
 from launchverify.frontends.python.importer import absent_import, import_context
+from launchverify.frontends.python.machine import robot_machine
 from launchverify.frontends.python.mentions import mentioned_strings
 from launchverify.frontends.python.sandbox import (
     SCRATCH_NAME,
@@ -33,6 +34,7 @@ from launchverify.frontends.python.sandbox import (
     TimeLimitExceeded,
     in_other_scratch,
     in_scratch,
+    removing,
     sandbox,
     take_refusals,
 )
@@ -177,6 +179,8 @@ class _Session:
             self.unmodeled(f"launch files are evaluated without side effects: the sandbox "
                            f"refused an operation ({_shown(str(error))}); the evaluation of "
                            "this file may be incomplete", span)
+        elif isinstance(error, FileNotFoundError) and removing(error.filename):
+            pass  # removing a file that a process of the launch writes: nothing is missed
         elif isinstance(error, FileNotFoundError) and in_scratch(error.filename):
             # A temporary file that a process of the launch writes at run time (xacro, a
             # generated world): launchverify starts no process, so it never exists here.
@@ -235,7 +239,8 @@ class _Session:
         saved_argv, sys.argv = sys.argv, frontend.argv(self.path)
         try:
             with import_context([self.path.parent], frontend.index, self.module_unmodeled,
-                                self.name_unmodeled), sandbox(), _yaml_knows_opaque_files():
+                                self.name_unmodeled), sandbox(), _yaml_knows_opaque_files(), \
+                    robot_machine(self._seen):
                 yield
         finally:
             sys.argv = saved_argv
@@ -244,6 +249,12 @@ class _Session:
                 span = Span(Path(where[0]), where[1]) if where else Span.of_file(self.path)
                 self.unmodeled(f"{message}; launchverify did not do it (the evaluation of "
                                "this file may be incomplete)", span)
+
+    def _seen(self, path: str) -> bool:
+        """Return whether an absolute path is where launchverify sees the files."""
+        where = Path(path)
+        return (resolved(where).is_relative_to(self.frontend.workspace)
+                or self.frontend.index.owner(where) is not None)
 
     def run_module(self, code: CodeType) -> Any:
         """Execute the module and call its entry point; ``None`` after a problem."""

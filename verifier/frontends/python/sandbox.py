@@ -52,6 +52,7 @@ BLOCKED_EVENTS = frozenset({
 _TWO_PATHS = frozenset({"os.rename", "os.link", "os.symlink", "shutil.copyfile", "shutil.move"})
 _SCRATCH_EVENTS = frozenset({"os.remove", "os.rename", "os.rmdir", "os.mkdir", "os.chmod",
                              "os.utime", "shutil.rmtree", "shutil.copyfile", "shutil.move"})
+_REMOVALS = frozenset({"os.remove", "os.rmdir", "shutil.rmtree"})
 _STDLIB = os.path.dirname(os.__file__)  # noqa: PTH120
 _WRITE_FLAGS = os.O_WRONLY | os.O_RDWR | os.O_CREAT | os.O_APPEND | os.O_TRUNC
 TIME_LIMIT = 10.0
@@ -137,6 +138,15 @@ def in_scratch(path: Any) -> bool:
     return _in_scratch(path)
 
 
+def removing(path: Any) -> bool:
+    """Return whether the code's last removal in its temporary folder was of ``path``.
+
+    A cleanup of a file that only a process of the launch writes (nav2 removes the world
+    xacro wrote, at shutdown): launchverify starts no process, so it is not there.
+    """
+    return path is not None and getattr(_state, "removing", None) == os.fspath(path)
+
+
 def in_other_scratch(path: Any) -> bool:
     """Return whether a path names a file in another evaluation's scratch folder.
 
@@ -165,6 +175,8 @@ def _audit(event: str, args: tuple[Any, ...]) -> None:
     paths = args[:2] if event in _TWO_PATHS else args[:1]
     if paths and all(_in_scratch(p) for p in paths) and (
             event == "open" or event in _SCRATCH_EVENTS):
+        if event in _REMOVALS:
+            _state.removing = os.fspath(paths[0])
         return  # the evaluation's own temporary folder, deleted afterwards
     if event in BLOCKED_EVENTS or event.startswith(BLOCKED_PREFIXES):
         _refuse(f"{event} is not allowed")
@@ -192,6 +204,11 @@ def _note(what: str, depth: int = 2) -> str:
     if refusals is not None:
         refusals.append((message, where))
     return message
+
+
+def note_refusal(what: str) -> None:
+    """Remember a side effect a stand-in did not do, for the file's findings (LV003)."""
+    _note(what, depth=3)
 
 
 def _user_code(filename: str) -> bool:

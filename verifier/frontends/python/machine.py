@@ -1,0 +1,117 @@
+"""The machine a launch file's code asks about: the robot's, which launchverify cannot see.
+
+A launch file (or a vendor's helper it imports) may ask the machine things while it is
+loaded: run ``ros2 component types`` and read the output, ask for the host name, look
+whether ``/etc/robot/robot.yaml`` exists. On the robot the answers are real. Here nothing
+is run and the robot's files are not there, so the answers are unknown values:
+
+- a command (``subprocess``, ``os.system``, ``os.popen``) runs nothing (an LV003 says
+  so) and gives an unknown result, whatever is asked of it (its output, its return code);
+- the host name is unknown;
+- whether a file outside what launchverify sees exists (``os.path.exists``,
+  ``Path.is_file``...) is an assumption (``assumed``): "no" in the plain world, "yes" in
+  the varied one, so a failure resting on it is not an error.
+
+launchverify's own code keeps Python's real functions. The audit hook and the worker's
+confinement stay the backstop: nothing here is what keeps a command from running.
+"""
+
+from __future__ import annotations
+
+import os
+import pathlib
+import socket
+import subprocess
+import sys
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
+from typing import Any
+
+from launchverify.frontends.python.sandbox import note_refusal
+from launchverify.models.launch_api.placeholders import assumed, has_placeholder
+from launchverify.models.launch_api.unknown import Opaque
+from launchverify.own_code import is_own_file
+
+_COMMANDS = ("run", "call", "check_call", "check_output", "Popen", "getoutput",
+             "getstatusoutput")
+
+
+def _command(module: str, name: str) -> Callable[..., Any]:
+    def run(*args: Any, **kwargs: Any) -> Any:
+        command = args[0] if args else kwargs.get("args", kwargs.get("cmd", ""))
+        shown = " ".join(map(str, command)) if isinstance(command, (list, tuple)) else command
+        note_refusal(f"{module}.{name} would run {str(shown)[:60]!r} while the file "
+                     "is loaded; its result is unknown")
+        return Opaque(f"what the command {str(shown)[:60]!r} gives on the robot")
+
+    run.__name__ = name
+    return run
+
+
+def _hostname() -> str:
+    return Opaque("the robot's host name")
+
+
+def _judged(found: bool, path: Any, seen: Callable[[str], bool]) -> bool:
+    """Return whether a file exists, as the robot would say: unknown outside what is seen."""
+    if found:
+        return True
+    try:
+        text = os.fspath(path)
+    except TypeError:
+        return False
+    text = text.decode(errors="replace") if isinstance(text, bytes) else text
+    if has_placeholder(text) or (pathlib.PurePath(text).is_absolute() and not seen(text)):
+        return assumed(False, True, f"whether {text} exists on the robot")
+    return False
+
+
+def _existence(real: Callable[[Any], bool], seen: Callable[[str], bool]) -> Callable[[Any], bool]:
+    """Wrap an existence check: a file the robot may have is an assumption."""
+    def check(path: Any) -> bool:
+        if is_own_file(sys._getframe(1).f_code.co_filename):
+            return real(path)
+        return _judged(real(path), path, seen)
+
+    check.__name__ = getattr(real, "__name__", "exists")
+    return check
+
+
+def _path_existence(real: Callable[..., bool], seen: Callable[[str], bool]) -> Any:
+    """Wrap ``Path.exists`` and its kin the same way (a method: the path is ``self``)."""
+    def method(self: pathlib.Path, *args: Any, **kwargs: Any) -> bool:
+        found = real(self, *args, **kwargs)
+        if args or kwargs or is_own_file(sys._getframe(1).f_code.co_filename):
+            return found
+        return _judged(found, self, seen)
+
+    method.__name__ = real.__name__
+    return method
+
+
+@contextmanager
+def robot_machine(seen: Callable[[str], bool]) -> Iterator[None]:
+    """Answer a launch file's questions about the machine as unknowns, for a block.
+
+    ``seen(path)``: whether an absolute path lies where launchverify sees the files (the
+    workspace, its packages): there a missing file is a fact.
+    """
+    patches: list[tuple[Any, str, Any]] = [
+        *((subprocess, name, _command("subprocess", name)) for name in _COMMANDS),
+        (os, "system", _command("os", "system")),
+        (os, "popen", _command("os", "popen")),
+        (socket, "gethostname", _hostname),
+    ]
+    for owner, name in ((os.path, "exists"), (os.path, "isfile"), (os.path, "isdir"),
+                        (os.path, "lexists")):
+        patches.append((owner, name, _existence(getattr(owner, name), seen)))
+    for name in ("exists", "is_file", "is_dir"):
+        patches.append((pathlib.Path, name, _path_existence(getattr(pathlib.Path, name), seen)))
+    saved = [(owner, name, getattr(owner, name)) for owner, name, _ in patches]
+    for owner, name, stand_in in patches:
+        setattr(owner, name, stand_in)
+    try:
+        yield
+    finally:
+        for owner, name, original in saved:
+            setattr(owner, name, original)
