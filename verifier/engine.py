@@ -290,7 +290,11 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     files = [f for f in found
              if not tree.nearest(f).excludes(f) and not _excluded(f, options.exclude)]
     selection = Selection(options, tree)
-    display = {canonical(f): str(f) for f in files}
+    display: dict[Path, str] = {}
+    for file in files:  # one root per real file, shown by its own path rather than a link's
+        if canonical(file) == file.absolute() or canonical(file) not in display:
+            display[canonical(file)] = str(file)
+    files = [Path(shown) for shown in display.values()]
     if not files:
         selection.rules()  # a selection that names no rule is still an error
         return Report([], 0, time.perf_counter() - started, display)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 import difflib
 import fnmatch
+import functools
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -15,6 +16,7 @@ from launchverify.models.node_names import BUILTIN_NAMES, InnerNode, inner_nodes
 from launchverify.models.ros_names import node_key_matches
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+from launchverify.topology.shipped import shipped_node_names
 from launchverify.workspace.package_contents import name_literals, unnamed_node_names
 from launchverify.workspace.packages import PackageIndex
 
@@ -111,17 +113,22 @@ class UnmatchedParamBlock(Rule):
     stands for any number of namespace tokens and `*` for one, and the whole name must
     match (`controller:` does not match `/robot1/controller`). Components loaded into a
     container only see `/**` and their exact name (launch_ros filters the file itself).
-    A block that matches no node in any launch of the check is reported, with the closest
-    node name. Nodes that a process creates inside itself get its files too: nav2's
-    costmaps (`local_costmap/local_costmap`), behaviour-tree client nodes, a ros2_control
-    manager's controllers (one per `<name>.type` it lists), and names found in the
-    package's own sources when they are in the workspace. A block in a namespace where
-    none of the loading nodes runs is more likely for an inner node launchverify does not
-    know than a slip, and is only an info; so is a block for a node that some launch of the
-    check starts (or a well-known node) without this file, when no loading node has a
-    close name: one parameter file shared by a whole stack. Files that reach something
-    launchverify cannot see into (an include outside the workspace, a node whose name is
-    unknown) are not judged.
+    Nodes that a process creates inside itself get its files too: nav2's costmaps
+    (`local_costmap/local_costmap`), behaviour-tree client nodes, a ros2_control manager's
+    controllers (one per `<name>.type` it lists), and names found in the package's own
+    sources when they are in the workspace.
+
+    A block that matches no node in any launch of the check is a warning when it is a
+    likely slip: its name is close to a loading node that has no block of its own in the
+    file (the message names it). One parameter file often serves a whole stack, so a
+    block for a node that runs elsewhere is no finding: a node another launch of the check
+    starts, a package's well-known node (nav2's servers, from the shipped models), or a
+    helper node created inside a node whose block is in the file (older nav2's
+    `amcl_rclcpp_node`, `local_costmap_client`). Any other block is stale, an info; so is
+    a block in a namespace where none of the loading nodes runs (more likely for an inner
+    node launchverify does not know than a slip). No rename is ever suggested onto a node
+    that already has its block. Files that reach something launchverify cannot see into
+    (an include outside the workspace, a node whose name is unknown) are not judged.
 
     ## Why it matters
     ROS ignores the block without a word: the node starts with its default parameters,
@@ -168,7 +175,6 @@ class UnmatchedParamBlock(Rule):
 
     def finish(self, ctx: RuleContext) -> Iterator[Finding]:
         started = {str(name) for name in ctx.memo_for(self.code + ":started")}
-        started |= set(BUILTIN_NAMES.values())
         for path, use in ctx.memo_for(self.code).items():
             assert isinstance(use, _FileUse) and isinstance(path, Path)
             if use.undecided or not use.receivers:
@@ -177,28 +183,54 @@ class UnmatchedParamBlock(Rule):
                      if r.fqn is not None}
             for receiver in use.receivers.values():
                 names.update(receiver.inner_names())
+            # nodes this file already has a block of their own for
+            blocked = {block.key.rpartition("/")[2]
+                       for index, block in enumerate(use.param_file.blocks)
+                       if index in use.matched} - {"*", "**"}
             shown = sorted(use.receivers)
             listed = ", ".join(shown[:6]) + (", ..." if len(shown) > 6 else "")
             loaded_by = Related(use.receivers[shown[0]].node.origin.span, f"loaded by {listed}")
             for index, block in enumerate(use.param_file.blocks):
                 if index not in use.matched:
-                    yield self._unmatched(block, path, use, names, started, loaded_by)
+                    finding = self._unmatched(block, path, use, names, blocked, started,
+                                              loaded_by)
+                    if finding is not None:
+                        yield finding
 
     def _unmatched(self, block: ParamBlock, path: Path, use: _FileUse, names: dict[str, str],
-                   started: set[str], loaded_by: Related) -> Finding:
-        """Report a block for no node: a warning for a likely slip, else an info."""
-        hint = _closest(block.key, names)
-        namespace = _foreign_namespace(block.key, use.receivers.values())
+                   blocked: set[str], started: set[str],
+                   loaded_by: Related) -> Finding | None:
+        """Report a block for no node: a warning for a likely slip, else an info or nothing.
+
+        A slip is a name close to a loading node that has no block of its own here. A
+        helper node created inside a node whose block is here, or a package's well-known
+        node, is no finding: one file serves a whole stack. Any other block is an info.
+        """
         name = block.key.rpartition("/")[2]
+        if any(name.startswith(node + "_") for node in blocked):
+            return None
+        namespace = _foreign_namespace(block.key, use.receivers.values())
+        hint = _closest(block.key, {n: fqn for n, fqn in names.items() if n not in blocked})
         if namespace is not None:  # more likely a node we do not model than a slip
             hint = f" (none of them runs in {namespace}: a node one of them creates inside?)"
+        elif not hint and name in well_known_node_names():
+            return None
         elif not hint and name in started:  # a shared file: the block is for another launch
             hint = f" ({name} is a node these launches do not start with it)"
+        elif not hint:
+            hint = " (no node of that name is known to run: a stale block?)"
         finding = self.finding(block.span, related=(loaded_by,), key=block.key,
                                file=path.name, hint=hint)
-        if namespace is not None or hint.startswith(f" ({name} is"):
+        if not hint.startswith(" (did you mean"):
             finding = dataclasses.replace(finding, severity=Severity.INFO)
         return finding
+
+
+@functools.cache
+def well_known_node_names() -> frozenset[str]:
+    """Return the names packages' code gives their nodes (shipped models, well-known)."""
+    return shipped_node_names() | frozenset(BUILTIN_NAMES.values())
+
 
 def receivers_of(graph: LaunchGraph, path: Path,
                  packages: PackageIndex | None) -> list[Receiver] | None:

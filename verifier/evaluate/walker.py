@@ -555,7 +555,7 @@ class Walker:
             beside = written_in.parent / path
             note = ("relative paths are resolved against the folder ros2 launch is started "
                     "from, not the including file; use $(dirname)/" + text)
-            return (beside if beside.is_file() else None), note
+            return (self.index.canonical(beside) if beside.is_file() else None), note
         return self.index.locate(path), note
 
     def do_Timer(self, action: a.Timer, ctx: Ctx) -> None:

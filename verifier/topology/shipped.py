@@ -266,3 +266,11 @@ def shipped_model(package: str) -> PackageModel | None:
     if model.package != package:
         raise ModelError(f"model file {package}.json names package {model.package}")
     return model
+
+
+@lru_cache(maxsize=1)
+def shipped_node_names() -> frozenset[str]:
+    """Return the names the shipped packages' code gives its nodes (nav2's servers...)."""
+    return frozenset(interface.node_name for package in shipped_packages()
+                     if (model := shipped_model(package)) is not None
+                     for interface in model.interfaces if interface.node_name)

@@ -264,8 +264,36 @@ class PackageIndex:
         """
         if path in self._located:
             return self._located[path]
-        found = self._located[path] = self._locate(path)
+        found = self._locate(path)
+        found = self._located[path] = None if found is None else self.canonical(found)
         return found
+
+    def canonical(self, path: Path) -> Path:
+        """Return the one path findings use for a file reached by several.
+
+        Links are resolved where they stay in what launchverify sees (the workspace, its
+        packages). An installed copy (``.../share/<package>/...``) whose source file
+        holds the same bytes is that source file: the one the user edits.
+        """
+        real = resolved(path)
+        if real != path and not self._seen(real):
+            return path
+        package = self.owner(real)
+        if package is None or not _installed_layout(real, package.name):
+            return real
+        share = next(p for p in real.parents if p.name == package.name
+                     and p.parent.name == "share")
+        for source in self.sources.get(package.name, []):
+            if _installed_layout(source / "package.xml", package.name):
+                continue
+            twin = source / real.relative_to(share)
+            if _same_bytes(twin, real):
+                return twin
+        return real
+
+    def _seen(self, path: Path) -> bool:
+        return (any(path.is_relative_to(w) for w in self.workspaces)
+                or self.owner(path) is not None)
 
     def _locate(self, path: Path) -> Path | None:
         if path.is_file():
@@ -300,6 +328,21 @@ class PackageIndex:
             except OSError:
                 continue
         return sorted(names)
+
+
+def _installed_layout(path: Path, package: str) -> bool:
+    """Return whether a path lies in a package's install layout (``share/<package>/``)."""
+    return any(parent.name == package and parent.parent.name == "share"
+               for parent in path.parents)
+
+
+def _same_bytes(first: Path, second: Path) -> bool:
+    """Return whether two files hold the same bytes (``False`` if either is unreadable)."""
+    try:
+        return (first.stat().st_size == second.stat().st_size
+                and read_file(first) == read_file(second))
+    except OSError:
+        return False
 
 
 def _by_name(source: Path, relative: Path) -> Path | None:
