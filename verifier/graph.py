@@ -497,6 +497,14 @@ class LaunchGraph:
         """Return whether an OpaqueFunction stopped before its end (absence is unknown)."""
         return bool(self.stops)
 
+    def handed(self) -> set[int]:
+        """Return the actions (by ``id``) given to code launchverify cannot see.
+
+        That code may run them: that launchverify sees no one run them is no fact.
+        """
+        return {id(action) for loaded in self.files.values() if loaded.launch is not None
+                for action in loaded.launch.handed}
+
     def unseen(self) -> list[tuple[str, Span]]:
         """Return what the evaluation could not see into, and where: why it is incomplete.
 

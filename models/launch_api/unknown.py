@@ -49,6 +49,7 @@ class Opaque(str):
         return value
 
     def __call__(self, *args: Any, **kwargs: Any) -> Opaque:
+        hand_over(args, kwargs)
         return Opaque(f"{self._description}()")
 
     @property  # type: ignore[misc]
@@ -201,12 +202,38 @@ class OpaqueBase:
     """What a class deriving from an opaque one derives from: accepts anything."""
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
-        pass
+        hand_over(args, kwargs)
 
     def __getattr__(self, name: str) -> Any:
         if name.startswith("__") or _by_own_code(1):
             raise AttributeError(name)
         return Opaque(f"{type(self).__name__}.{name}")
+
+
+def hand_over(*values: Any) -> None:
+    """Mark the launch objects given to code launchverify cannot see (``handed``).
+
+    That code may add actions to a launch description it holds (a vendor's argument
+    parser declares the arguments), or run an action it was given (a helper that starts
+    the spawners once a controller is up): what launchverify sees of them is not all.
+    """
+    from launchverify.models.launch_api.base import Modelled
+
+    pending, seen = list(values), 0
+    while pending and seen < 1000:
+        value = pending.pop()
+        seen += 1
+        if isinstance(value, Modelled):
+            object.__setattr__(value, "handed", True)
+        elif isinstance(value, (list, tuple, set)):
+            pending.extend(value)
+        elif isinstance(value, dict):
+            pending.extend(value.values())
+
+
+def handed(value: Any) -> bool:
+    """Return whether a launch object was given to code launchverify cannot see."""
+    return bool(vars(value).get("handed")) if hasattr(value, "__dict__") else False
 
 
 _UNPACK_SEQUENCE = dis.opmap["UNPACK_SEQUENCE"]

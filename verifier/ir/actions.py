@@ -537,3 +537,5 @@ class LaunchFile:
     span: Span
     deprecated: str | None = None
     lookups: tuple[tuple[str, Span], ...] = ()  # packages looked up by Python code
+    # actions given to code launchverify cannot see, which may run them (Python files)
+    handed: tuple[Action, ...] = ()

@@ -48,7 +48,7 @@ from launchverify.models.launch_api.placeholders import (
     placeholder,
 )
 from launchverify.models.launch_api.runtime import blamable
-from launchverify.models.launch_api.unknown import Opaque
+from launchverify.models.launch_api.unknown import Opaque, handed
 from launchverify.own_code import is_own_file
 from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
@@ -314,10 +314,14 @@ class _Session:
         except Exception as error:  # a model rejecting a value the user passed
             self.failure(error)
             return None
+        if handed(description):  # code launchverify cannot see may have added to it
+            actions = (*actions, a.OpaqueAction(span=description._span,
+                                                description="what code launchverify cannot "
+                                                            "see adds to the description"))
         return a.LaunchFile(path=self.path, format="python", actions=actions,
                             span=Span.of_file(self.path),
                             deprecated=description.deprecated_reason,
-                            lookups=tuple(self.lookups))
+                            lookups=tuple(self.lookups), handed=tuple(converter.handed))
 
     def converter(self, context: Any = None) -> PythonConverter:
         """Return a converter reporting into this session (``context``: an OpaqueFunction's)."""

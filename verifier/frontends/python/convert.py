@@ -20,7 +20,7 @@ from launchverify.ir import conditions as c
 from launchverify.ir import subst as s
 from launchverify.models.launch_api import base, launch_ros
 from launchverify.models.launch_api.placeholders import PATTERN, has_placeholder, parsed, read
-from launchverify.models.launch_api.unknown import Opaque
+from launchverify.models.launch_api.unknown import Opaque, handed
 from launchverify.span import Span
 
 Unmodeled = Callable[[str, Span], None]
@@ -76,6 +76,7 @@ class PythonConverter:
         self._memo: dict[int, a.Action | None] = {}
         self._keep: list[Any] = []  # keep converted objects alive while their id is a key
         self._locator = CallLocator()
+        self.handed: list[a.Action] = []  # actions given to code launchverify cannot see
 
     # ------------------------------------------------------------------ values
 
@@ -166,6 +167,12 @@ class PythonConverter:
         self._keep.append(entity)
         if isinstance(entity, base.LaunchDescriptionEntity):
             result = entity.to_ir(self)
+            if result is not None and handed(entity):
+                self.handed.append(result)
+        elif isinstance(entity, Opaque):  # what it does is unknown: declare, set, start
+            self._unmodeled(f"{read(str(entity))} is an action of code launchverify cannot "
+                            "see; what it does is unknown", self._fallback)
+            result = a.OpaqueAction(span=self._fallback, description=read(str(entity)))
         else:
             result = None
             span = getattr(entity, "_span", None)
