@@ -429,6 +429,7 @@ class LaunchGraph:
 
     def __post_init__(self) -> None:
         self._base = BaseReducer(self.inputs(), read=self.read_file)
+        self._facts: BaseReducer | None = None
         self._verdicts: dict[Guard, bool | None] = {}
         # the same guard objects, by identity: hashing a guard walks its whole expression
         self._verdicts_by_id: dict[int, tuple[Guard, bool | None]] = {}
@@ -473,6 +474,17 @@ class LaunchGraph:
     def reduced(self, sub: Sub) -> Sub:
         """Return a value reduced under the given arguments, as far as it goes."""
         return self._base.reduce(sub)
+
+    def as_facts(self, sub: Sub) -> Sub:
+        """Return a value reduced under the given arguments, the machine's variables kept.
+
+        (``reduced`` reads an unset variable as its default; whether the robot sets it is
+        not a fact an error may rest on.)
+        """
+        if self._facts is None:
+            self._facts = BaseReducer(self.inputs(), read=self.read_file,
+                                      environment_defaults=False)
+        return self._facts.reduce(sub)
 
     def runs(self, origin: Origin) -> bool | None:
         """Return whether a record runs under the given arguments (``None``: unknown)."""

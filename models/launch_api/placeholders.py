@@ -126,10 +126,15 @@ def varied_world() -> Iterator[None]:
 
 
 class UnknownMapping(dict):  # type: ignore[type-arg]
-    """YAML content only the robot has: any key gives more of it, iteration gives nothing."""
+    """YAML content only the robot has: any key gives an unknown value, a loop no round."""
 
-    def __missing__(self, key: object) -> UnknownMapping:
-        return UnknownMapping()
+    def __missing__(self, key: object) -> object:
+        from launchverify.models.launch_api.unknown import Opaque
+
+        return Opaque(f"{key} in a file only the robot has")
+
+    def get(self, key: object, default: object = None) -> object:
+        return self[key]
 
     def __bool__(self) -> bool:
         return assumed(False, True, "the content of a file only the robot has")

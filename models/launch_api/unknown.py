@@ -140,9 +140,9 @@ class Opaque(str):
 
 
 def _answering(name: str, answer: str) -> Any:
-    """Return a method for ``name``: more unknown, or an assumption (``answer``).
+    """Return an operator for ``name``: more unknown, or an assumption (``answer``).
 
-    launchverify's own code gets ``str``'s method (or the answer a string gives).
+    launchverify's own code gets ``str``'s (or the answer a string gives).
     """
     own = getattr(str, name, None)
 
@@ -153,20 +153,35 @@ def _answering(name: str, answer: str) -> Any:
             return assumed(False, True, self._description)
         if answer == "int":
             return assumed(0, 1, self._description)
-        if answer == "self":
-            return self
-        return Opaque(f"{self._description}.{name.strip('_')}()")
+        return self
 
     method.__name__ = name
     return method
 
 
-# A str method used on an unknown value must not read the placeholder's text: it answers
-# with more of the unknown, or, where Python wants a plain answer, an assumption.
-_ANSWERS = {
+def _attribute(name: str) -> property:
+    """Return an attribute named like a str method.
+
+    For the launch file's code it is more of the unknown (``config.count``,
+    ``config.title`` are as likely values as methods; called, it gives more still, and a
+    plain answer is an assumption); for launchverify's own code, ``str``'s method.
+    """
+    own = getattr(str, name)
+
+    def get(self: Opaque) -> Any:
+        if _by_own_code(1):
+            return own.__get__(self)
+        return Opaque(f"{self._description}.{name}")
+
+    return property(get)
+
+
+# What an unknown value is asked must not read the placeholder's text: it answers with
+# more of the unknown, or, where Python wants a plain answer, an assumption.
+_OPERATORS = {
     **{name: "bool" for name in ("__bool__", "__contains__", "__lt__", "__le__", "__gt__",
-                                 "__ge__", "startswith", "endswith")},
-    **{name: "int" for name in ("__len__", "count", "find", "rfind", "index", "rindex")},
+                                 "__ge__")},
+    "__len__": "int",
     **{name: "self" for name in (
         "__add__", "__radd__", "__sub__", "__rsub__", "__mul__", "__rmul__", "__truediv__",
         "__rtruediv__", "__floordiv__", "__rfloordiv__", "__mod__", "__rmod__", "__neg__",
@@ -174,15 +189,43 @@ _ANSWERS = {
         "__ror__", "__round__", "__abs__", "__pos__", "__invert__", "__lshift__",
         "__rlshift__", "__rshift__", "__rrshift__", "__matmul__", "__rmatmul__")},
 }
+for _name, _answer in _OPERATORS.items():
+    setattr(Opaque, _name, _answering(_name, _answer))
 for _name in dir(str):
     if not _name.startswith("_") and _name != "maketrans":
-        _ANSWERS.setdefault(_name, "bool" if _name.startswith("is") else "unknown")
-for _name, _answer in _ANSWERS.items():
-    setattr(Opaque, _name, _answering(_name, _answer))
+        setattr(Opaque, _name, _attribute(_name))
 
 # Named so that a message naming an unknown value's type ("expected str instance,
 # ⟨opaque:value⟩ found") says that it rests on an unknown.
 Opaque.__name__ = Opaque.__qualname__ = placeholder("opaque", "value")
+
+
+class _Converting(type):
+    """The type of ``int`` and ``float`` as a launch file's code sees them."""
+
+    def __call__(cls, *args: Any, **kwargs: Any) -> Any:
+        if args and isinstance(args[0], Opaque):
+            return args[0]  # a number only the robot knows: still unknown
+        return cls.__bases__[0](*args, **kwargs)
+
+    def __instancecheck__(cls, value: Any) -> bool:
+        return isinstance(value, cls.__bases__[0])
+
+    def __subclasscheck__(cls, subclass: type) -> bool:
+        return issubclass(subclass, cls.__bases__[0])
+
+
+class _Int(int, metaclass=_Converting):
+    """``int``: an unknown value converted stays unknown (not the 0 Python would want)."""
+
+
+class _Float(float, metaclass=_Converting):
+    """``float``: an unknown value converted stays unknown."""
+
+
+_Int.__name__ = _Int.__qualname__ = "int"
+_Float.__name__ = _Float.__qualname__ = "float"
+CONVERSIONS = {"int": _Int, "float": _Float}  # for the launch file's builtins
 
 
 class OpaqueModule(types.ModuleType):

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from launchverify.events import meeting_origin
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.ir import subst as s
-from launchverify.ir.symbolic import Arg, Select, rests_on_unknowns
+from launchverify.ir.symbolic import Arg, Select, depends_on_unknowns, rests_on_unknowns
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 from launchverify.smt import Witness, reasoner_for
 
@@ -129,6 +129,8 @@ def collision(graph: LaunchGraph, first: NodeRecord, second: NodeRecord,
     first_origin = meeting_origin(graph, first, second)
     if first_origin is None:
         return None  # one starts only once the other has ended for good
+    if not _same_unknowns(graph, first.fqn, second.fqn):
+        return None
     first_text, second_text = graph.base(first.fqn), graph.base(second.fqn)
     if (first_text is not None and first_text == second_text
             and graph.runs(first_origin) and graph.runs(second.origin)):
@@ -143,6 +145,18 @@ def collision(graph: LaunchGraph, first: NodeRecord, second: NodeRecord,
         return None
     witness, name = found
     return (name if "\x01" not in name else second.fqn.describe()), witness
+
+
+def _same_unknowns(graph: LaunchGraph, first: s.Sub, second: s.Sub) -> bool:
+    """Return whether two names hold what launchverify cannot know only in the same way.
+
+    ``$(env NS '')/a`` reads as ``/a`` while the variable is unset, which the robot's
+    environment decides: equal to a plain ``/a`` only by that assumption. The same
+    unknown in the same place, under the arguments as given, is equal whatever it is.
+    """
+    if not (depends_on_unknowns(first) or depends_on_unknowns(second)):
+        return True
+    return graph.as_facts(first).describe() == graph.as_facts(second).describe()
 
 
 def fixed_name(graph: LaunchGraph, node: NodeRecord, switches: set[str]) -> str | None:

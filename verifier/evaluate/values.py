@@ -536,10 +536,13 @@ class BaseReducer(Reducer):
     """
 
     def __init__(self, pinned: dict[str, str] | None = None,
-                 read: Callable[[str], str | None] | None = None) -> None:
+                 read: Callable[[str], str | None] | None = None, *,
+                 environment_defaults: bool = True) -> None:
         super().__init__()
         self.pinned = pinned or {}
         self.read = read
+        # an unset variable reads as its default: true only if the robot does not set it
+        self.environment_defaults = environment_defaults
 
     def file_content(self, path: str) -> s.Sub:
         text = self.read(path) if self.read is not None else None
@@ -558,7 +561,9 @@ class BaseReducer(Reducer):
         key = "env:" + sub.name
         if key in self.pinned:
             return s.Text(self.pinned[key])
-        return sub if sub.default is None else self.reduce(sub.default)
+        if sub.default is None or not self.environment_defaults:
+            return sub
+        return self.reduce(sub.default)
 
 
 def machine_dependent(sub: s.Sub) -> bool:

@@ -14,9 +14,13 @@ def generate_launch_description():
         DeclareLaunchArgument('robot_name', default_value=EnvironmentVariable('ROBOT_NAME',
                                                                               default_value='bot')),
         SetEnvironmentVariable('RCUTILS_COLORIZED_OUTPUT', '1'),
-        Node(package='demo_nodes_cpp', executable='talker', name=f'{ROBOT_MODEL}_driver',
+        Node(package='demo_nodes_cpp', executable='talker', name='burger_driver',
              namespace=LaunchConfiguration('robot_name'),
              parameters=[{'domain': domain}]),
+        # the same variable in the same place: equal whatever the robot sets
         Node(package='demo_nodes_cpp', executable='talker', name='burger_driver',  # expect: LV101
              namespace=EnvironmentVariable('ROBOT_NAME', default_value='bot')),
+        # equal only while TURTLEBOT3_MODEL is unset, which the robot decides: no error
+        Node(package='demo_nodes_cpp', executable='listener',  # expect-not: LV101
+             name=f'{ROBOT_MODEL}_driver', namespace=LaunchConfiguration('robot_name')),
     ])

@@ -48,7 +48,7 @@ from launchverify.models.launch_api.placeholders import (
     placeholder,
 )
 from launchverify.models.launch_api.runtime import blamable
-from launchverify.models.launch_api.unknown import Opaque, handed
+from launchverify.models.launch_api.unknown import CONVERSIONS, Opaque, handed
 from launchverify.own_code import is_own_file
 from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
@@ -331,6 +331,7 @@ class _Session:
 
     def _builtins(self) -> dict[str, Any]:
         namespace = dict(vars(builtins))
+        namespace.update(CONVERSIONS)
         namespace["open"] = self._open
         if self.frontend.absent_modules:
             namespace["__import__"] = absent_import(self.module_unmodeled)

@@ -267,6 +267,8 @@ class PythonConverter:
             inner = self.param_value(value.value)
             return a.ParamValue(value=inner.value, value_type=name or (
                 str(value_type) if value_type else inner.value_type))
+        if isinstance(value, Opaque):  # any value, of any type
+            return a.ParamValue(value=self.sub(value))
         if isinstance(value, (bool, int, float)) or value is None:
             return a.ParamValue(value=value)
         if isinstance(value, str):
