@@ -24,6 +24,7 @@ from launchverify.ir import actions as a
 from launchverify.ir import subst as s
 from launchverify.models import distros
 from launchverify.problems import ProblemKind, ProblemSink
+from launchverify.rule import Severity
 from launchverify.span import Span
 
 TIME_LIMIT = 5.0  # a guard against hangs, not a benchmark
@@ -639,6 +640,29 @@ def test_python_actions_start_the_same_nodes(tmp_path: Path) -> None:
 def test_python_actions_are_missing_before_jazzy(tmp_path: Path) -> None:
     _, codes = _python_nodes(tmp_path, distro="humble")
     assert codes == ["LV002"]
+
+
+HUMBLE_SPAWNERS = """\
+from controller_manager.launch_utils import generate_load_controller_launch_description
+
+def generate_launch_description():
+    return generate_load_controller_launch_description(
+        controller_name='arm_controller',
+        controller_type='joint_trajectory_controller/JointTrajectoryController',
+        controller_params_file='/opt/robot/arm_controller.yaml')
+"""
+
+
+@pytest.mark.parametrize(("distro", "expected"), [
+    (None, []), ("humble", []), ("iron", []), ("jazzy", ["LV002"]), ("rolling", ["LV002"])])
+def test_controller_spawner_helpers_take_each_distros_arguments(
+        tmp_path: Path, distro: str | None, expected: list[str]) -> None:
+    # PAL's TIAGo passes controller_type, which humble and iron take and jazzy dropped: with
+    # no distribution given, the call may be right; for jazzy it raises as launch does.
+    path = tmp_path / "arm.launch.py"
+    path.write_text(HUMBLE_SPAWNERS)
+    report = run_check(CheckOptions(paths=[path], workspace=tmp_path, distro=distro))
+    assert [f.code for f in report.findings if f.severity is Severity.ERROR] == expected
 
 
 # --------------------------------------------------------------------------- hostile input

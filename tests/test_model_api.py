@@ -374,9 +374,9 @@ def test_launch_api_getters_and_evaluation_in_opaque_function(tmp_path: Path) ->
 
 def test_only_the_launch_files_code_gets_unknown_values(tmp_path: Path) -> None:
     """launchverify's own probes (``getattr(x, name, default)``) keep their AttributeError."""
-    from launchverify.models.launch_api.unknown import Opaque
     from launchverify.models.launch_api import base, runtime
     from launchverify.models.launch_api.launch_substitutions import IfCondition
+    from launchverify.models.launch_api.unknown import Opaque
     from launchverify.workspace.packages import PackageIndex
 
     reported: list[str] = []

@@ -38,3 +38,8 @@ def own_roots() -> tuple[str, ...]:
 def is_own_file(filename: str) -> bool:
     """Return whether ``filename`` (as a code object names it) is launchverify's or frozen."""
     return filename.startswith("<frozen") or filename.startswith(own_roots())
+
+
+def is_launchverify_file(filename: str) -> bool:
+    """Return whether ``filename`` is launchverify's own (frozen modules are Python's)."""
+    return filename.startswith(own_roots())

@@ -7,11 +7,13 @@ documents become an opaque robot description.
 
 from __future__ import annotations
 
+import inspect
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 from launchverify.ir import subst as s
+from launchverify.models import distros
 from launchverify.models.launch_api.base import Converter, Substitution
 from launchverify.models.launch_api.placeholders import has_placeholder, placeholder
 from launchverify.models.launch_api.runtime import active
@@ -141,10 +143,11 @@ def parse(inp: Any, filename: Any = None, **kwargs: Any) -> XacroDocument:
 
 
 def generate_controllers_spawner_launch_description(
-    controller_names: list[str], controller_params_files: Any = None,
-    extra_spawner_args: list[Any] | None = None,
+    controller_names: list[str], *args: Any, **kwargs: Any,
 ) -> Any:
     """``controller_manager.launch_utils``: one spawner for the controllers."""
+    controller_params_files, extra_spawner_args = _spawner_options(
+        "controller_params_files", args, kwargs)
     from launchverify.models.launch_api.launch_actions import (
         DeclareLaunchArgument,
         LaunchDescription,
@@ -179,13 +182,33 @@ def generate_controllers_spawner_launch_description_from_dict(
     """``controller_manager.launch_utils``: spawners from ``{name: params file}``."""
     files = [f for f in controller_info_dict.values() if f]
     return generate_controllers_spawner_launch_description(
-        list(controller_info_dict), files or None, extra_spawner_args)
+        list(controller_info_dict), controller_params_files=files or None,
+        extra_spawner_args=extra_spawner_args)
 
 
 def generate_load_controller_launch_description(
-    controller_name: str, controller_params_file: Any = None,
-    extra_spawner_args: list[Any] | None = None,
+    controller_name: str, *args: Any, **kwargs: Any,
 ) -> Any:
     """``controller_manager.launch_utils``: a spawner for one controller."""
+    controller_params_file, extra_spawner_args = _spawner_options(
+        "controller_params_file", args, kwargs)
     return generate_controllers_spawner_launch_description(
-        [controller_name], controller_params_file, extra_spawner_args)
+        [controller_name], controller_params_files=controller_params_file,
+        extra_spawner_args=extra_spawner_args)
+
+
+def _spawner_options(files: str, args: tuple[Any, ...],
+                     kwargs: dict[str, Any]) -> tuple[Any, list[Any] | None]:
+    """Bind the arguments after the controllers' names as the checked distribution does.
+
+    humble and iron take a ``controller_type`` second (unused); jazzy dropped it. With no
+    distribution known, a call naming ``controller_type`` is taken as humble's.
+    """
+    distro = distros.current()
+    typed = distro in ("humble", "iron") or (distro is None and "controller_type" in kwargs)
+    names = (*(("controller_type",) if typed else ()), files, "extra_spawner_args")
+    signature = inspect.Signature([
+        inspect.Parameter(name, inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None)
+        for name in names])
+    bound = signature.bind(*args, **kwargs).arguments  # a TypeError as Python's
+    return bound.get(files), bound.get("extra_spawner_args")

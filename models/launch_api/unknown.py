@@ -24,13 +24,16 @@ from collections.abc import Iterator
 from typing import Any
 
 from launchverify.models.launch_api.placeholders import WORLD, assumed, placeholder
-from launchverify.own_code import is_own_file
+from launchverify.own_code import is_launchverify_file
 
 
 def _by_own_code(depth: int) -> bool:
-    """Return whether the frame ``depth`` levels up runs launchverify's own code."""
-    frame = sys._getframe(depth + 1)
-    return is_own_file(frame.f_code.co_filename)
+    """Return whether the frame ``depth`` levels up runs launchverify's own code.
+
+    (Python's frozen modules, ``os.path`` among them, run for the launch file's code: they
+    see an unknown value as that code does.)
+    """
+    return is_launchverify_file(sys._getframe(depth + 1).f_code.co_filename)
 
 
 class Opaque(str):
@@ -148,7 +151,9 @@ def _answering(name: str, answer: str) -> Any:
 
     def method(self: Opaque, *args: Any, **kwargs: Any) -> Any:
         if _by_own_code(1):
-            return own(self, *args, **kwargs) if own is not None else len(self) > 0
+            if own is not None:
+                return own(self, *args, **kwargs)
+            return len(self) > 0 if name == "__bool__" else NotImplemented
         if answer == "bool":
             return assumed(False, True, self._description)
         if answer == "int":

@@ -30,7 +30,7 @@ from typing import Any
 from launchverify.frontends.python.sandbox import note_refusal
 from launchverify.models.launch_api.placeholders import assumed, has_placeholder
 from launchverify.models.launch_api.unknown import Opaque
-from launchverify.own_code import is_own_file
+from launchverify.own_code import is_launchverify_file
 
 _COMMANDS = ("run", "call", "check_call", "check_output", "Popen", "getoutput",
              "getstatusoutput")
@@ -69,7 +69,7 @@ def _judged(found: bool, path: Any, seen: Callable[[str], bool]) -> bool:
 def _existence(real: Callable[[Any], bool], seen: Callable[[str], bool]) -> Callable[[Any], bool]:
     """Wrap an existence check: a file the robot may have is an assumption."""
     def check(path: Any) -> bool:
-        if is_own_file(sys._getframe(1).f_code.co_filename):
+        if is_launchverify_file(sys._getframe(1).f_code.co_filename):
             return real(path)
         return _judged(real(path), path, seen)
 
@@ -81,7 +81,7 @@ def _path_existence(real: Callable[..., bool], seen: Callable[[str], bool]) -> A
     """Wrap ``Path.exists`` and its kin the same way (a method: the path is ``self``)."""
     def method(self: pathlib.Path, *args: Any, **kwargs: Any) -> bool:
         found = real(self, *args, **kwargs)
-        if args or kwargs or is_own_file(sys._getframe(1).f_code.co_filename):
+        if args or kwargs or is_launchverify_file(sys._getframe(1).f_code.co_filename):
             return found
         return _judged(found, self, seen)
 
