@@ -409,3 +409,49 @@ def generate_launch_description():
 """
     [(code, line, message)] = findings(write(tmp_path, "local.launch.py", body))
     assert (code, line) == ("LV002", 9) and "robot.yaml is missing" in message
+
+
+def _helper_workspace(tmp_path: Path, cmake: str) -> Path:
+    """A package whose build may install the Python package acme_helpers, and a user."""
+    helpers = tmp_path / "acme_common"
+    (helpers / "acme_helpers").mkdir(parents=True)
+    (helpers / "package.xml").write_text(
+        "<package format='3'><name>acme_common</name><version>0.0.0</version>"
+        "<description>d</description><maintainer email='a@b.c'>a</maintainer>"
+        "<license>MIT</license></package>")
+    (helpers / "CMakeLists.txt").write_text(cmake)
+    (helpers / "acme_helpers" / "__init__.py").write_text(
+        "def robot_name():\n    return 'atlas'\n")
+    body = """
+from acme_helpers import robot_name
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name=robot_name()),
+        Node(package='demo_nodes_cpp', executable='listener', name='atlas'),
+    ])
+"""
+    return write(tmp_path, "robot.launch.py", body)
+
+
+def test_a_python_package_a_workspace_build_installs_is_imported(tmp_path: Path) -> None:
+    # ament_cmake installs acme_helpers (ament_python_install_package): the helper runs,
+    # and the duplicate it makes is found. Without that line nothing installs it: unknown.
+    installed = _helper_workspace(tmp_path, "ament_python_install_package(acme_helpers)\n")
+    assert [code for code, _, _ in findings(installed)] == ["LV101"]
+    (tmp_path / "acme_common" / "CMakeLists.txt").write_text("ament_package()\n")
+    codes = [code for code, _, _ in findings(installed)]
+    assert "LV101" not in codes and "LV002" not in codes
+
+
+def test_a_python_package_of_an_installed_prefix_is_imported(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # AMENT_PREFIX_PATH names an install prefix whose site-packages holds the helper.
+    site = tmp_path / "prefix" / "lib" / "python3.12" / "site-packages" / "acme_helpers"
+    site.mkdir(parents=True)
+    (site / "__init__.py").write_text("def robot_name():\n    return 'atlas'\n")
+    (tmp_path / "ws").mkdir()
+    path = _helper_workspace(tmp_path / "ws", "ament_package()\n")
+    monkeypatch.setenv("AMENT_PREFIX_PATH", str(tmp_path / "prefix"))
+    codes = [code for code, _, _ in findings(path)]  # (demo_nodes_cpp is not installed)
+    assert "LV101" in codes and "LV002" not in codes

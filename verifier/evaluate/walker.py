@@ -108,6 +108,9 @@ class Walker:
         self.executing: list[int] = []  # graph.executed indices of the actions being run
         self.delays: list[float] = []  # periods of the timers around (since launch/handler)
         self.at_shutdown = False  # walking an OnShutdown handler: no process starts
+        # what must hold for the launch to get past a failure met so far (a value outside
+        # an argument's choices stops it): every later action runs only if it held
+        self.goes_on: list[Guard] = []
         self.calls: list[Span] = []  # the actions being visited, innermost last
         # (action, file, loop) -> the handler its first execution ran in (None: at launch)
         self.executed_processes: dict[tuple[object, ...], int | None] = {}
@@ -276,6 +279,9 @@ class Walker:
 
     def _visit(self, action: a.Action, ctx: Ctx) -> None:
         where = action.attr_spans.get("if") or action.attr_spans.get("unless") or action.span
+        for guard in self.goes_on:
+            if guard not in ctx.path:
+                ctx = ctx.guarded(guard)
         inner = self.apply_condition(action.condition, where, ctx)
         if inner is None:
             self.graph.skipped.append(SkippedAction(action, ctx.origin(action.span)))
@@ -378,6 +384,7 @@ class Walker:
                 f"choices {list(action.choices)} (ros2 launch fails)",
                 action.span, ctx,
             )
+            self.stops_unless(current, action.choices, action.span)
         elif action.choices is not None and given is None and existing is not None \
                 and not is_unset(existing) and self.graph.runs(ctx.origin(action.span)):
             # An includer passes a value that depends on its arguments: with their
@@ -390,12 +397,22 @@ class Walker:
                     f"argument {action.name!r} of {action.span.short()} gets value "
                     f"{chosen!r}, which is not one of its choices {list(action.choices)} "
                     "(ros2 launch fails)")
+                self.stops_unless(current, action.choices, action.span)
         self.graph.arguments.append(ArgumentRecord(
             action.name, ctx.origin(action.span), default, action.description,
             action.choices, current, action,
         ))
         for record in self.include_stack:
             record.declared.add(action.name)
+
+    def stops_unless(self, value: s.Sub, choices: tuple[str, ...], where: Span) -> None:
+        """Note that launch stops here unless ``value`` is one of ``choices``.
+
+        What comes after runs only if it is: a finding there (a parameter file named by
+        the bad value) is about code the launch never reaches.
+        """
+        self.goes_on.append(Truthy(
+            s.AnySub(tuple(s.EqualsSub(value, s.Text(c)) for c in choices)), where=where))
 
     def passed_at(self, name: str, ctx: Ctx, declared: Span) -> tuple[Span, Ctx]:
         """Return where the innermost include passes argument ``name`` (and its context).

@@ -169,6 +169,8 @@ class PackageIndex:
         self._packages: dict[str, Package] = {}
         self._roots: dict[Path, Package] | None = None  # share/source folder -> package
         self._located: dict[Path, Path | None] = {}
+        self._python_roots: dict[str, list[Path]] = {}
+        self._site: list[Path] | None = None
         self.sources: dict[str, list[Path]] = {}  # every source folder of each name
         self.workspaces = [resolved(w) for w in workspaces]
         self.prefixes = [resolved(p) for p in prefixes]
@@ -227,6 +229,34 @@ class PackageIndex:
         folders = [f for f in (owner.source, owner.share) if f is not None]
         return any(dependency in package_dependencies(folder / "package.xml")
                    for folder in folders)
+
+    def python_roots(self, module: str) -> list[Path]:
+        """Return the workspace packages that install a top-level Python module.
+
+        A package installs the Python packages its build names (``setup.py`` of an
+        ament_python package, ``ament_python_install_package(name)`` of an ament_cmake
+        one), whatever the package itself is called.
+        """
+        found = self._python_roots.get(module)
+        if found is None:
+            found = [folder for folders in self.sources.values() for folder in folders
+                     if _installs_python(folder, module)]
+            self._python_roots[module] = found
+        return found
+
+    def site_packages(self) -> list[Path]:
+        """Return the Python folders of the installed prefixes (``lib/python3.*/...``).
+
+        A sourced workspace puts them on ``PYTHONPATH``; with only ``AMENT_PREFIX_PATH``
+        set, they are found here.
+        """
+        if self._site is None:
+            patterns = ("lib/python3*/site-packages", "local/lib/python3*/dist-packages",
+                        "lib/python3/dist-packages")
+            self._site = [folder for prefix in self.prefixes
+                          for pattern in patterns for folder in sorted(prefix.glob(pattern))
+                          if folder.is_dir()]
+        return self._site
 
     def names(self) -> list[str]:
         """Return every known package name, sorted."""
@@ -328,6 +358,20 @@ class PackageIndex:
             except OSError:
                 continue
         return sorted(names)
+
+
+def _installs_python(folder: Path, module: str) -> bool:
+    """Return whether a package's build installs the Python package ``module`` it holds."""
+    if not (folder / module / "__init__.py").is_file():
+        return False
+    if (folder / "setup.py").is_file() or (folder / "setup.cfg").is_file():
+        return True  # ament_python: its packages (find_packages) are installed
+    try:
+        cmake = read_file(folder / "CMakeLists.txt").decode(errors="replace")
+    except OSError:
+        return False
+    return re.search(r"ament_python_install_package\s*\(\s*" + re.escape(module) + r"\b",
+                     cmake) is not None
 
 
 def _installed_layout(path: Path, package: str) -> bool:

@@ -82,7 +82,10 @@ class ModelFinder(importlib.abc.MetaPathFinder):
 
 
 class WorkspaceFinder(importlib.abc.MetaPathFinder):
-    """Finds modules beside the launch file and Python packages of workspace packages."""
+    """Finds modules beside the launch file and the Python packages a build would install.
+
+    Those of workspace packages, and those of installed prefixes; pure Python only.
+    """
 
     def __init__(self, folders: list[Path], index: PackageIndex) -> None:
         self.folders = folders
@@ -96,10 +99,28 @@ class WorkspaceFinder(importlib.abc.MetaPathFinder):
         package = self.index.find(fullname)
         if package is not None and package.source is not None:
             roots.append(package.source)
+        roots += self.index.python_roots(fullname)
         for root in roots:
             spec = importlib.machinery.PathFinder.find_spec(fullname, [str(root)])
             if spec is not None and spec.origin and not spec.origin.endswith((".so", ".pyd")):
                 return spec
+        return None
+
+
+class InstalledFinder(importlib.abc.MetaPathFinder):
+    """Finds what Python's own finders do not, in the installed prefixes' Python folders."""
+
+    def __init__(self, index: PackageIndex) -> None:
+        self.index = index
+
+    def find_spec(self, fullname: str, path: Sequence[str] | None = None,
+                  target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
+        if "." in fullname or not self.index.site_packages():
+            return None
+        spec = importlib.machinery.PathFinder.find_spec(
+            fullname, [str(folder) for folder in self.index.site_packages()])
+        if spec is not None and spec.origin and not spec.origin.endswith((".so", ".pyd")):
+            return spec
         return None
 
 
@@ -196,15 +217,16 @@ def import_context(folders: list[Path], index: PackageIndex, report: Callable[[s
     saved_path = list(sys.path)
     front = [ModelFinder(report_name), WorkspaceFinder([], index)]
     user_folders = [str(f) for f in folders] + [str(w) for w in index.workspaces]
-    back = OpaqueFinder(report, user_folders, [str(f) for f in folders])
+    back = [InstalledFinder(index),
+            OpaqueFinder(report, user_folders, [str(f) for f in folders])]
     sys.meta_path[:0] = front
-    sys.meta_path.append(back)
+    sys.meta_path.extend(back)
     try:
         yield
     finally:
         sys.path[:] = saved_path  # a launch file's sys.path.append must not reach the next
         sys.path_importer_cache.clear()
-        for finder in (*front, back):
+        for finder in (*front, *back):
             if finder in sys.meta_path:
                 sys.meta_path.remove(finder)
         for name in set(sys.modules) - before:
