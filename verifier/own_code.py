@@ -43,3 +43,21 @@ def is_own_file(filename: str) -> bool:
 def is_launchverify_file(filename: str) -> bool:
     """Return whether ``filename`` is launchverify's own (frozen modules are Python's)."""
     return filename.startswith(own_roots())
+
+
+_STDLIB = os.path.dirname(os.__file__) + os.sep  # noqa: PTH120
+
+
+def for_launchverify(depth: int) -> bool:
+    """Return whether the code ``depth`` frames up runs on launchverify's behalf.
+
+    Python's standard library works for whoever called it: the first frame up the stack
+    that is not the standard library's (or frozen) decides.
+    """
+    frame = sys._getframe(depth + 1)
+    while frame is not None:
+        filename = frame.f_code.co_filename
+        if not filename.startswith((_STDLIB, "<frozen")):
+            return filename.startswith(own_roots())
+        frame = frame.f_back  # type: ignore[assignment]
+    return False

@@ -24,16 +24,16 @@ from collections.abc import Iterator
 from typing import Any
 
 from launchverify.models.launch_api.placeholders import WORLD, assumed, placeholder
-from launchverify.own_code import is_launchverify_file
+from launchverify.own_code import for_launchverify
 
 
 def _by_own_code(depth: int) -> bool:
     """Return whether the frame ``depth`` levels up runs launchverify's own code.
 
-    (Python's frozen modules, ``os.path`` among them, run for the launch file's code: they
-    see an unknown value as that code does.)
+    (Python's own modules, ``os.path`` among them, run for whoever called them: called by
+    the launch file's code, they see an unknown value as that code does.)
     """
-    return is_launchverify_file(sys._getframe(depth + 1).f_code.co_filename)
+    return for_launchverify(depth + 1)
 
 
 class Opaque(str):

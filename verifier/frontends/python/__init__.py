@@ -57,6 +57,7 @@ from launchverify.workspace.paths import resolved
 from launchverify.workspace.reading import read_file
 
 ENTRY_POINTS = ("generate_launch_description", "generate_test_description")
+_REAL_OPEN = builtins.open  # (robot_machine gives code other than ours another while it runs)
 
 
 class UnknownInput(Exception):
@@ -240,7 +241,7 @@ class _Session:
         try:
             with import_context([self.path.parent], frontend.index, self.module_unmodeled,
                                 self.name_unmodeled), sandbox(), _yaml_knows_opaque_files(), \
-                    robot_machine(self._seen):
+                    robot_machine(self._seen, self._open):
                 yield
         finally:
             sys.argv = saved_argv
@@ -354,7 +355,7 @@ class _Session:
             # file's code writes at run time: an input, not an error.
             return _unknown_content(path, mode)
         try:
-            return builtins.open(file, mode, *args, **kwargs)  # noqa: PTH123 (user code's open)
+            return _REAL_OPEN(file, mode, *args, **kwargs)
         except PermissionError as error:
             if not reading or error.errno != errno.EACCES:
                 raise

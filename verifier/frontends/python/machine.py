@@ -9,8 +9,11 @@ is run and the robot's files are not there, so the answers are unknown values:
   so) and gives an unknown result, whatever is asked of it (its output, its return code);
 - the host name is unknown;
 - whether a file outside what launchverify sees exists (``os.path.exists``,
-  ``Path.is_file``...) is an assumption (``assumed``): "no" in the plain world, "yes" in
-  the varied one, so a failure resting on it is not an error.
+  ``Path.is_file``...) is an assumption (``assumed``): "yes" in the plain world (the
+  launch is written for a robot that has its files), "no" in the varied one, so a
+  failure resting on it is not an error;
+- reading such a file, by the launch file or by a library it calls (a vendor's helper
+  reading ``/etc/robot/robot.yaml``), gives its content as unknown.
 
 launchverify's own code keeps Python's real functions. The audit hook and the worker's
 confinement stay the backstop: nothing here is what keeps a command from running.
@@ -18,11 +21,12 @@ confinement stay the backstop: nothing here is what keeps a command from running
 
 from __future__ import annotations
 
+import builtins
+import io
 import os
 import pathlib
 import socket
 import subprocess
-import sys
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import Any
@@ -30,7 +34,7 @@ from typing import Any
 from launchverify.frontends.python.sandbox import note_refusal
 from launchverify.models.launch_api.placeholders import assumed, has_placeholder
 from launchverify.models.launch_api.unknown import Opaque
-from launchverify.own_code import is_launchverify_file
+from launchverify.own_code import for_launchverify
 
 _COMMANDS = ("run", "call", "check_call", "check_output", "Popen", "getoutput",
              "getstatusoutput")
@@ -62,14 +66,14 @@ def _judged(found: bool, path: Any, seen: Callable[[str], bool]) -> bool:
         return False
     text = text.decode(errors="replace") if isinstance(text, bytes) else text
     if has_placeholder(text) or (pathlib.PurePath(text).is_absolute() and not seen(text)):
-        return assumed(False, True, f"whether {text} exists on the robot")
+        return assumed(True, False, f"whether {text} exists on the robot")
     return False
 
 
 def _existence(real: Callable[[Any], bool], seen: Callable[[str], bool]) -> Callable[[Any], bool]:
     """Wrap an existence check: a file the robot may have is an assumption."""
     def check(path: Any) -> bool:
-        if is_launchverify_file(sys._getframe(1).f_code.co_filename):
+        if for_launchverify(1):
             return real(path)
         return _judged(real(path), path, seen)
 
@@ -81,7 +85,7 @@ def _path_existence(real: Callable[..., bool], seen: Callable[[str], bool]) -> A
     """Wrap ``Path.exists`` and its kin the same way (a method: the path is ``self``)."""
     def method(self: pathlib.Path, *args: Any, **kwargs: Any) -> bool:
         found = real(self, *args, **kwargs)
-        if args or kwargs or is_launchverify_file(sys._getframe(1).f_code.co_filename):
+        if args or kwargs or for_launchverify(1):
             return found
         return _judged(found, self, seen)
 
@@ -89,18 +93,31 @@ def _path_existence(real: Callable[..., bool], seen: Callable[[str], bool]) -> A
     return method
 
 
+def _opening(real: Callable[..., Any], opener: Callable[..., Any]) -> Callable[..., Any]:
+    """Wrap ``open`` for code other than launchverify's: ``opener`` decides what it reads."""
+    def open_(file: Any, *args: Any, **kwargs: Any) -> Any:
+        if for_launchverify(1):
+            return real(file, *args, **kwargs)
+        return opener(file, *args, **kwargs)
+
+    return open_
+
+
 @contextmanager
-def robot_machine(seen: Callable[[str], bool]) -> Iterator[None]:
+def robot_machine(seen: Callable[[str], bool], opener: Callable[..., Any]) -> Iterator[None]:
     """Answer a launch file's questions about the machine as unknowns, for a block.
 
     ``seen(path)``: whether an absolute path lies where launchverify sees the files (the
-    workspace, its packages): there a missing file is a fact.
+    workspace, its packages): there a missing file is a fact. ``opener`` is ``open`` as
+    the launch file's code gets it (the robot's files read as unknown content).
     """
     patches: list[tuple[Any, str, Any]] = [
         *((subprocess, name, _command("subprocess", name)) for name in _COMMANDS),
         (os, "system", _command("os", "system")),
         (os, "popen", _command("os", "popen")),
         (socket, "gethostname", _hostname),
+        (builtins, "open", _opening(builtins.open, opener)),
+        (io, "open", _opening(io.open, opener)),
     ]
     for owner, name in ((os.path, "exists"), (os.path, "isfile"), (os.path, "isdir"),
                         (os.path, "lexists")):
