@@ -15,7 +15,11 @@ class UnmodeledConstruct(Rule):
     ## What it does
     Names each construct launchverify cannot evaluate statically: a launch file format it
     does not read yet, an `$(eval ...)` outside the modelled subset of Python, a loop whose
-    length depends on arguments, an opaque function.
+    length depends on arguments, an opaque function, a module that is not installed here,
+    a command the file runs while it loads. It also names a failure that rests only on
+    what launchverify assumed for a value it cannot know ("cannot tell"): evaluated again
+    with the other answers (an unknown list not empty, a robot file absent), the file did
+    not fail there, so it is no error (LV002) until the value is known.
 
     ## Why it matters
     Other rules stay quiet about what they cannot see, so a clean report covers less than
