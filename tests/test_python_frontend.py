@@ -460,3 +460,17 @@ def test_a_python_package_of_an_installed_prefix_is_imported(
     monkeypatch.setenv("AMENT_PREFIX_PATH", str(tmp_path / "prefix"))
     codes = [code for code, _, _ in findings(path)]  # (demo_nodes_cpp is not installed)
     assert "LV101" in codes and "LV002" not in codes
+
+
+def test_the_modules_ablation_leaves_only_launch_and_python(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    # bench/ablation.py takes every module but launch, launch_ros and Python's own away:
+    # the installed helper is then unknown, so the duplicate it makes is not seen, and no
+    # error appears in its place (its yaml import is unknown too, not missing).
+    path = _helper_workspace(tmp_path, "ament_python_install_package(acme_helpers)\n")
+    path.write_text(path.read_text().replace("from acme_helpers", "import yaml\nfrom acme_helpers"))
+    assert [code for code, _, _ in findings(path)] == ["LV101"]
+    monkeypatch.setenv("LAUNCHVERIFY_ABLATE", "modules")
+    found = findings(path)
+    assert [code for code, _, _ in found] == ["LV003", "LV003"]
+    assert all("is not modelled and not installed" in message for _, _, message in found)
