@@ -169,7 +169,7 @@ class PackageIndex:
         self._packages: dict[str, Package] = {}
         self._roots: dict[Path, Package] | None = None  # share/source folder -> package
         self._located: dict[Path, Path | None] = {}
-        self._python_roots: dict[str, list[Path]] = {}
+        self._python_packages: dict[str, list[Path]] | None = None  # name -> packages
         self._site: list[Path] | None = None
         self.sources: dict[str, list[Path]] = {}  # every source folder of each name
         self.workspaces = [resolved(w) for w in workspaces]
@@ -237,12 +237,14 @@ class PackageIndex:
         ament_python package, ``ament_python_install_package(name)`` of an ament_cmake
         one), whatever the package itself is called.
         """
-        found = self._python_roots.get(module)
-        if found is None:
-            found = [folder for folders in self.sources.values() for folder in folders
-                     if _installs_python(folder, module)]
-            self._python_roots[module] = found
-        return found
+        if self._python_packages is None:  # one listing of every package folder, once
+            self._python_packages = {}
+            for folders in self.sources.values():
+                for folder in folders:
+                    for name in _python_package_folders(folder):
+                        self._python_packages.setdefault(name, []).append(folder)
+        return [folder for folder in self._python_packages.get(module, [])
+                if _installs_python(folder, module)]
 
     def site_packages(self) -> list[Path]:
         """Return the Python folders of the installed prefixes (``lib/python3.*/...``).
@@ -358,6 +360,16 @@ class PackageIndex:
             except OSError:
                 continue
         return sorted(names)
+
+
+def _python_package_folders(folder: Path) -> list[str]:
+    """Return the names of a package folder's subfolders that are Python packages."""
+    try:
+        with os.scandir(folder) as entries:
+            return [entry.name for entry in entries if entry.is_dir(follow_symlinks=False)
+                    and os.path.isfile(os.path.join(entry.path, "__init__.py"))]  # noqa: PTH113, PTH118
+    except OSError:
+        return []
 
 
 def _installs_python(folder: Path, module: str) -> bool:

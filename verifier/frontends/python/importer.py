@@ -99,7 +99,8 @@ class WorkspaceFinder(importlib.abc.MetaPathFinder):
         package = self.index.find(fullname)
         if package is not None and package.source is not None:
             roots.append(package.source)
-        roots += self.index.python_roots(fullname)
+        if fullname not in sys.stdlib_module_names:
+            roots += self.index.python_roots(fullname)
         for root in roots:
             spec = importlib.machinery.PathFinder.find_spec(fullname, [str(root)])
             if spec is not None and spec.origin and not spec.origin.endswith((".so", ".pyd")):
