@@ -12,7 +12,11 @@ Two things keep an assumption from becoming an error claim:
   it (``'/'.join``, ``json.dumps``, ``os.path.join``, f-strings, a type error naming its
   type) keeps the mark, and a message that names it says it rests on an unknown.
 - The evaluation can be run again with every assumption the other way
-  (``varied()``): a failure that does not happen again rested on an assumption.
+  (``placeholders.varied_world``, ``frontends/python/assumptions.py``): a failure that
+  does not happen again rested on an assumption.
+
+A launch object given to an unknown value (``hand_over``) is marked: the unknown code
+holding it may add to it or run it.
 """
 
 from __future__ import annotations

@@ -55,7 +55,7 @@ class ArgumentDomain:
     defaults: set[str] = field(default_factory=set)  # default texts under the base view
     symbolic_default: bool = False  # some default depends on something unknown
     required: bool = False  # declared somewhere without a default
-    exposed: bool = True  # listed by ``ros2 launch --show-args`` for the root (or pinned)
+    exposed: bool = True  # part of the root's interface (see argument_domains)
 
     @property
     def boolean(self) -> bool:
@@ -113,7 +113,14 @@ def argument_domains(graph: LaunchGraph) -> dict[str, ArgumentDomain]:
                 c for c in domain.choices if c in record.choices)
             domain.choices = kept
             domain.choices_at = domain.choices_at or record.origin.span
-    listed = {argument.name for argument in graph.root_arguments}
+    # The root's interface: what it declares, and what an included file declares where
+    # an include on the way passes it by name. A knob only an included file declares, and
+    # nothing on the way passes, is that file's own (``ros2 launch --show-args`` lists
+    # it, but no user of the root is meant to turn it: autoware's sensing component's
+    # launch_pointcloud_container says so in its description).
+    listed = {argument.name for argument in graph.root_arguments
+              if argument.span.file == graph.root
+              or any(argument.name in passed for passed in argument.via_includes)}
     for domain in out.values():
         domain.exposed = domain.name in listed
     for name, value in graph.pinned.items():
