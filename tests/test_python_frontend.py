@@ -474,3 +474,31 @@ def test_the_modules_ablation_leaves_only_launch_and_python(
     found = findings(path)
     assert [code for code, _, _ in found] == ["LV003", "LV003"]
     assert all("is not modelled and not installed" in message for _, _, message in found)
+
+
+def test_an_event_handlers_function_is_called_with_an_unknown_event(tmp_path: Path) -> None:
+    # OnProcessExit(on_exit=lambda event, context: [...]) and OnProcessIO's on_stdout: the
+    # event is only known when it fires; what the function returns is walked.
+    body = """
+from launch.actions import ExecuteProcess, RegisterEventHandler
+from launch.event_handlers import OnProcessExit, OnProcessIO
+
+def generate_launch_description():
+    worker = ExecuteProcess(cmd=['sleep', '1'])
+    return LaunchDescription([
+        worker,
+        RegisterEventHandler(OnProcessIO(target_action=worker,
+                                         on_stdout=lambda event: print(event.text.decode()))),
+        RegisterEventHandler(OnProcessExit(target_action=worker, on_exit=lambda event, context: [
+            Node(package='demo_nodes_cpp', executable='talker', name='after_' + str(
+                event.returncode))])),
+        RegisterEventHandler(OnProcessExit(target_action=worker,
+                                           on_exit=lambda event, context: [1 / 0])),
+    ])
+"""
+    path = write(tmp_path, "handlers.launch.py", body)
+    found = findings(path)
+    assert [(code, line) for code, line, _ in found] == [("LV003", 19)]
+    assert "fails here on what only the event gives" in found[0][2]
+    report = run_check(CheckOptions(paths=[path], workspace=tmp_path))
+    assert [n.name is not None for n in report.graphs[0].nodes] == [True]

@@ -7,6 +7,7 @@ produces the IR the XML and YAML frontends produce for the same action.
 
 from __future__ import annotations
 
+import inspect
 import os
 from collections.abc import Callable, Iterable, Iterator
 from typing import Any
@@ -860,12 +861,35 @@ class RegisterEventHandler(Action):
         super().__init__(**kwargs)
         self.event_handler = event_handler
 
+    def _called(self, function: Callable[..., Any], handler: str, cv: Converter) -> Any:
+        """Return what a handler's function gives, called as launch calls it.
+
+        Its event and context are only known when it fires: unknown values. What it
+        returns is walked (what depends on them stays unknown); if it fails on them,
+        what it would start is unknown.
+        """
+        arguments = [Opaque(f"the event {handler} handles"),
+                     Opaque("the launch context when it fires")]
+        try:  # OnProcessIO's on_stdout takes the event alone, the others the context too
+            takes = len(inspect.signature(function).parameters)
+        except (TypeError, ValueError):
+            takes = 2
+        try:
+            return function(*arguments[:max(1, min(takes, 2))])
+        except Exception as error:  # the launch file's code
+            from launchverify.frontends.python.sandbox import TimeLimitExceeded
+
+            if isinstance(error, TimeLimitExceeded):
+                raise
+            cv.unmodeled(f"a callable in {handler} fails here on what only the event "
+                         "gives; what it starts is unknown", self._span)
+            return None
+
     def to_ir(self, cv: Converter) -> a.Action:
         handler = self.event_handler
         entities = getattr(handler, "entities", None)
         if callable(entities):
-            cv.unmodeled(f"a callable in {type(handler).__name__} is not modelled", self._span)
-            entities = None
+            entities = self._called(entities, type(handler).__name__, cv)
         target = getattr(handler, "target_action", None)
         ir_target = cv.action(target) if isinstance(target, LaunchDescriptionEntity) else None
         return a.RegisterEventHandler(**cv_common(self, cv), handler=a.EventHandler(
