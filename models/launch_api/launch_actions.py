@@ -25,6 +25,7 @@ from launchverify.models.launch_api.base import (
     normalized,
     typed,
 )
+from launchverify.models.launch_api.placeholders import read
 from launchverify.models.launch_api.unknown import Opaque
 from launchverify.span import Span
 
@@ -892,6 +893,8 @@ class RegisterEventHandler(Action):
             entities = self._called(entities, type(handler).__name__, cv)
         target = getattr(handler, "target_action", None)
         ir_target = cv.action(target) if isinstance(target, LaunchDescriptionEntity) else None
+        if isinstance(target, Opaque):  # a process of code launchverify cannot see
+            ir_target = a.OpaqueAction(span=self._span, description=read(str(target)))
         return a.RegisterEventHandler(**cv_common(self, cv), handler=a.EventHandler(
             event=getattr(handler, "event_name", type(handler).__name__),
             entities=cv.actions(entities if isinstance(entities, (list, tuple)) else

@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from launchverify.events import describe_action
 from launchverify.graph import ExecutedRecord, LaunchGraph
+from launchverify.ir.actions import OpaqueAction
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 from launchverify.smt import reasoner_for
 
@@ -57,8 +58,8 @@ class DanglingEventTarget(Rule):
             label = describe_action(handler.target)
             related = (Related(target_span, "the target"),) if target_span else ()
             if not runs:
-                if id(handler.target) in handed:
-                    continue  # code launchverify cannot see holds it and may run it
+                if id(handler.target) in handed or isinstance(handler.target, OpaqueAction):
+                    continue  # code launchverify cannot see holds it, or is it, and runs it
                 yield self.finding(handler.origin, related=related, target=label,
                                    why="is never executed (is it added to the launch?)")
                 continue

@@ -722,6 +722,9 @@ class Walker:
 
     def do_RegisterEventHandler(self, action: a.RegisterEventHandler, ctx: Ctx) -> None:
         handler = action.handler
+        if isinstance(handler.target, a.OpaqueAction):  # when unknown code's process acts
+            ctx = ctx.guarded(_opaque(f"{handler.event} of {handler.target.description}",
+                                      action.span))
         index = self.record_handler(ctx.origin(action.span), handler.event, handler.target,
                                     handler.handle_once, handler.filters,
                                     handler.custom_matcher, handler.filter_spans)
