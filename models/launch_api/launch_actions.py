@@ -25,9 +25,20 @@ from launchverify.models.launch_api.base import (
     normalized,
     typed,
 )
-from launchverify.models.launch_api.placeholders import read
+from launchverify.models.launch_api.placeholders import has_placeholder, read
 from launchverify.models.launch_api.unknown import Opaque
 from launchverify.span import Span
+
+
+def entities_of(value: Iterable[Any] | None) -> list[Any]:
+    """Return the entities a launch file gives as a collection.
+
+    An unknown collection (a vendor's ``make_actions()``) holds unknown actions: it is one
+    unknown entity, not an empty list.
+    """
+    if value is None:
+        return []
+    return [value] if isinstance(value, Opaque) else list(value)
 
 
 class LaunchDescription(LaunchDescriptionEntity):
@@ -36,7 +47,7 @@ class LaunchDescription(LaunchDescriptionEntity):
     def __init__(self, initial_entities: Iterable[Any] | None = None, *,
                  deprecated_reason: str | None = None) -> None:
         super().__init__()
-        self._entities: list[Any] = list(initial_entities) if initial_entities is not None else []
+        self._entities: list[Any] = entities_of(initial_entities)
         self._deprecated_reason = deprecated_reason
 
     @property
@@ -169,6 +180,10 @@ class DeclareLaunchArgument(Action):
         return self._choices
 
     def to_ir(self, cv: Converter) -> a.Action:
+        if has_placeholder(self._name):  # named by code launchverify cannot see: any name
+            cv.unmodeled(f"an argument named by code launchverify cannot see "
+                         f"({read(self._name)}) is declared here", self._span)
+            return a.OpaqueAction(span=self._span, description="an argument of unknown name")
         return a.DeclareArgument(**cv_common(self, cv), name=self._name,
                                  default=cv.opt_sub(self._default_value),
                                  description=self._description,
@@ -371,7 +386,7 @@ class GroupAction(Action):
     def __init__(self, actions: Iterable[Any], *, scoped: bool = True, forwarding: bool = True,
                  launch_configurations: Any = None, **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self._actions = list(actions)
+        self._actions = entities_of(actions)
         self._scoped, self._forwarding = bool(scoped), bool(forwarding)
         self._launch_configurations = launch_configurations
 
@@ -393,7 +408,7 @@ class TimerAction(Action):
     def __init__(self, *, period: Any, actions: Iterable[Any], cancel_on_shutdown: Any = True,
                  **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self._period, self._actions = period, list(actions)
+        self._period, self._actions = period, entities_of(actions)
         self._cancel_on_shutdown = cancel_on_shutdown
         self._canceled = False
 

@@ -38,7 +38,7 @@ def placeholder(kind: str, name: str) -> str:
     """
     clean = read(name).replace(OPEN, "<").replace(CLOSE, ">")  # no placeholder inside another
     inside = f"{kind}:{clean}".translate(_WRITE)
-    return OPEN + inside + (_VARIED_TEXT if assumed(False, True, clean) else "") + CLOSE
+    return OPEN + inside + (_VARIED_TEXT if assumed(False, True, clean, text=True) else "") + CLOSE
 
 
 def read(text: str) -> str:
@@ -86,6 +86,9 @@ class World:
     varied: bool = False
     answers: int = 0  # assumptions made so far
     fixed: int = 0  # of which the varied world cannot vary (an unknown value's type)
+    # of which the code could branch on (a truth, a length, a loop, a comparison), not
+    # only the text handed out: what it built may differ with another answer
+    branches: int = 0
     # what answered, in order, each once (the last few: for a finding's explanation)
     answered: dict[str, None] = field(default_factory=dict)
 
@@ -99,13 +102,16 @@ _T = TypeVar("_T")
 _REMEMBERED = 8
 
 
-def assumed(plain: _T, varied: _T, what: str = "a value", *, fixed: bool = False) -> _T:
+def assumed(plain: _T, varied: _T, what: str = "a value", *, fixed: bool = False,
+            text: bool = False) -> _T:
     """Return the answer the unknown ``what`` gives in the current world, and count it.
 
-    ``fixed``: the answer is the same in both worlds (the varied run cannot tell).
+    ``fixed``: the answer is the same in both worlds (the varied run cannot tell);
+    ``text``: only what an unknown text holds, which no code branched on yet.
     """
     WORLD.answers += 1
     WORLD.fixed += fixed
+    WORLD.branches += not text
     answered = WORLD.answered
     answered.pop(what, None)
     answered[what] = None

@@ -49,6 +49,7 @@ class Opaque(str):
     """
 
     _description: str
+    _span: Any = None
 
     def __new__(cls, description: str) -> Opaque:
         value = super().__new__(cls, placeholder("opaque", description))
@@ -56,8 +57,12 @@ class Opaque(str):
         return value
 
     def __call__(self, *args: Any, **kwargs: Any) -> Opaque:
+        from launchverify.models.launch_api.base import caller_span
+
         hand_over(args, kwargs)
-        return Opaque(f"{self._description}()")
+        result = Opaque(f"{self._description}()")
+        result._span = caller_span()  # where the launch file called it (if it is an action)
+        return result
 
     @property  # type: ignore[misc]
     def __class__(self) -> type:

@@ -43,6 +43,7 @@ from launchverify.models.launch_api import runtime
 from launchverify.models.launch_api.context import LaunchContext, MissingConfiguration
 from launchverify.models.launch_api.launch_actions import LaunchDescription
 from launchverify.models.launch_api.placeholders import (
+    WORLD,
     UnknownMapping,
     has_placeholder,
     placeholder,
@@ -108,11 +109,16 @@ class PythonFrontend:
 
         def evaluate(into: ProblemSink) -> a.LaunchFile | None:
             session = _Session(self, path, into)
+            branches = WORLD.branches
             description = session.run_module(code)
             if description is None:
                 return None
             with session.environment():  # models may call back into the file's code
-                return session.convert(description)
+                launch = session.convert(description)
+            if launch is not None and WORLD.branches != branches:
+                launch = dataclasses.replace(launch, actions=(*launch.actions,
+                                                              _assumed(launch.span)))
+            return launch
 
         def again() -> list[Problem]:
             varied = ProblemSink()
@@ -290,6 +296,8 @@ class _Session:
         self._finalizers()
         if isinstance(result, tuple) and result:
             result = result[0]  # generate_test_description returns (description, context)
+        if isinstance(result, Opaque):  # a vendor's helper built it: what it holds is unknown
+            return LaunchDescription([result])
         if not isinstance(result, LaunchDescription):
             self.sink.evaluation(
                 "generate_launch_description() must return a LaunchDescription, got "
@@ -391,6 +399,14 @@ class _Session:
 
     def _run_opaque(self, model: Any, configurations: Mapping[str, str],
                     current: Path) -> a.OpaqueResult:
+        branches = WORLD.branches
+        result = self._run_opaque_body(model, configurations, current)
+        if WORLD.branches == branches:
+            return result
+        return dataclasses.replace(result, actions=(*result.actions, _assumed(model._span)))
+
+    def _run_opaque_body(self, model: Any, configurations: Mapping[str, str],
+                         current: Path) -> a.OpaqueResult:
         sink = ProblemSink()
         saved, saved_lookups, saved_reported = self.sink, self.lookups, self.reported
         # each run says what it met, whatever earlier runs (other roots) said: its result
@@ -422,6 +438,16 @@ class _Session:
                               lookups=lookups,
                               mentions=tuple(sorted(mentioned_strings(model.function))),
                               reads_all=context.launch_configurations.whole)
+
+
+def _assumed(span: Span) -> a.Action:
+    """Return what a description holds once its code branched on an unknown value.
+
+    A loop over a vendor's list, an ``if`` on its flag: another answer may have built more
+    or less, so no rule may claim what the description lacks.
+    """
+    return a.OpaqueAction(span=span, description="what the code builds with other answers "
+                                                 "about values launchverify cannot know")
 
 
 def _problems(result: a.OpaqueResult) -> list[Problem]:

@@ -170,9 +170,10 @@ class PythonConverter:
             if result is not None and handed(entity):
                 self.handed.append(result)
         elif isinstance(entity, Opaque):  # what it does is unknown: declare, set, start
+            made = entity._span if isinstance(entity._span, Span) else self._fallback
             self._unmodeled(f"{read(str(entity))} is an action of code launchverify cannot "
-                            "see; what it does is unknown", self._fallback)
-            result = a.OpaqueAction(span=self._fallback, description=read(str(entity)))
+                            "see; what it does is unknown", made)
+            result = a.OpaqueAction(span=made, description=read(str(entity)))
         else:
             result = None
             span = getattr(entity, "_span", None)
