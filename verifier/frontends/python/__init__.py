@@ -43,7 +43,6 @@ from launchverify.models.launch_api import runtime
 from launchverify.models.launch_api.context import LaunchContext, MissingConfiguration
 from launchverify.models.launch_api.launch_actions import LaunchDescription
 from launchverify.models.launch_api.placeholders import (
-    WORLD,
     UnknownMapping,
     has_placeholder,
     placeholder,
@@ -105,29 +104,20 @@ class PythonFrontend:
         except (ValueError, MemoryError, RecursionError) as error:
             sink.parse(f"invalid Python: {error}", Span.of_file(path))
             return None
-        start = len(sink.problems)
-
-        def evaluate(into: ProblemSink) -> a.LaunchFile | None:
+        def evaluate() -> tuple[a.LaunchFile | None, list[Problem]]:
+            into = ProblemSink()
             session = _Session(self, path, into)
-            branches = WORLD.branches
             description = session.run_module(code)
             if description is None:
-                return None
+                return None, into.problems
             with session.environment():  # models may call back into the file's code
-                launch = session.convert(description)
-            if launch is not None and WORLD.branches != branches:
-                launch = dataclasses.replace(launch, actions=(*launch.actions,
-                                                              _assumed(launch.span)))
-            return launch
+                return session.convert(description), into.problems
 
-        def again() -> list[Problem]:
-            varied = ProblemSink()
-            evaluate(varied)
-            return varied.problems
-
-        launch, problems = checked(lambda: evaluate(sink), lambda _: sink.problems[start:],
-                                   again)
-        sink.problems[start:] = problems
+        done = checked(evaluate, lambda launch: None if launch is None else launch.actions)
+        sink.problems.extend(done.problems)
+        launch = done.result
+        if launch is not None and done.depends:
+            launch = dataclasses.replace(launch, actions=(*launch.actions, _assumed(launch.span)))
         return launch
 
 
@@ -391,22 +381,19 @@ class _Session:
     def run_opaque(self, model: Any, configurations: Mapping[str, str],
                    current: Path) -> a.OpaqueResult:
         """Run an OpaqueFunction's body with a concrete context."""
-        def run() -> a.OpaqueResult:
-            return self._run_opaque(model, configurations, current)
+        def run() -> tuple[a.OpaqueResult, list[Problem]]:
+            result = self._run_opaque(model, configurations, current)
+            return result, _problems(result)
 
-        result, problems = checked(run, _problems, lambda: _problems(run()))
-        return dataclasses.replace(result, problems=tuple(problems))
+        done = checked(run, lambda result: result.actions)
+        result = dataclasses.replace(done.result, problems=tuple(done.problems))
+        if done.depends:
+            result = dataclasses.replace(result, actions=(*result.actions,
+                                                          _assumed(model._span)))
+        return result
 
     def _run_opaque(self, model: Any, configurations: Mapping[str, str],
                     current: Path) -> a.OpaqueResult:
-        branches = WORLD.branches
-        result = self._run_opaque_body(model, configurations, current)
-        if WORLD.branches == branches:
-            return result
-        return dataclasses.replace(result, actions=(*result.actions, _assumed(model._span)))
-
-    def _run_opaque_body(self, model: Any, configurations: Mapping[str, str],
-                         current: Path) -> a.OpaqueResult:
         sink = ProblemSink()
         saved, saved_lookups, saved_reported = self.sink, self.lookups, self.reported
         # each run says what it met, whatever earlier runs (other roots) said: its result
