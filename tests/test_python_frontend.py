@@ -468,7 +468,8 @@ def test_the_modules_ablation_leaves_only_launch_and_python(
     # the installed helper is then unknown, so the duplicate it makes is not seen, and no
     # error appears in its place (its yaml import is unknown too, not missing).
     path = _helper_workspace(tmp_path, "ament_python_install_package(acme_helpers)\n")
-    path.write_text(path.read_text().replace("from acme_helpers", "import yaml\nfrom acme_helpers"))
+    source = path.read_text()
+    path.write_text(source.replace("from acme_helpers", "import yaml\nfrom acme_helpers"))
     assert [code for code, _, _ in findings(path)] == ["LV101"]
     monkeypatch.setenv("LAUNCHVERIFY_ABLATE", "modules")
     found = findings(path)
