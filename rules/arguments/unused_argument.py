@@ -45,7 +45,9 @@ class UnusedArgument(Rule):
     info. A file that mirrors the interface of another of its family (a stand-in in the same
     folder, or the same file name in another package, sharing most of its declared
     arguments) declares that family's arguments on purpose: an argument the other file
-    uses is an info there.
+    uses is an info there. So is an argument passed by an includer that picks the file by an
+    argument's value (`$(var sensor_model)_launch/launch/sensing.launch.xml`): every
+    implementation of that interface declares what the includer passes.
     """
 
     code = "LV202"
@@ -53,6 +55,8 @@ class UnusedArgument(Rule):
     severity = Severity.WARNING
     message = "argument {name!r} is declared but never used{note}"
     mirror = "; it keeps the interface of {other}, which uses it"
+    picked = ("; {includer} picks this file by an argument's value and passes it: every "
+              "file it may pick declares it")
     no_node = "; no ROS node starts here to take it"
     every_context = True
 
@@ -73,6 +77,13 @@ class UnusedArgument(Rule):
                 yield dataclasses.replace(finding, severity=Severity.INFO)
                 continue
             other = ctx.interfaces.mirrored(span.file, argument.name)
+            if other is None and (passed := ctx.interfaces.picked_by_name(
+                    span.file, argument.name)) is not None:
+                finding = self.finding(argument.origin, name=argument.name,
+                                       note=self.picked.format(includer=passed.file.name),
+                                       related=(Related(passed, "passed here"),))
+                yield dataclasses.replace(finding, severity=Severity.INFO)
+                continue
             if other is None:
                 yield self.finding(argument.origin, name=argument.name, note="")
                 continue

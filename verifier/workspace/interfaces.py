@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from launchverify.graph import LaunchGraph
+from launchverify.ir import subst as s
 from launchverify.span import Span
 
 # A file mirrors another when they share at least this many declared arguments, and these
@@ -44,6 +45,7 @@ class Interfaces:
         self._of: dict[Path, Interface] = {}
         self._by_folder: dict[Path, list[Path]] = {}
         self._by_name: dict[str, list[Path]] = {}
+        self._picked: dict[tuple[str, str], Span] | None = None
         for path in sorted(self._graphs):
             self._by_folder.setdefault(path.parent, []).append(path)
             self._by_name.setdefault(path.name, []).append(path)
@@ -79,3 +81,37 @@ class Interfaces:
             if shared >= MIRROR_SHARED and shared >= MIRROR_SHARE * len(own.declared):
                 return interface.declared[name]
         return None
+
+    def picked_by_name(self, file: Path, name: str) -> Span | None:
+        """Return where an includer picking ``file`` by an argument's value passes ``name``.
+
+        Such an includer (``$(var sensor_model)_launch/.../sensing.launch.xml``) picks
+        one file of that name among packages, and every one of them declares what the
+        includer passes, whether or not it uses it.
+        """
+        if self._picked is None:
+            self._picked = {}
+            for graph in self._graphs.values():
+                for include in graph.includes:
+                    picked = _picked_name(include.action.path)
+                    for argument in include.action.arguments:
+                        if picked is not None and isinstance(argument.name, s.Text):
+                            self._picked.setdefault((picked, argument.name.text), argument.span)
+        return self._picked.get((file.name, name))
+
+
+def _picked_name(location: s.Sub) -> str | None:
+    """Return the file name an include's location ends with, if an argument picks its folder.
+
+    (``$(var pkg)/launch/x.launch.xml``, or a ``PathJoinSubstitution`` of the same.)
+    """
+    parts = location.parts if isinstance(location, (s.Concat, s.PathJoin)) else (location,)
+    tail = parts[-1]
+    if not isinstance(tail, s.Text):
+        return None
+    name = tail.text.rsplit("/", 1)[-1]
+    joined = isinstance(location, s.PathJoin) or "/" in tail.text
+    if not joined or not name or not any(
+            isinstance(sub, s.LaunchConfig) for part in parts[:-1] for sub in s.walk(part)):
+        return None
+    return name
