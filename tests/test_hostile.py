@@ -13,6 +13,7 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import re
 import socket
 import subprocess
 import sys
@@ -621,3 +622,90 @@ def test_without_landlock_nothing_is_written_either(outcome: Outcome,
     assert _snapshot(outcome.root, outcome.root / "tmp") == before
     for name in ("sentinel.launch.xml", "sentinel.launch.py"):
         assert [f.code for f in report.findings if f.span.file.name == name] == ["LV101"]
+
+
+# --------------------------------------------------------------------------- the terminal
+
+# Names and source lines that would act on a reviewer's terminal if printed raw: erase and
+# move (CSI), the clipboard (OSC 52), the window title, a forged finding line, a bidi
+# override, C1 controls, NUL.
+FORGED = "src/evil.launch.py:1:1: error LV999 [forged] all clear"
+TERMINAL_ATTACKS = {
+    "names.launch.py": (
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        f"NAME = 'cam\\x1b[2K\\x1b[1A\\x1b]52;c;ZXZpbA==\\x07\\x1b]0;title\\x07\\n{FORGED}'\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='demo_nodes_cpp', executable='talker', name=NAME),\n"
+        "        Node(package='demo_nodes_cpp', executable='listener', name=NAME),\n"
+        "    ])\n"),
+    "bidi.launch.py": (
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        "NAME = 'ok\\u202e\\u2066gnp\\x85\\x9b31m\\x00'\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='demo_nodes_cpp', executable='talker', name=NAME),\n"
+        "        Node(package='demo_nodes_cpp', executable='listener', name=NAME),\n"
+        "    ])\n"),
+    # control characters in the source itself: a parse error's code frame shows the line
+    "frame.launch.xml": "<launch>\n<node name=\"x\x1b[31mred\x1b]52;c;eA==\x07\" <\n",
+}
+
+
+def _terminal_workspace(root: Path) -> Path:
+    workspace = root / "ws"
+    workspace.mkdir()
+    (workspace / "sentinel.launch.xml").write_text(SENTINEL_XML)
+    for name, content in TERMINAL_ATTACKS.items():
+        (workspace / name).write_text(content)
+    (workspace / "binary.launch.xml").write_bytes(
+        b"<launch>\x00\x1b[2J\x1b]52;c;eA==\x07\xff\xfe<node\n" * 3)
+    return workspace
+
+
+def _raw_controls(text: str) -> list[str]:
+    """Return the characters in ``text`` a terminal would act on (tab and LF aside)."""
+    bidi = {0x061C, 0x200E, 0x200F, *range(0x202A, 0x202F), *range(0x2066, 0x206A)}
+    return sorted({repr(c) for c in text
+                   if (ord(c) < 0x20 and c not in "\t\n") or 0x7F <= ord(c) < 0xA0
+                   or ord(c) in bidi})
+
+
+@pytest.mark.parametrize("output", ["text", "github", "junit", "html", "graph"])
+def test_nothing_from_a_checked_file_acts_on_the_terminal(tmp_path: Path, output: str) -> None:
+    workspace = _terminal_workspace(tmp_path)
+    base = [sys.executable, "-m", "launchverify"]
+    command = {
+        "text": [*base, "check", str(workspace), "--color", "always", "--explain"],
+        "github": [*base, "check", str(workspace), "--format", "github"],
+        "junit": [*base, "check", str(workspace), "--format", "junit"],
+        "html": [*base, "report", str(workspace), "-o", str(tmp_path / "report.html")],
+        "graph": [*base, "graph", str(workspace / "names.launch.py"), "--format", "text"],
+    }[output]
+    done = subprocess.run(command, capture_output=True, text=True, cwd=tmp_path,
+                          timeout=120, check=False, errors="surrogateescape")
+    shown = done.stdout + done.stderr
+    if output == "html":
+        shown += (tmp_path / "report.html").read_text(errors="surrogateescape")
+    if output == "text":  # colours are launchverify's own: the only ESC allowed
+        shown = re.sub(r"\x1b\[[0-9;]*m", "", shown)
+    assert done.returncode in (0, 1), shown[-2000:]
+    assert not _raw_controls(shown), _raw_controls(shown)
+    if output != "html":  # there a line feed is a space
+        assert not any(line.startswith(FORGED) for line in shown.splitlines())
+    if output != "graph":
+        assert "twin" in shown  # the sentinel's finding is still there
+        assert "names.launch.py" in shown and "bidi.launch.py" in shown
+    assert "\\x1b" in shown or "\\u001b" in shown or output == "html"
+
+
+def test_json_keeps_names_exact(tmp_path: Path) -> None:
+    workspace = _terminal_workspace(tmp_path)
+    done = subprocess.run([sys.executable, "-m", "launchverify", "check", str(workspace),
+                           "--format", "json"], capture_output=True, text=True, cwd=tmp_path,
+                          timeout=120, check=False)
+    report = json.loads(done.stdout)
+    messages = " ".join(f["message"] for f in report["findings"])
+    assert "\x1b]52;c;ZXZpbA==\x07" in messages and "\u202e" in messages

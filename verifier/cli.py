@@ -14,7 +14,7 @@ import sys
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager, nullcontext
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TextIO
+from typing import TYPE_CHECKING, Any, TextIO, cast
 
 from launchverify import __version__
 from launchverify.ament import excluded_by_ament
@@ -38,6 +38,7 @@ from launchverify.findings.cache import ResultCache, default_cache_dir, disabled
 from launchverify.findings.fixes import Outcome, fix_all, hidden, unified_diff
 from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
+from launchverify.render.inert import inert, inert_block
 from launchverify.rule import Rule, Severity
 from launchverify.topology import command as topology_command
 from launchverify.workspace import reading
@@ -274,12 +275,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         with paused:
             return handlers[args.command](args)
     except (UsageError, RegistryError, ConfigError, BaselineError) as error:
-        print(f"launchverify: error: {error}", file=sys.stderr)
+        print(inert(f"launchverify: error: {error}"), file=sys.stderr)
         return EXIT_ERROR
     except KeyboardInterrupt:
         return EXIT_ERROR
     except Exception as error:  # a bug of ours: say so plainly, never a traceback
-        print(f"launchverify: internal error: {type(error).__name__}: {error}\n"
+        print(inert(f"launchverify: internal error: {type(error).__name__}: {error}") + "\n"
               "Please report this with the launch file that caused it.", file=sys.stderr)
         return EXIT_ERROR
 
@@ -432,8 +433,8 @@ def _diff(args: argparse.Namespace, options: CheckOptions, report: Report) -> in
     if args.output is not None:
         args.output.write_text(text, encoding="utf-8")
     else:
-        with _output_may_close():
-            sys.stdout.write(text)
+        with _output_may_close():  # exact for a pipe (patch), inert for a reviewer's eyes
+            sys.stdout.write(inert_block(text) if sys.stdout.isatty() else text)
     if not args.quiet:
         count = outcome.count
         print(f"Would fix {count} finding{'s' if count != 1 else ''}"
@@ -677,7 +678,10 @@ def _graph(args: argparse.Namespace) -> int:
         if args.format == "json":
             render_graph_json(graph, sys.stdout, symbolic=args.symbolic, interfaces=interfaces)
         else:
-            render_graph_text(graph, sys.stdout, symbolic=args.symbolic, interfaces=interfaces)
+            from launchverify.render.inert import InertWriter
+
+            render_graph_text(graph, cast(TextIO, InertWriter(sys.stdout)),
+                              symbolic=args.symbolic, interfaces=interfaces)
     return _graph_stopped(graph, args.format)
 
 
@@ -695,7 +699,7 @@ def _graph_stopped(graph: LaunchGraph, output_format: str) -> int:
         return EXIT_OK
     for problem in stoppers:
         span = problem.span
-        print(f"{display_path(span.file)}:{span.line}:{span.column}: {problem.message}",
+        print(inert(f"{display_path(span.file)}:{span.line}:{span.column}: {problem.message}"),
               file=sys.stderr)
     what = "graph" if output_format == "json" else "the graph above"
     print(f"launchverify: {what} is incomplete: the launch stops at the error(s) above",

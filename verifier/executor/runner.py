@@ -69,8 +69,10 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
     except PlanError as error:
         raise UsageError(str(error)) from error
     if options.dry_run:
-        for line in describe(plan):
-            out.write(line + "\n")
+        from launchverify.render.inert import inert
+
+        for line in describe(plan):  # names and values from the checked files
+            out.write(inert(line) + "\n")
         return 0, report
     run_dir.mkdir(parents=True, exist_ok=True)
     err.write(f"launchverify: logging to {run_dir}\n")

@@ -2,7 +2,8 @@
 
 One ``::error``/``::warning``/``::notice`` line per finding. Values are escaped as the
 Actions runner unescapes them, so a message with a newline or a path with a comma
-arrives intact instead of cutting the command short. Columns are sent only for a
+arrives intact instead of cutting the command short; other control characters (ESC,
+bidi overrides) are shown visibly, never sent raw. Columns are sent only for a
 finding on one line: GitHub rejects ``col`` when ``line`` and ``endLine`` differ.
 """
 
@@ -12,14 +13,20 @@ from typing import TextIO
 
 from launchverify.engine import Report
 from launchverify.findings.fixes import fix_note
+from launchverify.render.inert import inert_block
 from launchverify.rule import Finding, Severity
 
 COMMANDS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
 
 
 def escape_data(text: str) -> str:
-    """Escape the message part of a workflow command (after ``::``)."""
-    return text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+    """Escape the message part of a workflow command (after ``::``).
+
+    Line breaks are sent as the runner expects them; other control characters are shown
+    visibly (``inert_block``): the runner prints the message to the log, a terminal of
+    sorts.
+    """
+    return inert_block(text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A"))
 
 
 def escape_property(text: str) -> str:

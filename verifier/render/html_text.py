@@ -11,12 +11,17 @@ import html
 from pathlib import Path
 
 from launchverify.engine import Report
+from launchverify.render.inert import inert_block
 from launchverify.span import Span
 
 
 def esc(value: object) -> str:
-    """Return ``value`` as text safe in HTML and SVG content and quoted attributes."""
-    return html.escape(str(value), quote=True)
+    """Return ``value`` as text safe in HTML and SVG content and quoted attributes.
+
+    Control characters and bidi overrides are shown visibly (``inert_block``): they
+    could reorder what a reviewer reads.
+    """
+    return html.escape(inert_block(str(value)), quote=True)
 
 
 def clip(text: str, limit: int) -> str:

@@ -19,6 +19,7 @@ from typing import TextIO
 
 from launchverify.engine import Report
 from launchverify.findings.fixes import fix_note
+from launchverify.render.inert import inert, inert_block
 from launchverify.rule import Finding, Severity
 
 # Characters XML 1.0 cannot carry even as character references.
@@ -26,12 +27,18 @@ _NOT_XML = re.compile("[^\t\n\r\x20-\ud7ff\ue000-\ufffd\U00010000-\U0010ffff]")
 
 
 def xml_safe(text: str) -> str:
-    """Return ``text`` with characters XML cannot hold spelled as Python escapes."""
-    return _NOT_XML.sub(lambda match: ascii(match.group())[1:-1], text)
+    r"""Return ``text`` with what XML cannot hold, or a viewer would act on, spelled out.
+
+    Control characters become visible escapes (ESC as ``\x1b``; see ``inert_block``).
+    """
+    return _NOT_XML.sub(lambda match: ascii(match.group())[1:-1], inert_block(text))
 
 
 def finding_line(finding: Finding) -> str:
-    """Return ``line:col CODE [slug] message`` (with the argument values, when known)."""
+    """Return ``line:col CODE [slug] message`` (with the argument values, when known).
+
+    Callers listing several make each ``inert``: a name's line feed would forge a line.
+    """
     span = finding.span
     text = f"{span.line}:{span.column} {finding.code} [{finding.slug}] {finding.message}"
     if finding.witness:
@@ -78,7 +85,7 @@ def junit_tree(report: Report, checked: list[Path] | None = None) -> ET.Element:
         findings = by_file.get(path, [])
         if not findings:
             continue
-        listing = "\n".join(xml_safe(finding_line(f)) for f in findings)
+        listing = "\n".join(xml_safe(inert(finding_line(f))) for f in findings)
         worst = max((f.severity for f in findings), key=lambda s: s.rank)
         if worst is Severity.INFO:
             ET.SubElement(case, "system-out").text = listing

@@ -9,11 +9,11 @@ from __future__ import annotations
 from typing import TextIO
 
 from rich.console import Console
-from rich.control import strip_control_codes
 from rich.text import Text
 
 from launchverify.engine import Report
 from launchverify.findings.fixes import applicable, fixable, hidden
+from launchverify.render.inert import inert
 from launchverify.rule import Finding, Severity
 from launchverify.workspace.sources import source_line, source_lines
 
@@ -43,8 +43,9 @@ class Lines:
 
     Without colours rich only joins the pieces, at about 100 microseconds a line (a third
     of a cached run of navigation2); the plain path writes what rich would, directly:
-    its control characters dropped and tabs expanded as rich does. Pieces are never markup,
-    so a message's ``[brackets]`` or ``:emoji:`` codes print as they are.
+    tabs expanded as rich does. Pieces are never markup, so a message's ``[brackets]`` or
+    ``:emoji:`` codes print as they are, and every control character in them is shown
+    visibly (``inert``): names and source lines come from the checked files.
     """
 
     def __init__(self, out: TextIO, color: bool | None) -> None:
@@ -57,7 +58,7 @@ class Lines:
     def __call__(self, *pieces: Piece, style: str | None = None) -> None:
         """Write one line."""
         if self.plain:
-            text = strip_control_codes(
+            text = inert(
                 "".join(piece if isinstance(piece, str) else piece[0] for piece in pieces))
             if "\t" in text:  # tab stops count terminal cells (wide, zero-width): rich's way
                 cells = Text(text)
@@ -65,7 +66,9 @@ class Lines:
                 text = cells.plain
             self.out.write(text + "\n")
         else:
-            self.console.print(Text.assemble(*pieces, style=style or ""))
+            safe = [inert(piece) if isinstance(piece, str) else (inert(piece[0]), piece[1])
+                    for piece in pieces]
+            self.console.print(Text.assemble(*safe, style=style or ""))
 
 
 def render_text(report: Report, out: TextIO, *, color: bool | None = None,

@@ -11,7 +11,7 @@ import json
 import sys
 import time
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TextIO
+from typing import TYPE_CHECKING, Any, TextIO, cast
 
 from launchverify.workspace.paths import display_path
 
@@ -67,8 +67,11 @@ def run(args: argparse.Namespace, out: TextIO | None = None) -> int:
                    "seconds": round(elapsed, 3)}, stream, indent=2)
         stream.write("\n")
     else:
+        from launchverify.render.inert import InertWriter
+
+        safe = cast(TextIO, InertWriter(stream))  # names come from the checked sources
         for interface in interfaces:
-            _print_text(interface, stream)
+            _print_text(interface, safe)
         count = sum(len(i.endpoints) for i in interfaces)
         print(f"{len(interfaces)} executables or components, {count} endpoints, "
               f"{cache_stats()['parsed']} files parsed in {elapsed:.2f} s", file=stream)
@@ -106,8 +109,8 @@ def _print_text(interface: NodeInterface, stream: TextIO) -> None:
         line = f"  {e.kind.value:<14} {name:<32} {e.type or '?':<40} {where}"
         if e.via:
             line += f"  [{e.via}]"
-        if e.unresolved_reason:
-            line += f"\n  {'':<14} unknown: {e.unresolved_reason}"
         print(line, file=stream)
+        if e.unresolved_reason:
+            print(f"  {'':<14} unknown: {e.unresolved_reason}", file=stream)
     for problem in interface.problems:
         print(f"  note: {problem}", file=stream)

@@ -33,6 +33,7 @@ def source_line(path: Path, number: int) -> str:
 @lru_cache(maxsize=512)
 def _read(path: Path, size: int, modified: int) -> tuple[str, ...]:
     try:
-        return tuple(read_text(path, prefix=limit()).splitlines())
+        text = read_text(path, prefix=limit())
     except OSError:
         return ()
+    return () if "\x00" in text else tuple(text.splitlines())  # no frame from a binary
