@@ -709,3 +709,72 @@ def test_json_keeps_names_exact(tmp_path: Path) -> None:
     report = json.loads(done.stdout)
     messages = " ".join(f["message"] for f in report["findings"])
     assert "\x1b]52;c;ZXZpbA==\x07" in messages and "\u202e" in messages
+
+
+# --------------------------------------------------------------------------- configuration
+
+READS_OUTSIDE = """\
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    try:
+        name = open({secret!r}).read().strip()
+    except Exception:
+        name = 'unread'
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name=name),
+        Node(package='demo_nodes_cpp', executable='listener', name=name),
+    ])
+"""
+
+
+def _widening_workspace(root: Path) -> tuple[Path, Path]:
+    outside = root / "vault"
+    outside.mkdir()
+    (outside / "secret.txt").write_text(SECRET)
+    workspace = root / "ws"
+    workspace.mkdir()
+    (workspace / ".git").mkdir()  # the workspace's root, as a clone has it
+    (workspace / "launchverify.toml").write_text(
+        f'package-paths = ["{outside}", "/etc"]\nworkspace = "{root}"\n')
+    (workspace / "reads.launch.py").write_text(
+        READS_OUTSIDE.format(secret=str(outside / "secret.txt")))
+    return workspace, outside
+
+
+def _check(workspace: Path, *extra: str, env: dict[str, str] | None = None
+           ) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "launchverify", "check", str(workspace),
+                           "--no-cache", *extra], capture_output=True, text=True,
+                          cwd=workspace.parent, timeout=120, check=False,
+                          env={**os.environ, **(env or {})})
+
+
+def test_a_configuration_in_the_checked_tree_widens_nothing(tmp_path: Path) -> None:
+    workspace, _ = _widening_workspace(tmp_path)
+    done = _check(workspace)
+    assert SECRET not in done.stdout + done.stderr
+    assert "secret.txt is outside the workspace" in done.stdout  # read as an unknown
+    assert "names package path" in done.stderr and "not read" in done.stderr
+    assert "names workspace" in done.stderr
+
+
+@pytest.mark.parametrize("how", ["option", "variable"])
+def test_the_user_confirms_a_folder_outside(tmp_path: Path, how: str) -> None:
+    workspace, outside = _widening_workspace(tmp_path)
+    if how == "option":
+        done = _check(workspace, "--package-path", str(outside))
+    else:
+        done = _check(workspace, env={"LAUNCHVERIFY_PACKAGE_PATH": str(outside)})
+    assert SECRET in done.stdout  # the user's own decision: the file may be read
+    assert "'/etc', outside the workspace: not read" in done.stderr
+
+
+def test_a_configuration_of_the_user_is_trusted(tmp_path: Path) -> None:
+    workspace, outside = _widening_workspace(tmp_path)
+    mine = tmp_path / "mine.toml"
+    (workspace / "launchverify.toml").rename(mine)
+    mine.write_text(f'package-paths = ["{outside}"]\n')
+    done = _check(workspace, "--config", str(mine))
+    assert SECRET in done.stdout and "not read" not in done.stderr

@@ -7,6 +7,7 @@ one, 2 for a usage error or an internal failure (never a traceback on the user's
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import gc
 import json
 import os
@@ -19,7 +20,14 @@ from typing import TYPE_CHECKING, Any, TextIO, cast
 from launchverify import __version__
 from launchverify.ament import excluded_by_ament
 from launchverify.command import LONG_RUNNING
-from launchverify.config import Config, ConfigError, find_config, load_config
+from launchverify.config import (
+    Config,
+    ConfigError,
+    confined,
+    confirmed_package_paths,
+    find_config,
+    load_config,
+)
 from launchverify.engine import (
     DEFAULT_TIME_LIMIT,
     CheckOptions,
@@ -43,6 +51,7 @@ from launchverify.rule import Rule, Severity
 from launchverify.topology import command as topology_command
 from launchverify.workspace import reading
 from launchverify.workspace.includers import Includers
+from launchverify.workspace.packages import find_workspace
 from launchverify.workspace.paths import display_path
 
 if TYPE_CHECKING:
@@ -80,6 +89,11 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
                          "or pyproject.toml with [tool.launchverify])")
     command.add_argument("--isolated", action="store_true",
                          help="ignore configuration files")
+    command.add_argument("--package-path", action="append", default=[], type=Path,
+                         metavar="FOLDER",
+                         help="also search FOLDER for packages, and let checks read it "
+                         "(repeatable; also $LAUNCHVERIFY_PACKAGE_PATH); confirms a "
+                         "configuration file's package-paths outside the workspace")
     command.add_argument("--baseline", type=Path, metavar="FILE",
                          help="report only findings not recorded in FILE")
     command.add_argument("--distro", choices=DISTROS,
@@ -302,6 +316,7 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
             raise UsageError(f"no such configuration file: {str(args.config)!r}")
         if found is not None:
             config = load_config(found)
+    config = _confined(config, paths, args)
     options = CheckOptions(
         paths=[Path(p) for p in paths],
         arguments={**config.arguments, **arguments},
@@ -324,6 +339,23 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         progress=_progress_bar() if progress else None,
     )
     return options, config
+
+
+def _confined(config: Config, paths: list[str], args: argparse.Namespace) -> Config:
+    """Return the configuration as the user allows it (see ``config.confined``).
+
+    What the checked tree's own file may not widen is left out (and said on stderr); the
+    package folders the user named are added.
+    """
+    confirmed = confirmed_package_paths(args.package_path)
+    workspace = args.workspace if args.workspace is not None else find_workspace(
+        Path(paths[0]))
+    config, notes = confined(config, [Path(p) for p in paths], workspace, confirmed)
+    for note in notes:
+        print(inert(f"launchverify: note: {note}"), file=sys.stderr)
+    known = set(config.package_paths)
+    return dataclasses.replace(config, package_paths=[
+        *config.package_paths, *(p for p in confirmed if p not in known)])
 
 
 def _ros_distro() -> str | None:

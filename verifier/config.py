@@ -25,13 +25,21 @@ Name globs (``external-names``, ``single-writer-topics``) match fully qualified 
 service and action names; a glob without a leading ``/`` matches at any namespace depth
 (``scan`` is ``/scan`` and ``/robot1/scan``). Like the arguments, they hold for the whole
 check (the configuration of the check, not the one nearest each file).
+
+A configuration file inside the checked tree comes with the pull request being checked:
+the folders it names outside the workspace (``package-paths``, ``workspace``) are read
+only when the user confirms them (``--package-path``, ``LAUNCHVERIFY_PACKAGE_PATH``);
+see ``confined``.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import fnmatch
+import os
 import re
 import sys
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -45,6 +53,7 @@ else:  # pragma: no cover - Python 3.10
     import tomli as tomllib
 
 CONFIG_NAMES = ("launchverify.toml", "pyproject.toml")
+PACKAGE_PATH_VARIABLE = "LAUNCHVERIFY_PACKAGE_PATH"  # folders the user lets checks read
 _TABLE = re.compile(r"^\s*\[\s*tool\s*\.\s*launchverify\b", re.MULTILINE)
 SEVERITIES = ("error", "warning", "info")
 KNOWN_KEYS = frozenset({
@@ -316,3 +325,51 @@ class ConfigTree:
     def others(self) -> list[Config]:
         """Return the configurations met so far besides the root one."""
         return [c for c in self._by_path.values() if c is not self.root]
+
+
+def confirmed_package_paths(given: Sequence[Path] = ()) -> list[Path]:
+    """Return the package folders the user named: ``--package-path`` and the variable."""
+    listed = os.environ.get(PACKAGE_PATH_VARIABLE, "")
+    return [*given, *(Path(part) for part in listed.split(os.pathsep) if part)]
+
+
+def confined(config: Config, checked: Sequence[Path], workspace: Path,
+             confirmed: Sequence[Path]) -> tuple[Config, list[str]]:
+    """Return ``config`` without the folders it may not add, and a note for each.
+
+    A configuration file inside the workspace or a checked path is the checked tree's
+    own: a pull request wrote it. Folders it names outside the workspace would widen what
+    Python launch files may read (and so what findings may show), so they count only
+    when inside a folder the user confirmed. A file elsewhere (``--config ~/lv.toml``, a
+    file above the repository) is the user's, and trusted.
+    """
+    if config.path is None:
+        return config, []
+    home = _real(workspace)
+    own = _real(config.path)
+    if not any(_within(own, _real(path)) for path in (home, *checked)):
+        return config, []
+    allowed = [home, *(_real(path) for path in confirmed)]
+
+    def kept(folder: Path) -> bool:
+        return any(_within(_real(folder), root) for root in allowed)
+
+    notes = [f"{config.path.name} names {key} {str(folder)!r}, outside the workspace: "
+             f"not read (a folder given with --package-path or {PACKAGE_PATH_VARIABLE} "
+             "confirms it)"
+             for key, folder in [*(("package path", p) for p in config.package_paths),
+                                 *([("workspace", config.workspace)] if config.workspace
+                                   else [])]
+             if not kept(folder)]
+    workspace_key = config.workspace if config.workspace and kept(config.workspace) else None
+    return dataclasses.replace(
+        config, package_paths=[p for p in config.package_paths if kept(p)],
+        workspace=workspace_key), notes
+
+
+def _real(path: Path) -> Path:
+    return Path(os.path.realpath(path))
+
+
+def _within(path: Path, root: Path) -> bool:
+    return path == root or path.is_relative_to(root)
