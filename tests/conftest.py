@@ -3,6 +3,9 @@
 from __future__ import annotations
 
 import os
+from collections.abc import Iterator
+
+import pytest
 
 
 def pytest_configure() -> None:
@@ -12,3 +15,12 @@ def pytest_configure() -> None:
     folder of its own; subprocesses inherit this too.
     """
     os.environ["LAUNCHVERIFY_NO_CACHE"] = "1"
+
+
+@pytest.fixture(autouse=True)
+def _reads_unconfined() -> Iterator[None]:
+    """Lift a check's read confinement after each test (it lasts until the next check)."""
+    yield
+    from launchverify.workspace import reading
+
+    reading.confine(None)

@@ -598,6 +598,9 @@ def test_special_files_are_findings_not_hangs(outcome: Outcome, name: str) -> No
         assert not outcome.findings_in(filename)
         return
     [finding] = outcome.findings_in(filename)
+    if name == "dev-zero":  # a link into /dev: never opened
+        assert finding["code"] == "LV003" and "/dev/zero is outside" in str(finding["message"])
+        return
     assert finding["code"] == "LV001" and "not a regular file" in str(finding["message"])
 
 
@@ -778,3 +781,89 @@ def test_a_configuration_of_the_user_is_trusted(tmp_path: Path) -> None:
     mine.write_text(f'package-paths = ["{outside}"]\n')
     done = _check(workspace, "--config", str(mine))
     assert SECRET in done.stdout and "not read" not in done.stderr
+
+
+# --------------------------------------------------------------------------- links and paths
+
+
+def _linking_workspace(root: Path) -> Path:
+    """A workspace whose files point out of it: links, absolute includes, /proc."""
+    vault = root / "vault"
+    (vault / "pkg_out" / "launch").mkdir(parents=True)
+    (vault / "secret.launch.xml").write_text(f"<launch>\n<{SECRET}\n")
+    (vault / "pkg_out" / "package.xml").write_text(
+        "<package format='3'><name>pkg_out</name></package>")
+    (vault / "pkg_out" / "launch" / "x.launch.xml").write_text(f"<launch>\n<{SECRET}\n")
+    workspace = root / "ws"
+    workspace.mkdir()
+    (workspace / ".git").mkdir()
+    (workspace / "sentinel.launch.xml").write_text(SENTINEL_XML)
+    (workspace / "everything").symlink_to("/")
+    (workspace / "proc").symlink_to("/proc")
+    (workspace / "vendor").symlink_to(vault)
+    (workspace / "linked.launch.xml").symlink_to(vault / "secret.launch.xml")
+    (workspace / "includes.launch.xml").write_text(
+        "<launch>\n"
+        '  <include file="/proc/self/environ"/>\n'
+        f'  <include file="{vault / "secret.launch.xml"}"/>\n'
+        '  <include file="$(find-pkg-share pkg_out)/launch/x.launch.xml"/>\n'
+        "</launch>\n")
+    (workspace / "includes.launch.py").write_text(
+        "from launch import LaunchDescription\n"
+        "from launch.actions import IncludeLaunchDescription\n"
+        "from launch.launch_description_sources import AnyLaunchDescriptionSource\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([IncludeLaunchDescription(\n"
+        "        AnyLaunchDescriptionSource('/proc/self/environ'))])\n")
+    (workspace / "params.launch.xml").write_text(
+        "<launch>\n"
+        '  <node pkg="demo_nodes_cpp" exec="talker" name="p">\n'
+        f'    <param from="{vault / "secret.launch.xml"}"/>\n'
+        "  </node>\n</launch>\n")
+    return workspace
+
+
+@pytest.mark.parametrize("output", ["text", "json"])
+def test_nothing_outside_the_workspace_is_read_or_walked(tmp_path: Path, output: str) -> None:
+    workspace = _linking_workspace(tmp_path)
+    start = time.perf_counter()
+    done = subprocess.run([sys.executable, "-m", "launchverify", "check", str(workspace),
+                           "--format", output, "--explain", "--no-cache"] if output == "text"
+                          else [sys.executable, "-m", "launchverify", "check", str(workspace),
+                                "--format", output],
+                          capture_output=True, text=True, cwd=tmp_path, timeout=120,
+                          check=False, env={**os.environ, "LV_TEST_SECRET": SECRET})
+    assert time.perf_counter() - start < 30  # no walk of the machine through a link
+    shown = done.stdout + done.stderr
+    assert SECRET not in shown, shown[-3000:]
+    assert "LV_TEST_SECRET" not in shown
+    assert done.returncode == 1, shown[-2000:]
+    assert "twin" in shown  # the sentinel's finding
+    assert "outside the workspace and its packages: not read" in shown
+    assert "pkg_out" in shown  # a package found only through the link: not found
+
+
+# --------------------------------------------------------------------------- budgets
+
+
+def test_one_file_cannot_flood_the_verdict(tmp_path: Path) -> None:
+    """A node name of 5 MB, twice: the finding quotes a bounded part of it."""
+    workspace = tmp_path / "ws"
+    workspace.mkdir()
+    (workspace / "sentinel.launch.xml").write_text(SENTINEL_XML)
+    (workspace / "huge.launch.py").write_text(
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        "NAME = 'n' * 5_000_000\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='demo_nodes_cpp', executable='talker', name=NAME),\n"
+        "        Node(package='demo_nodes_cpp', executable='listener', name=NAME),\n"
+        "    ])\n")
+    for output in ("json", "text"):
+        done = subprocess.run([sys.executable, "-m", "launchverify", "check", str(workspace),
+                               "--format", output], capture_output=True, text=True,
+                              cwd=tmp_path, timeout=120, check=False)
+        assert done.returncode == 1, done.stderr[-2000:]
+        assert len(done.stdout) < 100_000
+        assert "more characters)" in done.stdout and "twin" in done.stdout

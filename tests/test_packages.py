@@ -89,11 +89,24 @@ def test_symlinked_repositories_are_followed_once(tmp_path: Path) -> None:
     (src / "driver_repo").symlink_to(repos / "driver_repo", target_is_directory=True)
     (src / "again").symlink_to(repos, target_is_directory=True)  # the same package twice
     (repos / "loop").symlink_to(repos, target_is_directory=True)  # a cycle
-    found = list(scan_sources(tmp_path / "ws"))
+    (src / "everything").symlink_to("/", target_is_directory=True)
+    # a link out of the workspace is followed only into folders the user lets it read
+    assert list(scan_sources(tmp_path / "ws")) == []
+    found = list(scan_sources(tmp_path / "ws", within=[repos]))
     assert [name for name, _ in found] == ["fast_driver"]
-    package = PackageIndex([tmp_path / "ws"]).find("fast_driver")
+    package = PackageIndex([tmp_path / "ws", repos]).find("fast_driver")
     assert package is not None and package.source is not None
     assert (package.source / "package.xml").is_file()
+    assert PackageIndex([tmp_path / "ws"]).find("fast_driver") is None
+
+
+def test_links_inside_the_workspace_are_followed(tmp_path: Path) -> None:
+    make_package(tmp_path / "ws" / "vendor" / "driver_repo", "fast_driver")
+    (tmp_path / "ws" / "src").mkdir()
+    (tmp_path / "ws" / "src" / "driver").symlink_to(tmp_path / "ws" / "vendor",
+                                                   target_is_directory=True)
+    assert [name for name, _ in scan_sources(tmp_path / "ws" / "src",
+                                             within=[tmp_path / "ws"])] == ["fast_driver"]
 
 
 def test_installed_executables_are_listed(tmp_path: Path) -> None:

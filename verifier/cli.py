@@ -36,6 +36,7 @@ from launchverify.engine import (
     build_index,
     canonical,
     collector_paused,
+    confine_reads,
     parse_arguments,
     parse_environment,
     run_check,
@@ -700,6 +701,7 @@ def _graph(args: argparse.Namespace) -> int:
     if not path.is_file():
         raise UsageError(f"no such file: {paths[0]!r}")
     workspace, index = build_index([path], args.workspace)
+    confine_reads(index, workspace, [path])
     graph = evaluate(canonical(path), index=index, workspace=workspace, pinned=arguments,
                      environment=parse_environment(args.env))
     graph.included_elsewhere = Includers.of_workspace(index.workspaces).included(graph.root)

@@ -191,6 +191,18 @@ def build_index(paths: list[Path], workspace: Path | None,
     return root, PackageIndex.from_environment(sources, prefixes)
 
 
+def confine_reads(index: PackageIndex, workspace: Path, paths: Iterable[Path]) -> None:
+    """Let launchverify read only what a Python launch file may (and the paths given).
+
+    Held until the next check: the reporters read code frames after it. A launch file
+    that includes ``/etc/passwd``, or a link out of the workspace, gets a finding on the
+    include instead of the file's content in a code frame.
+    """
+    from launchverify.isolation.pool import readable_folders
+
+    reading.confine([*readable_folders(index, workspace), *(canonical(p) for p in paths)])
+
+
 def package_folders(paths: list[Path], workspace: Path | None, extra: list[Path] | None = None
                     ) -> tuple[Path, list[Path], list[Path]]:
     """Return the workspace, the folders of package sources and the install prefixes."""
@@ -227,6 +239,7 @@ def run_check(options: CheckOptions) -> Report:
 
     started = time.perf_counter()
     _require_paths(options)
+    reading.confine(None)  # the last check's folders; this one's are set once indexed
     config = options.config
     tree = ConfigTree(config, nested=options.nested_configs)
     with collector_paused():
@@ -274,6 +287,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     from launchverify.evaluate.files import FileCache
     from launchverify.evaluate.runner import evaluate
     from launchverify.findings.baseline import apply_baseline
+    from launchverify.findings.bounds import bounded
     from launchverify.findings.fixes import within
     from launchverify.frontends import launch_format
     from launchverify.isolation.confine import Limits
@@ -284,6 +298,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     config = options.config
     workspace, sources, prefixes = folders
     index = PackageIndex.from_environment(sources, prefixes)
+    confine_reads(index, workspace, options.paths)
     if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
         given = ", ".join(str(p) for p in options.paths)
         raise UsageError(f"no launch files found in {given}")
@@ -326,7 +341,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
                                          options=rule_options(config)),
                              jobs=options.jobs or default_jobs())
     loaded = {path for g in graphs for path in g.files}
-    findings, suppressed = _suppress(findings, loaded, rules)
+    findings, suppressed = _suppress([bounded(f) for f in findings], loaded, rules)
     findings = within(_configured(findings, tree, selection), workspace)  # fixes: ours only
     baselined = 0
     if options.baseline is not None:

@@ -11,6 +11,7 @@ import enum
 from dataclasses import dataclass
 
 from launchverify.span import Span
+from launchverify.workspace.reading import Outside
 
 
 class ProblemKind(enum.Enum):
@@ -51,6 +52,17 @@ class ProblemSink:
         ``contextual``: it fails only if no includer provides what is missing.
         """
         self.problems.append(Problem(ProblemKind.EVALUATION, message, span, contextual))
+
+    def cannot_read(self, error: OSError, span: Span) -> None:
+        """Record why a file was not read.
+
+        A file outside what launchverify reads (``reading.Outside``: a link out of the
+        workspace, ``/etc/passwd``) is unknown, not broken: ros2 launch may read it fine.
+        """
+        if isinstance(error, Outside):
+            self.unmodeled(str(error), span)
+        else:
+            self.parse(f"cannot read file: {error}", span)
 
     def unmodeled(self, message: str, span: Span) -> None:
         """Record that launchverify does not understand a construct (analysis incomplete)."""

@@ -69,8 +69,8 @@ def _is_launch_file(filename: str) -> bool:
 
     try:
         data = read_file(Path(filename), prefix=1 << 20)
-    except OSError:
-        return False
+    except OSError:  # a file launchverify may not read is no place to point at either
+        return True
     return any(entry in data for entry in _ENTRY_POINTS)
 
 

@@ -37,6 +37,7 @@ from pathlib import Path
 
 import launchverify
 from launchverify.workspace.packages import SKIP_DIRS
+from launchverify.workspace.paths import link_inside
 
 FORMAT = 3  # bump when what is stored changes shape (2: findings carry fixes; 3: folders)
 RACY_SECONDS = 2.0
@@ -107,8 +108,9 @@ def _walk(folders: Iterable[str], skip: str | None = None,
     """Return the size and modification time of every file below the folders.
 
     ``skip``: a folder left out (the cache's own, when it lies in the workspace). Linked
-    folders are followed, as the package index follows them, each real folder once (a
-    link to a parent is no endless walk). Paths stay strings: this runs after every
+    folders and files are followed as the package index follows them: to targets inside
+    the folders only, each real folder once (a link to a parent is no endless walk, a
+    link to ``/`` no walk of the machine). Paths stay strings: this runs after every
     check that stores its result, over every file of the workspace.
     """
     return {path: (info.st_size, info.st_mtime_ns, None)
@@ -123,6 +125,7 @@ def _files(folders: Iterable[str], skip: str | None,
     ``folder_stamps`` receives each folder's stamp (``FolderStamp``).
     """
     pending = list(folders)
+    roots = [os.path.realpath(folder) for folder in pending]
     visited: set[tuple[int, int]] = set()
     regular = stat.S_ISREG
     while pending:
@@ -144,6 +147,8 @@ def _files(folders: Iterable[str], skip: str | None,
             continue
         for entry in entries:
             try:
+                if entry.is_symlink() and not link_inside(entry.path, roots):
+                    continue
                 if entry.is_dir():
                     name = entry.name
                     if name not in SKIP_DIRS and name[0] != "." and entry.path != skip:

@@ -13,7 +13,7 @@ from launchverify.frontends.yaml_reader import read_yaml
 from launchverify.ir.actions import LaunchFile
 from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
-from launchverify.workspace.reading import is_regular, read_file
+from launchverify.workspace.reading import is_regular, outside, read_file
 
 XML_SUFFIXES = (".xml",)
 YAML_SUFFIXES = (".yaml", ".yml")
@@ -67,13 +67,13 @@ def load_launch_file(path: Path, python: PythonLoader | None = None) -> LoadedFi
     """
     sink = ProblemSink()
     if launch_format(path) == "python" and python is not None:
-        if not is_regular(path):  # a FIFO would block the worker that opens it
+        if not is_regular(path) or outside(path):  # a FIFO would block the worker
             return _unreadable(path, "python", sink)
         return LoadedFile(path, "python", python.load(path, sink), sink.problems)
     try:
         data = read_file(path)
     except OSError as error:
-        sink.parse(f"cannot read file: {error}", Span.of_file(path))
+        sink.cannot_read(error, Span.of_file(path))
         return LoadedFile(path, launch_format(path), None, sink.problems)
     fmt = launch_format(path, data)
     if fmt == "python":
@@ -92,5 +92,6 @@ def _unreadable(path: Path, fmt: str, sink: ProblemSink) -> LoadedFile:
     try:
         read_file(path, prefix=0)
     except OSError as error:
-        sink.parse(f"cannot read file: {error}", Span.of_file(path))
+        sink.cannot_read(error, Span.of_file(path))
     return LoadedFile(path, fmt, None, sink.problems)
+

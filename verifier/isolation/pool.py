@@ -30,6 +30,7 @@ from launchverify.isolation.worker import Setting
 from launchverify.isolation.zygote import Zygote
 from launchverify.problems import Problem, ProblemKind, ProblemSink
 from launchverify.span import Span
+from launchverify.workspace import reading
 from launchverify.workspace.packages import PackageIndex
 from launchverify.workspace.reading import read_file
 
@@ -104,7 +105,7 @@ class IsolatedPython:
     def prefetch(self, paths: Iterable[Path]) -> None:
         """Queue files the check will load, so that up to ``jobs`` run at once."""
         for path in paths:
-            if path not in self._loads:
+            if path not in self._loads and reading.outside(path) is None:
                 load = _Load(path)
                 self._loads[path] = load
                 self._queue.append(load)

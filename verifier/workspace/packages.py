@@ -13,11 +13,11 @@ import contextlib
 import functools
 import os
 import re
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
-from launchverify.workspace.paths import resolved
+from launchverify.workspace.paths import link_inside, resolved
 from launchverify.workspace.reading import read_file
 
 SKIP_DIRS = frozenset({
@@ -75,11 +75,13 @@ def package_name(package_xml: Path) -> str | None:
     return match.group(1).decode("utf-8", "replace") if match else None
 
 
-def listing(folder: str, *, links: bool) -> tuple[list[str], list[os.DirEntry[str]]] | None:
+def listing(folder: str, *, links: bool | Callable[[str], bool]
+            ) -> tuple[list[str], list[os.DirEntry[str]]] | None:
     """Return the folders a walk enters below ``folder`` (paths, sorted), and the rest.
 
-    Build output and dot folders are not entered; linked folders only with ``links``
-    (neither kind counts among the rest). ``None`` for a folder that cannot be listed.
+    Build output and dot folders are not entered; linked folders only with ``links``, or
+    those it accepts when it is a test (neither kind counts among the rest). ``None``
+    for a folder that cannot be listed.
     Walks over every folder of a workspace use this on strings: ``os.walk`` and a
     ``Path`` per entry took most of their time.
     """
@@ -96,25 +98,33 @@ def listing(folder: str, *, links: bool) -> tuple[list[str], list[os.DirEntry[st
             is_folder = False
         if not is_folder:
             rest.append(entry)
-        elif (entry.name not in SKIP_DIRS and not entry.name.startswith(".")
-              and (links or not entry.is_symlink())):
+        elif entry.name in SKIP_DIRS or entry.name.startswith("."):
+            continue
+        elif not entry.is_symlink() or (links(entry.path) if callable(links) else links):
             folders.append(entry.path)
     return sorted(folders), rest  # (paths in one folder sort as their names)
 
 
-def scan_sources(root: Path) -> Iterator[tuple[str, Path]]:
+def scan_sources(root: Path, within: Iterable[Path] = ()) -> Iterator[tuple[str, Path]]:
     """Yield ``(name, folder)`` for every package manifest below ``root``.
 
     Skips build artefacts, hidden folders and folders marked ``COLCON_IGNORE``, and does
     not descend into a package (packages do not nest). Like colcon, it follows symbolic
-    links (repositories linked into ``src/`` are common), visiting each folder once.
+    links (repositories linked into ``src/`` are common), visiting each folder once, but
+    only to folders below ``root`` or ``within`` (the folders the user lets a check
+    read): a link to ``/`` in a pull request must not make the check walk the machine.
     """
+    allowed = [os.path.realpath(folder) for folder in (root, *within)]
+
+    def inside(link: str) -> bool:
+        return link_inside(link, allowed)
+
     scanned = 0
     seen: set[tuple[int, int]] = set()
     pending = [os.fspath(root)]  # strings: the walk visits every folder of the workspace
     while pending:
         current = pending.pop()
-        listed = listing(current, links=True)  # linked folders followed, as colcon does
+        listed = listing(current, links=inside)  # links followed (as colcon does) inside
         if listed is None:
             continue
         scanned += 1
@@ -183,7 +193,7 @@ class PackageIndex:
                 self.has_install = True
                 for name in scan_prefix(prefix):
                     self._add(Package(name, prefix=prefix))
-            for name, folder in scan_sources(workspace):
+            for name, folder in scan_sources(workspace, within=self.workspaces):
                 folders = self.sources.setdefault(name, [])
                 if folder not in folders:
                     folders.append(folder)

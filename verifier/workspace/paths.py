@@ -1,8 +1,12 @@
-"""How paths are shown: as the user gave them, else relative to the working directory."""
+"""Paths: how they are shown, and whether a link stays inside what a check may read.
+
+Shown as the user gave them, else relative to the working directory.
+"""
 
 from __future__ import annotations
 
 import os
+from collections.abc import Iterable
 from functools import lru_cache
 from pathlib import Path
 
@@ -13,6 +17,24 @@ def resolved(path: Path) -> Path:
     (``Path.resolve`` raises ``RuntimeError`` on a loop, which a hostile tree may hold.)
     """
     return Path(os.path.realpath(path))
+
+
+SYSTEM_FOLDERS = ("/proc", "/sys", "/dev")  # never read, never walked
+
+
+def below(real: str, roots: Iterable[str]) -> bool:
+    """Return whether a real path is one of ``roots`` (real paths) or inside one."""
+    return any(real == root or real.startswith(root.rstrip("/") + "/") for root in roots)
+
+
+def link_inside(link: str, roots: Iterable[str]) -> bool:
+    """Return whether a link's target is inside ``roots`` and not a system folder.
+
+    Walks of the workspace follow linked folders only this far: a pull request's link to
+    ``/`` or ``/proc`` must not make a check walk, hash or read the machine.
+    """
+    real = os.path.realpath(link)
+    return below(real, roots) and not below(real, SYSTEM_FOLDERS)
 
 
 def relative_file(path: Path, base: Path) -> str:

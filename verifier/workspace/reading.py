@@ -5,6 +5,11 @@ A launch tree may hold a FIFO named ``robot.launch.xml``, a symbolic link to
 ``read_file``: it opens without blocking, reads only regular files, and reads at most the
 size limit (``--max-file-size``, default 10 MB); anything else is ``Unreadable`` with a
 reason the caller reports on the file.
+
+What it reads is confined too: never below ``/proc``, ``/sys`` or ``/dev`` (a launch file
+including ``/proc/self/environ`` would put the environment into a code frame), and, once a
+check has said where it reads (``confine``), only below those folders, judged by the real
+path a link points to.
 """
 
 from __future__ import annotations
@@ -13,9 +18,11 @@ import contextlib
 import os
 import re
 import stat
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from contextvars import ContextVar
 from pathlib import Path
+
+from launchverify.workspace.paths import SYSTEM_FOLDERS, below
 
 DEFAULT_LIMIT = 10 * 1000 * 1000
 _LIMIT: ContextVar[int] = ContextVar("launchverify_max_file_size", default=DEFAULT_LIMIT)
@@ -26,6 +33,37 @@ _KINDS = ((stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
 
 class Unreadable(OSError):
     """A file launchverify will not read; ``str()`` says why."""
+
+
+class Outside(Unreadable):
+    """A file whose real path is outside the folders a check reads."""
+
+
+# Real paths of the folders a check reads below (none set: anywhere but _SYSTEM); set by
+# the check, kept for the reporters that show code frames after it.
+_ROOTS: dict[str, tuple[str, ...]] = {}
+
+
+def confine(folders: Iterable[str | Path] | None) -> None:
+    """Read only below these folders from now on (``None``: lift the confinement).
+
+    The check sets them: the workspace, the packages' folders, the install prefixes,
+    the paths given on the command line and the Python installation.
+    """
+    _ROOTS.clear()
+    if folders is not None:
+        _ROOTS["below"] = tuple(dict.fromkeys(os.path.realpath(f) for f in folders))
+
+
+def outside(path: str | Path) -> str | None:
+    """Return the real path of ``path`` when launchverify may not read it, else ``None``."""
+    real = os.path.realpath(path)
+    if below(real, SYSTEM_FOLDERS):
+        return real
+    roots = _ROOTS.get("below")
+    if roots is not None and not below(real, roots):
+        return real
+    return None
 
 
 # Unsaved contents that stand for files on disk (``check - --stdin-filename PATH``), by
@@ -92,6 +130,9 @@ def read_file(path: str | Path, *, prefix: int | None = None) -> bytes:
         if prefix is None and len(buffered) > most:
             raise Unreadable(_too_large(most))
         return buffered[:most]
+    refused = outside(path)
+    if refused is not None:
+        raise Outside(f"{refused} is outside the workspace and its packages: not read")
     try:
         fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK | getattr(os, "O_CLOEXEC", 0)
                      | getattr(os, "O_NOCTTY", 0))

@@ -93,7 +93,7 @@ class PythonFrontend:
         try:
             data = read_file(path)
         except OSError as error:
-            sink.parse(f"cannot read file: {error}", Span.of_file(path))
+            sink.cannot_read(error, Span.of_file(path))
             return None
         try:
             code = compile(data, str(path), "exec", dont_inherit=True)
