@@ -153,3 +153,21 @@ def test_includers_through_a_linked_workspace(tmp_path: Path) -> None:
     assert includers.naming(one) == {tmp_path.resolve() / "src/a/launch/a.launch.yaml"}
     assert all(path == path.resolve() for path in includers.files)
     assert not includers.included(tmp_path / "src" / "a" / "launch" / "a.launch.yaml")
+
+
+def test_real_path_is_realpath(tmp_path: Path) -> None:
+    """The remembered real path reads by: the kernel's answer, links, ``..`` and all."""
+    from launchverify.workspace.paths import real_path
+
+    (tmp_path / "a" / "b").mkdir(parents=True)
+    (tmp_path / "a" / "b" / "f").write_text("")
+    links = {"lb": "a/b", "a/l1": "../lb/f", "l2": str(tmp_path / "a" / "l1"),
+             "proc": "/proc/self", "loop1": "loop2", "loop2": "loop1",
+             "up": "a/b/../../a", "certs": "/etc/ssl/certs"}
+    for name, target in links.items():
+        (tmp_path / name).symlink_to(target)
+    for relative in ["a/b/f", "lb/f", "a/l1", "l2", "proc/environ", "loop1", "missing",
+                     "lb/../a/b/f", "certs/../passwd", "./a//b/f", "lb/./f", "up/b/f",
+                     "a/b/", "lb/../../x"]:
+        path = f"{tmp_path}/{relative}"
+        assert real_path(path) == os.path.realpath(path), relative

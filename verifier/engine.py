@@ -191,16 +191,20 @@ def build_index(paths: list[Path], workspace: Path | None,
     return root, PackageIndex.from_environment(sources, prefixes)
 
 
-def confine_reads(index: PackageIndex, workspace: Path, paths: Iterable[Path]) -> None:
+def confine_reads(index: PackageIndex, workspace: Path, paths: Iterable[Path]
+                  ) -> tuple[str, ...]:
     """Let launchverify read only what a Python launch file may (and the paths given).
 
     Held until the next check: the reporters read code frames after it. A launch file
     that includes ``/etc/passwd``, or a link out of the workspace, gets a finding on the
-    include instead of the file's content in a code frame.
+    include instead of the file's content in a code frame. Returns the folders workers
+    may read.
     """
     from launchverify.isolation.pool import readable_folders
 
-    reading.confine([*readable_folders(index, workspace), *(canonical(p) for p in paths)])
+    readable = readable_folders(index, workspace)
+    reading.confine([*readable, *(canonical(p) for p in paths)])
+    return readable
 
 
 def package_folders(paths: list[Path], workspace: Path | None, extra: list[Path] | None = None
@@ -298,7 +302,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     config = options.config
     workspace, sources, prefixes = folders
     index = PackageIndex.from_environment(sources, prefixes)
-    confine_reads(index, workspace, options.paths)
+    readable = confine_reads(index, workspace, options.paths)
     if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
         given = ", ".join(str(p) for p in options.paths)
         raise UsageError(f"no launch files found in {given}")
@@ -319,7 +323,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
             IsolatedPython(index, workspace, jobs=options.jobs or default_jobs(),
                            limits=limits, distro=options.distro,
                            environment=options.environment,
-                           arguments=options.arguments) as python:
+                           arguments=options.arguments, readable=readable) as python:
         loader = FileCache(index, workspace, python)
         python.prefetch(canonical(f) for f in files if launch_format(f) == "python")
         loader.read_ahead(canonical(f) for f in files)

@@ -11,6 +11,8 @@ garbage) becomes a problem on its file, never an exception here.
 
 from __future__ import annotations
 
+import functools
+import importlib.util
 import os
 import select
 import sys
@@ -83,9 +85,12 @@ class IsolatedPython:
     def __init__(self, index: PackageIndex, workspace: Path, *, jobs: int = 1,
                  limits: Limits | None = None, distro: str | None = None,
                  environment: dict[str, str] | None = None,
-                 arguments: dict[str, str] | None = None) -> None:
+                 arguments: dict[str, str] | None = None,
+                 readable: tuple[str, ...] | None = None) -> None:
         self.limits = limits or Limits()
-        self.setting = Setting(index, workspace, readable_folders(index, workspace),
+        if readable is None:
+            readable = readable_folders(index, workspace)
+        self.setting = Setting(index, workspace, readable,
                                self.limits, distro, dict(environment or {}),
                                dict(arguments or {}),
                                debug=bool(os.environ.get("LAUNCHVERIFY_DEBUG_WORKERS")),
@@ -448,16 +453,20 @@ def _no_register(function: Callable[..., Any]) -> int:
     raise CodecError("launchverify sends no functions to a worker")
 
 
+@functools.cache
+def _package_folder(name: str) -> str:
+    """Return the real folder of one of launchverify's packages, without importing it."""
+    spec = importlib.util.find_spec(name)
+    origin = spec.origin if spec is not None and spec.origin else "."
+    return str(Path(origin).resolve().parent)
+
+
 def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
     """Return the folders a worker may read: the workspace, packages, Python, system libraries.
 
     Everything else (home folders, ``/proc``, ``/etc``) stays unreadable where Landlock
     is available, so a launch file cannot copy secrets into its findings.
     """
-    import launchverify
-    import launchverify.models
-    import launchverify.rules
-
     folders = {str(workspace)}
     folders.update(str(folder) for folder in (*index.workspaces, *index.prefixes))
     folders.update(str(folder) for found in index.sources.values() for folder in found)
@@ -469,8 +478,8 @@ def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
     folders.update(entry for entry in sys.path if entry and (
         entry in python_path or entry.endswith(("site-packages", "dist-packages"))
         or any(entry.startswith(prefix + os.sep) for prefix in prefixes)))
-    for package in (launchverify, launchverify.models, launchverify.rules):
-        folders.add(str(Path(package.__file__ or ".").resolve().parent))
+    for package in ("launchverify", "launchverify.models", "launchverify.rules"):
+        folders.add(_package_folder(package))
     folders.update(("/usr/lib", "/usr/lib64", "/lib", "/lib64", "/usr/share/zoneinfo",
                     "/etc/ld.so.cache", "/etc/localtime"))
     return tuple(outermost(folders))

@@ -27,6 +27,47 @@ def below(real: str, roots: Iterable[str]) -> bool:
     return any(real == root or real.startswith(root.rstrip("/") + "/") for root in roots)
 
 
+def real_path(path: str | os.PathLike[str]) -> str:
+    """Return ``os.path.realpath(path)``, the folders' part remembered.
+
+    Reads ask for the real path of every file they open, often through links (an
+    install folder of linked files); their folders are shared by many files, and
+    ``realpath`` looks at each component of a path every time. A ``..`` climbs from the
+    real folder it follows, as the kernel does, never lexically.
+    """
+    # strings and os.path on purpose: this runs on every read (pathlib is slower)
+    text = os.fspath(path)
+    if not text.startswith("/"):
+        text = os.getcwd() + "/" + text  # noqa: PTH109
+    candidate = "/"
+    for part in text.split("/"):
+        if part == "..":
+            candidate = os.path.dirname(_real_folder_text(candidate))  # noqa: PTH120
+        elif part not in ("", "."):
+            candidate = os.path.join(candidate, part)  # noqa: PTH118
+    for _ in range(40):  # as the kernel, give up on a chain of links this long
+        head, tail = os.path.split(candidate)
+        candidate = os.path.join(_real_folder_text(head), tail)  # noqa: PTH118
+        try:
+            target = os.readlink(candidate)  # noqa: PTH115
+        except OSError:  # not a link (or nothing there): the path is real
+            return candidate
+        if ".." in target.split("/"):
+            return os.path.realpath(os.path.join(os.path.dirname(candidate), target))  # noqa: PTH118,PTH120
+        candidate = os.path.normpath(os.path.join(os.path.dirname(candidate), target))  # noqa: PTH118,PTH120
+    return os.path.realpath(candidate)
+
+
+@lru_cache(maxsize=4096)
+def _real_folder_text(folder: str) -> str:
+    return os.path.realpath(folder)
+
+
+def forget_real_folders() -> None:
+    """Forget the real paths ``real_path`` remembered (a new check starts)."""
+    _real_folder_text.cache_clear()
+
+
 def link_inside(link: str, roots: Iterable[str]) -> bool:
     """Return whether a link's target is inside ``roots`` and not a system folder.
 

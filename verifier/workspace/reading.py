@@ -15,6 +15,7 @@ path a link points to.
 from __future__ import annotations
 
 import contextlib
+import functools
 import os
 import re
 import stat
@@ -22,7 +23,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from contextvars import ContextVar
 from pathlib import Path
 
-from launchverify.workspace.paths import SYSTEM_FOLDERS, below
+from launchverify.workspace.paths import SYSTEM_FOLDERS, below, forget_real_folders, real_path
 
 DEFAULT_LIMIT = 10 * 1000 * 1000
 _LIMIT: ContextVar[int] = ContextVar("launchverify_max_file_size", default=DEFAULT_LIMIT)
@@ -51,19 +52,37 @@ def confine(folders: Iterable[str | Path] | None) -> None:
     the paths given on the command line and the Python installation.
     """
     _ROOTS.clear()
+    forget_real_folders()  # links may have changed since the last check (an editor's)
     if folders is not None:
         _ROOTS["below"] = tuple(dict.fromkeys(os.path.realpath(f) for f in folders))
 
 
 def outside(path: str | Path) -> str | None:
-    """Return the real path of ``path`` when launchverify may not read it, else ``None``."""
-    real = os.path.realpath(path)
-    if below(real, SYSTEM_FOLDERS):
-        return real
+    """Return the real path of ``path`` when launchverify may not read it, else ``None``.
+
+    Before a check is confined (the package scan, discovery: walks that follow no link
+    out of the workspace), anything but a system file may be read; ``read_file`` refuses
+    those by the file system they are on.
+    """
     roots = _ROOTS.get("below")
-    if roots is not None and not below(real, roots):
+    if roots is None:
+        return None
+    real = real_path(path)
+    if below(real, SYSTEM_FOLDERS) or not below(real, roots):
         return real
     return None
+
+
+@functools.lru_cache(maxsize=1)
+def _system_devices() -> frozenset[int]:
+    """Return the file systems of ``/proc``, ``/sys`` and ``/dev`` (not the root's)."""
+    devices = set()
+    for folder in (*SYSTEM_FOLDERS, "/"):
+        with contextlib.suppress(OSError):
+            devices.add(os.stat(folder).st_dev)  # noqa: PTH116
+    with contextlib.suppress(OSError):
+        devices.discard(os.stat("/").st_dev)  # noqa: PTH116
+    return frozenset(devices)
 
 
 # Unsaved contents that stand for files on disk (``check - --stdin-filename PATH``), by
@@ -140,6 +159,8 @@ def read_file(path: str | Path, *, prefix: int | None = None) -> bytes:
         raise Unreadable(error.strerror or str(error)) from None
     try:
         info = os.fstat(fd)
+        if info.st_dev in _system_devices():  # /proc/self/environ, however it is reached
+            raise Outside(f"{os.fspath(path)} is a system file: not read")
         if not stat.S_ISREG(info.st_mode):
             kind = next((name for test, name in _KINDS if test(info.st_mode)), "special")
             raise Unreadable(f"not a regular file ({kind})")
