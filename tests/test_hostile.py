@@ -608,12 +608,8 @@ def test_without_landlock_nothing_is_written_either(outcome: Outcome,
                                                     monkeypatch: pytest.MonkeyPatch) -> None:
     """The fallback where the kernel has no Landlock: seccomp refuses every write."""
     from launchverify.engine import CheckOptions, run_check
-    from launchverify.isolation import confine
 
-    def no_landlock(missing: dict[str, str]) -> None:
-        missing["Landlock"] = "disabled for this test"
-
-    monkeypatch.setattr(confine, "_landlock_module", no_landlock)
+    monkeypatch.setenv("LAUNCHVERIFY_WITHOUT_LANDLOCK", "1")
     monkeypatch.setenv("TMPDIR", str(outcome.root / "tmp"))
     before = _snapshot(outcome.root, outcome.root / "tmp")
     report = run_check(CheckOptions(paths=[outcome.workspace], workspace=outcome.workspace,
@@ -621,7 +617,7 @@ def test_without_landlock_nothing_is_written_either(outcome: Outcome,
                                     exclude=[str(outcome.workspace / "loop*.launch.xml")]))
     assert report.protections is not None
     assert "seccomp (no file writes)" in report.protections
-    assert "Landlock (disabled for this test)" in report.protections
+    assert "Landlock (turned off by LAUNCHVERIFY_WITHOUT_LANDLOCK)" in report.protections
     assert _snapshot(outcome.root, outcome.root / "tmp") == before
     for name in ("sentinel.launch.xml", "sentinel.launch.py"):
         assert [f.code for f in report.findings if f.span.file.name == name] == ["LV101"]

@@ -341,3 +341,56 @@ def test_an_enumeration_named_by_a_list_is_a_codec_error() -> None:
     # found by the property test above: the enumeration's name was looked up unhashed
     with pytest.raises(CodecError):
         Decoder(lambda number: (lambda *args: None)).decode(["#e", [], None])
+
+
+TOKEN = "LV-ZYGOTE-TOKEN-93c1"
+PY_TALKER = """\
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker')])
+"""
+
+
+def _memory_holds(pid: int, needle: bytes) -> bool | None:
+    """Return whether a process's readable memory holds ``needle`` (None: cannot look)."""
+    try:
+        maps = Path(f"/proc/{pid}/maps").read_text().splitlines()
+        memory = Path(f"/proc/{pid}/mem").open("rb")  # noqa: SIM115
+    except OSError:
+        return None
+    with memory:
+        for line in maps:
+            span, perms = line.split()[:2]
+            if not perms.startswith("r") or line.endswith(("[vvar]", "[vsyscall]")):
+                continue
+            start, end = (int(part, 16) for part in span.split("-"))
+            try:
+                memory.seek(start)
+                if needle in memory.read(end - start):
+                    return True
+            except (OSError, ValueError, OverflowError):
+                continue
+    return False
+
+
+def test_workers_never_hold_the_callers_environment(tmp_path: Path,
+                                                    monkeypatch: pytest.MonkeyPatch) -> None:
+    """The zygote, which every worker is forked from, is a fresh interpreter: a secret in
+    launchverify's environment is neither in its environment nor anywhere in its memory."""
+    from launchverify.isolation.pool import IsolatedPython
+    from launchverify.problems import ProblemSink
+    from launchverify.workspace.packages import PackageIndex
+
+    monkeypatch.setenv("LV_CI_TOKEN", TOKEN)
+    path = tmp_path / "talker.launch.py"
+    path.write_text(PY_TALKER)
+    with IsolatedPython(PackageIndex([tmp_path]), tmp_path) as python:
+        assert python.load(path, ProblemSink()) is not None
+        zygote = python._zygote
+        assert zygote is not None
+        environ = Path(f"/proc/{zygote.pid}/environ").read_bytes()
+        assert TOKEN.encode() not in environ and b"LV_CI_TOKEN" not in environ
+        held = _memory_holds(zygote.pid, TOKEN.encode())
+        assert held is not True

@@ -296,11 +296,14 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     from launchverify.frontends import launch_format
     from launchverify.isolation.confine import Limits
     from launchverify.isolation.pool import IsolatedPython
+    from launchverify.isolation.zygote import discard_ahead, start_ahead
     from launchverify.models import distros
     from launchverify.workspace.interfaces import Interfaces
 
     config = options.config
     workspace, sources, prefixes = folders
+    if any(launch_format(f) == "python" for f in found):
+        start_ahead()  # its interpreter imports the models while the index is built
     index = PackageIndex.from_environment(sources, prefixes)
     readable = confine_reads(index, workspace, options.paths)
     if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
@@ -335,6 +338,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
             if options.progress is not None:
                 options.progress(done + 1, len(files))
         python_files, protections = python.evaluated, python.protections
+    discard_ahead()  # started for files that were all excluded, say
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
     includers = includers_of()
     for graph in graphs:

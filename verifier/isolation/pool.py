@@ -27,7 +27,7 @@ from launchverify.frontends.python.importer import absent_modules_asked
 from launchverify.ir import actions as a
 from launchverify.isolation.channel import Channel, ChannelError, Closed
 from launchverify.isolation.codec import CodecError, Decoder, Encoder
-from launchverify.isolation.confine import Limits, outermost
+from launchverify.isolation.confine import WITHOUT_LANDLOCK, Limits, outermost
 from launchverify.isolation.worker import Setting
 from launchverify.isolation.zygote import Zygote
 from launchverify.problems import Problem, ProblemKind, ProblemSink
@@ -94,7 +94,8 @@ class IsolatedPython:
                                self.limits, distro, dict(environment or {}),
                                dict(arguments or {}),
                                debug=bool(os.environ.get("LAUNCHVERIFY_DEBUG_WORKERS")),
-                               absent_modules=absent_modules_asked())
+                               absent_modules=absent_modules_asked(),
+                               landlock=not os.environ.get(WITHOUT_LANDLOCK))
         self.jobs = max(1, jobs)
         self.protections: str | None = None  # as the first worker reported them
         self.evaluated = 0  # files evaluated by workers

@@ -41,6 +41,7 @@ class Setting:
     arguments: dict[str, str] = field(default_factory=dict)  # name:=value on the command line
     debug: bool = False  # keep stderr and print our own failures (LAUNCHVERIFY_DEBUG_WORKERS)
     absent_modules: bool = False  # ablation: only launch, launch_ros and Python's own exist
+    landlock: bool = True  # False: as on kernels without it (LAUNCHVERIFY_WITHOUT_LANDLOCK)
 
 
 def serve(fd: int, request: dict[str, Any], scratch: str, setting: Setting,

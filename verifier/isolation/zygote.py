@@ -1,9 +1,11 @@
-"""The zygote: a small process forked once per check that forks one worker per file.
+"""The zygote: a fresh interpreter started once per check that forks one worker per file.
 
-launchverify forks it after building the package index and before evaluating anything,
-so it holds the models, the index and little else: forking a worker from it costs about a
-millisecond, where forking launchverify itself late in a large check would copy the page
-tables of everything evaluated so far, and starting an interpreter would cost hundreds.
+It is started with ``exec``, never forked from launchverify, and with an environment
+built from scratch: no byte of the caller's environment (a CI job's tokens, on the
+initial stack of a forked process) nor of launchverify's own state reaches a worker's
+memory. It receives what workers share (the ``Setting``, the unsaved buffers, the size
+limit, the folders reads are confined to) through a pipe, imports the models and warms
+up once; forking a worker from it then costs about a millisecond.
 
 It talks to launchverify over a ``SOCK_SEQPACKET`` control socket: a spawn request
 carries the worker's end of a fresh socket pair (``SCM_RIGHTS``); the zygote answers when a
@@ -18,11 +20,15 @@ import contextlib
 import gc
 import json
 import os
+import pickle
 import select
 import shutil
 import signal
 import socket
+import subprocess
+import sys
 import tempfile
+import threading
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, NoReturn
@@ -31,6 +37,7 @@ from launchverify.frontends.python import fast_yaml
 from launchverify.frontends.python.sandbox import SCRATCH_PREFIX
 from launchverify.isolation.confine import Confinement
 from launchverify.isolation.worker import Setting, serve
+from launchverify.workspace import reading
 
 _PACKET = 1 << 16
 _KEPT_NEWS = 1024  # ended workers remembered for wait()
@@ -58,22 +65,79 @@ class Ended:
         return f"exited with status {self.code}"
 
 
+@dataclass
+class _Started:
+    """A zygote started, importing the models, that has not been told its setting."""
+
+    process: subprocess.Popen[bytes]
+    control: socket.socket
+    setup: int  # the pipe its setup goes down
+
+    @classmethod
+    def start(cls) -> _Started:
+        ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
+        setup_read, setup_write = os.pipe()
+        try:
+            process = subprocess.Popen(
+                [sys.executable, "-I", "-X", "utf8", "-c", _BOOT, str(theirs.fileno()),
+                 str(setup_read), json.dumps(sys.path)],
+                pass_fds=(theirs.fileno(), setup_read), env=_fresh_environment(),
+                stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                stderr=None if os.environ.get("LAUNCHVERIFY_DEBUG_WORKERS")
+                else subprocess.DEVNULL,
+                start_new_session=True)  # the terminal's Ctrl-C is launchverify's
+        except OSError:
+            for end in (ours, theirs):
+                end.close()
+            os.close(setup_write)
+            raise
+        finally:
+            theirs.close()
+            os.close(setup_read)
+        return cls(process, ours, setup_write)
+
+    def discard(self) -> None:
+        self.control.close()
+        with contextlib.suppress(OSError):
+            os.close(self.setup)
+        self.process.kill()
+        self.process.wait()
+
+
+_STARTED: list[_Started] = []  # at most one, started ahead (``start_ahead``)
+
+
+def start_ahead() -> None:
+    """Start the next check's zygote now, beside what launchverify does meanwhile.
+
+    A fresh interpreter takes a tenth of a second to import the models; started when
+    the launch files are found, it is ready when the first one needs it.
+    """
+    if not _STARTED:
+        with contextlib.suppress(OSError):
+            _STARTED.append(_Started.start())
+
+
+def discard_ahead() -> None:
+    """End a zygote started ahead that no check took."""
+    while _STARTED:
+        _STARTED.pop().discard()
+
+
 class Zygote:
     """launchverify's handle on its zygote."""
 
     def __init__(self, setting: Setting) -> None:
-        ours, theirs = socket.socketpair(socket.AF_UNIX, socket.SOCK_SEQPACKET)
-        temporary = tempfile.gettempdir()
-        pid = os.fork()
-        if pid == 0:  # the zygote
-            try:
-                ours.close()
-                _Server(theirs, setting, temporary).run()
-            finally:
-                os._exit(0)
-        theirs.close()
-        self.pid = pid
-        self.control = ours
+        started = _STARTED.pop() if _STARTED else _Started.start()
+        setup = pickle.dumps({
+            "setting": setting, "temporary": tempfile.gettempdir(), "path": sys.path,
+            "unsaved": reading.unsaved_contents(), "limit": reading.limit(),
+            "roots": reading.confined_to()})
+        # written beside: the zygote may still be importing, and the setup be large
+        threading.Thread(target=_write_all, args=(started.setup, setup), daemon=True).start()
+        self.process = started.process
+        self.pid = started.process.pid
+        self.control = started.control
         self.ended: dict[int, Ended] = {}
         self._next = 0
 
@@ -141,17 +205,11 @@ class Zygote:
     def close(self) -> None:
         """Stop the zygote and every worker (they die with it)."""
         self.control.close()
-        deadline = _now() + 5
-        while _now() < deadline:
-            try:
-                if os.waitpid(self.pid, os.WNOHANG)[0] != 0:
-                    return
-            except ChildProcessError:
-                return
-            select.select([], [], [], 0.01)
-        with contextlib.suppress(OSError):
-            os.kill(self.pid, signal.SIGKILL)
-            os.waitpid(self.pid, 0)
+        try:
+            self.process.wait(timeout=5)
+        except subprocess.TimeoutExpired:
+            self.process.kill()
+            self.process.wait()
 
 
 class _Server:
@@ -165,10 +223,9 @@ class _Server:
         self.numbers: dict[int, int] = {}  # number -> pid
 
     def run(self) -> None:
-        os.setsid()  # the terminal's Ctrl-C is launchverify's to handle
-        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        signal.signal(signal.SIGINT, signal.SIG_IGN)  # (a session of its own already)
         _forget_environment()
-        self.confinement = Confinement(self.setting.limits)
+        self.confinement = Confinement(self.setting.limits, landlock=self.setting.landlock)
         fast_yaml.install()  # workers load YAML with libyaml where it reads alike
         _warm_up(self.setting)
         gc.freeze()  # workers' collections never touch (and copy) the inherited heap
@@ -298,11 +355,45 @@ def _warm_up(setting: Setting) -> None:
         json.dumps(Encoder(lambda function: 0).encode(launch))
 
 
-def _forget_environment() -> None:
-    """Drop this machine's environment variables: nothing a worker runs may read them.
+# launchverify's own sys.path first (-I ignores PYTHONPATH), then the models' imports,
+# which run while launchverify builds its index; then the setup, read from the pipe
+_BOOT = ("import json, sys; sys.path[:] = json.loads(sys.argv[3]); "
+         "from launchverify.isolation.zygote import boot; boot(*sys.argv[1:3])")
 
-    Launch files see a symbolic environment; the real one (``os.environ``, ``posix.environ``
-    and the C environment) is emptied here, once, before any worker exists.
+
+def _fresh_environment() -> dict[str, str]:
+    """Return the zygote's environment: what Python needs, nothing of the caller's."""
+    return {"LC_ALL": "C.UTF-8", "PATH": os.defpath}
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    try:
+        with os.fdopen(fd, "wb") as pipe:
+            pipe.write(data)
+    except OSError:  # the zygote is gone: launchverify sees it on the control socket
+        pass
+
+
+def boot(control_fd: str, setup_fd: str) -> NoReturn:
+    """Run the zygote in a fresh interpreter (see the module's docstring)."""
+    try:
+        with os.fdopen(int(setup_fd), "rb") as pipe:
+            setup = pickle.loads(pipe.read())
+        sys.path[:] = setup["path"]
+        tempfile.tempdir = setup["temporary"]  # as launchverify's: never asked of the environment
+        reading.restore(setup["unsaved"], setup["limit"], setup["roots"])
+        control = socket.socket(fileno=int(control_fd))
+        _Server(control, setup["setting"], setup["temporary"]).run()
+    finally:
+        os._exit(0)
+
+
+def _forget_environment() -> None:
+    """Drop the zygote's few environment variables: a worker has none to read.
+
+    Launch files see a symbolic environment; the real one (``os.environ``,
+    ``posix.environ`` and the C environment) is emptied here, once, before any worker
+    exists. (It never held the caller's: see ``_fresh_environment``.)
     """
     os.environ.clear()
     with contextlib.suppress(ImportError, AttributeError):

@@ -57,6 +57,26 @@ def confine(folders: Iterable[str | Path] | None) -> None:
         _ROOTS["below"] = tuple(dict.fromkeys(os.path.realpath(f) for f in folders))
 
 
+def confined_to() -> tuple[str, ...] | None:
+    """Return the folders reads are confined to (``None``: not confined)."""
+    return _ROOTS.get("below")
+
+
+def unsaved_contents() -> dict[str, bytes]:
+    """Return the unsaved buffers standing for files, by real path."""
+    return dict(_UNSAVED)
+
+
+def restore(unsaved: Mapping[str, bytes], most: int, roots: tuple[str, ...] | None) -> None:
+    """Take over another process's reading state (the zygote, from launchverify)."""
+    _UNSAVED.clear()
+    _UNSAVED.update(unsaved)
+    _LIMIT.set(most)
+    _ROOTS.clear()
+    if roots is not None:
+        _ROOTS["below"] = roots
+
+
 def outside(path: str | Path) -> str | None:
     """Return the real path of ``path`` when launchverify may not read it, else ``None``.
 
