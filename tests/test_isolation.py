@@ -394,3 +394,29 @@ def test_workers_never_hold_the_callers_environment(tmp_path: Path,
         assert TOKEN.encode() not in environ and b"LV_CI_TOKEN" not in environ
         held = _memory_holds(zygote.pid, TOKEN.encode())
         assert held is not True
+
+
+def test_the_time_limit_is_for_a_files_whole_evaluation(tmp_path: Path) -> None:
+    """Three OpaqueFunctions of 0.6 s each under a 1 s limit: the third is not run."""
+    from launchverify.engine import CheckOptions, run_check
+
+    path = tmp_path / "slow.launch.py"
+    path.write_text("""\
+import time
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch_ros.actions import Node
+
+def busy(context, name):
+    end = time.monotonic() + 0.6
+    while time.monotonic() < end:
+        pass
+    return [Node(package='demo_nodes_cpp', executable='talker', name=name)]
+
+def generate_launch_description():
+    return LaunchDescription([OpaqueFunction(function=busy, args=[n]) for n in 'abc'])
+""")
+    report = run_check(CheckOptions(paths=[path], workspace=tmp_path, time_limit=1.0))
+    messages = [f.message for f in report.findings if f.code == "LV002"]
+    assert len(messages) == 1 and "whole time limit (1 s" in messages[0], messages
+    assert {g.base(n.name) for g in report.graphs for n in g.nodes} >= {"a", "b"}

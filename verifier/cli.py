@@ -105,8 +105,8 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
                          "each in its own confined process, and the rules shared out "
                          "between processes (default: the number of CPUs)")
     command.add_argument("--time-limit", type=_positive_float, metavar="SECONDS",
-                         help="stop a Python launch file's evaluation after SECONDS "
-                         "(default: 10)")
+                         help="stop a Python launch file's evaluation, its "
+                         "OpaqueFunctions included, after SECONDS (default: 10)")
     command.add_argument("--max-file-size", type=_positive_float, metavar="MB",
                          help="do not read files larger than MB megabytes (default: 10)")
     command.add_argument("-v", "--verbose", action="store_true",

@@ -51,6 +51,7 @@ class _Worker:
     ended: str | None = None  # why it can no longer answer
     loaded: int = 0  # callbacks its evaluation made (those a fresh worker makes again)
     recycled: bool = False  # ended to bound memory; a fresh one takes over when asked
+    spent: float = 0.0  # seconds its file's requests took: the time limit is for all of them
 
 
 @dataclass(eq=False)
@@ -59,6 +60,7 @@ class _Request:
 
     worker: _Worker
     deadline: float
+    started: float = 0.0
     reply: dict[str, Any] | None = None
     failure: str | None = None
     load: _Load | None = None  # the evaluation it answers, if it is one
@@ -187,11 +189,13 @@ class IsolatedPython:
         raise AssertionError("unreachable")
 
     def _send(self, worker: _Worker, message: dict[str, Any] | None) -> _Request:
-        deadline = time.monotonic() + self.limits.seconds + GRACE
-        request = _Request(worker, deadline)
+        """Send a request; its deadline is what is left of the file's time limit."""
+        now = time.monotonic()
+        left = max(self.limits.seconds - worker.spent, 0.0)
+        request = _Request(worker, now + left + GRACE, now)
         if message is not None:
             try:
-                worker.channel.send(message, deadline)
+                worker.channel.send(message, request.deadline)
             except ChannelError as error:
                 self._fail(request, f"could not be reached ({error})")
         return request
@@ -224,11 +228,12 @@ class IsolatedPython:
         for request in self._running:
             if not request.done and request.deadline <= now:
                 seconds = self.limits.seconds
-                self._fail(request, f"took longer than {seconds:g} s and was stopped (an "
-                           "endless loop, or code that does not give way to the timer?)",
-                           kill=True)
+                self._fail(request, f"took longer than {seconds:g} s (--time-limit, for the "
+                           "whole evaluation of a file) and was stopped (an endless loop, "
+                           "or code that does not give way to the timer?)", kill=True)
         for request in [r for r in self._running if r.done]:
             self._running.remove(request)
+            request.worker.spent += now - request.started
             self._finish(request)
 
     def _receive(self, request: _Request) -> None:
@@ -333,8 +338,9 @@ class IsolatedPython:
             number, fd = self._spawn(worker.path)
         except OSError as error:
             return f"could not be started again ({error.strerror or error})"
-        fresh = _Worker(worker.path, number, Channel(fd))
+        fresh = _Worker(worker.path, number, Channel(fd), spent=worker.spent)
         request = self._await(self._send(fresh, None))
+        worker.spent = fresh.spent
         reply = request.reply
         if reply is None or reply.get("op") != "loaded":
             return f"{request.failure or 'failed'} when it was started again"
@@ -355,6 +361,10 @@ class IsolatedPython:
         if worker.ended is not None:
             return _failed(span, f"not evaluated: the process evaluating this file "
                            f"{worker.ended}", ProblemKind.UNMODELED)
+        if worker.spent >= self.limits.seconds:
+            return _failed(span, f"running this OpaqueFunction failed: the evaluation of this "
+                           f"file took its whole time limit ({self.limits.seconds:g} s, "
+                           "--time-limit) before it", ProblemKind.EVALUATION)
         self._keep(worker)
         arguments = Encoder(_no_register).encode((dict(configurations), str(current)))
         request = self._await(self._send(
