@@ -304,3 +304,20 @@ def test_extracted_interfaces_are_kept_between_runs(tmp_path: Path) -> None:
     with in_use(cache):
         assert files.file_interfaces(source) == first  # read again
     assert files.cache_stats()["parsed"] == 1
+
+
+def test_links_are_followed_inside_only_but_in_our_own_code(tmp_path: Path) -> None:
+    """A workspace's link out is not walked; launchverify's own code is (a strict editable
+    install links every module into the checkout: edits must change the code stamp)."""
+    from launchverify.findings.cache import _walk
+
+    (tmp_path / "checkout").mkdir()
+    (tmp_path / "checkout" / "rule.py").write_text("x = 1\n")
+    (tmp_path / "install").mkdir()
+    (tmp_path / "install" / "rule.py").symlink_to(tmp_path / "checkout" / "rule.py")
+    linked = str(tmp_path / "install" / "rule.py")
+    assert linked not in _walk([str(tmp_path / "install")])
+    assert linked in _walk([str(tmp_path / "install")], own=True)
+    (tmp_path / "ws").mkdir()
+    (tmp_path / "ws" / "everything").symlink_to("/")
+    assert _walk([str(tmp_path / "ws")]) == {}

@@ -461,3 +461,12 @@ def _is_nan(text: str) -> bool:
 @given(st.one_of(st.text(max_size=8), st.floats().map(str), st.integers().map(str)))
 def test_launch_equals_is_reflexive_except_nan(value: str) -> None:
     assert launch_equals(value, value) is not _is_nan(value)
+
+
+def test_a_name_unknown_here_is_shown_once_under_the_root_namespace() -> None:
+    """``/`` and a name from the environment: ``/$(env ROBOT)``, not ``//$(env ROBOT)``."""
+    from launchverify.ir.subst import EnvVar, Text
+    from launchverify.ir.symbolic import NsPrefix
+
+    assert NsPrefix(Text("/"), EnvVar(Text("ROBOT"))).describe() == "/$(env ROBOT)"
+    assert NsPrefix(Text("/fleet"), EnvVar(Text("ROBOT"))).describe() == "/fleet/$(env ROBOT)"

@@ -97,28 +97,31 @@ def own_code_stamp() -> str:
     roots = {str(Path(spec.origin).parent) for spec in specs
              if spec is not None and spec.origin}
     digest = hashlib.blake2b(digest_size=16)
-    for path, stamp in sorted(_walk(sorted(roots)).items()):
+    for path, stamp in sorted(_walk(sorted(roots), own=True).items()):
         if path.endswith((".py", ".txt", ".json")):
             digest.update(f"{path}:{stamp[0]}:{stamp[1]}".encode())
     return digest.hexdigest()
 
 
 def _walk(folders: Iterable[str], skip: str | None = None,
-          folder_stamps: dict[str, FolderStamp] | None = None) -> dict[str, Stamp]:
+          folder_stamps: dict[str, FolderStamp] | None = None, *, own: bool = False
+          ) -> dict[str, Stamp]:
     """Return the size and modification time of every file below the folders.
 
     ``skip``: a folder left out (the cache's own, when it lies in the workspace). Linked
     folders and files are followed as the package index follows them: to targets inside
     the folders only, each real folder once (a link to a parent is no endless walk, a
-    link to ``/`` no walk of the machine). Paths stay strings: this runs after every
-    check that stores its result, over every file of the workspace.
+    link to ``/`` no walk of the machine). ``own``: launchverify's own code, whose every
+    link is followed (a strict editable install is a tree of links into the checkout).
+    Paths stay strings: this runs after every check that stores its result, over every
+    file of the workspace.
     """
     return {path: (info.st_size, info.st_mtime_ns, None)
-            for path, info in _files(folders, skip, folder_stamps)}
+            for path, info in _files(folders, skip, folder_stamps, own=own)}
 
 
 def _files(folders: Iterable[str], skip: str | None,
-           folder_stamps: dict[str, FolderStamp] | None = None
+           folder_stamps: dict[str, FolderStamp] | None = None, *, own: bool = False
            ) -> Iterator[tuple[str, os.stat_result]]:
     """Yield every regular file below the folders with its status (see ``_walk``).
 
@@ -147,7 +150,7 @@ def _files(folders: Iterable[str], skip: str | None,
             continue
         for entry in entries:
             try:
-                if entry.is_symlink() and not link_inside(entry.path, roots):
+                if not own and entry.is_symlink() and not link_inside(entry.path, roots):
                     continue
                 if entry.is_dir():
                     name = entry.name

@@ -182,7 +182,7 @@ class NsPrefix(Sub):
         if self.base is None:
             text = self.ns.describe()
             return text if not self.absolute or text.startswith("/") else "/" + text
-        return f"{self.base.describe()}/{self.ns.describe()}"
+        return f"{self.base.describe().rstrip('/')}/{self.ns.describe()}"  # "/" + "x": "/x"
 
     def children(self) -> tuple[Sub, ...]:
         return (self.ns,) if self.base is None else (self.base, self.ns)
