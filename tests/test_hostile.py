@@ -863,3 +863,23 @@ def test_one_file_cannot_flood_the_verdict(tmp_path: Path) -> None:
         assert done.returncode == 1, done.stderr[-2000:]
         assert len(done.stdout) < 100_000
         assert "more characters)" in done.stdout and "twin" in done.stdout
+
+
+def test_a_description_too_large_is_not_checked_and_the_rest_is(tmp_path: Path) -> None:
+    """100,000 parameters: past the bound of what one file may send, an info, and the
+    sentinel's finding is still there."""
+    from launchverify.engine import CheckOptions, run_check
+
+    (tmp_path / "sentinel.launch.xml").write_text(SENTINEL_XML)
+    (tmp_path / "big.launch.py").write_text(
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n"
+        "def generate_launch_description():\n"
+        "    params = {f'p{i}': i for i in range(100_000)}\n"
+        "    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker',\n"
+        "                                   parameters=[params])])\n")
+    report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+    found = {(f.code, f.span.file.name) for f in report.findings}
+    assert ("LV101", "sentinel.launch.xml") in found
+    [big] = [f for f in report.findings if f.span.file.name == "big.launch.py"]
+    assert big.code == "LV003" and "250,000 parts" in big.message

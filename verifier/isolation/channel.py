@@ -15,7 +15,7 @@ import time
 from typing import Any
 
 _HEADER = struct.Struct(">Q")
-DEFAULT_LIMIT = 512 * 1024 * 1024
+DEFAULT_LIMIT = 64 * 1024 * 1024
 
 
 class ChannelError(Exception):

@@ -31,11 +31,16 @@ from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
 
 MAX_DEPTH = 400  # nested records; deeper descriptions are refused, not recursed into
+MAX_RECORDS = 250_000  # records in one answer: what one file may put into the verdict
 _SMALL_INT = 1 << 63
 
 
 class CodecError(Exception):
     """Data that is not a well-formed launch description."""
+
+
+class TooLarge(CodecError):
+    """A launch description past what one file may put into the verdict."""
 
 
 def _records() -> dict[str, type]:
@@ -183,6 +188,10 @@ class Decoder:
         if len(values) != len(fields):
             raise CodecError(f"{name} has {len(values)} fields, expected {len(fields)}")
         slot = len(self._records)
+        if slot >= MAX_RECORDS:
+            raise TooLarge(f"its launch description has more than {MAX_RECORDS:,} parts "
+                           "(actions, nodes, parameters, substitutions), launchverify's "
+                           "bound for one file")
         self._records.append(None)  # reserved: a reference to it now would be a cycle
         arguments = {}
         decode = self.decode

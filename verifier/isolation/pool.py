@@ -26,7 +26,7 @@ from typing import Any
 from launchverify.frontends.python.importer import absent_modules_asked
 from launchverify.ir import actions as a
 from launchverify.isolation.channel import Channel, ChannelError, Closed
-from launchverify.isolation.codec import CodecError, Decoder, Encoder
+from launchverify.isolation.codec import CodecError, Decoder, Encoder, TooLarge
 from launchverify.isolation.confine import WITHOUT_LANDLOCK, Limits, outermost
 from launchverify.isolation.worker import Setting
 from launchverify.isolation.zygote import Zygote
@@ -302,6 +302,11 @@ class IsolatedPython:
             if not (launch is None or isinstance(launch, a.LaunchFile)) or not isinstance(
                     problems, tuple) or not all(isinstance(p, Problem) for p in problems):
                 raise CodecError("not a launch file")
+        except TooLarge as error:  # ros2 launch may take it: unknown here, not broken
+            load.problems.append(Problem(
+                ProblemKind.UNMODELED, f"not checked: {error}", Span.of_file(load.path)))
+            worker.channel.close()
+            return
         except (CodecError, ValueError, TypeError) as error:
             load.problems.append(Problem(
                 ProblemKind.EVALUATION, "the evaluation of this file failed: its process sent "
@@ -384,6 +389,9 @@ class IsolatedPython:
             if not isinstance(result, a.OpaqueResult) or not all(
                     isinstance(p, Problem) for p in result.problems):
                 raise CodecError("not the result of an OpaqueFunction")
+        except TooLarge as error:
+            return _failed(span, f"this OpaqueFunction is not checked: {error}",
+                           ProblemKind.UNMODELED)
         except (CodecError, ValueError, TypeError) as error:
             return _failed(span, f"running this OpaqueFunction failed: its answer is not a "
                            f"launch description ({error})", ProblemKind.EVALUATION)
