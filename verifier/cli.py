@@ -47,7 +47,7 @@ from launchverify.findings.cache import ResultCache, default_cache_dir, disabled
 from launchverify.findings.fixes import Outcome, fix_all, hidden, unified_diff
 from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
-from launchverify.render.inert import inert, inert_block
+from launchverify.render.inert import InertWriter, inert, inert_block
 from launchverify.rule import Rule, Severity
 from launchverify.topology import command as topology_command
 from launchverify.workspace import reading
@@ -712,8 +712,6 @@ def _graph(args: argparse.Namespace) -> int:
         if args.format == "json":
             render_graph_json(graph, sys.stdout, symbolic=args.symbolic, interfaces=interfaces)
         else:
-            from launchverify.render.inert import InertWriter
-
             render_graph_text(graph, cast(TextIO, InertWriter(sys.stdout)),
                               symbolic=args.symbolic, interfaces=interfaces)
     return _graph_stopped(graph, args.format)

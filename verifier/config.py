@@ -345,14 +345,14 @@ def confined(config: Config, checked: Sequence[Path], workspace: Path,
     """
     if config.path is None:
         return config, []
-    home = _real(workspace)
-    own = _real(config.path)
-    if not any(_within(own, _real(path)) for path in (home, *checked)):
+    home = resolved(workspace)
+    if not any(resolved(config.path).is_relative_to(resolved(path))
+               for path in (home, *checked)):
         return config, []
-    allowed = [home, *(_real(path) for path in confirmed)]
+    allowed = [home, *(resolved(path) for path in confirmed)]
 
     def kept(folder: Path) -> bool:
-        return any(_within(_real(folder), root) for root in allowed)
+        return any(resolved(folder).is_relative_to(root) for root in allowed)
 
     notes = [f"{config.path.name} names {key} {str(folder)!r}, outside the workspace: "
              f"not read (a folder given with --package-path or {PACKAGE_PATH_VARIABLE} "
@@ -365,11 +365,3 @@ def confined(config: Config, checked: Sequence[Path], workspace: Path,
     return dataclasses.replace(
         config, package_paths=[p for p in config.package_paths if kept(p)],
         workspace=workspace_key), notes
-
-
-def _real(path: Path) -> Path:
-    return Path(os.path.realpath(path))
-
-
-def _within(path: Path, root: Path) -> bool:
-    return path == root or path.is_relative_to(root)

@@ -17,6 +17,18 @@ _PACKAGES = ("launchverify", "launchverify.models", "launchverify.rules")
 _roots: dict[tuple[bool, ...], tuple[str, ...]] = {}
 
 
+def package_folders() -> list[str]:
+    """Return the folders of launchverify's packages where Python finds them.
+
+    Found, not imported (a cached run needs no rule): each package's ``__init__`` folder.
+    """
+    from importlib.util import find_spec
+
+    specs = [find_spec(name) for name in _PACKAGES]
+    return [os.path.dirname(spec.origin) for spec in specs  # noqa: PTH120
+            if spec is not None and spec.origin]
+
+
 def own_roots() -> tuple[str, ...]:
     """Return the folders (with a trailing separator) of launchverify's imported packages.
 

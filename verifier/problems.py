@@ -53,7 +53,7 @@ class ProblemSink:
         """
         self.problems.append(Problem(ProblemKind.EVALUATION, message, span, contextual))
 
-    def cannot_read(self, error: OSError, span: Span) -> None:
+    def cannot_read(self, error: OSError, span: Span, what: str = "file") -> None:
         """Record why a file was not read.
 
         A file outside what launchverify reads (``reading.Outside``: a link out of the
@@ -62,7 +62,7 @@ class ProblemSink:
         if isinstance(error, Outside):
             self.unmodeled(str(error), span)
         else:
-            self.parse(f"cannot read file: {error}", span)
+            self.parse(f"cannot read {what}: {error}", span)
 
     def unmodeled(self, message: str, span: Span) -> None:
         """Record that launchverify does not understand a construct (analysis incomplete)."""

@@ -24,7 +24,6 @@ from __future__ import annotations
 
 import contextlib
 import hashlib
-import importlib.util
 import os
 import pickle
 import stat
@@ -36,6 +35,7 @@ from dataclasses import dataclass, field, fields
 from pathlib import Path
 
 import launchverify
+from launchverify.own_code import package_folders
 from launchverify.workspace.packages import SKIP_DIRS
 from launchverify.workspace.paths import link_inside
 
@@ -90,12 +90,8 @@ def key_of(parts: Iterable[object]) -> str:
 
 def own_code_stamp() -> str:
     """Return a stamp of launchverify's installed code (an edited checkout changes it)."""
-    # an editable install maps the three packages to three folders of the checkout; they
-    # are found, not imported (a cached run needs no rule)
-    specs = [importlib.util.find_spec(name)
-             for name in ("launchverify", "launchverify.rules", "launchverify.models")]
-    roots = {str(Path(spec.origin).parent) for spec in specs
-             if spec is not None and spec.origin}
+    # an editable install maps the three packages to three folders of the checkout
+    roots = set(package_folders())
     digest = hashlib.blake2b(digest_size=16)
     for path, stamp in sorted(_walk(sorted(roots), own=True).items()):
         if path.endswith((".py", ".txt", ".json")):

@@ -94,4 +94,3 @@ def _unreadable(path: Path, fmt: str, sink: ProblemSink) -> LoadedFile:
     except OSError as error:
         sink.cannot_read(error, Span.of_file(path))
     return LoadedFile(path, fmt, None, sink.problems)
-

@@ -30,12 +30,7 @@ from launchverify.frontends.yaml_reader import YamlLoadError, compose, span_of
 from launchverify.ir.subst import Sub
 from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
-from launchverify.workspace.reading import (
-    Outside,
-    long_number,
-    long_number_message,
-    read_file,
-)
+from launchverify.workspace.reading import long_number, long_number_message, read_file
 
 MAX_NODES = 200_000  # alias expansion budget, as for launch files
 PARAMETERS_KEY = "ros__parameters"
@@ -100,13 +95,9 @@ def load_param_file(path: Path) -> ParamFile:
     result = ParamFile(path)
     try:
         data = read_file(path)
-    except Outside as error:  # unknown, not broken: ros2 launch may read it fine
-        result.readable = False
-        result.sink.unmodeled(str(error), Span(path, 1))
-        return result
     except OSError as error:
         result.readable = False
-        result.sink.parse(f"cannot read parameter file: {error}", Span(path, 1))
+        result.sink.cannot_read(error, Span(path, 1), "parameter file")
         return result
     long = long_number(data)
     if long is not None:

@@ -11,8 +11,6 @@ garbage) becomes a problem on its file, never an exception here.
 
 from __future__ import annotations
 
-import functools
-import importlib.util
 import os
 import select
 import sys
@@ -30,10 +28,12 @@ from launchverify.isolation.codec import CodecError, Decoder, Encoder, TooLarge
 from launchverify.isolation.confine import WITHOUT_LANDLOCK, Limits, outermost
 from launchverify.isolation.worker import Setting
 from launchverify.isolation.zygote import Zygote
+from launchverify.own_code import package_folders
 from launchverify.problems import Problem, ProblemKind, ProblemSink
 from launchverify.span import Span
 from launchverify.workspace import reading
 from launchverify.workspace.packages import PackageIndex
+from launchverify.workspace.paths import resolved
 from launchverify.workspace.reading import read_file
 
 GRACE = 2.0  # seconds past the time limit before a worker is killed
@@ -472,14 +472,6 @@ def _no_register(function: Callable[..., Any]) -> int:
     raise CodecError("launchverify sends no functions to a worker")
 
 
-@functools.cache
-def _package_folder(name: str) -> str:
-    """Return the real folder of one of launchverify's packages, without importing it."""
-    spec = importlib.util.find_spec(name)
-    origin = spec.origin if spec is not None and spec.origin else "."
-    return str(Path(origin).resolve().parent)
-
-
 def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
     """Return the folders a worker may read: the workspace, packages, Python, system libraries.
 
@@ -497,8 +489,9 @@ def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
     folders.update(entry for entry in sys.path if entry and (
         entry in python_path or entry.endswith(("site-packages", "dist-packages"))
         or any(entry.startswith(prefix + os.sep) for prefix in prefixes)))
-    for package in ("launchverify", "launchverify.models", "launchverify.rules"):
-        folders.add(_package_folder(package))
+    # their real folders: a strict editable install links each module into the checkout
+    folders.update(str(resolved(Path(folder, "__init__.py")).parent)
+                   for folder in package_folders())
     folders.update(("/usr/lib", "/usr/lib64", "/lib", "/lib64", "/usr/share/zoneinfo",
                     "/etc/ld.so.cache", "/etc/localtime"))
     return tuple(outermost(folders))

@@ -87,8 +87,7 @@ class _Started:
                 else subprocess.DEVNULL,
                 start_new_session=True)  # the terminal's Ctrl-C is launchverify's
         except OSError:
-            for end in (ours, theirs):
-                end.close()
+            ours.close()
             os.close(setup_write)
             raise
         finally:
@@ -130,7 +129,7 @@ class Zygote:
     def __init__(self, setting: Setting) -> None:
         started = _STARTED.pop() if _STARTED else _Started.start()
         setup = pickle.dumps({
-            "setting": setting, "temporary": tempfile.gettempdir(), "path": sys.path,
+            "setting": setting, "temporary": tempfile.gettempdir(),
             "unsaved": reading.unsaved_contents(), "limit": reading.limit(),
             "roots": reading.confined_to()})
         # written beside: the zygote may still be importing, and the setup be large
@@ -379,7 +378,6 @@ def boot(control_fd: str, setup_fd: str) -> NoReturn:
     try:
         with os.fdopen(int(setup_fd), "rb") as pipe:
             setup = pickle.loads(pipe.read())
-        sys.path[:] = setup["path"]
         tempfile.tempdir = setup["temporary"]  # as launchverify's: never asked of the environment
         reading.restore(setup["unsaved"], setup["limit"], setup["roots"])
         control = socket.socket(fileno=int(control_fd))

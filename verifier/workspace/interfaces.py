@@ -94,8 +94,10 @@ class Interfaces:
             for graph in self._graphs.values():
                 for include in graph.includes:
                     picked = _picked_name(include.action.path)
+                    if picked is None:
+                        continue
                     for argument in include.action.arguments:
-                        if picked is not None and isinstance(argument.name, s.Text):
+                        if isinstance(argument.name, s.Text):
                             self._picked.setdefault((picked, argument.name.text), argument.span)
         return self._picked.get((file.name, name))
 

@@ -74,7 +74,7 @@ def link_inside(link: str, roots: Iterable[str]) -> bool:
     Walks of the workspace follow linked folders only this far: a pull request's link to
     ``/`` or ``/proc`` must not make a check walk, hash or read the machine.
     """
-    real = os.path.realpath(link)
+    real = real_path(link)
     return below(real, roots) and not below(real, SYSTEM_FOLDERS)
 
 

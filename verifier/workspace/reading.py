@@ -40,7 +40,7 @@ class Outside(Unreadable):
     """A file whose real path is outside the folders a check reads."""
 
 
-# Real paths of the folders a check reads below (none set: anywhere but _SYSTEM); set by
+# Real paths of the folders a check reads below (none set: anywhere but a system file); set by
 # the check, kept for the reporters that show code frames after it.
 _ROOTS: dict[str, tuple[str, ...]] = {}
 
