@@ -435,7 +435,7 @@ def test_without_pygls_the_command_says_what_to_install() -> None:
     done = subprocess.run([sys.executable, "-c", block], capture_output=True, text=True,
                           timeout=TIMEOUT, check=False)
     assert done.returncode == 2
-    assert "pip install 'launchverify[lsp]'" in done.stderr
+    assert "pip install 'pygls>=2,<3'" in done.stderr
     assert "Traceback" not in done.stderr
 
 

@@ -1,16 +1,16 @@
 """The language server, ``launchverify lsp``: findings in the editor as you type.
 
-It speaks the Language Server Protocol through pygls, an optional dependency
-(``pip install 'launchverify[lsp]'``). Nothing here imports pygls at module level: the
-command line imports this package only for ``lsp``, and ``serve`` says clearly when pygls
-is missing instead of failing with a traceback.
+It speaks the Language Server Protocol through pygls, an optional dependency (the
+``lsp`` extra: ``pip install '.[lsp]'`` in a clone). Nothing here imports pygls at module
+level: the command line imports this package only for ``lsp``, and ``serve`` says clearly
+when pygls is missing instead of failing with a traceback.
 """
 
 from __future__ import annotations
 
 from launchverify.engine import UsageError
 
-INSTALL_HINT = "pip install 'launchverify[lsp]'"
+INSTALL_HINT = "pip install 'pygls>=2,<3' (the [lsp] extra of launchverify)"
 
 
 def serve(tcp: str | None = None) -> int:
