@@ -1,7 +1,10 @@
 """The ``launchverify`` command line.
 
 Exit status: 0 when no finding at or above ``--fail-on`` (default: error), 1 when there is
-one, 2 for a usage error or an internal failure (never a traceback on the user's screen).
+one, 2 for a usage error or an internal failure (never a traceback on the user's screen),
+141 when the reader of the output went away before the end (``launchverify check | head``:
+the command stops quietly, as other tools do; 141 is what a shell shows for a tool that
+SIGPIPE stopped, so ``set -o pipefail`` scripts see the same as with ``cat``).
 """
 
 from __future__ import annotations
@@ -11,9 +14,11 @@ import dataclasses
 import gc
 import json
 import os
+import select
+import shlex
 import sys
-from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager, nullcontext
+from collections.abc import Callable, Sequence
+from contextlib import nullcontext
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TextIO, cast
 
@@ -59,6 +64,7 @@ if TYPE_CHECKING:
     from launchverify.graph import LaunchGraph
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
+EXIT_READER_GONE = 128 + 13  # as a shell shows a tool stopped by SIGPIPE (`cmd | head`)
 
 
 FORMATS = ("text", "json", "sarif", "junit", "github")
@@ -288,7 +294,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     paused = nullcontext() if long_running else collector_paused()
     try:
         with paused:
-            return handlers[args.command](args)
+            return _until_reader_leaves(handlers[args.command], args)
     except (UsageError, RegistryError, ConfigError, BaselineError) as error:
         print(inert(f"launchverify: error: {error}"), file=sys.stderr)
         return EXIT_ERROR
@@ -298,6 +304,50 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(inert(f"launchverify: internal error: {type(error).__name__}: {error}") + "\n"
               "Please report this with the launch file that caused it.", file=sys.stderr)
         return EXIT_ERROR
+
+
+def _until_reader_leaves(handler: Callable[[argparse.Namespace], int],
+                         args: argparse.Namespace) -> int:
+    """Run a command; stop quietly when its reader goes away (``launchverify ... | head``).
+
+    Python's recipe: what is left to write goes to devnull, so the interpreter's last
+    flush does not fail again. A broken pipe that is not standard output's or standard
+    error's (a worker's, a started process's) is a bug, and raised.
+    """
+    try:
+        status = handler(args)
+        sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
+    except BrokenPipeError:
+        gone = _closed_standard_streams()
+        if not gone:
+            raise
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        for descriptor in gone:
+            os.dup2(devnull, descriptor)
+        os.close(devnull)
+        return EXIT_READER_GONE
+    return status
+
+
+def _closed_standard_streams() -> list[int]:
+    """Return the descriptors of standard output and error whose reader has gone.
+
+    A pipe's writing end polls as an error (Linux) or hang-up (BSD, macOS) once no one
+    reads it. Without ``poll`` (Windows), standard output is taken to be the one.
+    """
+    if not hasattr(select, "poll"):  # pragma: no cover - Windows
+        return [sys.__stdout__.fileno()] if sys.__stdout__ is not None else []
+    gone = []
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            descriptor = stream.fileno()
+        except (AttributeError, OSError, ValueError):  # replaced by a caller (a test)
+            continue
+        poller = select.poll()
+        poller.register(descriptor, select.POLLOUT)
+        if any(events & (select.POLLERR | select.POLLHUP) for _, events in poller.poll(0)):
+            gone.append(descriptor)
+    return gone
 
 
 def check_options(args: argparse.Namespace, *, progress: bool = False
@@ -422,11 +472,10 @@ def _check(args: argparse.Namespace) -> int:
         with args.output.open("w", encoding="utf-8") as handle:
             _render(args, report, handle, color=False)
     else:
-        with _output_may_close():
-            color = {"auto": None, "always": True, "never": False}[args.color]
-            if color is None and os.environ.get("NO_COLOR"):  # no-color.org: plain text
-                color = False
-            _render(args, report, report_out, color=color)
+        color = {"auto": None, "always": True, "never": False}[args.color]
+        if color is None and os.environ.get("NO_COLOR"):  # no-color.org: plain text
+            color = False
+        _render(args, report, report_out, color=color)
     sys.stdout.flush()
     _say_protections(report, args.verbose)
     if args.exit_zero:
@@ -466,8 +515,8 @@ def _diff(args: argparse.Namespace, options: CheckOptions, report: Report) -> in
     if args.output is not None:
         args.output.write_text(text, encoding="utf-8")
     else:
-        with _output_may_close():  # exact for a pipe (patch), inert for a reviewer's eyes
-            sys.stdout.write(inert_block(text) if sys.stdout.isatty() else text)
+        # exact for a pipe (patch), inert for a reviewer's eyes
+        sys.stdout.write(inert_block(text) if sys.stdout.isatty() else text)
     if not args.quiet:
         count = outcome.count
         print(f"Would fix {count} finding{'s' if count != 1 else ''}"
@@ -584,16 +633,20 @@ def _report(args: argparse.Namespace) -> int:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from launchverify.executor.runner import RunOptions, run
+    from launchverify.executor.runner import RunOptions, Verdict, run
     from launchverify.render.text import render_text
 
     paths, arguments = parse_arguments(args.targets)
     if len(paths) != 1 or not Path(paths[0]).is_file():
         raise UsageError("run takes exactly one launch file")
-    def checked(report: Report, refused: bool) -> None:
-        if report.findings:
-            render_text(report, sys.stderr, color=None, quiet=True)
-        if refused:
+    def checked(verdict: Verdict) -> None:
+        if verdict.report.findings:
+            render_text(verdict.report, sys.stderr, color=None, quiet=True)
+        if verdict.elsewhere:
+            print(inert(f"launchverify: note: {verdict.elsewhere} error(s) hold only for "
+                        f"other argument values; `launchverify check {shlex.quote(paths[0])}`"
+                        " lists them"), file=sys.stderr)
+        if verdict.refused:
             print("launchverify: not started: the check found errors (--force starts "
                   "anyway)", file=sys.stderr)
 
@@ -611,17 +664,16 @@ def _rules(args: argparse.Namespace) -> int:
     from launchverify.registry import all_rules
 
     rules = all_rules()
-    with _output_may_close():
-        if args.format == "json":
-            json.dump([{"code": r.code, "slug": r.slug, "severity": r.severity.value,
-                        "summary": r.summary()} for r in rules], sys.stdout, indent=2)
-            sys.stdout.write("\n")
-        elif args.format == "markdown":
-            sys.stdout.write(rules_markdown(rules))
-        else:
-            for rule in rules:
-                print(f"{rule.code}  {rule.slug:<32} {rule.severity.value:<8} "
-                      f"{rule.summary()}")
+    if args.format == "json":
+        json.dump([{"code": r.code, "slug": r.slug, "severity": r.severity.value,
+                    "summary": r.summary()} for r in rules], sys.stdout, indent=2)
+        sys.stdout.write("\n")
+    elif args.format == "markdown":
+        sys.stdout.write(rules_markdown(rules))
+    else:
+        for rule in rules:
+            print(f"{rule.code}  {rule.slug:<32} {rule.severity.value:<8} "
+                  f"{rule.summary()}")
     return EXIT_OK
 
 
@@ -658,12 +710,11 @@ def _explain(args: argparse.Namespace) -> int:
 
     found = [r for r in resolve(args.rule) if args.rule.strip() in (r.code, r.slug)] or \
         resolve(args.rule)
-    with _output_may_close():
-        for index, rule in enumerate(found):
-            if index:
-                print()
-            print(f"# {rule.code} {rule.slug} ({rule.severity.value})\n")
-            print(rule.documentation())
+    for index, rule in enumerate(found):
+        if index:
+            print()
+        print(f"# {rule.code} {rule.slug} ({rule.severity.value})\n")
+        print(rule.documentation())
     return EXIT_OK
 
 
@@ -708,12 +759,11 @@ def _graph(args: argparse.Namespace) -> int:
     from launchverify.topology.compose import WorkspaceInterfaces
 
     interfaces = WorkspaceInterfaces(index)
-    with _output_may_close():
-        if args.format == "json":
-            render_graph_json(graph, sys.stdout, symbolic=args.symbolic, interfaces=interfaces)
-        else:
-            render_graph_text(graph, cast(TextIO, InertWriter(sys.stdout)),
-                              symbolic=args.symbolic, interfaces=interfaces)
+    if args.format == "json":
+        render_graph_json(graph, sys.stdout, symbolic=args.symbolic, interfaces=interfaces)
+    else:
+        render_graph_text(graph, cast(TextIO, InertWriter(sys.stdout)),
+                          symbolic=args.symbolic, interfaces=interfaces)
     return _graph_stopped(graph, args.format)
 
 
@@ -737,14 +787,3 @@ def _graph_stopped(graph: LaunchGraph, output_format: str) -> int:
     print(f"launchverify: {what} is incomplete: the launch stops at the error(s) above",
           file=sys.stderr)
     return EXIT_FINDINGS
-
-
-@contextmanager
-def _output_may_close() -> Iterator[None]:
-    """Stop writing quietly when the reader goes away (``launchverify check | head``)."""
-    try:
-        yield
-        sys.stdout.flush()
-    except BrokenPipeError:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())
