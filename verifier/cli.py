@@ -20,7 +20,7 @@ import sys
 from collections.abc import Callable, Sequence
 from contextlib import nullcontext
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TextIO, cast
+from typing import TYPE_CHECKING, Any, NoReturn, TextIO, cast
 
 from launchverify import __version__
 from launchverify.ament import excluded_by_ament
@@ -32,6 +32,7 @@ from launchverify.config import (
     confirmed_package_paths,
     find_config,
     load_config,
+    unknown_selector,
 )
 from launchverify.engine import (
     DEFAULT_TIME_LIMIT,
@@ -54,6 +55,7 @@ from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.render.inert import InertWriter, inert, inert_block
 from launchverify.rule import Rule, Severity
+from launchverify.suggest import did_you_mean_any
 from launchverify.topology import command as topology_command
 from launchverify.workspace import reading
 from launchverify.workspace.includers import Includers
@@ -77,11 +79,19 @@ def _codes(given: list[str] | None) -> list[str] | None:
     return [part.strip() for text in given for part in text.split(",") if part.strip()]
 
 
+WORKSPACE_HELP = ("folder to search for packages (default: the nearest colcon workspace or git "
+                  "root)")
+ENV_HELP = ("an environment variable of the machine that will run the launch (repeatable); "
+            "unset ones are free values")
+ONE_FILE_HELP = "the launch file, then launch arguments written name:=value (as on ros2 launch)"
+
+
 def _add_check_options(command: argparse.ArgumentParser) -> None:
     """Options shared by ``check`` and ``report``: what to check and how."""
-    command.add_argument("targets", nargs="+", metavar="PATH|name:=value")
-    command.add_argument("--workspace", type=Path, help="folder to search for packages "
-                         "(default: the nearest colcon workspace or git root)")
+    command.add_argument("targets", nargs="*", metavar="PATH|name:=value",
+                         help="launch files, or folders searched for them (default: .); "
+                         "launch arguments written name:=value, as on ros2 launch")
+    command.add_argument("--workspace", type=Path, metavar="FOLDER", help=WORKSPACE_HELP)
     command.add_argument("--select", action="append", metavar="CODES",
                          help="comma-separated codes, slugs or prefixes to run (repeatable)")
     command.add_argument("--ignore", action="append", metavar="CODES",
@@ -89,8 +99,7 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
     command.add_argument("--exclude", action="append", default=[], metavar="GLOB",
                          help="leave out discovered files matching GLOB (repeatable)")
     command.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
-                         help="an environment variable of the machine that will run the "
-                         "launch (repeatable); unset ones are free values")
+                         help=ENV_HELP)
     command.add_argument("--config", type=Path, metavar="FILE",
                          help="configuration file (default: the nearest launchverify.toml "
                          "or pyproject.toml with [tool.launchverify])")
@@ -124,6 +133,11 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
     command.add_argument("--launch-files-only", action="store_true",
                          help="skip given files that do not look like launch files (as in "
                          "folders); for pre-commit, which passes every matching file")
+    command.add_argument("--exit-zero", action="store_true",
+                         help="exit 0 even when there are findings")
+    command.add_argument("--fail-on", choices=("error", "warning", "info"),
+                         help="lowest severity that fails the check, exit status 1 "
+                         "(default: the configuration's fail-on, else error)")
 
 
 def _positive_int(text: str) -> int:
@@ -146,9 +160,37 @@ def _positive_float(text: str) -> float:
     return value
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse, with short usage errors and suggestions, as ruff and git give them.
+
+    A wrong option value is one line and a pointer to ``--help``, not the whole usage; a
+    misspelt subcommand, choice or option says what was probably meant.
+    """
+
+    def error(self, message: str) -> NoReturn:
+        """Print ``launchverify check: error: ...`` and where help is; exit 2."""
+        self.exit(EXIT_ERROR, inert(f"{self.prog}: error: {message}") +
+                  f"\nsee '{self.prog} --help'\n")
+
+    def _check_value(self, action: argparse.Action, value: Any) -> None:
+        """Refuse a value outside the choices, naming the closest (the same on every Python)."""
+        if action.choices is None or value in action.choices:
+            return
+        choices = [str(choice) for choice in action.choices]
+        hint = did_you_mean_any(str(value), choices) or f" (choose from {', '.join(choices)})"
+        raise argparse.ArgumentError(action, f"invalid choice: {str(value)!r}{hint}")
+
+    def unknown_options(self, tokens: list[str]) -> NoReturn:
+        """Refuse options this (sub)command does not have, with the one meant if clear."""
+        known = [option for action in self._actions for option in action.option_strings]
+        first = tokens[0].split("=", 1)[0]
+        self.error(f"unrecognized arguments: {' '.join(tokens)}"
+                   f"{did_you_mean_any(first, known, count=1)}")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """Return the argument parser of the whole command line."""
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="launchverify",
         description="Formal verifier and static analyser for ROS 2 launch files.",
     )
@@ -161,17 +203,17 @@ def build_parser() -> argparse.ArgumentParser:
         "Arguments written name:=value are passed to the launch as on ros2 launch.",
     )
     _add_check_options(check)
-    check.add_argument("--format", choices=FORMATS, default="text")
+    check.add_argument("--format", "--output-format", dest="format", choices=FORMATS,
+                       default="text", help="how findings are written (default: text; "
+                       "--output-format is ruff's spelling)")
     check.add_argument("-o", "--output", type=Path, metavar="FILE",
                        help="write the report to FILE instead of standard output")
-    check.add_argument("--color", choices=("auto", "always", "never"), default="auto")
+    check.add_argument("--color", choices=("auto", "always", "never"), default="auto",
+                       help="color the text output (default: auto, on a terminal unless "
+                       "NO_COLOR is set)")
     check.add_argument("--explain", action="store_true",
                        help="under each finding: related lines, the trace, why it matters "
                        "and how to fix it")
-    check.add_argument("--exit-zero", action="store_true",
-                       help="exit 0 even when there are findings")
-    check.add_argument("--fail-on", choices=("error", "warning", "info"),
-                       help="lowest severity that fails the check (default: error)")
     check.add_argument("-q", "--quiet", action="store_true",
                        help="print findings only: no summary, no progress")
     check.add_argument("--statistics", action="store_true",
@@ -216,12 +258,14 @@ def build_parser() -> argparse.ArgumentParser:
         "arguments, lifecycle bring-up and, from the workspace's own sources, the topics, "
         "services and actions its nodes use, under the given arguments.",
     )
-    graph.add_argument("targets", nargs="+", metavar="FILE|name:=value")
-    graph.add_argument("--workspace", type=Path)
-    graph.add_argument("--format", choices=("json", "text"), default="json")
+    graph.add_argument("targets", nargs="+", metavar="FILE|name:=value", help=ONE_FILE_HELP)
+    graph.add_argument("--workspace", type=Path, metavar="FOLDER", help=WORKSPACE_HELP)
+    graph.add_argument("--format", choices=("json", "text"), default="json",
+                       help="json for programs (default), text for people")
     graph.add_argument("--symbolic", action="store_true",
                        help="every action with its path condition, values as expressions")
-    graph.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
+    graph.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
+                       help=ENV_HELP)
 
     run = commands.add_parser(
         "run", help="verify a launch file, then start it",
@@ -229,8 +273,9 @@ def build_parser() -> argparse.ArgumentParser:
         "launch's run-time semantics (processes, event handlers, timers, respawn, "
         "shutdown). Arguments written name:=value are passed as on ros2 launch.",
     )
-    run.add_argument("targets", nargs="+", metavar="FILE|name:=value")
-    run.add_argument("--workspace", type=Path)
+    run.add_argument("targets", nargs="+", metavar="FILE|name:=value", help=ONE_FILE_HELP)
+    run.add_argument("--workspace", type=Path, metavar="FOLDER",
+                     help=WORKSPACE_HELP + "; its install/ folder is searched for executables")
     run.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
                      help="environment given to the check (the processes get the real one)")
     run.add_argument("--dry-run", action="store_true",
@@ -242,12 +287,22 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--log-dir", type=Path, metavar="DIR",
                      help="where the run folder goes (default: ROS_LOG_DIR or ~/.ros/log)")
 
-    rules = commands.add_parser("rules", help="list every rule")
+    rules = commands.add_parser(
+        "rules", help="list every rule",
+        description="List every rule: code, slug, severity and what it finds. "
+        "'launchverify explain CODE' prints one rule's documentation.",
+    )
     rules.add_argument("--format", choices=("text", "json", "markdown"), default="text",
                        help="markdown: every rule's documentation (docs/rules.md)")
 
-    explain = commands.add_parser("explain", help="print a rule's documentation")
-    explain.add_argument("rule", metavar="CODE|SLUG")
+    explain = commands.add_parser(
+        "explain", help="print a rule's documentation",
+        description="Print a rule's documentation: what it finds, why it matters, an "
+        "example and how to fix it.",
+    )
+    explain.add_argument("rule", metavar="CODE|SLUG",
+                         help="a code (LV101), a slug (duplicate-node-name) or a code "
+                         "prefix (LV1: every rule whose code starts so)")
 
     lsp = commands.add_parser(
         "lsp", help="run the language server (for editors)",
@@ -264,9 +319,18 @@ def build_parser() -> argparse.ArgumentParser:
         "in ~/.bashrc, the same with zsh in ~/.zshrc, or launchverify completion fish | "
         "source in fish's config.",
     )
-    completion.add_argument("shell", choices=("bash", "zsh", "fish"))
+    completion.add_argument("shell", choices=("bash", "zsh", "fish"),
+                            help="the shell the script is for")
     topology_command.add_parser(commands)
     return parser
+
+
+def _subcommand(parser: argparse.ArgumentParser, name: str | None) -> Parser:
+    """Return the parser of a subcommand (the whole command line's without one)."""
+    for action in parser._actions:  # argparse exposes subparsers only this way
+        if isinstance(action, argparse._SubParsersAction) and name in action.choices:
+            return cast(Parser, action.choices[name])
+    return cast(Parser, parser)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -277,7 +341,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     # leaves those as unknown tokens.
     unknown = [token for token in extra if token.startswith("-") and token != "-"]
     if unknown or (extra and not hasattr(args, "targets")):
-        parser.error(f"unrecognized arguments: {' '.join(unknown or extra)}")
+        _subcommand(parser, args.command).unknown_options(unknown or extra)
     if extra:
         args.targets = [*args.targets, *extra]
     if args.command is None:
@@ -358,8 +422,10 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
     its ignore, ``name:=value`` and ``--env`` override its arguments and environment.
     """
     paths, arguments = parse_arguments(args.targets)
-    if not paths:
-        raise UsageError("no PATH given")
+    if not paths and args.affected:
+        raise UsageError("--affected needs the changed files")
+    paths = paths or ["."]  # as ruff: the working folder
+    _refuse_unknown_selectors(args)
     config = Config()
     if not args.isolated:
         found = args.config or find_config(Path(paths[0]))
@@ -390,6 +456,15 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         progress=_progress_bar() if progress else None,
     )
     return options, config
+
+
+def _refuse_unknown_selectors(args: argparse.Namespace) -> None:
+    """Refuse a ``--select``/``--ignore`` that names no rule, before any work."""
+    for option, given in (("--select", args.select), ("--ignore", args.ignore)):
+        for selector in _codes(given) or []:
+            problem = unknown_selector(selector)
+            if problem is not None:
+                raise UsageError(f"{option}: {problem}")
 
 
 def _confined(config: Config, paths: list[str], args: argparse.Namespace) -> Config:
@@ -478,6 +553,11 @@ def _check(args: argparse.Namespace) -> int:
         _render(args, report, report_out, color=color)
     sys.stdout.flush()
     _say_protections(report, args.verbose)
+    return _exit_status(report, args, config)
+
+
+def _exit_status(report: Report, args: argparse.Namespace, config: Config) -> int:
+    """Return the exit status of ``check`` and ``report``: 1 when a finding fails them."""
     if args.exit_zero:
         return EXIT_OK
     return EXIT_FINDINGS if fails(report, args, config) else EXIT_OK
@@ -621,7 +701,7 @@ def _report(args: argparse.Namespace) -> int:
     from launchverify.topology.compose import WorkspaceInterfaces
 
     _writable(args.output)
-    options, _ = check_options(args, progress=sys.stderr.isatty())
+    options, config = check_options(args, progress=sys.stderr.isatty())
     report = run_check(options)
     _say_protections(report, args.verbose)
     _, index = build_index(options.paths, options.workspace, options.config.package_paths)
@@ -629,7 +709,7 @@ def _report(args: argparse.Namespace) -> int:
         render_html(report, handle, interfaces=WorkspaceInterfaces(index))
     print(f"wrote {args.output} ({len(report.findings)} findings in {report.files} files)",
           file=sys.stderr)
-    return EXIT_OK
+    return _exit_status(report, args, config)
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -708,6 +788,9 @@ def _lsp(args: argparse.Namespace) -> int:
 def _explain(args: argparse.Namespace) -> int:
     from launchverify.registry import resolve
 
+    problem = unknown_selector(args.rule)
+    if problem is not None:
+        raise UsageError(problem)
     found = [r for r in resolve(args.rule) if args.rule.strip() in (r.code, r.slug)] or \
         resolve(args.rule)
     for index, rule in enumerate(found):
