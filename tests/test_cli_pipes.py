@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import subprocess
 import sys
+import threading
 from pathlib import Path
 
 import pytest
@@ -28,8 +29,15 @@ def closed_early(argv: list[str], closed: str = "stdout") -> tuple[int, str]:
                   else (process.stderr, process.stdout))
     assert gone is not None and kept is not None
     gone.close()  # the reader leaves before a single byte was written
-    other = kept.read()
-    return process.wait(timeout=120), other
+    stuck = threading.Timer(60, process.kill)  # a hang fails the test, not the suite
+    stuck.start()
+    try:
+        other = kept.read()
+        status = process.wait()
+    finally:
+        stuck.cancel()
+    assert status != -9, "still running after 60 s: killed"
+    return status, other
 
 
 @pytest.mark.parametrize("argv", [
@@ -67,3 +75,22 @@ def test_a_broken_pipe_of_our_own_is_still_a_bug(monkeypatch: pytest.MonkeyPatch
     monkeypatch.setattr(launchverify.cli, "_rules", broken)
     assert launchverify.cli.main(["rules"]) == 2
     assert "internal error: BrokenPipeError" in capsys.readouterr().err
+
+
+def test_a_launch_goes_on_when_its_screen_reader_leaves(tmp_path: Path) -> None:
+    """``run FILE | head``: the processes run to their end, as under ros2 launch; their
+    output is in the run folder's logs (before, the launch hung on its first line)."""
+    worker = CORPUS / "executor" / "nodes" / "worker.py"
+    launch = tmp_path / "two.launch.xml"
+    launch.write_text(f"""<launch>
+  <executable cmd="{sys.executable} {worker} a --finish-after 0.2" name="a" output="screen"/>
+  <executable cmd="{sys.executable} {worker} b --finish-after 0.4" name="b" output="screen"/>
+</launch>
+""")
+    status, err = closed_early(["run", str(launch), "--log-dir", str(tmp_path)])
+    assert status == 0 and "Error" not in err and "Traceback" not in err
+    (run,) = tmp_path.glob("launchverify-*")
+    events = [line.split()[1:3] for line in (run / "events.log").read_text().splitlines()]
+    assert sorted(events) == [["exit", "a-1"], ["exit", "b-1"], ["start", "a-1"],
+                              ["start", "b-1"]]
+    assert "ready a" in (run / "launch.log").read_text()

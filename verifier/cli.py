@@ -4,7 +4,9 @@ Exit status: 0 when no finding at or above ``--fail-on`` (default: error), 1 whe
 one, 2 for a usage error or an internal failure (never a traceback on the user's screen),
 141 when the reader of the output went away before the end (``launchverify check | head``:
 the command stops quietly, as other tools do; 141 is what a shell shows for a tool that
-SIGPIPE stopped, so ``set -o pipefail`` scripts see the same as with ``cat``).
+SIGPIPE stopped, so ``set -o pipefail`` scripts see the same as with ``cat``). A launch
+started by ``run`` is the exception: it goes on as ros2 launch's would, its output kept in
+the run folder's logs, and its own status is the exit status.
 """
 
 from __future__ import annotations
