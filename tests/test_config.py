@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import shutil
 from pathlib import Path
 
@@ -109,24 +110,60 @@ def test_configured_arguments_are_pinned(tmp_path: Path,
 
 
 @pytest.mark.parametrize(("text", "message"), [
-    ("select = [", "invalid TOML"),
-    ("selcet = ['LV1']", "unknown key(s) selcet"),
-    ("severity = {LV101 = 'fatal'}", "severity of LV101 must be one of"),
-    ("ignore = 3", "ignore must be a list of strings"),
+    ("select = [", "launchverify.toml:1: invalid TOML: Invalid value"),
+    ("# ours\n\nselcet = ['LV1']", "launchverify.toml:3: unknown key 'selcet' "
+     "(did you mean 'select'?)"),
+    ("jobs = 2\nfoo = 1\nbar = 2", "launchverify.toml:2: unknown key 'foo' (known: "
+     "arguments, distro, "),
+    ("jobs = 2\nfoo = 1\nbar = 2", "; also unknown: 'bar'"),
+    ("jobs = 2\nseverity = {LV101 = 'fatal'}", "launchverify.toml:2: severity of LV101 "
+     "must be one of"),
+    ("[severity]\nLV404 = 'error'\nLV101 = 'fatal'", "launchverify.toml:3: severity of "
+     "LV101"),
+    ("\nignore = 3", "launchverify.toml:2: ignore must be a list of strings"),
+    ("arguments = {a = 'x', b = [1]}", "launchverify.toml:1: arguments.b must be a string"),
+    ("distro = 'humbel'", "launchverify.toml:1: distro must be one of humble, iron, "),
+    ("distro = 'humbel'", "(did you mean 'humble'?)"),
+    ("fail-on = 'never'", "launchverify.toml:1: fail-on must be one of error, warning, info"),
+    ("select = [\n  'LV1',\n  'LV9',\n]", "launchverify.toml:3: select: no rule is called "
+     "'LV9' (`launchverify rules` lists every rule)"),
+    ("per-file-ignores = {'a/**' = ['duplicate-node-nam']}", "launchverify.toml:1: "
+     "per-file-ignores: no rule is called 'duplicate-node-nam' (did you mean "
+     "'duplicate-node-name'?)"),
+    ("severity = {LV10l = 'info'}", "launchverify.toml:1: severity: no rule is called "
+     "'LV10l' (did you mean 'LV101'"),
 ])
 def test_bad_configuration_is_a_clear_error(project: Path, text: str, message: str,
                                             capsys: pytest.CaptureFixture[str]) -> None:
+    """Every configuration error names the file and, where TOML has one, the line."""
     (project / "launchverify.toml").write_text(text)
     assert main(["check", str(project)]) == 2
     err = capsys.readouterr().err
-    assert message in err and "Traceback" not in err
+    assert message in err and f"{project.resolve()}{os.sep}launchverify.toml:" in err
+    assert "Traceback" not in err
+
+
+@pytest.mark.parametrize(("text", "message"), [
+    ('[project]\nname = "x"\nselct = 1\n\n[tool.launchverify]\nignore = ["LV2"]\n'
+     "selct = []\n", "pyproject.toml:7: unknown key 'selct' (did you mean 'select'?)"),
+    ('[project]\nselect = 1\n[tool.launchverify]\nignore = ["LV1"]\nselect = ["LV9"]\n',
+     "pyproject.toml:5: select: no rule is called 'LV9'"),
+    ('[tool.launchverify.severity]\nLV202 = "loud"\n', "pyproject.toml:2: severity of "
+     "LV202 must be one of"),
+    ("[tool]\nlaunchverify = 3\n", "pyproject.toml:2: [tool.launchverify] must be a table"),
+])
+def test_pyproject_errors_name_the_line_in_the_table(
+        project: Path, text: str, message: str, capsys: pytest.CaptureFixture[str]) -> None:
+    (project / "pyproject.toml").write_text(text)
+    assert main(["check", str(project)]) == 2
+    assert f"{project.resolve()}{os.sep}{message}" in capsys.readouterr().err
 
 
 def test_unknown_rule_in_configuration_is_a_clear_error(
         project: Path, capsys: pytest.CaptureFixture[str]) -> None:
     (project / "launchverify.toml").write_text("select = ['LV999']\n")
     assert main(["check", str(project)]) == 2
-    assert "no rule is called 'LV999'" in capsys.readouterr().err
+    assert "launchverify.toml:1: select: no rule is called 'LV999'" in capsys.readouterr().err
 
 
 def test_find_config_ignores_pyproject_without_the_table(tmp_path: Path) -> None:
@@ -146,7 +183,7 @@ def test_a_malformed_launchverify_table_in_pyproject_is_an_error(
         '[project]\nname = "x"\n\n[tool.launchverify]\nselect = ["LV1"\nignore = []\n')
     assert main(["check", str(tmp_path)]) == 2
     err = capsys.readouterr().err
-    assert "pyproject.toml: invalid TOML" in err and "line 6" in err
+    assert "pyproject.toml:6:1: invalid TOML" in err
     # someone else's broken pyproject is not ours: the check runs with the defaults
     (tmp_path / "pyproject.toml").write_text('[project\nname = "x"\n')
     assert main(["check", str(tmp_path)]) == 1

@@ -455,3 +455,65 @@ def test_composable_nodes_are_loaded_through_ros2(
         "--node-namespace /perception --remap-rule image:=image_raw --parameter fps:=30 "
         "--parameter frame_id:=cam"]
     assert "component usb_cam/usb_cam::UsbCamNode loaded into /perception/container" in events
+
+
+GUARDED = """<launch>
+  <arg name="use_mock_hardware" default="{default}"/>
+  <arg name="mock" default="$(var use_mock_hardware)"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="driver"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="driver" if="$(var {guard})"/>
+</launch>
+"""
+
+
+@pytest.mark.parametrize(("default", "guard", "given", "verdict"), [
+    # the duplicate needs use_mock_hardware:=true: started, and said
+    ("false", "use_mock_hardware", [], "started, 1 elsewhere"),
+    ("false", "mock", [], "started, 1 elsewhere"),  # a default that is another's value
+    ("true", "use_mock_hardware", [], "refused"),  # it holds by default
+    ("true", "mock", [], "refused"),
+    ("false", "use_mock_hardware", ["use_mock_hardware:=true"], "refused"),  # as given
+    ("false", "mock", ["mock:=true"], "refused"),  # a default overridden
+    ("true", "use_mock_hardware", ["use_mock_hardware:=false"], "started"),
+])
+def test_run_refuses_only_errors_that_hold_for_the_arguments_given(
+        default: str, guard: str, given: list[str], verdict: str, tmp_path: Path,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    launch = tmp_path / "robot.launch.xml"
+    launch.write_text(GUARDED.format(default=default, guard=guard))
+    started = verdict.startswith("started")
+    assert main(["run", str(launch), "--dry-run", *given]) == (0 if started else 1)
+    out, err = capsys.readouterr()
+    note = ("1 error(s) hold only for other argument values; `launchverify check "
+            f"{launch}` lists them")
+    assert (note in err) is verdict.endswith("elsewhere")
+    if started:
+        assert "start talker:" in out and "not started" not in err and "LV101" not in err
+    else:
+        assert out == "" and "LV101" in err and "not started" in err
+    assert main(["check", str(launch), *given]) == (0 if verdict == "started" else 1)
+    capsys.readouterr()
+
+
+def test_run_judges_python_launch_arguments_too(tmp_path: Path,
+                                                capsys: pytest.CaptureFixture[str]) -> None:
+    launch = tmp_path / "robot.launch.py"
+    launch.write_text('''from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('use_mock_hardware', default_value='false'),
+        Node(package='demo_nodes_cpp', executable='talker', name='driver'),
+        Node(package='demo_nodes_cpp', executable='listener', name='driver',
+             condition=IfCondition(LaunchConfiguration('use_mock_hardware'))),
+    ])
+''')
+    assert main(["run", str(launch), "--dry-run"]) == 0
+    assert "1 error(s) hold only for other argument values" in capsys.readouterr().err
+    assert main(["run", str(launch), "--dry-run", "use_mock_hardware:=true"]) == 1
+    assert "not started" in capsys.readouterr().err

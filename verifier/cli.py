@@ -1,7 +1,12 @@
 """The ``launchverify`` command line.
 
 Exit status: 0 when no finding at or above ``--fail-on`` (default: error), 1 when there is
-one, 2 for a usage error or an internal failure (never a traceback on the user's screen).
+one, 2 for a usage error or an internal failure (never a traceback on the user's screen),
+141 when the reader of the output went away before the end (``launchverify check | head``:
+the command stops quietly, as other tools do; 141 is what a shell shows for a tool that
+SIGPIPE stopped, so ``set -o pipefail`` scripts see the same as with ``cat``). A launch
+started by ``run`` is the exception: it goes on as ros2 launch's would, its output kept in
+the run folder's logs, and its own status is the exit status.
 """
 
 from __future__ import annotations
@@ -11,11 +16,13 @@ import dataclasses
 import gc
 import json
 import os
+import select
+import shlex
 import sys
-from collections.abc import Callable, Iterator, Sequence
-from contextlib import contextmanager, nullcontext
+from collections.abc import Callable, Sequence
+from contextlib import nullcontext
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TextIO, cast
+from typing import TYPE_CHECKING, Any, NoReturn, TextIO, cast
 
 from launchverify import __version__
 from launchverify.ament import excluded_by_ament
@@ -27,6 +34,7 @@ from launchverify.config import (
     confirmed_package_paths,
     find_config,
     load_config,
+    unknown_selector,
 )
 from launchverify.engine import (
     DEFAULT_TIME_LIMIT,
@@ -49,6 +57,7 @@ from launchverify.models.distros import DISTROS
 from launchverify.registry import RegistryError
 from launchverify.render.inert import InertWriter, inert, inert_block
 from launchverify.rule import Rule, Severity
+from launchverify.suggest import did_you_mean_any
 from launchverify.topology import command as topology_command
 from launchverify.workspace import reading
 from launchverify.workspace.includers import Includers
@@ -59,6 +68,7 @@ if TYPE_CHECKING:
     from launchverify.graph import LaunchGraph
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
+EXIT_READER_GONE = 128 + 13  # as a shell shows a tool stopped by SIGPIPE (`cmd | head`)
 
 
 FORMATS = ("text", "json", "sarif", "junit", "github")
@@ -71,11 +81,19 @@ def _codes(given: list[str] | None) -> list[str] | None:
     return [part.strip() for text in given for part in text.split(",") if part.strip()]
 
 
+WORKSPACE_HELP = ("folder to search for packages (default: the nearest colcon workspace or git "
+                  "root)")
+ENV_HELP = ("an environment variable of the machine that will run the launch (repeatable); "
+            "unset ones are free values")
+ONE_FILE_HELP = "the launch file, then launch arguments written name:=value (as on ros2 launch)"
+
+
 def _add_check_options(command: argparse.ArgumentParser) -> None:
     """Options shared by ``check`` and ``report``: what to check and how."""
-    command.add_argument("targets", nargs="+", metavar="PATH|name:=value")
-    command.add_argument("--workspace", type=Path, help="folder to search for packages "
-                         "(default: the nearest colcon workspace or git root)")
+    command.add_argument("targets", nargs="*", metavar="PATH|name:=value",
+                         help="launch files, or folders searched for them (default: .); "
+                         "launch arguments written name:=value, as on ros2 launch")
+    command.add_argument("--workspace", type=Path, metavar="FOLDER", help=WORKSPACE_HELP)
     command.add_argument("--select", action="append", metavar="CODES",
                          help="comma-separated codes, slugs or prefixes to run (repeatable)")
     command.add_argument("--ignore", action="append", metavar="CODES",
@@ -83,8 +101,7 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
     command.add_argument("--exclude", action="append", default=[], metavar="GLOB",
                          help="leave out discovered files matching GLOB (repeatable)")
     command.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
-                         help="an environment variable of the machine that will run the "
-                         "launch (repeatable); unset ones are free values")
+                         help=ENV_HELP)
     command.add_argument("--config", type=Path, metavar="FILE",
                          help="configuration file (default: the nearest launchverify.toml "
                          "or pyproject.toml with [tool.launchverify])")
@@ -118,6 +135,11 @@ def _add_check_options(command: argparse.ArgumentParser) -> None:
     command.add_argument("--launch-files-only", action="store_true",
                          help="skip given files that do not look like launch files (as in "
                          "folders); for pre-commit, which passes every matching file")
+    command.add_argument("--exit-zero", action="store_true",
+                         help="exit 0 even when there are findings")
+    command.add_argument("--fail-on", choices=("error", "warning", "info"),
+                         help="lowest severity that fails the check, exit status 1 "
+                         "(default: the configuration's fail-on, else error)")
 
 
 def _positive_int(text: str) -> int:
@@ -140,9 +162,37 @@ def _positive_float(text: str) -> float:
     return value
 
 
+class Parser(argparse.ArgumentParser):
+    """argparse, with short usage errors and suggestions, as ruff and git give them.
+
+    A wrong option value is one line and a pointer to ``--help``, not the whole usage; a
+    misspelt subcommand, choice or option says what was probably meant.
+    """
+
+    def error(self, message: str) -> NoReturn:
+        """Print ``launchverify check: error: ...`` and where help is; exit 2."""
+        self.exit(EXIT_ERROR, inert(f"{self.prog}: error: {message}") +
+                  f"\nsee '{self.prog} --help'\n")
+
+    def _check_value(self, action: argparse.Action, value: Any) -> None:
+        """Refuse a value outside the choices, naming the closest (the same on every Python)."""
+        if action.choices is None or value in action.choices:
+            return
+        choices = [str(choice) for choice in action.choices]
+        hint = did_you_mean_any(str(value), choices) or f" (choose from {', '.join(choices)})"
+        raise argparse.ArgumentError(action, f"invalid choice: {str(value)!r}{hint}")
+
+    def unknown_options(self, tokens: list[str]) -> NoReturn:
+        """Refuse options this (sub)command does not have, with the one meant if clear."""
+        known = [option for action in self._actions for option in action.option_strings]
+        first = tokens[0].split("=", 1)[0]
+        self.error(f"unrecognized arguments: {' '.join(tokens)}"
+                   f"{did_you_mean_any(first, known, count=1)}")
+
+
 def build_parser() -> argparse.ArgumentParser:
     """Return the argument parser of the whole command line."""
-    parser = argparse.ArgumentParser(
+    parser = Parser(
         prog="launchverify",
         description="Formal verifier and static analyser for ROS 2 launch files.",
     )
@@ -155,17 +205,17 @@ def build_parser() -> argparse.ArgumentParser:
         "Arguments written name:=value are passed to the launch as on ros2 launch.",
     )
     _add_check_options(check)
-    check.add_argument("--format", choices=FORMATS, default="text")
+    check.add_argument("--format", "--output-format", dest="format", choices=FORMATS,
+                       default="text", help="how findings are written (default: text; "
+                       "--output-format is ruff's spelling)")
     check.add_argument("-o", "--output", type=Path, metavar="FILE",
                        help="write the report to FILE instead of standard output")
-    check.add_argument("--color", choices=("auto", "always", "never"), default="auto")
+    check.add_argument("--color", choices=("auto", "always", "never"), default="auto",
+                       help="color the text output (default: auto, on a terminal unless "
+                       "NO_COLOR is set)")
     check.add_argument("--explain", action="store_true",
                        help="under each finding: related lines, the trace, why it matters "
                        "and how to fix it")
-    check.add_argument("--exit-zero", action="store_true",
-                       help="exit 0 even when there are findings")
-    check.add_argument("--fail-on", choices=("error", "warning", "info"),
-                       help="lowest severity that fails the check (default: error)")
     check.add_argument("-q", "--quiet", action="store_true",
                        help="print findings only: no summary, no progress")
     check.add_argument("--statistics", action="store_true",
@@ -210,12 +260,14 @@ def build_parser() -> argparse.ArgumentParser:
         "arguments, lifecycle bring-up and, from the workspace's own sources, the topics, "
         "services and actions its nodes use, under the given arguments.",
     )
-    graph.add_argument("targets", nargs="+", metavar="FILE|name:=value")
-    graph.add_argument("--workspace", type=Path)
-    graph.add_argument("--format", choices=("json", "text"), default="json")
+    graph.add_argument("targets", nargs="+", metavar="FILE|name:=value", help=ONE_FILE_HELP)
+    graph.add_argument("--workspace", type=Path, metavar="FOLDER", help=WORKSPACE_HELP)
+    graph.add_argument("--format", choices=("json", "text"), default="json",
+                       help="json for programs (default), text for people")
     graph.add_argument("--symbolic", action="store_true",
                        help="every action with its path condition, values as expressions")
-    graph.add_argument("--env", action="append", default=[], metavar="NAME=VALUE")
+    graph.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
+                       help=ENV_HELP)
 
     run = commands.add_parser(
         "run", help="verify a launch file, then start it",
@@ -223,8 +275,9 @@ def build_parser() -> argparse.ArgumentParser:
         "launch's run-time semantics (processes, event handlers, timers, respawn, "
         "shutdown). Arguments written name:=value are passed as on ros2 launch.",
     )
-    run.add_argument("targets", nargs="+", metavar="FILE|name:=value")
-    run.add_argument("--workspace", type=Path)
+    run.add_argument("targets", nargs="+", metavar="FILE|name:=value", help=ONE_FILE_HELP)
+    run.add_argument("--workspace", type=Path, metavar="FOLDER",
+                     help=WORKSPACE_HELP + "; its install/ folder is searched for executables")
     run.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
                      help="environment given to the check (the processes get the real one)")
     run.add_argument("--dry-run", action="store_true",
@@ -236,12 +289,22 @@ def build_parser() -> argparse.ArgumentParser:
     run.add_argument("--log-dir", type=Path, metavar="DIR",
                      help="where the run folder goes (default: ROS_LOG_DIR or ~/.ros/log)")
 
-    rules = commands.add_parser("rules", help="list every rule")
+    rules = commands.add_parser(
+        "rules", help="list every rule",
+        description="List every rule: code, slug, severity and what it finds. "
+        "'launchverify explain CODE' prints one rule's documentation.",
+    )
     rules.add_argument("--format", choices=("text", "json", "markdown"), default="text",
                        help="markdown: every rule's documentation (docs/rules.md)")
 
-    explain = commands.add_parser("explain", help="print a rule's documentation")
-    explain.add_argument("rule", metavar="CODE|SLUG")
+    explain = commands.add_parser(
+        "explain", help="print a rule's documentation",
+        description="Print a rule's documentation: what it finds, why it matters, an "
+        "example and how to fix it.",
+    )
+    explain.add_argument("rule", metavar="CODE|SLUG",
+                         help="a code (LV101), a slug (duplicate-node-name) or a code "
+                         "prefix (LV1: every rule whose code starts so)")
 
     lsp = commands.add_parser(
         "lsp", help="run the language server (for editors)",
@@ -258,9 +321,18 @@ def build_parser() -> argparse.ArgumentParser:
         "in ~/.bashrc, the same with zsh in ~/.zshrc, or launchverify completion fish | "
         "source in fish's config.",
     )
-    completion.add_argument("shell", choices=("bash", "zsh", "fish"))
+    completion.add_argument("shell", choices=("bash", "zsh", "fish"),
+                            help="the shell the script is for")
     topology_command.add_parser(commands)
     return parser
+
+
+def _subcommand(parser: argparse.ArgumentParser, name: str | None) -> Parser:
+    """Return the parser of a subcommand (the whole command line's without one)."""
+    for action in parser._actions:  # argparse exposes subparsers only this way
+        if isinstance(action, argparse._SubParsersAction) and name in action.choices:
+            return cast(Parser, action.choices[name])
+    return cast(Parser, parser)
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -271,7 +343,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     # leaves those as unknown tokens.
     unknown = [token for token in extra if token.startswith("-") and token != "-"]
     if unknown or (extra and not hasattr(args, "targets")):
-        parser.error(f"unrecognized arguments: {' '.join(unknown or extra)}")
+        _subcommand(parser, args.command).unknown_options(unknown or extra)
     if extra:
         args.targets = [*args.targets, *extra]
     if args.command is None:
@@ -288,7 +360,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     paused = nullcontext() if long_running else collector_paused()
     try:
         with paused:
-            return handlers[args.command](args)
+            return _until_reader_leaves(handlers[args.command], args)
     except (UsageError, RegistryError, ConfigError, BaselineError) as error:
         print(inert(f"launchverify: error: {error}"), file=sys.stderr)
         return EXIT_ERROR
@@ -300,6 +372,50 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_ERROR
 
 
+def _until_reader_leaves(handler: Callable[[argparse.Namespace], int],
+                         args: argparse.Namespace) -> int:
+    """Run a command; stop quietly when its reader goes away (``launchverify ... | head``).
+
+    Python's recipe: what is left to write goes to devnull, so the interpreter's last
+    flush does not fail again. A broken pipe that is not standard output's or standard
+    error's (a worker's, a started process's) is a bug, and raised.
+    """
+    try:
+        status = handler(args)
+        sys.stdout.flush()  # a closed pipe shows here, not in the interpreter's exit
+    except BrokenPipeError:
+        gone = _closed_standard_streams()
+        if not gone:
+            raise
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        for descriptor in gone:
+            os.dup2(devnull, descriptor)
+        os.close(devnull)
+        return EXIT_READER_GONE
+    return status
+
+
+def _closed_standard_streams() -> list[int]:
+    """Return the descriptors of standard output and error whose reader has gone.
+
+    A pipe's writing end polls as an error (Linux) or hang-up (BSD, macOS) once no one
+    reads it. Without ``poll`` (Windows), standard output is taken to be the one.
+    """
+    if not hasattr(select, "poll"):  # pragma: no cover - Windows
+        return [sys.__stdout__.fileno()] if sys.__stdout__ is not None else []
+    gone = []
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            descriptor = stream.fileno()
+        except (AttributeError, OSError, ValueError):  # replaced by a caller (a test)
+            continue
+        poller = select.poll()
+        poller.register(descriptor, select.POLLOUT)
+        if any(events & (select.POLLERR | select.POLLHUP) for _, events in poller.poll(0)):
+            gone.append(descriptor)
+    return gone
+
+
 def check_options(args: argparse.Namespace, *, progress: bool = False
                   ) -> tuple[CheckOptions, Config]:
     """Merge the command line with the configuration file into what to check.
@@ -308,8 +424,10 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
     its ignore, ``name:=value`` and ``--env`` override its arguments and environment.
     """
     paths, arguments = parse_arguments(args.targets)
-    if not paths:
-        raise UsageError("no PATH given")
+    if not paths and args.affected:
+        raise UsageError("--affected needs the changed files")
+    paths = paths or ["."]  # as ruff: the working folder
+    _refuse_unknown_selectors(args)
     config = Config()
     if not args.isolated:
         found = args.config or find_config(Path(paths[0]))
@@ -340,6 +458,15 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         progress=_progress_bar() if progress else None,
     )
     return options, config
+
+
+def _refuse_unknown_selectors(args: argparse.Namespace) -> None:
+    """Refuse a ``--select``/``--ignore`` that names no rule, before any work."""
+    for option, given in (("--select", args.select), ("--ignore", args.ignore)):
+        for selector in _codes(given) or []:
+            problem = unknown_selector(selector)
+            if problem is not None:
+                raise UsageError(f"{option}: {problem}")
 
 
 def _confined(config: Config, paths: list[str], args: argparse.Namespace) -> Config:
@@ -422,13 +549,17 @@ def _check(args: argparse.Namespace) -> int:
         with args.output.open("w", encoding="utf-8") as handle:
             _render(args, report, handle, color=False)
     else:
-        with _output_may_close():
-            color = {"auto": None, "always": True, "never": False}[args.color]
-            if color is None and os.environ.get("NO_COLOR"):  # no-color.org: plain text
-                color = False
-            _render(args, report, report_out, color=color)
+        color = {"auto": None, "always": True, "never": False}[args.color]
+        if color is None and os.environ.get("NO_COLOR"):  # no-color.org: plain text
+            color = False
+        _render(args, report, report_out, color=color)
     sys.stdout.flush()
     _say_protections(report, args.verbose)
+    return _exit_status(report, args, config)
+
+
+def _exit_status(report: Report, args: argparse.Namespace, config: Config) -> int:
+    """Return the exit status of ``check`` and ``report``: 1 when a finding fails them."""
     if args.exit_zero:
         return EXIT_OK
     return EXIT_FINDINGS if fails(report, args, config) else EXIT_OK
@@ -466,8 +597,8 @@ def _diff(args: argparse.Namespace, options: CheckOptions, report: Report) -> in
     if args.output is not None:
         args.output.write_text(text, encoding="utf-8")
     else:
-        with _output_may_close():  # exact for a pipe (patch), inert for a reviewer's eyes
-            sys.stdout.write(inert_block(text) if sys.stdout.isatty() else text)
+        # exact for a pipe (patch), inert for a reviewer's eyes
+        sys.stdout.write(inert_block(text) if sys.stdout.isatty() else text)
     if not args.quiet:
         count = outcome.count
         print(f"Would fix {count} finding{'s' if count != 1 else ''}"
@@ -572,7 +703,7 @@ def _report(args: argparse.Namespace) -> int:
     from launchverify.topology.compose import WorkspaceInterfaces
 
     _writable(args.output)
-    options, _ = check_options(args, progress=sys.stderr.isatty())
+    options, config = check_options(args, progress=sys.stderr.isatty())
     report = run_check(options)
     _say_protections(report, args.verbose)
     _, index = build_index(options.paths, options.workspace, options.config.package_paths)
@@ -580,20 +711,24 @@ def _report(args: argparse.Namespace) -> int:
         render_html(report, handle, interfaces=WorkspaceInterfaces(index))
     print(f"wrote {args.output} ({len(report.findings)} findings in {report.files} files)",
           file=sys.stderr)
-    return EXIT_OK
+    return _exit_status(report, args, config)
 
 
 def _run(args: argparse.Namespace) -> int:
-    from launchverify.executor.runner import RunOptions, run
+    from launchverify.executor.runner import RunOptions, Verdict, run
     from launchverify.render.text import render_text
 
     paths, arguments = parse_arguments(args.targets)
     if len(paths) != 1 or not Path(paths[0]).is_file():
         raise UsageError("run takes exactly one launch file")
-    def checked(report: Report, refused: bool) -> None:
-        if report.findings:
-            render_text(report, sys.stderr, color=None, quiet=True)
-        if refused:
+    def checked(verdict: Verdict) -> None:
+        if verdict.report.findings:
+            render_text(verdict.report, sys.stderr, color=None, quiet=True)
+        if verdict.elsewhere:
+            print(inert(f"launchverify: note: {verdict.elsewhere} error(s) hold only for "
+                        f"other argument values; `launchverify check {shlex.quote(paths[0])}`"
+                        " lists them"), file=sys.stderr)
+        if verdict.refused:
             print("launchverify: not started: the check found errors (--force starts "
                   "anyway)", file=sys.stderr)
 
@@ -611,17 +746,16 @@ def _rules(args: argparse.Namespace) -> int:
     from launchverify.registry import all_rules
 
     rules = all_rules()
-    with _output_may_close():
-        if args.format == "json":
-            json.dump([{"code": r.code, "slug": r.slug, "severity": r.severity.value,
-                        "summary": r.summary()} for r in rules], sys.stdout, indent=2)
-            sys.stdout.write("\n")
-        elif args.format == "markdown":
-            sys.stdout.write(rules_markdown(rules))
-        else:
-            for rule in rules:
-                print(f"{rule.code}  {rule.slug:<32} {rule.severity.value:<8} "
-                      f"{rule.summary()}")
+    if args.format == "json":
+        json.dump([{"code": r.code, "slug": r.slug, "severity": r.severity.value,
+                    "summary": r.summary()} for r in rules], sys.stdout, indent=2)
+        sys.stdout.write("\n")
+    elif args.format == "markdown":
+        sys.stdout.write(rules_markdown(rules))
+    else:
+        for rule in rules:
+            print(f"{rule.code}  {rule.slug:<32} {rule.severity.value:<8} "
+                  f"{rule.summary()}")
     return EXIT_OK
 
 
@@ -656,14 +790,16 @@ def _lsp(args: argparse.Namespace) -> int:
 def _explain(args: argparse.Namespace) -> int:
     from launchverify.registry import resolve
 
+    problem = unknown_selector(args.rule)
+    if problem is not None:
+        raise UsageError(problem)
     found = [r for r in resolve(args.rule) if args.rule.strip() in (r.code, r.slug)] or \
         resolve(args.rule)
-    with _output_may_close():
-        for index, rule in enumerate(found):
-            if index:
-                print()
-            print(f"# {rule.code} {rule.slug} ({rule.severity.value})\n")
-            print(rule.documentation())
+    for index, rule in enumerate(found):
+        if index:
+            print()
+        print(f"# {rule.code} {rule.slug} ({rule.severity.value})\n")
+        print(rule.documentation())
     return EXIT_OK
 
 
@@ -708,12 +844,11 @@ def _graph(args: argparse.Namespace) -> int:
     from launchverify.topology.compose import WorkspaceInterfaces
 
     interfaces = WorkspaceInterfaces(index)
-    with _output_may_close():
-        if args.format == "json":
-            render_graph_json(graph, sys.stdout, symbolic=args.symbolic, interfaces=interfaces)
-        else:
-            render_graph_text(graph, cast(TextIO, InertWriter(sys.stdout)),
-                              symbolic=args.symbolic, interfaces=interfaces)
+    if args.format == "json":
+        render_graph_json(graph, sys.stdout, symbolic=args.symbolic, interfaces=interfaces)
+    else:
+        render_graph_text(graph, cast(TextIO, InertWriter(sys.stdout)),
+                          symbolic=args.symbolic, interfaces=interfaces)
     return _graph_stopped(graph, args.format)
 
 
@@ -737,14 +872,3 @@ def _graph_stopped(graph: LaunchGraph, output_format: str) -> int:
     print(f"launchverify: {what} is incomplete: the launch stops at the error(s) above",
           file=sys.stderr)
     return EXIT_FINDINGS
-
-
-@contextmanager
-def _output_may_close() -> Iterator[None]:
-    """Stop writing quietly when the reader goes away (``launchverify check | head``)."""
-    try:
-        yield
-        sys.stdout.flush()
-    except BrokenPipeError:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-        os.dup2(devnull, sys.stdout.fileno())

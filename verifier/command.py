@@ -28,7 +28,7 @@ def run() -> None:
     try:
         sys.stdout.flush()
         sys.stderr.flush()
-    except OSError:  # a closed pipe (`launchverify check | head`): the usual exit reports it
+    except OSError:  # a stream closed after main's end (main handles `check | head` itself)
         raise SystemExit(status) from None
     if threading.active_count() > 1 or sys.getprofile() or sys.gettrace():
         raise SystemExit(status)  # a thread left running; a profiler or coverage writes at exit

@@ -45,6 +45,7 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.models.distros import DISTROS
+from launchverify.suggest import did_you_mean, did_you_mean_any
 from launchverify.workspace.paths import relative_file, resolved
 
 if sys.version_info >= (3, 11):
@@ -155,6 +156,9 @@ def _has_table(pyproject: Path) -> bool:
         return False
 
 
+_TOML_POSITION = re.compile(r"\s*\(at (?:line (\d+), column (\d+)|end of document)\)$")
+
+
 def _read(path: Path) -> dict[str, Any]:
     try:
         with path.open("rb") as handle:
@@ -162,21 +166,79 @@ def _read(path: Path) -> dict[str, Any]:
     except OSError as error:
         raise ConfigError(f"cannot read {path}: {error.strerror}") from error
     except (tomllib.TOMLDecodeError, ValueError, RecursionError) as error:
-        raise ConfigError(f"{path}: invalid TOML: {error}") from error
+        message = str(error)
+        at = _TOML_POSITION.search(message)  # tomllib ends its messages so
+        if at is None:
+            raise ConfigError(f"{path}: invalid TOML: {message}") from error
+        where = f"{at[1]}:{at[2]}" if at[1] else str(_line_count(path))
+        raise ConfigError(f"{path}:{where}: invalid TOML: {message[:at.start()]}") from error
+
+
+def _line_count(path: Path) -> int:
+    """Return the number of the last line of a file (where its end of document is)."""
+    try:
+        return path.read_bytes().rstrip(b"\n").count(b"\n") + 1
+    except OSError:  # pragma: no cover - read a moment ago
+        return 1
+
+
+class _Lines:
+    """Where keys and values are written in a configuration file.
+
+    tomllib gives no positions: a key is looked for as TOML writes one (at a line's
+    start, after ``{``, ``,`` or ``.``, or in a table header), each key of a path from
+    where the previous one was found, and from the ``[tool.launchverify]`` header in a
+    pyproject.toml. Not found (an unusual layout): the file alone is named.
+    """
+
+    def __init__(self, path: Path, text: str) -> None:
+        self.path = path
+        self.lines = text.split("\n")  # TOML's line ends; splitlines knows more
+        header = _TABLE.search(text) if path.name == "pyproject.toml" else None
+        self.start = text.count("\n", 0, header.start()) if header else 0
+
+    def line(self, *keys: str, value: str | None = None) -> int | None:
+        """Return the 1-based line of a key path (and of a string value under it)."""
+        found = self.start
+        patterns = [_key_pattern(key) for key in keys]
+        if value is not None:
+            patterns.append(re.compile(f"[\"']{re.escape(value)}[\"']"))
+        for pattern in patterns:
+            at = next((number for number in range(found, len(self.lines))
+                       if not self.lines[number].lstrip().startswith("#")
+                       and pattern.search(self.lines[number])), None)
+            if at is None:
+                return None
+            found = at
+        return found + 1
+
+    def where(self, *keys: str, value: str | None = None) -> str:
+        """Return ``file:line`` for a key path, or the file when the line is not found."""
+        line = self.line(*keys, value=value)
+        return f"{self.path}:{line}" if line is not None else str(self.path)
+
+
+def _key_pattern(key: str) -> re.Pattern[str]:
+    """Return a pattern finding a TOML key (bare or quoted) where it is defined."""
+    written = f"(?:{re.escape(key)}|\"{re.escape(key)}\"|'{re.escape(key)}')"
+    return re.compile(f"(?:^|[{{,.])\\s*{written}\\s*[=.]|^\\s*\\[(?:[^\\]]*[.\\s])?"
+                      f"{written}\\s*\\]")
 
 
 def load_config(path: Path) -> Config:
     """Read one configuration file."""
     data = _read(path)
+    try:
+        lines = _Lines(path, path.read_text(encoding="utf-8", errors="replace"))
+    except OSError as error:  # read a moment ago
+        raise ConfigError(f"cannot read {path}: {error.strerror}") from error
     if path.name == "pyproject.toml":
         data = data.get("tool", {}).get("launchverify", {})
     if not isinstance(data, dict):
-        raise ConfigError(f"{path}: [tool.launchverify] must be a table")
-    unknown = sorted(set(data) - KNOWN_KEYS)
-    if unknown:
-        raise ConfigError(f"{path}: unknown key(s) {', '.join(unknown)}; known: "
-                          f"{', '.join(sorted(KNOWN_KEYS))}")
-    reader = _Reader(path, data)
+        raise ConfigError(f"{lines.where('launchverify')}: [tool.launchverify] must be a "
+                          "table")
+    _refuse_unknown_keys(data, lines)
+    reader = _Reader(lines, data)
     base = path.parent
     workspace = reader.text("workspace")
     config = Config(
@@ -200,24 +262,73 @@ def load_config(path: Path) -> Config:
     )
     for code, level in config.severity.items():
         if level not in SEVERITIES:
-            raise ConfigError(f"{path}: severity of {code} must be one of "
-                              f"{', '.join(SEVERITIES)}, not {level!r}")
+            raise ConfigError(f"{lines.where('severity', code)}: severity of {code} must be "
+                              f"one of {', '.join(SEVERITIES)}, not {level!r}")
     if config.distro is not None and config.distro not in DISTROS:
-        raise ConfigError(f"{path}: distro must be one of {', '.join(DISTROS)}")
+        raise ConfigError(f"{lines.where('distro')}: distro must be one of "
+                          f"{', '.join(DISTROS)}{did_you_mean(config.distro, DISTROS)}")
     if config.fail_on is not None and config.fail_on not in SEVERITIES:
-        raise ConfigError(f"{path}: fail-on must be one of {', '.join(SEVERITIES)}")
+        raise ConfigError(f"{lines.where('fail-on')}: fail-on must be one of "
+                          f"{', '.join(SEVERITIES)}")
+    _refuse_unknown_rules(config, lines)
     return config
 
 
-class _Reader:
-    """Typed access to a configuration table, with errors that name the key."""
+def _refuse_unknown_keys(data: dict[str, Any], lines: _Lines) -> None:
+    """Name the first unknown key where it is written, with the known key it may misspell."""
+    unknown = sorted(set(data) - KNOWN_KEYS, key=lambda key: (lines.line(key) or 0, key))
+    if not unknown:
+        return
+    key = unknown[0]
+    hint = did_you_mean(key, KNOWN_KEYS) or f" (known: {', '.join(sorted(KNOWN_KEYS))})"
+    more = f"; also unknown: {', '.join(map(repr, unknown[1:]))}" if unknown[1:] else ""
+    raise ConfigError(f"{lines.where(key)}: unknown key {key!r}{hint}{more}")
 
-    def __init__(self, path: Path, data: dict[str, Any]) -> None:
-        self.path = path
+
+def unknown_selector(selector: str) -> str | None:
+    """Return why a rule selector names no rule, with the closest ones; ``None`` if it does.
+
+    (A selector is a code, a slug or a code prefix: ``LV101``, ``duplicate-node-name``,
+    ``LV1``.)
+    """
+    from launchverify.registry import RegistryError, all_rules, resolve
+
+    try:
+        resolve(selector)
+    except RegistryError:
+        names = [name for rule in all_rules() for name in (rule.code, rule.slug)]
+        hint = did_you_mean_any(selector.strip(), names) or \
+            " (`launchverify rules` lists every rule)"
+        return f"no rule is called {selector!r}{hint}"
+    return None
+
+
+def _refuse_unknown_rules(config: Config, lines: _Lines) -> None:
+    """Refuse a selector that names no rule, where it is written (not at check time)."""
+    places = [*((("select",), s) for s in config.select or []),
+              *((("ignore",), s) for s in config.ignore),
+              *((("per-file-ignores", pattern), s)
+                for pattern, selectors in config.per_file_ignores.items() for s in selectors),
+              *((("severity", s), None) for s in config.severity)]
+    for keys, selector in places:
+        problem = unknown_selector(selector if selector is not None else keys[-1])
+        if problem is not None:
+            raise ConfigError(f"{lines.where(*keys, value=selector)}: {'.'.join(keys[:1])}: "
+                              f"{problem}")
+
+
+class _Reader:
+    """Typed access to a configuration table, with errors that name the key and its line."""
+
+    def __init__(self, lines: _Lines, data: dict[str, Any]) -> None:
+        self.lines = lines
         self.data = data
 
-    def fail(self, key: str, wanted: str) -> ConfigError:
-        return ConfigError(f"{self.path}: {key} must be {wanted}")
+    def fail(self, key: str, wanted: str, *, under: str | None = None) -> ConfigError:
+        """Return the error of a value that is not what ``key`` wants (``under.key``)."""
+        keys = (key,) if under is None else (under, key)
+        shown = key if under is None else f"{under}.{key if '.' not in key else repr(key)}"
+        return ConfigError(f"{self.lines.where(*keys)}: {shown} must be {wanted}")
 
     def text(self, key: str) -> str | None:
         value = self.data.get(key)
@@ -261,7 +372,7 @@ class _Reader:
             if isinstance(item, bool):
                 item = "true" if item else "false"
             if not isinstance(item, (str, int, float)):
-                raise self.fail(f"{key}.{name}", "a string")
+                raise self.fail(str(name), "a string", under=key)
             out[str(name)] = str(item)
         return out
 
@@ -274,7 +385,7 @@ class _Reader:
             if isinstance(codes, str):
                 codes = [codes]
             if not isinstance(codes, list) or not all(isinstance(c, str) for c in codes):
-                raise self.fail(f"{key}.{pattern!r}", "a list of codes")
+                raise self.fail(str(pattern), "a list of codes", under=key)
             out[str(pattern)] = list(codes)
         return out
 

@@ -19,6 +19,36 @@ def did_you_mean(name: str, candidates: Iterable[str]) -> str:
     return f" (did you mean {match!r}?)" if match else ""
 
 
+def did_you_mean_any(name: str, candidates: Iterable[str], count: int = 3) -> str:
+    """Return ``" (did you mean 'x' or 'y'?)"`` for up to ``count`` close candidates.
+
+    Closeness ignores case (``lv101`` is ``LV101``); the closest comes first.
+
+    Examples:
+        >>> did_you_mean_any("duplicate-node-nam", ["duplicate-node-name", "invalid-name"])
+        " (did you mean 'duplicate-node-name'?)"
+        >>> did_you_mean_any("lv1011", ["LV101", "LV501"])
+        " (did you mean 'LV101'?)"
+        >>> did_you_mean_any("frobnicate", ["select", "ignore"])
+        ''
+    """
+    by_key = {candidate.lower(): candidate for candidate in sorted(set(candidates))}
+    wanted = name.lower()
+    matcher = difflib.SequenceMatcher(b=wanted)
+    scored = []
+    for key in by_key:
+        matcher.set_seq1(key)
+        if matcher.real_quick_ratio() >= 0.75 and matcher.quick_ratio() >= 0.75 and \
+                (ratio := matcher.ratio()) >= 0.75:
+            scored.append((-ratio, edit_distance(wanted, key), key))
+    found = [by_key[key] for _, _, key in sorted(scored)[:count]]  # ties: fewest edits, A-Z
+    if not found:
+        return ""
+    quoted = [repr(candidate) for candidate in found]
+    listed = quoted[0] if len(quoted) == 1 else f"{', '.join(quoted[:-1])} or {quoted[-1]}"
+    return f" (did you mean {listed}?)"
+
+
 def closest(name: str, candidates: Iterable[str]) -> str | None:
     """Return the candidate ``did_you_mean`` names, if any (difflib's closest, 0.75 alike)."""
     return _closest(name, tuple(sorted(set(candidates))))

@@ -1,8 +1,15 @@
-"""``launchverify run``: verify, then start (embedded, or through the real ``ros2 launch``)."""
+"""``launchverify run``: verify, then start (embedded, or through the real ``ros2 launch``).
+
+A run starts the launch under one assignment: the ``name:=value`` given, every other
+argument at its default. ``check`` reports what holds for *some* assignment (an LV101
+that needs ``use_mock_hardware:=true``); ``run`` refuses only for errors that hold for
+this one, and says how many others there are (``Verdict``).
+"""
 
 from __future__ import annotations
 
 import asyncio
+import dataclasses
 import os
 import shutil
 import subprocess
@@ -10,14 +17,17 @@ import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
 
 from launchverify.engine import CheckOptions, Report, UsageError, run_check
 from launchverify.executor.command import install_prefixes
 from launchverify.executor.dry_run import describe
 from launchverify.executor.plan import PlanError, build_plan
 from launchverify.executor.supervisor import Supervisor
-from launchverify.rule import Severity
+from launchverify.rule import Finding, Severity
+
+if TYPE_CHECKING:
+    from launchverify.graph import LaunchGraph
 
 
 @dataclass
@@ -31,7 +41,20 @@ class RunOptions:
     log_dir: Path | None = None
     arguments: dict[str, str] = field(default_factory=dict)
     # told the check's outcome before anything starts (and whether the start is refused)
-    on_checked: Callable[[Report, bool], None] | None = None
+    on_checked: Callable[[Verdict], None] | None = None
+
+
+@dataclass
+class Verdict:
+    """The check as it bears on this run.
+
+    ``report`` holds the findings that hold for the arguments as given (errors for other
+    values left out); ``elsewhere`` counts the errors left out, which ``check`` lists.
+    """
+
+    report: Report
+    refused: bool
+    elsewhere: int = 0
 
 
 def log_root() -> Path:
@@ -50,10 +73,10 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
     """
     options.check.environment = {**os.environ, **options.check.environment}
     report = run_check(options.check)
-    refused = any(f.severity is Severity.ERROR for f in report.findings) and not options.force
+    verdict = judge(options.check, report, force=options.force)
     if options.on_checked is not None:
-        options.on_checked(report, refused)
-    if refused:
+        options.on_checked(verdict)
+    if verdict.refused:
         return 1, report
     if not report.graphs:
         raise UsageError("nothing to run")
@@ -78,6 +101,58 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
     err.write(f"launchverify: logging to {run_dir}\n")
     supervisor = Supervisor(plan, run_dir, out, ros2=shutil.which("ros2"))
     return asyncio.run(supervisor.run()), report
+
+
+def judge(check: CheckOptions, report: Report, *, force: bool = False) -> Verdict:
+    """Return which of the check's errors hold for the arguments as given.
+
+    An error may hold only for argument values the run does not use: decided by a second
+    check where every argument the root declares is pinned to its default (those given
+    keep their value), as ``ros2 launch`` would set them. A default written with another
+    argument or a variable takes the value the evaluator gives it under the rest; one it
+    cannot know before the launch runs (a command's output) stays free, and its errors
+    refuse the start.
+    """
+    if not _errors(report.findings) or not report.graphs:
+        return Verdict(report, refused=bool(_errors(report.findings)) and not force)
+    defaults = {name: value for name, value in _defaults(report.graphs[0]).items()
+                if name not in check.arguments}
+    if not defaults:  # nothing more to pin: the check already was the run's
+        return Verdict(report, refused=not force)
+    pinned = run_check(dataclasses.replace(check, arguments={**defaults, **check.arguments}))
+    holding = {_place(f) for f in _errors(pinned.findings)}
+    shown = [f for f in report.findings
+             if f.severity is not Severity.ERROR or _place(f) in holding]
+    seen = {_place(f) for f in shown}
+    shown += [f for f in _errors(pinned.findings) if _place(f) not in seen]
+    shown.sort(key=Finding.sort_key)
+    elsewhere = sum(1 for f in _errors(report.findings) if _place(f) not in holding)
+    return Verdict(dataclasses.replace(report, findings=shown),
+                   refused=bool(holding) and not force, elsewhere=elsewhere)
+
+
+def _errors(findings: list[Finding]) -> list[Finding]:
+    return [f for f in findings if f.severity is Severity.ERROR]
+
+
+def _place(finding: Finding) -> tuple[object, ...]:
+    """Return what identifies a finding across the two checks (messages may differ)."""
+    return (finding.code, str(finding.span.file), finding.span.line, finding.span.column)
+
+
+def _defaults(graph: LaunchGraph) -> dict[str, str]:
+    """Return the defaults of the root file's arguments, declared for sure, when known.
+
+    Only the root's: an included file's arguments take what its include passes.
+    """
+    found: dict[str, str] = {}
+    for argument in graph.arguments:
+        if argument.origin.chain or graph.runs(argument.origin) is not True:
+            continue
+        value = graph.base(argument.default)  # under the given arguments and defaults
+        if value is not None:
+            found.setdefault(argument.name, value)  # launch keeps the first declaration's
+    return found
 
 
 def _workspace_of(report: Report) -> Path | None:

@@ -11,6 +11,10 @@ process group outlives the run.
 Every event is written to ``events.log`` in the run folder (and kept in ``events`` for
 tests): ``start NAME pid``, ``exit NAME code``, ``signal NAME SIGINT``, ``respawn NAME``,
 ``handler EVENT file:line``, ``timer file:line``, ``shutdown REASON``.
+
+When the reader of the screen goes away (``launchverify run FILE | head``), the launch
+goes on, as ros2 launch's does when its logging cannot write: what it prints goes to the
+run folder's logs only.
 """
 
 from __future__ import annotations
@@ -75,6 +79,7 @@ class Supervisor:
         self.launch_log = (run_dir / "launch.log").open("a", encoding="utf-8")
         self.lifecycle_warned = False
         self.guard = Guard()
+        self.screen_gone = False  # the reader of ``out`` has left
 
     # ------------------------------------------------------------------ reporting
 
@@ -89,8 +94,18 @@ class Supervisor:
         line = f"[{level}] [{who}]: {text}"
         self.launch_log.write(line + "\n")
         if screen:
-            self.out.write(line + "\n")
-            self.out.flush()
+            self.screen(line + "\n")
+
+    def screen(self, text: str) -> None:
+        """Show text at once; once the reader has gone, drop it (the logs keep it)."""
+        if self.screen_gone:
+            return
+        try:
+            self.out.write(text)
+            self.out.flush()  # a reader behind a pipe sees lines as they come
+        except BrokenPipeError:
+            self.screen_gone = True
+            _send_to_devnull(self.out)
 
     # ------------------------------------------------------------------ main
 
@@ -303,8 +318,7 @@ class Supervisor:
             running.log.write(f"{line}\n")
             self.launch_log.write(f"[{running.label}] {line}\n")
             if to_screen:
-                self.out.write(f"[{running.label}] {line}\n")
-                self.out.flush()  # a reader behind a pipe sees lines as they come
+                self.screen(f"[{running.label}] {line}\n")
 
     def exited(self, running: Running, execution: int, code: int) -> None:
         """A process ended: report it, fire handlers, respawn or complete."""
@@ -492,3 +506,19 @@ class Supervisor:
                          f"{failure}", level="ERROR")
                 return
             self.event(f"lifecycle {fqn} {word}")
+
+
+def _send_to_devnull(out: TextIO) -> None:
+    """Point a stream whose reader has gone at devnull: what it still holds goes there.
+
+    (Else the interpreter's last flush would fail on it again.)
+    """
+    try:
+        descriptor = out.fileno()
+    except (AttributeError, OSError, ValueError):  # not a file (a test's buffer)
+        return
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, descriptor)
+    finally:
+        os.close(devnull)
