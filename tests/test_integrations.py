@@ -56,6 +56,13 @@ def test_main_with_errors_checks_the_package_it_runs_in(package: Path) -> None:
     assert "bad.launch.xml:3:3" in errors[0]
 
 
+def test_a_broken_configuration_fails_the_test_with_its_place(package: Path) -> None:
+    (package / "launchverify.toml").write_text('selct = ["LV1"]\n')
+    rc, errors = main_with_errors(argv=[])
+    assert rc == 2
+    assert len(errors) == 1 and "launchverify.toml:1" in errors[0] and "select" in errors[0]
+
+
 def test_ament_exclude_list_is_honoured(package: Path,
                                         monkeypatch: pytest.MonkeyPatch) -> None:
     excluded = package / "launch" / "bad.launch.xml"

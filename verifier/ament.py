@@ -47,7 +47,10 @@ def excluded_by_ament() -> list[str]:
 def main_with_errors(argv: Sequence[str] | None = None) -> tuple[int, list[str]]:
     """Check launch files; return the exit status and one line per finding."""
     from launchverify.cli import build_parser, check_options, fails
+    from launchverify.config import ConfigError
     from launchverify.engine import UsageError, run_check
+    from launchverify.findings.baseline import BaselineError
+    from launchverify.registry import RegistryError
     from launchverify.render.junit import render_junit
 
     tokens = list(argv or [])
@@ -61,8 +64,8 @@ def main_with_errors(argv: Sequence[str] | None = None) -> tuple[int, list[str]]
     try:
         options, config = check_options(args)
         report = run_check(options)
-    except UsageError as error:
-        return 2, [f"launchverify: error: {error}"]
+    except (UsageError, ConfigError, RegistryError, BaselineError) as error:
+        return 2, [f"launchverify: error: {error}"]  # a test failure, never a traceback
     if args.xunit_file is not None:
         with args.xunit_file.open("w", encoding="utf-8") as handle:
             render_junit(report, handle, checked=report.checked)
