@@ -285,3 +285,34 @@ def closest_package(name: str, candidates: Iterable[str]) -> str | None:
     if len(scored) > 1 and scored[1][0] == scored[0][0]:
         return None
     return scored[0][1]
+
+
+def numbered_alike(first: str, second: str) -> bool:
+    """Return whether two names differ only in their digits (a numbered family).
+
+    ``input/rois8`` next to ``input/rois7`` is one more of a family, not a typo.
+
+    Examples:
+        >>> numbered_alike("input/rois8", "input/rois7"), numbered_alike("amlc", "amcl")
+        (True, False)
+    """
+    return re.sub(r"\d+", "", first) == re.sub(r"\d+", "", second)
+
+
+def sole_typo(name: str, candidates: Iterable[str]) -> str | None:
+    """Return the one candidate ``name`` misspells, when there is exactly one.
+
+    What makes a finding with a did-you-mean an error rather than a warning: a single
+    close name (one or two edits, not only digits apart) is almost always what was meant.
+
+    Examples:
+        >>> sole_typo("use_sim_tme", ["use_sim_time", "robot"])
+        'use_sim_time'
+        >>> sole_typo("robot3", ["robot"]) is None
+        True
+    """
+    close = typos(name, candidates)
+    if len(close) != 1 or numbered_alike(name, close[0]):
+        return None
+    return close[0]
+

@@ -14,7 +14,7 @@ from launchverify.models.parameter_values import typed_parameter
 from launchverify.parameters import effective_parameters
 from launchverify.rule import Finding, Fix, Rule, RuleContext, Severity, rename
 from launchverify.span import Span
-from launchverify.suggest import closest, did_you_mean, typos
+from launchverify.suggest import closest, did_you_mean, sole_typo
 
 
 class UnknownIncludeArgument(Rule):
@@ -29,6 +29,15 @@ class UnknownIncludeArgument(Rule):
     ## Why it matters
     launch sets undeclared arguments silently, so a misspelled name
     (`use_sim_tme:=true`) does nothing and the included file runs on its default.
+
+    ## Severity
+    An error when the name has exactly one close declared name (one or two edits away:
+    `use_sim_tme` for `use_sim_time`), which is almost always a typo that silently does
+    nothing; a warning when there is no such name, or several (an argument the includer
+    passes on purpose to a file that does not use it, or one of many alike names), or
+    when the two differ only in digits (`input/rois8` next to `input/rois7`: one more of
+    a numbered family than the file takes); an info when the included nodes set the same
+    parameter to the same value themselves.
 
     ## Example
     ```xml
@@ -81,8 +90,10 @@ class UnknownIncludeArgument(Rule):
                 fix = None if same is not None else _fix(include, name, span, known)
                 finding = self.finding(origin, name=name, target=include.target.name,
                                        hint=hint, fix=fix)
-                yield (finding if same is None
-                       else dataclasses.replace(finding, severity=Severity.INFO))
+                if same is not None:
+                    yield dataclasses.replace(finding, severity=Severity.INFO)
+                else:
+                    yield _as_typo(finding, name, known)
 
     def command_line(self, graph: LaunchGraph) -> Iterator[Finding]:
         """Arguments given as name:=value that the launch never declares nor reads."""
@@ -90,9 +101,23 @@ class UnknownIncludeArgument(Rule):
             return
         known = graph.declared_names() | graph.read_names() | graph.mentioned_names()
         for name in sorted(set(graph.pinned) - known):
-            yield self.finding(Span.of_file(graph.root), name=f"{name}:={graph.pinned[name]}",
-                               target=graph.root.name + " (given on the command line)",
-                               hint=did_you_mean(name, known))
+            finding = self.finding(Span.of_file(graph.root),
+                                   name=f"{name}:={graph.pinned[name]}",
+                                   target=graph.root.name + " (given on the command line)",
+                                   hint=did_you_mean(name, known))
+            yield _as_typo(finding, name, known)
+
+
+def _as_typo(finding: Finding, name: str, known: set[str]) -> Finding:
+    """Make the finding an error when ``name`` misspells exactly one known name.
+
+    Names that differ only in their digits (`input/rois8` next to `input/rois7`) are
+    members of a numbered family, not a typo: the includer passes one more than the
+    included file takes, which may be meant.
+    """
+    if sole_typo(name, known) is None:
+        return finding
+    return dataclasses.replace(finding, severity=Severity.ERROR)
 
 
 def _fix(include: IncludeRecord, name: str, span: Span, known: set[str]) -> Fix | None:
@@ -103,7 +128,7 @@ def _fix(include: IncludeRecord, name: str, span: Span, known: set[str]) -> Fix 
     for argument in include.action.arguments:
         written = argument.name
         if argument.span == span and isinstance(written, s.Text) and written.text == name:
-            return rename(written.where, name, meant, unique=typos(name, known) == [meant])
+            return rename(written.where, name, meant, unique=sole_typo(name, known) == meant)
     return None
 
 

@@ -16,6 +16,7 @@ from launchverify.models.node_names import BUILTIN_NAMES, InnerNode, inner_nodes
 from launchverify.models.ros_names import node_key_matches
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+from launchverify.suggest import sole_typo
 from launchverify.topology.shipped import shipped_node_names
 from launchverify.workspace.package_contents import name_literals, unnamed_node_names
 from launchverify.workspace.packages import PackageIndex
@@ -120,7 +121,9 @@ class UnmatchedParamBlock(Rule):
 
     A block that matches no node in any launch of the check is a warning when it is a
     likely slip: its name is close to a loading node that has no block of its own in the
-    file (the message names it). One parameter file often serves a whole stack, so a
+    file (the message names it); an error when it misspells exactly one such node (one or
+    two edits, not only digits apart: `amlc` for `amcl`), which is almost always a typo.
+    One parameter file often serves a whole stack, so a
     block for a node that runs elsewhere is no finding: a node another launch of the check
     starts, a package's well-known node (nav2's servers, from the shipped models), or a
     helper node created inside a node whose block is in the file (older nav2's
@@ -223,6 +226,8 @@ class UnmatchedParamBlock(Rule):
                                file=path.name, hint=hint)
         if not hint.startswith(" (did you mean"):
             finding = dataclasses.replace(finding, severity=Severity.INFO)
+        elif sole_typo(name, [n for n in names if n not in blocked]) is not None:
+            finding = dataclasses.replace(finding, severity=Severity.ERROR)  # `amlc`
         return finding
 
 

@@ -10,7 +10,7 @@ def generate_launch_description():
             PythonLaunchDescriptionSource(
                 PathJoinSubstitution([ThisLaunchFileDir(), 'robot.launch.py'])),
             launch_arguments={
-                'use_sim_tme': 'true',  # expect: LV204
+                'use_sim_tme': 'true',  # expect-error: LV204
                 'robot': 'r2',
                 'camera_rate': '30',
             }.items(),
