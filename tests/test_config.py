@@ -343,3 +343,22 @@ def test_each_file_takes_its_nearest_configuration(tmp_path: Path,
     assert found("--isolated") == ["legacy:LV101:error", "robot:LV101:error"]
     assert found("--config", str(root / "launchverify.toml")) == [
         "legacy:LV101:error", "robot:LV101:error"]
+
+
+def test_an_argument_says_where_it_was_given(tmp_path: Path,
+                                              capsys: pytest.CaptureFixture[str]) -> None:
+    (tmp_path / "robot.launch.xml").write_text(
+        '<launch>\n  <arg name="use_sim_time" default="false"/>\n'
+        '  <node pkg="demo_nodes_cpp" exec="talker" name="talker">\n'
+        '    <param name="use_sim_time" value="$(var use_sim_time)"/>\n  </node>\n</launch>\n')
+    (tmp_path / "launchverify.toml").write_text('arguments = {use_sim_tme = "true"}\n')
+    target = str(tmp_path / "robot.launch.xml")
+    assert main(["check", target, "--format", "json", "--no-cache", "robot:=r2"]) == 1
+    findings = json.loads(capsys.readouterr().out)["findings"]
+    messages = {f["message"]: f["severity"] for f in findings if f["code"] == "LV204"}
+    assert messages == {
+        "argument 'robot:=r2' is not declared by robot.launch.xml (given on the command line)":
+            "warning",
+        "argument 'use_sim_tme:=true' is not declared by robot.launch.xml (given in "
+        "launchverify.toml) (did you mean 'use_sim_time'?)": "error",
+    }

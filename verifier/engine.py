@@ -346,7 +346,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     with distros.checking(options.distro):  # rules judge for it too (lifecycle labels)
         findings = run_rules(graphs, rules,
                              RuleContext(packages=index, interfaces=Interfaces(graphs),
-                                         options=rule_options(config)),
+                                         options=rule_options(config, options.arguments)),
                              jobs=options.jobs or default_jobs())
     loaded = {path for g in graphs for path in g.files}
     findings, suppressed = _suppress([bounded(f) for f in findings], loaded, rules)
@@ -360,15 +360,21 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
                   baselined=baselined, python_files=python_files, protections=protections)
 
 
-def rule_options(config: Config) -> dict[str, object]:
+def rule_options(config: Config, arguments: dict[str, str] | None = None
+                 ) -> dict[str, object]:
     """Return what rules read from the configuration of the check (``RuleContext.options``).
 
     ``single-writer-topics`` is absent when the configuration does not set it: the rule
-    then uses its own default.
+    then uses its own default. ``argument-sources`` says where each pinned launch argument
+    was given (the configuration file's name, else the command line), for messages.
     """
     options: dict[str, object] = {"external-names": tuple(config.external_names)}
     if config.single_writer_topics is not None:
         options["single-writer-topics"] = tuple(config.single_writer_topics)
+    configured = f"in {config.path.name if config.path is not None else 'the configuration'}"
+    options["argument-sources"] = {
+        name: configured if config.arguments.get(name) == value else "on the command line"
+        for name, value in (arguments or {}).items()}
     return options
 
 

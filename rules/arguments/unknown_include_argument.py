@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Iterator
+from typing import cast
 
 from launchverify.graph import IncludeRecord, LaunchGraph, Origin
 from launchverify.ir import actions as a
@@ -23,8 +24,9 @@ class UnknownIncludeArgument(Rule):
     ## What it does
     For each `<include>` (`IncludeLaunchDescription`), compares the argument names it
     passes with what the included file (and the files it includes) declares or reads.
-    Arguments given on the command line (`name:=value`) are checked against the whole
-    launch the same way. Includes into files launchverify cannot fully see are skipped.
+    Arguments given on the command line (`name:=value`) or in the configuration
+    (`arguments = {...}`) are checked against the whole launch the same way. Includes
+    into files launchverify cannot fully see are skipped.
 
     ## Why it matters
     launch sets undeclared arguments silently, so a misspelled name
@@ -67,7 +69,7 @@ class UnknownIncludeArgument(Rule):
     applied = "; its nodes already set {name} to {value!r} themselves"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        yield from self.command_line(graph)
+        yield from self.command_line(graph, ctx)
         for include in graph.includes:
             if include.status != "loaded" or not include.complete or include.target is None:
                 continue
@@ -95,15 +97,20 @@ class UnknownIncludeArgument(Rule):
                 else:
                     yield _as_typo(finding, name, known)
 
-    def command_line(self, graph: LaunchGraph) -> Iterator[Finding]:
-        """Arguments given as name:=value that the launch never declares nor reads."""
+    def command_line(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        """Arguments given as name:=value that the launch never declares nor reads.
+
+        They come from the command line or the configuration; the message says which.
+        """
         if not graph.pinned or not graph.complete or graph.stopped_early:
             return
         known = graph.declared_names() | graph.read_names() | graph.mentioned_names()
+        sources = cast(dict[str, str], ctx.options.get("argument-sources", {}))
         for name in sorted(set(graph.pinned) - known):
+            given = sources.get(name, "on the command line")
             finding = self.finding(Span.of_file(graph.root),
                                    name=f"{name}:={graph.pinned[name]}",
-                                   target=graph.root.name + " (given on the command line)",
+                                   target=f"{graph.root.name} (given {given})",
                                    hint=did_you_mean(name, known))
             yield _as_typo(finding, name, known)
 
