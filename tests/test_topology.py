@@ -293,6 +293,18 @@ def test_interfaces_command_text_and_single_files(capsys: pytest.CaptureFixture[
     assert main(["interfaces", str(DATA / "nowhere")]) == 2
 
 
+def test_skipped_parts_are_said_once_per_file_and_only_when_asked(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    # what the reader does not understand is no syntax error (valid C++ has macros)
+    assert main(["interfaces", str(DATA / "demo_cpp")]) == 0
+    out = capsys.readouterr().out
+    assert "skipped" not in out and "syntax error" not in out
+    assert main(["interfaces", str(DATA / "demo_cpp"), "-v"]) == 0
+    notes = [line for line in capsys.readouterr().out.splitlines() if "skipped" in line]
+    assert len(notes) == len(set(notes)) >= 1
+    assert any("broken.cpp" in note for note in notes)
+
+
 def test_check_does_not_import_tree_sitter() -> None:
     code = ("import sys\nfrom launchverify.cli import build_parser\nimport launchverify.engine\n"
             "build_parser()\n"

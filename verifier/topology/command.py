@@ -33,14 +33,18 @@ def add_parser(commands: Any) -> None:
     )
     command.add_argument("paths", nargs="*", type=Path, default=[Path()], metavar="PATH",
                          help="workspace or package folder, or a source file (default: .)")
-    command.add_argument("--format", choices=("text", "json"), default="text")
+    command.add_argument("--format", choices=("text", "json"), default="text",
+                         help="text for people (default), json for programs")
+    command.add_argument("-v", "--verbose", action="store_true",
+                         help="also say which source files had parts the reader skipped "
+                         "(once per file)")
 
 
 def run(args: argparse.Namespace, out: TextIO | None = None) -> int:
     """Print the node interfaces found below ``args.paths``; return the exit status."""
     from launchverify.topology.files import cache_stats, file_interfaces, language_of
     from launchverify.topology.model import FileInterfaces, NodeInterface
-    from launchverify.topology.nodes import workspace_interfaces  # imports no parser yet
+    from launchverify.topology.nodes import SKIPPED, workspace_interfaces  # no parser yet
 
     stream = out or sys.stdout
     missing = [p for p in args.paths if not p.exists()]
@@ -70,8 +74,15 @@ def run(args: argparse.Namespace, out: TextIO | None = None) -> int:
         from launchverify.render.inert import InertWriter
 
         safe = cast(TextIO, InertWriter(stream))  # names come from the checked sources
+        said: set[str] = set()  # a file's skipped parts, once, and only when asked
         for interface in interfaces:
-            _print_text(interface, safe)
+            notes = []
+            for problem in interface.problems:
+                if problem.endswith(SKIPPED) and (not args.verbose or problem in said):
+                    continue
+                said.add(problem)
+                notes.append(problem)
+            _print_text(interface, safe, notes)
         count = sum(len(i.endpoints) for i in interfaces)
         print(f"{len(interfaces)} executables or components, {count} endpoints, "
               f"{cache_stats()['parsed']} files parsed in {elapsed:.2f} s", file=stream)
@@ -94,7 +105,7 @@ def _as_json(interface: NodeInterface) -> dict[str, Any]:
     }
 
 
-def _print_text(interface: NodeInterface, stream: TextIO) -> None:
+def _print_text(interface: NodeInterface, stream: TextIO, notes: list[str]) -> None:
     title = f"{interface.package} {interface.executable}".strip()
     if interface.component and interface.component != interface.executable:
         title += f" (component {interface.component})"
@@ -112,5 +123,5 @@ def _print_text(interface: NodeInterface, stream: TextIO) -> None:
         print(line, file=stream)
         if e.unresolved_reason:
             print(f"  {'':<14} unknown: {e.unresolved_reason}", file=stream)
-    for problem in interface.problems:
-        print(f"  note: {problem}", file=stream)
+    for note in notes:
+        print(f"  note: {note}", file=stream)
