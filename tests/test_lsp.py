@@ -467,25 +467,23 @@ def _finding(path: Path, line: int, column: int, end: int, **extra: Any) -> Any:
                    Span(path, line, column, line, end), **extra)
 
 
-def _lines(*texts: str, python: bool = False) -> Any:
+def _lines(*texts: str) -> Any:
     from launchverify.lsp.positions import Lines
 
-    return Lines(texts, in_bytes=python)
+    return Lines(texts)
 
 
-def test_positions_count_utf16_units_and_python_bytes() -> None:
+def test_positions_count_utf16_units() -> None:
     from launchverify.lsp.positions import UTF8, UTF32, Lines
     from launchverify.span import Span
 
     line = "a='é😀', b=x"  # é: 2 UTF-8 bytes, 1 UTF-16 unit; 😀: 4 bytes, 2 units
-    column = line.index("b") + 1  # characters, as XML and YAML spans count
+    column = line.index("b") + 1  # characters, as every span counts
     lines = _lines(line)
     assert lines.position(1, column).character == column  # one more unit for 😀
     assert lines.position(1, column).character == line.index("b") + 1
-    python = _lines(line, python=True)
+    assert lines.column(lines.position(1, column)) == (1, column)
     byte_column = len(line[: line.index("b")].encode()) + 1
-    assert python.position(1, byte_column).character == line.index("b") + 1
-    assert python.column(python.position(1, byte_column)) == (1, byte_column)
     assert Lines((line,), encoding=UTF8).position(1, column).character == byte_column - 1
     assert Lines((line,), encoding=UTF32).position(1, column).character == column - 1
     without_end = lines.range(Span(Path("f.xml"), 1, 3))
@@ -522,12 +520,12 @@ def test_fix_becomes_a_quick_fix_with_a_workspace_edit(tmp_path: Path) -> None:
 
     robot, other = tmp_path / "robot.launch.py", tmp_path / "other.launch.xml"
     text = "x = LaunchConfiguration('é', 'use_sim_tme')"
-    start = len(text[: text.index("use_sim_tme")].encode()) + 1  # Python: byte columns
+    start = text.index("use_sim_tme") + 1  # characters, in Python files too
     rename = Edit(Span(robot, 1, start, 1, start + len("use_sim_tme")), "use_sim_time")
     insert = Edit(Span(other, 2, 1, 2, 1), '<arg name="use_sim_time"/>\n')
     fix = Fix("rename to 'use_sim_time'", (rename, insert), Applicability.UNSAFE)
     finding = _finding(robot, 1, 5, 10, fix=fix)
-    lines = {robot: _lines(text, python=True), other: _lines("<launch>", "</launch>")}
+    lines = {robot: _lines(text), other: _lines("<launch>", "</launch>")}
     versioned = fix_action(finding, fix, lines.__getitem__,
                            EditStyle(True, {robot: 7}.get))
     assert versioned.title == "LV201: rename to 'use_sim_time'" and not versioned.is_preferred

@@ -74,8 +74,11 @@ def _span_at(code: CodeType, lasti: int, lineno: int | None) -> Span:
         index = lasti // 2
         if 0 <= index < len(positions):
             start, end, column, end_column = positions[index]
-            if start is not None and column is not None:
-                return Span(path, start, column + 1, end, (end_column or column) + 1)
+            if start is not None and column is not None:  # bytes: in characters
+                from launchverify.frontends.python.locate import in_characters  # a cycle
+
+                return in_characters(
+                    Span(path, start, column + 1, end, (end_column or column) + 1))
     return Span(path, line)
 
 

@@ -54,8 +54,7 @@ def suppress_action(finding: Finding, lines_of: LinesOf,
     insertion = suppression(path, lines.lines, finding.span.line, finding.code)
     if insertion is None:
         return None
-    characters = Lines(lines.lines, in_bytes=False, encoding=lines.encoding)
-    at = characters.position(insertion.line, insertion.column)
+    at = lines.position(insertion.line, insertion.column)
     edit = types.TextEdit(range=types.Range(start=at, end=at), new_text=insertion.text)
     return types.CodeAction(
         title=f"Suppress {finding.code} on this line",

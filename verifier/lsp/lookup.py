@@ -21,7 +21,6 @@ from launchverify.graph import ArgumentRecord, LaunchGraph
 from launchverify.ir import actions as a
 from launchverify.ir.subst import Text
 from launchverify.ir.walk import iter_actions
-from launchverify.lsp.positions import byte_columns
 from launchverify.span import Span
 
 # What wins when several references hold the cursor: the most specific first.
@@ -66,7 +65,7 @@ def reference_at(graphs: Sequence[LaunchGraph], path: Path, lines: Sequence[str]
 
 def _candidates(graph: LaunchGraph, path: Path, lines: Sequence[str], line: int,
                 column: int) -> Iterator[Reference]:
-    exact = byte_columns(path)  # Python: recorded at the expression itself
+    exact = path.suffix.lower() == ".py"  # Python: recorded at the expression itself
 
     def holds(span: Span) -> bool:
         if span.file != path:

@@ -1,8 +1,8 @@
 """Spans (1-based, end exclusive) to LSP positions (0-based, in the client's code units).
 
-Columns of XML and YAML spans count characters; those of Python files count UTF-8 bytes,
-as Python's own code positions do. LSP counts UTF-16 code units unless the client
-negotiated UTF-8 or UTF-32. Everything is converted against the text the span was
+Columns of spans count characters, in every language (the Python frontend converts
+Python's UTF-8 byte offsets where it reads them). LSP counts UTF-16 code units unless
+the client negotiated UTF-8 or UTF-32. Everything is converted against the text the span was
 computed from, so a line with ``é`` or an emoji still underlines the right characters.
 """
 
@@ -10,18 +10,12 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from pathlib import Path
 
 from lsprotocol import types
 
 from launchverify.span import Span
 
 UTF8, UTF16, UTF32 = "utf-8", "utf-16", "utf-32"
-
-
-def byte_columns(path: Path) -> bool:
-    """Return whether the columns of spans in this file count UTF-8 bytes (Python files)."""
-    return path.suffix.lower() == ".py"
 
 
 def _units(text: str, encoding: str) -> int:
@@ -38,7 +32,6 @@ class Lines:
     """One file's lines as a span was computed against, and how to count in them."""
 
     lines: Sequence[str]
-    in_bytes: bool = False  # span columns count UTF-8 bytes (Python files)
     encoding: str = UTF16  # what the client counts
 
     def _line(self, number: int) -> str:
@@ -46,10 +39,7 @@ class Lines:
 
     def _index(self, text: str, column: int) -> int:
         """Return the character index of a 1-based span column in a line."""
-        offset = max(column - 1, 0)
-        if self.in_bytes:
-            return len(text.encode("utf-8")[:offset].decode("utf-8", "ignore"))
-        return min(offset, len(text))
+        return min(max(column - 1, 0), len(text))
 
     def position(self, line: int, column: int) -> types.Position:
         """Return the LSP position of a 1-based line and span column."""
@@ -79,7 +69,5 @@ class Lines:
         while index < len(text) and counted < position.character:
             counted += _units(text[index], self.encoding)
             index += 1
-        prefix = text[:index]
-        width = len(prefix.encode("utf-8")) if self.in_bytes else len(prefix)
-        return position.line + 1, width + 1
+        return position.line + 1, index + 1
 

@@ -30,7 +30,7 @@ from launchverify.lsp.checking import check_documents
 from launchverify.lsp.diagnostics import diagnostic, location, uri_of
 from launchverify.lsp.hover import finding_text, join, reference_text
 from launchverify.lsp.lookup import reference_at
-from launchverify.lsp.positions import UTF16, Lines, byte_columns
+from launchverify.lsp.positions import UTF16, Lines
 from launchverify.lsp.results import Results
 from launchverify.lsp.schedule import DEBOUNCE, Scheduler, in_thread
 from launchverify.workspace.paths import relative_file
@@ -88,7 +88,7 @@ class Session:
 
     def lines_of(self, path: Path) -> Lines:
         """Return a file's lines as checked, with how its spans and the client count."""
-        return Lines(self.results.lines_of(path), byte_columns(path), self.encoding)
+        return Lines(self.results.lines_of(path), self.encoding)
 
     def version_of(self, path: Path) -> int | None:
         """Return the version of an open document (``None`` when it is not open)."""

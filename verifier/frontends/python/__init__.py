@@ -26,6 +26,7 @@ from launchverify.frontends.python.assumptions import checked
 from launchverify.frontends.python.concrete import SubstitutionFailure
 from launchverify.frontends.python.convert import PythonConverter
 from launchverify.frontends.python.importer import absent_import, import_context
+from launchverify.frontends.python.locate import in_characters
 from launchverify.frontends.python.machine import robot_machine
 from launchverify.frontends.python.mentions import mentioned_strings
 from launchverify.frontends.python.sandbox import (
@@ -221,7 +222,7 @@ class _Session:
             return self.fallback or Span.of_file(self.path)
         frame = user[-1]
         column = (frame.colno or 0) + 1 if getattr(frame, "colno", None) is not None else 1
-        return Span(Path(frame.filename), frame.lineno or 1, column)
+        return in_characters(Span(Path(frame.filename), frame.lineno or 1, column))
 
     # ------------------------------------------------------------------ running
 

@@ -13,7 +13,7 @@ import ast
 import functools
 from pathlib import Path
 
-from launchverify.span import Span
+from launchverify.span import Span, character_column
 from launchverify.workspace.reading import read_file, unsaved
 
 MAX_SOURCE_BYTES = 2 << 20  # a launch file, not a generated blob
@@ -69,7 +69,9 @@ class CallLocator:
         node = self._call(call)
         if node is None:
             return {}
-        return {k.arg: _span(call.file, k.value) for k in node.keywords if k.arg is not None}
+        lines = self._parsed(call.file)[2]
+        return {k.arg: _span(lines, call.file, k.value) for k in node.keywords
+                if k.arg is not None}
 
     def keyword_items(self, call: Span, keyword: str) -> list[tuple[Span, dict[str, Span]]]:
         """Return each item of the literal list given as ``keyword=``, with its dict keys.
@@ -82,7 +84,8 @@ class CallLocator:
         if not isinstance(value, (ast.List, ast.Tuple)) or any(
                 isinstance(item, ast.Starred) for item in value.elts):
             return []
-        return [(_span(call.file, item), self._keys(call.file, item, follow=False))
+        lines = self._parsed(call.file)[2]
+        return [(_span(lines, call.file, item), self._keys(call.file, item, follow=False))
                 for item in value.elts]
 
     def literal(self, call: Span, text: str, *, position: int | None = None,
@@ -176,7 +179,7 @@ class CallLocator:
             if follow:
                 value = self._bound(file, value)
         if isinstance(value, ast.Dict):
-            return {key.value: _span(file, key) for key in value.keys
+            return {key.value: _span(self._parsed(file)[2], file, key) for key in value.keys
                     if isinstance(key, ast.Constant) and isinstance(key.value, str)}
         found: dict[str, Span] = {}
         if isinstance(value, (ast.List, ast.Tuple)):
@@ -184,7 +187,7 @@ class CallLocator:
                 if (isinstance(item, ast.Tuple) and len(item.elts) == 2
                         and isinstance(key := item.elts[0], ast.Constant)
                         and isinstance(key.value, str)):
-                    found.setdefault(key.value, _span(file, key))
+                    found.setdefault(key.value, _span(self._parsed(file)[2], file, key))
         return found
 
     def _bound(self, file: Path, value: ast.expr | None) -> ast.expr | None:
@@ -221,6 +224,24 @@ class CallLocator:
         return found
 
 
+_SHARED = CallLocator()
+
+
+def in_characters(span: Span) -> Span:
+    """Return a span Python placed (code positions, a traceback) with character columns.
+
+    Python counts a line's UTF-8 bytes; every span counts characters. The file is read
+    (and parsed) once, as the call lookups read it.
+    """
+    lines = _SHARED._parsed(span.file)[2]
+    column = _column(lines, span.line, span.column - 1)
+    end = None if span.end_column is None else _column(
+        lines, span.end_line or span.line, span.end_column - 1)
+    if column == span.column and end == span.end_column:
+        return span
+    return Span(span.file, span.line, column, span.end_line, end)
+
+
 @functools.lru_cache(maxsize=32)
 def _index(file: Path, mtime_ns: int, size: int) -> Parsed:
     """Parse one version of a file; index its calls by position and its simple assignments."""
@@ -242,17 +263,27 @@ def _parse(data: bytes, file: Path) -> Parsed:
         return {}, {}, ()
     calls: Calls = {}
     assignments: Assignments = {}
+    lines = tuple(data.split(b"\n"))
     for node in ast.walk(tree):
         if isinstance(node, ast.Call):
-            calls[(node.lineno, node.col_offset + 1)] = node
+            calls[(node.lineno, _column(lines, node.lineno, node.col_offset))] = node
         elif isinstance(node, ast.Assign):
             for target in node.targets:
                 if isinstance(target, ast.Name):
                     assignments.setdefault(target.id, []).append(node.value)
-    return calls, assignments, tuple(data.split(b"\n"))
+    return calls, assignments, lines
 
 
-def _span(file: Path, node: ast.expr) -> Span:
-    """Return the span of a node (columns 1-based, as every span)."""
-    end_column = node.end_col_offset + 1 if node.end_col_offset is not None else None
-    return Span(file, node.lineno, node.col_offset + 1, node.end_lineno, end_column)
+def _span(lines: tuple[bytes, ...], file: Path, node: ast.expr) -> Span:
+    """Return the span of a node (columns 1-based and in characters, as every span)."""
+    end = node.end_lineno or node.lineno
+    end_column = (_column(lines, end, node.end_col_offset)
+                  if node.end_col_offset is not None else None)
+    return Span(file, node.lineno, _column(lines, node.lineno, node.col_offset),
+                node.end_lineno, end_column)
+
+
+def _column(lines: tuple[bytes, ...], number: int, offset: int) -> int:
+    """Return the 1-based character column of a UTF-8 byte ``offset`` (ast's) in a line."""
+    return character_column(lines[number - 1], offset) if 0 < number <= len(lines) \
+        else offset + 1
