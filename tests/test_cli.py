@@ -46,7 +46,7 @@ def test_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
     finding = document["findings"][0]
     assert set(finding) == {"code", "slug", "severity", "message", "file", "line", "column",
                             "end_line", "end_column", "related", "include_chain", "witness",
-                            "trace", "fix"}
+                            "trace", "fix", "url"}
     assert finding["code"] == "LV101" and finding["slug"] == "duplicate-node-name"
     assert finding["file"] == str(DUPLICATE)
     assert finding["line"] == 4 and finding["column"] == 3
@@ -331,7 +331,8 @@ def test_shell_completion(tmp_path: Path, capsys: pytest.CaptureFixture[str]) ->
     code, out, _ = run(capsys, "completion", "zsh")
     assert code == 0 and "bashcompinit" in out and "--no-cache" in out
     code, out, _ = run(capsys, "completion", "fish")
-    assert code == 0 and "-l no-cache" in out and "-a 'text json sarif junit github'" in out
+    assert code == 0 and "-l no-cache" in out
+    assert "-a 'text concise json sarif junit github'" in out
 
 
 STDIN_CLEAN = '<launch>\n  <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>\n</launch>\n'

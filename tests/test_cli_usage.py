@@ -64,7 +64,8 @@ def usage_error(capsys: pytest.CaptureFixture[str], *argv: str) -> list[str]:
 @pytest.mark.parametrize(("argv", "lines"), [
     (["check", "corpus/naming", "--format", "xx"],
      ["launchverify check: error: argument --format/--output-format: invalid choice: 'xx' "
-      "(choose from text, json, sarif, junit, github)", "see 'launchverify check --help'"]),
+      "(choose from text, concise, json, sarif, junit, github)",
+      "see 'launchverify check --help'"]),
     (["check", "corpus/naming", "--output-format", "jsn"],
      ["launchverify check: error: argument --format/--output-format: invalid choice: 'jsn' "
       "(did you mean 'json'?)", "see 'launchverify check --help'"]),

@@ -20,7 +20,7 @@ from launchverify import __version__
 from launchverify.engine import CheckOptions, Report, run_check
 from launchverify.findings.fingerprint import fingerprint_fields
 from launchverify.registry import all_rules
-from launchverify.render import sarif
+from launchverify.render import links
 from launchverify.render import text as text_output
 from launchverify.render.github import escape_data, escape_property, render_github
 from launchverify.render.junit import render_junit
@@ -142,17 +142,17 @@ def test_sarif_help_uri_comes_from_the_documentation_url(
     fake = Message()
     fake["Project-URL"] = "Homepage, https://example.org/lv"
     fake["Project-URL"] = "Documentation, https://example.org/docs/rules.md"
-    monkeypatch.setattr(sarif, "metadata", lambda name: fake)
-    sarif.project_urls.cache_clear()
+    monkeypatch.setattr(links, "metadata", lambda name: fake)
+    links.project_urls.cache_clear()
     try:
         driver = sarif_of(check(DUPLICATES))["runs"][0]["tool"]["driver"]
     finally:
-        sarif.project_urls.cache_clear()
+        links.project_urls.cache_clear()
     lv101 = next(r for r in driver["rules"] if r["id"] == "LV101")
     assert lv101["helpUri"] == "https://example.org/docs/rules.md#lv101-duplicate-node-name"
     assert driver["informationUri"] == "https://example.org/lv"
 
-    monkeypatch.setattr(sarif, "project_urls", dict)
+    monkeypatch.setattr(links, "project_urls", dict)
     driver = sarif_of(check(DUPLICATES))["runs"][0]["tool"]["driver"]
     assert all("helpUri" not in rule for rule in driver["rules"])
 

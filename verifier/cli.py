@@ -71,7 +71,7 @@ EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 EXIT_READER_GONE = 128 + 13  # as a shell shows a tool stopped by SIGPIPE (`cmd | head`)
 
 
-FORMATS = ("text", "json", "sarif", "junit", "github")
+FORMATS = ("text", "concise", "json", "sarif", "junit", "github")
 
 
 def _codes(given: list[str] | None) -> list[str] | None:
@@ -680,6 +680,11 @@ def _render(args: argparse.Namespace, report: Report, out: TextIO,
 
         render_text(report, out, color=color, explain=args.explain, quiet=args.quiet,
                     unsafe_fixes=args.unsafe_fixes)
+    elif args.format == "concise":
+        from launchverify.render.concise import render_concise
+
+        render_concise(report, out, color=color, quiet=args.quiet,
+                       unsafe_fixes=args.unsafe_fixes)
     elif args.format == "json":
         from launchverify.render.json_out import render_json
 

@@ -15,7 +15,8 @@ from pygls.uris import from_fs_path
 
 from launchverify.lsp.positions import Lines
 from launchverify.registry import RegistryError, resolve
-from launchverify.render.sarif import documentation_base, help_uri, message_text
+from launchverify.render.links import documentation_base, help_uri
+from launchverify.render.sarif import message_text
 from launchverify.rule import Finding, Rule, Severity
 from launchverify.span import Span
 

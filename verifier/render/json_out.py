@@ -7,6 +7,7 @@ from typing import Any, TextIO
 
 from launchverify import __version__
 from launchverify.engine import Report
+from launchverify.render.links import rule_url
 from launchverify.rule import Finding, Fix, Severity
 
 
@@ -38,6 +39,7 @@ def finding_dict(finding: Finding, report: Report) -> dict[str, Any]:
             for step in finding.trace
         ],
         "fix": fix_dict(finding.fix, report),
+        "url": rule_url(finding.code),
     }
 
 

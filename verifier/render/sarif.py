@@ -21,8 +21,6 @@ from __future__ import annotations
 
 import json
 import os
-from functools import cache
-from importlib.metadata import PackageNotFoundError, metadata
 from pathlib import Path
 from typing import Any, TextIO
 from urllib.parse import quote
@@ -31,6 +29,7 @@ from launchverify import __version__
 from launchverify.engine import Report
 from launchverify.findings.fingerprint import fingerprints
 from launchverify.registry import all_rules
+from launchverify.render import links
 from launchverify.rule import Finding, Fix, Rule, Severity
 from launchverify.span import Span
 
@@ -42,32 +41,6 @@ SRCROOT = "%SRCROOT%"
 FINGERPRINT = "launchverify/v1"
 LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
 
-
-
-@cache
-def project_urls() -> dict[str, str]:
-    """Return the package's ``Project-URL`` entries by lower-case label (none if absent)."""
-    try:
-        entries = metadata("launchverify").get_all("Project-URL") or []
-    except PackageNotFoundError:
-        return {}
-    urls: dict[str, str] = {}
-    for entry in entries:
-        label, _, url = entry.partition(",")
-        if url.strip():
-            urls[label.strip().lower()] = url.strip()
-    return urls
-
-
-def documentation_base() -> str | None:
-    """Return the rules page that rule anchors hang off, from the "Documentation" URL."""
-    base = project_urls().get("documentation")
-    return base.partition("#")[0] if base else None
-
-
-def help_uri(rule: type[Rule], base: str | None) -> str | None:
-    """Return the link to a rule's section: ``<base>#lv101-duplicate-node-name``."""
-    return f"{base}#{rule.code.lower()}-{rule.slug}" if base else None
 
 
 def pascal(slug: str) -> str:
@@ -109,7 +82,7 @@ def rule_descriptor(rule: type[Rule], base: str | None) -> dict[str, Any]:
         "fullDescription": {"text": section(documentation, "What it does") or summary},
         "help": {"text": documentation, "markdown": documentation},
     }
-    uri = help_uri(rule, base)
+    uri = links.help_uri(rule, base)
     if uri is not None:
         descriptor["helpUri"] = uri
     descriptor["defaultConfiguration"] = {"level": LEVELS[rule.severity]}
@@ -235,11 +208,11 @@ def sarif_log(report: Report, *, root: Path | None = None) -> dict[str, Any]:
     """Return the SARIF log of a report as a JSON-ready dict."""
     places = Places(root if root is not None else Path.cwd())
     rules = all_rules()
-    base = documentation_base()
+    base = links.documentation_base()
     index = {rule.code: number for number, rule in enumerate(rules)}
     results = [result(finding, index, places, value) for finding, value in
                zip(report.findings, fingerprints(report.findings, places.root), strict=True)]
-    urls = project_urls()
+    urls = links.project_urls()
     driver = {
         "name": "launchverify",
         "version": __version__,

@@ -2,6 +2,12 @@
 
 A finding ``--fix`` would mend has ``[*]`` before its code (as ruff marks them), and the
 summary says how many are fixable.
+
+Findings that say the same thing (one code, severity, message and argument values) at
+several places, as one per node loading a file or one per parameter block, are grouped:
+the first in full, the others as ``also at file:line:col`` lines under it, so each place
+stays greppable while the frames and notes are read once. Machine formats keep every
+finding on its own.
 """
 
 from __future__ import annotations
@@ -13,6 +19,7 @@ from rich.text import Text
 
 from launchverify.engine import Report
 from launchverify.findings.fixes import applicable, fixable, hidden
+from launchverify.render import links
 from launchverify.render.inert import inert
 from launchverify.rule import Finding, Severity
 from launchverify.workspace.sources import source_line, source_lines
@@ -81,7 +88,11 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
     unsafe fixes count as fixable (``--unsafe-fixes``).
     """
     line = Lines(out, color)
+    groups = _groups(report.findings)
     for finding in report.findings:
+        same = groups[_sameness(finding)]
+        if same[0] is not finding:
+            continue  # printed under the first of its group
         span = finding.span
         where = f"{report.display_path(span.file)}:{span.line}:{span.column}"
         marker = "[*] " if applicable(finding.fix, unsafe_fixes) else ""
@@ -89,6 +100,9 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
              marker, (finding.code, "bold"), f" [{finding.slug}] {finding.message}")
         for frame in _frame(finding):
             line(frame, style="dim" if "|" in frame[:8] else None)
+        for other in same[1:]:
+            line(f"    also at {report.display_path(other.span.file)}:{other.span.line}:"
+                 f"{other.span.column}", style="dim")
         for include in reversed(finding.chain):
             line(f"    included from {report.display_path(include.file)}:{include.line}",
                  style="dim")
@@ -118,6 +132,8 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
     if explain:
         _unjudged(line, report)
     if not quiet:
+        if report.findings and not explain:
+            line(docs_line(report), style="dim")
         line(summary_line(report))
         footer = fixes_line(report, unsafe_fixes)
         if footer:
@@ -136,7 +152,24 @@ def _explanation(line: Lines, finding: Finding) -> None:
         text = " ".join(rule.section(heading).split("\n\n", 1)[0].split())
         if text:
             line(f"    {label}: {text}", style="dim")
-    line(f"    (launchverify explain {finding.code} prints the whole rule)", style="dim")
+    url = links.rule_url(finding.code)
+    line(f"    (launchverify explain {finding.code} prints the whole rule"
+         f"{'; ' + url if url else ''})", style="dim")
+
+
+def _sameness(finding: Finding) -> tuple[object, ...]:
+    """Return what two findings share when they say the same thing at different places."""
+    witness = tuple(sorted(finding.witness.items())) if finding.witness else ()
+    return (finding.code, finding.severity, finding.message, witness,
+            finding.fix is None, tuple(r.message for r in finding.related), finding.trace)
+
+
+def _groups(findings: list[Finding]) -> dict[tuple[object, ...], list[Finding]]:
+    """Return the findings by what they say, each group in report order."""
+    groups: dict[tuple[object, ...], list[Finding]] = {}
+    for finding in findings:
+        groups.setdefault(_sameness(finding), []).append(finding)
+    return groups
 
 
 def _unjudged(line: Lines, report: Report) -> None:
@@ -164,6 +197,14 @@ def summary_line(report: Report) -> str:
     total = len(report.findings)
     return (f"Found {total} finding{'s' if total != 1 else ''} ({', '.join(parts)}) in "
             f"{files} ({took}).")
+
+
+def docs_line(report: Report) -> str:
+    """Return where to read why a finding matters and how to fix it."""
+    code = report.findings[0].code
+    base = links.documentation_base()
+    return (f"Why each matters and how to fix it: launchverify explain {code}, --explain"
+            f"{', or ' + base if base else ''}.")
 
 
 def fixes_line(report: Report, unsafe: bool) -> str:
