@@ -33,6 +33,7 @@ class Contribution:
     kind: str  # bool, integer, double, string, <kind>_array, or "unknown"
     span: Span  # where the value is written
     layer: str  # what kind of source: set_parameter, file, inline
+    written: Sub | None = None  # the launch's expression, for a value not known here
 
 
 @dataclass
@@ -95,9 +96,10 @@ def _resolve(graph: LaunchGraph, node: NodeRecord) -> EffectiveParameters:
             value = _inline_value(graph, param)
             layer = "set_parameter" if param.scope else "inline"
             key = EVERY_NODE if param.scope else own_key
+            written = param.value if value is None and isinstance(param.value, Sub) else None
             table.setdefault(key, []).append((name, Contribution(
                 value, kind_of(value) if value is not None else "unknown",
-                param.origin.span, layer)))
+                param.origin.span, layer, written)))
     for key, entries in table.items():
         if not _applies(key, fqn, component):
             continue

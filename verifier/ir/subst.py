@@ -479,7 +479,8 @@ class Opaque(Sub):
     description: str
 
     def describe(self) -> str:
-        return f"<{self.description}>"
+        text = self.description
+        return text if text.startswith("<") and text.endswith(">") else f"<{text}>"
 
 
 EMPTY = Text("")

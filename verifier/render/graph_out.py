@@ -112,9 +112,12 @@ class GraphView:
 
     def contribution(self, contribution: Contribution) -> dict[str, Any]:
         """Return one value of a parameter with its source."""
-        return {"value": contribution.value, "type": contribution.kind,
-                "from": f"{display_path(contribution.span.file)}:{contribution.span.line}",
-                "layer": contribution.layer}
+        found = {"value": contribution.value, "type": contribution.kind,
+                 "from": f"{display_path(contribution.span.file)}:{contribution.span.line}",
+                 "layer": contribution.layer}
+        if contribution.value is None and contribution.written is not None:
+            found["expression"] = contribution.written.describe()  # what decides it
+        return found
 
     def parameter(self, param: ParamRecord) -> dict[str, Any]:
         """Return one parameter source."""
@@ -254,9 +257,9 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
             if "file" in param:
                 out.write(f"    params {param['file']}\n")
         for name, value in (node["effective_parameters"] or {}).items():
-            overrides = "".join(f"; overrides {o['value']!r} from {o['from']}"
+            overrides = "".join(f"; overrides {_shown(o)} from {o['from']}"
                                 for o in value["overrides"])
-            out.write(f"    param {name} = {value['value']!r}  ({value['from']}, "
+            out.write(f"    param {name} = {_shown(value)}  ({value['from']}, "
                       f"{value['layer']}{overrides})\n")
         if node["effective_parameters"] is None:
             for param in node["parameters"]:
@@ -284,6 +287,25 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
         from launchverify.render.graph_topics import render_text
 
         render_text(doc, out)
+
+
+def _shown(contribution: dict[str, Any]) -> str:
+    """Return a parameter's value as a launch file spells it (``false``, ``'text'``).
+
+    A value not known before the run shows the expression that gives it.
+    """
+    if contribution["value"] is None:
+        expression = contribution.get("expression") or "<not known before the run>"
+        return expression if len(expression) <= 160 else expression[:157] + "..."
+    return _spelled(contribution["value"])
+
+
+def _spelled(value: object) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, (list, tuple)):
+        return "[" + ", ".join(_spelled(item) for item in value) + "]"
+    return repr(value)
 
 
 def _lifecycle_text(lifecycle: dict[str, Any] | None, out: TextIO) -> None:
