@@ -67,8 +67,10 @@ class MissingFile(Rule):
             if ref.exists or key in seen or graph.runs(ref.origin) is False:
                 continue
             seen.add(key)
-            yield self.finding(ref.origin, what=ref.what, written=_written(None, ref.location),
-                               note=_note(ref.note),
+            written, installed = _written(None, ref.location), _installed(ref.location,
+                                                                           ctx.packages)
+            yield self.finding(ref.origin, what=ref.what, written=installed[0] or written,
+                               note=_note("; ".join(filter(None, (ref.note, installed[1])))),
                                fix=None if ref.note else _fix(ref.written, ref.location,
                                                               ctx.packages))
 
@@ -97,6 +99,31 @@ def _written(expression: str | None, resolved: str | None) -> str:
     if expression is None or expression == resolved:
         return repr(shown) if resolved else shown
     return f"{expression!r} ({shown})"
+
+
+def _installed(resolved: str | None, packages: PackageIndex | None
+               ) -> tuple[str | None, str | None]:
+    """Return a missing path's installed name, and where it would be installed from.
+
+    For a path into a package that is not built, with the close file names there.
+    ``$(find-pkg-share pkg)`` stands for the package's sources then, where the folder may
+    not exist at all (CMake installs ``bringup/config`` as ``share/pkg/config``): the
+    user is shown the name ros2 launch opens and the folders they can open.
+    """
+    if not resolved or packages is None or not Path(resolved).is_absolute():
+        return None, None
+    path = Path(resolved)
+    name = packages.installed_name(path)
+    if name is None or path.parent.exists():
+        return None, None
+    sources = packages.installed_from(path)
+    folder = path.parent.name
+    if not sources:
+        return repr(name), f"no folder {folder}/ in the package's sources"
+    places = " or ".join(display_path(str(source)) for source in sources[:3])
+    close = file_name_typos(path.name, packages.neighbours(path))
+    meant = f"; did you mean {close[0]!r}?" if close else ""
+    return repr(name), f"{folder}/ would be installed from {places}{meant}"
 
 
 def _note(note: str) -> str:

@@ -3,19 +3,29 @@
 from __future__ import annotations
 
 import shlex
+from collections.abc import Callable
+from pathlib import Path
 
 from launchverify.executor.plan import Plan
+from launchverify.workspace.paths import display_path
+
+Locate = Callable[[Path], Path | None]
 
 
-def describe(plan: Plan) -> list[str]:
-    """Return the plan as lines: the launch's block, then each handler's."""
+def describe(plan: Plan, locate: Locate | None = None) -> list[str]:
+    """Return the plan as lines: the launch's block, then each handler's.
+
+    ``locate`` finds a file named through a package that is not built in its sources:
+    ``$(find-pkg-share pkg)/config/x.yaml`` is then a path nobody can open (CMake installs
+    ``bringup/config`` there), so the file the user can open is named under the command.
+    """
     lines: list[str] = []
-    _block(plan, None, "at launch", lines)
+    _block(plan, None, "at launch", lines, locate)
     for number, handler in enumerate(plan.handlers):
         if number in plan.blocks:
             target = "any action" if handler.target is None else _target(plan, handler.target)
             _block(plan, number, f"when {handler.event.replace('_', ' ')} of {target} "
-                   f"({handler.origin.span.short()})", lines)
+                   f"({handler.origin.span.short()})", lines, locate)
     lines.extend(f"note: {note}" for note in plan.notes)
     return lines
 
@@ -27,7 +37,21 @@ def _target(plan: Plan, action: object) -> str:
     return getattr(action, "kind", "an action")
 
 
-def _block(plan: Plan, within: int | None, title: str, lines: list[str]) -> None:
+def _sources(argv: list[str], locate: Locate | None) -> list[str]:
+    """Return a line for each path argument that exists only in a package's sources."""
+    found = []
+    for argument in argv:
+        if locate is None or not argument.startswith("/") or Path(argument).exists():
+            continue
+        source = locate(Path(argument))
+        if source is not None:
+            found.append(f"      {argument}: not built here, installed from "
+                         f"{display_path(source)}")
+    return found
+
+
+def _block(plan: Plan, within: int | None, title: str, lines: list[str],
+           locate: Locate | None) -> None:
     entries: list[str] = []
     for delay, execution in plan.blocks.get(within, ()):
         when = f"after {delay:g} s: " if delay else ""
@@ -35,6 +59,7 @@ def _block(plan: Plan, within: int | None, title: str, lines: list[str]) -> None
         if process is not None:
             command = process.command
             entries.append(f"  {when}start {process.name}: {shlex.join(command.argv)}")
+            entries.extend(_sources(command.argv, locate))
             if command.cwd:
                 entries.append(f"      cwd {command.cwd}")
             for name, value in command.env.items():

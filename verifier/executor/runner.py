@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
 
-from launchverify.engine import CheckOptions, Report, UsageError, run_check
+from launchverify.engine import CheckOptions, Report, UsageError, build_index, run_check
 from launchverify.executor.command import install_prefixes
 from launchverify.executor.dry_run import describe
 from launchverify.executor.plan import PlanError, build_plan
@@ -94,7 +94,8 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
     if options.dry_run:
         from launchverify.render.inert import inert
 
-        for line in describe(plan):  # names and values from the checked files
+        _, index = build_index(options.check.paths, workspace)
+        for line in describe(plan, index.locate):  # names and values from the checked files
             out.write(inert(line) + "\n")
         return 0, report
     run_dir.mkdir(parents=True, exist_ok=True)

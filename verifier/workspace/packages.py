@@ -355,9 +355,10 @@ class PackageIndex:
         """Return the names of the files in the folder where ``path`` would be.
 
         The folder itself, and for a path in a package's install layout the matching
-        folder of its sources (where ``locate`` finds files first).
+        folder of its sources (where ``locate`` finds files first), or the source folders
+        an ``install(DIRECTORY bringup/config ...)`` would install there.
         """
-        folders = [path.parent]
+        folders = [path.parent, *self.installed_from(path)]
         package = self.owner(path)
         if package is not None and package.source is not None \
                 and path.is_relative_to(package.share):
@@ -370,6 +371,44 @@ class PackageIndex:
             except OSError:
                 continue
         return sorted(names)
+
+
+    def installed_from(self, path: Path) -> list[Path]:
+        """Return the source folders that may install as the folder of a missing ``path``.
+
+        ``$(find-pkg-share pkg)/config/x.yaml`` of a package that is not built points into
+        its sources, where ``config/`` may not exist: CMake installs ``bringup/config`` as
+        ``share/pkg/config``. The folders below the sources ending in the same names are
+        what the user can open.
+        """
+        package = self.owner(path)
+        if package is None or package.source is None or path.parent.exists() \
+                or not path.is_relative_to(package.share):
+            return []
+        wanted = path.relative_to(package.share).parent.parts
+        if not wanted:
+            return []
+        found = []
+        for current, dirs, _files in os.walk(package.source):
+            dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS and not d.startswith("."))
+            folder = Path(current)
+            if folder.parts[-len(wanted):] == wanted and folder != package.source:
+                found.append(folder)
+            if len(found) > 5:
+                break
+        return found
+
+    def installed_name(self, path: Path) -> str | None:
+        """Return ``share/<package>/<relative>``: the name ros2 launch would open.
+
+        For a path into the sources of a package that is not built, where the sources
+        stand for its share folder; ``None`` otherwise.
+        """
+        package = self.owner(path)
+        if package is None or package.installed or package.source is None \
+                or not path.is_relative_to(package.source):
+            return None
+        return f"share/{package.name}/{path.relative_to(package.source).as_posix()}"
 
 
 def _python_package_folders(folder: Path) -> list[str]:
