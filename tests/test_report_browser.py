@@ -97,8 +97,7 @@ def test_fleet_report_in_the_browser(chromium: str, pages: dict[str, Path],
     dom = dump_dom(chromium, tmp_path / "profile", pages["fleet"].as_uri())
     # the summary: findings by severity, files, nodes
     assert '<span class="value">4</span><span class="label">findings' in dom
-    assert '<span class="value">2</span><span class="label">errors' in dom
-    assert '<span class="value">2</span><span class="label">warnings' in dom
+    assert '<span class="value">4</span><span class="label">errors' in dom
     assert re.search(r"<b>20\d</b> nodes", dom)
     for code in ("LV101", "LV204", "LV402", "LV505"):
         assert f'id="rule-{code}"' in dom

@@ -69,7 +69,6 @@ def render_flow(flow: FlowGraph, number: int, anchor: str) -> str:
     names = "".join(f'<option value="{esc(n.fqn)}"></option>'
                     for n in sorted(flow.nodes.values(), key=lambda n: n.fqn))
     return (f'<details class="flow-section" open><summary>{summary}</summary>'
-            f"{FLOW_LEGEND}"
             f'<div class="flow">{tools}'
             f'<datalist id="{ident}-names">{names}</datalist>'
             f'<div class="picture">{render_flow_svg(flow, placed, ident, anchor)}</div>'
@@ -133,8 +132,16 @@ def _edge(flow: FlowGraph, placed: FlowLayout, edge: FlowEdge) -> str:
 
 
 def _fit(text: str, room: float, char_w: float) -> str:
-    """Return a label cut to what fits in ``room`` (ellipsis at the end)."""
-    return clip(text, max(int(room / char_w), 3))
+    """Return a label cut to what fits in ``room``, the ellipsis in the middle.
+
+    Names differ at their ends as often as at their starts (``list_hardware_components``,
+    ``list_hardware_interfaces``): both ends stay; the tooltip has the whole name.
+    """
+    limit = max(int(room / char_w), 3)
+    if len(text) <= limit:
+        return text
+    head = limit // 2
+    return text[:head] + "\u2026" + text[len(text) - (limit - 1 - head):]
 
 
 def _node(node: FlowNode, box: Box, namespace: str, anchor: str, flow: FlowGraph) -> str:

@@ -1,17 +1,20 @@
 """The findings of the HTML report: an index by rule and full entries by file.
 
 Each entry carries what the text output prints with ``--explain``: the code frame, related
-places, the include chain, the witness, the trace and the fix, so the page stands on its
-own.
+places, the include chain, the witness, the trace and the fix, and, folded, why the rule
+matters and how to fix what it finds, with a link to the rule's documentation, so the
+page stands on its own.
 """
 
 from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Iterable
+from functools import cache
 
 from launchverify.engine import Report
 from launchverify.findings.fixes import fix_note
+from launchverify.render import links
 from launchverify.render.html_text import clip, esc, place
 from launchverify.rule import Finding, Severity
 from launchverify.span import Span
@@ -109,8 +112,35 @@ def render_finding(report: Report, finding: Finding, index: int) -> str:
     if finding.fix is not None:
         body.append(f'<div class="part"><h4>Fix</h4><p class="fix">{esc(finding.fix.message)}'
                     f'{esc(fix_note(finding.fix))}</p></div>')
+    body.append(_about(finding.code))
     return (f'<article class="finding sev-{finding.severity.value}" id="{finding_id(index)}">'
             + "".join(body) + "</article>")
+
+
+@cache
+def _about(code: str) -> str:
+    """Return why the rule matters and how to fix it, folded, with its documentation."""
+    from launchverify.registry import RegistryError, resolve
+
+    try:
+        rule = next((r for r in resolve(code) if r.code == code), None)
+    except RegistryError:
+        rule = None
+    if rule is None:
+        return ""
+    parts = []
+    for label, heading in (("Why it matters", "Why it matters"), ("How to fix it", "Fix")):
+        text = " ".join(rule.section(heading).split("\n\n", 1)[0].split())
+        if text:
+            parts.append(f"<p><b>{label}:</b> {esc(text)}</p>")
+    url = links.rule_url(code)
+    if url is not None:
+        parts.append(f'<p><a href="{esc(url)}" rel="noopener noreferrer">{esc(code)} '
+                     f"{esc(rule.slug)} in the documentation</a></p>")
+    if not parts:
+        return ""
+    return ('<details class="part about"><summary>Why it matters and how to fix it'
+            f"</summary>{''.join(parts)}</details>")
 
 
 def _chain(report: Report, chain: Iterable[Span], span: Span) -> str:

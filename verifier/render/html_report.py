@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, TextIO
 
 from launchverify import __version__
 from launchverify.engine import Report
+from launchverify.render.flow_svg import FLOW_LEGEND
 from launchverify.render.html_findings import (
     finding_id,
     render_file_findings,
@@ -53,6 +54,8 @@ def render_html(report: Report, out: TextIO, *, title: str = "launchverify repor
     out.write(render_rule_index(report))
     if systems:
         out.write(LEGEND)  # once for every picture below
+    if any('class="flow-section"' in system for system in systems):
+        out.write(FLOW_LEGEND)  # likewise for the computation graphs
     out.writelines(systems)
     out.write(render_file_findings(report))
     out.write(f'</main><footer>Written by launchverify {esc(__version__)}.</footer>'
