@@ -164,7 +164,7 @@ def test_a_workspace_with_planted_mistakes(clone: tuple[Path, dict[str, str]],
                   f"{launch}:11:"):
         line = next((line for line in done.stdout.splitlines() if line.startswith(place)),
                     None)
-        assert line is not None and " error LV" in line, (place, done.stdout)
+        assert line is not None and re.search(r": error (\[\*\] )?LV", line), (place, line)
     assert "did you mean 'use_sim_time'" in done.stdout
     assert "internal error" not in done.stdout + done.stderr
 
