@@ -420,3 +420,18 @@ def generate_launch_description():
     messages = [f.message for f in report.findings if f.code == "LV002"]
     assert len(messages) == 1 and "whole time limit (1 s" in messages[0], messages
     assert {g.base(n.name) for g in report.graphs for n in g.nodes} >= {"a", "b"}
+
+
+def test_workers_may_read_launchverify_where_python_finds_it(tmp_path: Path) -> None:
+    # A model may import one of launchverify's modules late, after the worker is
+    # confined: the folders Python finds the packages in (a strict editable install's
+    # tree of links) and the folders the links point into must both be readable.
+    from launchverify.isolation.pool import readable_folders
+    from launchverify.own_code import package_folders
+    from launchverify.workspace.packages import PackageIndex
+
+    readable = [Path(folder) for folder in readable_folders(PackageIndex([tmp_path]),
+                                                            tmp_path)]
+    for folder in package_folders():
+        for path in (Path(folder), (Path(folder) / "__init__.py").resolve().parent):
+            assert any(path.is_relative_to(root) for root in readable), path

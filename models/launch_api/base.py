@@ -25,7 +25,8 @@ from launchverify.ir.conditions import Condition as IRCondition
 from launchverify.models.launch_api import runtime
 from launchverify.models.launch_api.runtime import blamable
 from launchverify.own_code import is_own_file
-from launchverify.span import Span
+from launchverify.span import Span, character_column
+from launchverify.workspace.reading import read_file, unsaved
 
 if TYPE_CHECKING:
     from launchverify.ir import actions as a
@@ -60,6 +61,25 @@ def _positions(code: CodeType) -> tuple[_Position, ...] | None:
         return None
 
 
+def _characters(path: Path, line: int, offset: int) -> int:
+    """Return the character column of Python's UTF-8 byte ``offset`` on a line."""
+    lines = _source(path)
+    return character_column(lines[line - 1], offset) if 0 < line <= len(lines) \
+        else offset + 1
+
+
+@functools.lru_cache(maxsize=64)
+def _source(path: Path) -> tuple[bytes, ...]:
+    """Return a file's lines as bytes (the editor's buffer when one stands for it)."""
+    data = unsaved(path)
+    if data is None:
+        try:
+            data = read_file(path)
+        except OSError:
+            return ()
+    return tuple(data.split(b"\n"))
+
+
 def _frame_span(frame: FrameType) -> Span:
     return _span_at(frame.f_code, frame.f_lasti, frame.f_lineno)
 
@@ -75,10 +95,8 @@ def _span_at(code: CodeType, lasti: int, lineno: int | None) -> Span:
         if 0 <= index < len(positions):
             start, end, column, end_column = positions[index]
             if start is not None and column is not None:  # bytes: in characters
-                from launchverify.frontends.python.locate import in_characters  # a cycle
-
-                return in_characters(
-                    Span(path, start, column + 1, end, (end_column or column) + 1))
+                return Span(path, start, _characters(path, start, column), end,
+                            _characters(path, end or start, end_column or column))
     return Span(path, line)
 
 

@@ -489,7 +489,10 @@ def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
     folders.update(entry for entry in sys.path if entry and (
         entry in python_path or entry.endswith(("site-packages", "dist-packages"))
         or any(entry.startswith(prefix + os.sep) for prefix in prefixes)))
-    # their real folders: a strict editable install links each module into the checkout
+    # launchverify's own packages where Python finds them (a module a model imports late
+    # is read there), and their real folders: a strict editable install links each
+    # module of its tree into the checkout
+    folders.update(package_folders())
     folders.update(str(resolved(Path(folder, "__init__.py")).parent)
                    for folder in package_folders())
     folders.update(("/usr/lib", "/usr/lib64", "/lib", "/lib64", "/usr/share/zoneinfo",

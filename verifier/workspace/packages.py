@@ -383,7 +383,8 @@ class PackageIndex:
         """
         package = self.owner(path)
         if package is None or package.source is None or path.parent.exists() \
-                or not path.is_relative_to(package.share):
+                or not path.is_relative_to(package.share) \
+                or _installed_layout(package.source / "package.xml", package.name):
             return []
         wanted = path.relative_to(package.share).parent.parts
         if not wanted:
@@ -406,8 +407,9 @@ class PackageIndex:
         """
         package = self.owner(path)
         if package is None or package.installed or package.source is None \
-                or not path.is_relative_to(package.source):
-            return None
+                or not path.is_relative_to(package.source) \
+                or _installed_layout(package.source / "package.xml", package.name):
+            return None  # an installed copy scanned as sources is what ros2 launch opens
         return f"share/{package.name}/{path.relative_to(package.source).as_posix()}"
 
 
