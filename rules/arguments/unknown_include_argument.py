@@ -80,9 +80,9 @@ class UnknownIncludeArgument(Rule):
                 launch = graph.files[path].launch if path in graph.files else None
                 if launch is not None:
                     known |= configuration_names(launch)
-            known |= helper_names(include.action)
+            helpers = helper_names(include.action)  # used, but no name the target takes
             for name, value, span in include.arguments:
-                if name is None or name in known:
+                if name is None or name in known or name in helpers:
                     continue
                 call = include.origin.span if span != include.origin.span else None
                 origin = Origin(span, include.origin.chain, include.origin.path, call=call)
