@@ -50,6 +50,15 @@ def resolve(selector: str) -> list[type[Rule]]:
     raise RegistryError(f"no rule is called {selector!r}")
 
 
+def rule_of(code: str) -> type[Rule] | None:
+    """Return the rule that reports a code (``None`` for a code no rule has any more)."""
+    try:
+        found = resolve(code)
+    except RegistryError:
+        return None
+    return next((rule for rule in found if rule.code == code), None)
+
+
 def select(select: list[str] | None, ignore: list[str] | None) -> list[type[Rule]]:
     """Return the enabled rules for ``--select``/``--ignore`` lists."""
     chosen = all_rules() if not select else tuple(

@@ -250,6 +250,11 @@ class Rule:
         end = body.find("\n## ")
         return (body if end < 0 else body[:end]).strip()
 
+    @classmethod
+    def lead(cls, heading: str) -> str:
+        """Return the first paragraph of a section on one line (a short why or fix)."""
+        return " ".join(cls.section(heading).split("\n\n", 1)[0].split())
+
 
 class PollingRule(Rule):
     """A rule whose claims of absence are polled across every evaluation (see ``Poll``).

@@ -61,6 +61,20 @@ def _positions(code: CodeType) -> tuple[_Position, ...] | None:
         return None
 
 
+def in_characters(span: Span) -> Span:
+    """Return a span Python placed in UTF-8 bytes with character columns.
+
+    Every span counts characters; Python's code positions, ``ast`` and tracebacks count
+    a line's bytes. Lines in ASCII are the same both ways.
+    """
+    column = _characters(span.file, span.line, span.column - 1)
+    end = None if span.end_column is None else _characters(
+        span.file, span.end_line or span.line, span.end_column - 1)
+    if column == span.column and end == span.end_column:
+        return span
+    return Span(span.file, span.line, column, span.end_line, end)
+
+
 def _characters(path: Path, line: int, offset: int) -> int:
     """Return the character column of Python's UTF-8 byte ``offset`` on a line."""
     lines = _source(path)
@@ -68,16 +82,25 @@ def _characters(path: Path, line: int, offset: int) -> int:
         else offset + 1
 
 
-@functools.lru_cache(maxsize=64)
 def _source(path: Path) -> tuple[bytes, ...]:
     """Return a file's lines as bytes (the editor's buffer when one stands for it)."""
     data = unsaved(path)
-    if data is None:
-        try:
-            data = read_file(path)
-        except OSError:
-            return ()
-    return tuple(data.split(b"\n"))
+    if data is not None:
+        return tuple(data.split(b"\n"))
+    try:
+        stat = path.stat()
+    except OSError:
+        return ()
+    return _read_lines(path, stat.st_mtime_ns, stat.st_size)
+
+
+@functools.lru_cache(maxsize=64)
+def _read_lines(path: Path, mtime_ns: int, size: int) -> tuple[bytes, ...]:
+    """Return one version of a file's lines (asked again for each place in it)."""
+    try:
+        return tuple(read_file(path).split(b"\n"))
+    except OSError:
+        return ()
 
 
 def _frame_span(frame: FrameType) -> Span:
@@ -95,8 +118,8 @@ def _span_at(code: CodeType, lasti: int, lineno: int | None) -> Span:
         if 0 <= index < len(positions):
             start, end, column, end_column = positions[index]
             if start is not None and column is not None:  # bytes: in characters
-                return Span(path, start, _characters(path, start, column), end,
-                            _characters(path, end or start, end_column or column))
+                return in_characters(
+                    Span(path, start, column + 1, end, (end_column or column) + 1))
     return Span(path, line)
 
 

@@ -67,10 +67,10 @@ class MissingFile(Rule):
             if ref.exists or key in seen or graph.runs(ref.origin) is False:
                 continue
             seen.add(key)
-            written, installed = _written(None, ref.location), _installed(ref.location,
-                                                                           ctx.packages)
-            yield self.finding(ref.origin, what=ref.what, written=installed[0] or written,
-                               note=_note("; ".join(filter(None, (ref.note, installed[1])))),
+            installed, where = _installed(ref.location, ctx.packages)
+            yield self.finding(ref.origin, what=ref.what,
+                               written=installed or _written(None, ref.location),
+                               note=_note("; ".join(filter(None, (ref.note, where)))),
                                fix=None if ref.note else _fix(ref.written, ref.location,
                                                               ctx.packages))
 

@@ -14,10 +14,10 @@ from lsprotocol import types
 from pygls.uris import from_fs_path
 
 from launchverify.lsp.positions import Lines
-from launchverify.registry import RegistryError, resolve
+from launchverify.registry import rule_of
 from launchverify.render.links import documentation_base, help_uri
 from launchverify.render.sarif import message_text
-from launchverify.rule import Finding, Rule, Severity
+from launchverify.rule import Finding, Severity
 from launchverify.span import Span
 
 SOURCE = "launchverify"
@@ -39,15 +39,6 @@ def uri_of(path: Path) -> str:
 def location(span: Span, lines_of: LinesOf) -> types.Location:
     """Return the LSP location of a span."""
     return types.Location(uri=uri_of(span.file), range=lines_of(span.file).range(span))
-
-
-def rule_of(code: str) -> type[Rule] | None:
-    """Return the rule that reports a code (``None`` for a code no rule has any more)."""
-    try:
-        found = resolve(code)
-    except RegistryError:
-        return None
-    return next((rule for rule in found if rule.code == code), None)
 
 
 def diagnostic(finding: Finding, lines_of: LinesOf) -> types.Diagnostic:

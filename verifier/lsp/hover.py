@@ -12,8 +12,8 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from launchverify.graph import ArgumentRecord, LaunchGraph
-from launchverify.lsp.diagnostics import rule_of
 from launchverify.lsp.lookup import INCLUDE, PARAMETER_FILE, Reference
+from launchverify.registry import rule_of
 from launchverify.rule import Finding
 from launchverify.span import Span
 

@@ -14,6 +14,7 @@ from launchverify.graph import LaunchGraph, NodeRecord, Origin, ParamRecord
 from launchverify.ir.subst import Sub
 from launchverify.lifecycle.explore import Where
 from launchverify.models import lifecycle as lc
+from launchverify.models.booleans import bool_text
 from launchverify.models.parameter_values import typed_parameter
 from launchverify.models.ros_names import node_fqn
 from launchverify.parameters import Contribution, effective_parameters
@@ -302,7 +303,7 @@ def _shown(contribution: dict[str, Any]) -> str:
 
 def _spelled(value: object) -> str:
     if isinstance(value, bool):
-        return "true" if value else "false"
+        return bool_text(value)
     if isinstance(value, (list, tuple)):
         return "[" + ", ".join(_spelled(item) for item in value) + "]"
     return repr(value)

@@ -120,17 +120,14 @@ def render_finding(report: Report, finding: Finding, index: int) -> str:
 @cache
 def _about(code: str) -> str:
     """Return why the rule matters and how to fix it, folded, with its documentation."""
-    from launchverify.registry import RegistryError, resolve
+    from launchverify.registry import rule_of
 
-    try:
-        rule = next((r for r in resolve(code) if r.code == code), None)
-    except RegistryError:
-        rule = None
+    rule = rule_of(code)
     if rule is None:
         return ""
     parts = []
     for label, heading in (("Why it matters", "Why it matters"), ("How to fix it", "Fix")):
-        text = " ".join(rule.section(heading).split("\n\n", 1)[0].split())
+        text = rule.lead(heading)
         if text:
             parts.append(f"<p><b>{label}:</b> {esc(text)}</p>")
     url = links.rule_url(code)

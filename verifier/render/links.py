@@ -41,16 +41,8 @@ def help_uri(rule: type[Rule], base: str | None) -> str | None:
 
 def rule_url(code: str) -> str | None:
     """Return the link to the documentation of the rule with ``code``, if known."""
+    from launchverify.registry import rule_of
+
     base = documentation_base()
-    rule = _rule(code)
+    rule = rule_of(code) if base is not None else None
     return help_uri(rule, base) if base is not None and rule is not None else None
-
-
-@cache
-def _rule(code: str) -> type[Rule] | None:
-    from launchverify.registry import RegistryError, resolve
-
-    try:
-        return next((rule for rule in resolve(code) if rule.code == code), None)
-    except RegistryError:
-        return None

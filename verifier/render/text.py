@@ -142,14 +142,13 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
 
 def _explanation(line: Lines, finding: Finding) -> None:
     """Print why the rule matters and how to fix it (first paragraphs of its docs)."""
-    from launchverify.registry import RegistryError, resolve
+    from launchverify.registry import rule_of
 
-    try:
-        rule = resolve(finding.code)[0]
-    except RegistryError:
+    rule = rule_of(finding.code)
+    if rule is None:
         return
     for label, heading in (("why", "Why it matters"), ("fix", "Fix")):
-        text = " ".join(rule.section(heading).split("\n\n", 1)[0].split())
+        text = rule.lead(heading)
         if text:
             line(f"    {label}: {text}", style="dim")
     url = links.rule_url(finding.code)

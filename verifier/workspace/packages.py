@@ -179,6 +179,7 @@ class PackageIndex:
         self._packages: dict[str, Package] = {}
         self._roots: dict[Path, Package] | None = None  # share/source folder -> package
         self._located: dict[Path, Path | None] = {}
+        self._installed_from: dict[Path, list[Path]] = {}
         self._python_packages: dict[str, list[Path]] | None = None  # name -> packages
         self._site: list[Path] | None = None
         self.sources: dict[str, list[Path]] = {}  # every source folder of each name
@@ -372,15 +373,20 @@ class PackageIndex:
                 continue
         return sorted(names)
 
-
     def installed_from(self, path: Path) -> list[Path]:
         """Return the source folders that may install as the folder of a missing ``path``.
 
         ``$(find-pkg-share pkg)/config/x.yaml`` of a package that is not built points into
         its sources, where ``config/`` may not exist: CMake installs ``bringup/config`` as
         ``share/pkg/config``. The folders below the sources ending in the same names are
-        what the user can open.
+        what the user can open. Remembered, as ``locate``: the message, the did-you-mean
+        and the fix of one finding all ask.
         """
+        if path not in self._installed_from:
+            self._installed_from[path] = self._source_folders_like(path)
+        return self._installed_from[path]
+
+    def _source_folders_like(self, path: Path) -> list[Path]:
         package = self.owner(path)
         if package is None or package.source is None or path.parent.exists() \
                 or not path.is_relative_to(package.share) \

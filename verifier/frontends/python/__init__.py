@@ -26,7 +26,6 @@ from launchverify.frontends.python.assumptions import checked
 from launchverify.frontends.python.concrete import SubstitutionFailure
 from launchverify.frontends.python.convert import PythonConverter
 from launchverify.frontends.python.importer import absent_import, import_context
-from launchverify.frontends.python.locate import in_characters
 from launchverify.frontends.python.machine import robot_machine
 from launchverify.frontends.python.mentions import mentioned_strings
 from launchverify.frontends.python.sandbox import (
@@ -41,6 +40,7 @@ from launchverify.frontends.python.sandbox import (
 )
 from launchverify.ir import actions as a
 from launchverify.models.launch_api import runtime
+from launchverify.models.launch_api.base import in_characters
 from launchverify.models.launch_api.context import LaunchContext, MissingConfiguration
 from launchverify.models.launch_api.launch_actions import LaunchDescription
 from launchverify.models.launch_api.placeholders import (

@@ -224,24 +224,6 @@ class CallLocator:
         return found
 
 
-_SHARED = CallLocator()
-
-
-def in_characters(span: Span) -> Span:
-    """Return a span Python placed (code positions, a traceback) with character columns.
-
-    Python counts a line's UTF-8 bytes; every span counts characters. The file is read
-    (and parsed) once, as the call lookups read it.
-    """
-    lines = _SHARED._parsed(span.file)[2]
-    column = _column(lines, span.line, span.column - 1)
-    end = None if span.end_column is None else _column(
-        lines, span.end_line or span.line, span.end_column - 1)
-    if column == span.column and end == span.end_column:
-        return span
-    return Span(span.file, span.line, column, span.end_line, end)
-
-
 @functools.lru_cache(maxsize=32)
 def _index(file: Path, mtime_ns: int, size: int) -> Parsed:
     """Parse one version of a file; index its calls by position and its simple assignments."""
