@@ -1,1 +1,1 @@
-"""LV503-LV505: lifecycle bring-up (deadlocks, invalid transitions, lifecycle managers)."""
+"""LV503-LV507: bring-up (lifecycle deadlocks and transitions, lifecycle managers, controllers)."""

@@ -14,13 +14,13 @@ edges the page hides until asked: nearly every node touches them.
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field, replace
 
 from launchverify.graph import LaunchGraph
 from launchverify.render.system_model import SystemModel, SystemNode
 from launchverify.topology.compose import Composer, InterfaceSource, NodeEndpoints
-from launchverify.topology.connections import SECTIONS, Connection, connections
+from launchverify.topology.connections import ROLES, SECTIONS, Connection, connections
 
 TF_TOPICS = ("tf", "tf_static")
 # role -> which side of the element its nodes sit on (sources feed it, sinks read it)
@@ -58,6 +58,7 @@ class FlowTopic:
     sinks: list[str] = field(default_factory=list)  # keys of subscribers / servers
     tf: bool = False
     ref: str | None = None  # the topic this repeats, in the box of a node using it
+    maybe: list[str] = field(default_factory=list)  # nodes whose unnamed endpoint may be on it
 
     @property
     def topic(self) -> str:
@@ -77,8 +78,11 @@ class FlowTopic:
 
         A topic read by nobody or written by nobody is marked; a service or action
         nobody calls is not (they are called from outside, ``ros2 service call``), one
-        nobody serves is.
+        nobody serves is. A node whose endpoint of that role and type has a name not
+        known before launch may be on it (``maybe``): then nothing is claimed.
         """
+        if self.maybe:
+            return None
         if self.section == "topics":
             if not self.sources:
                 return "publisher"
@@ -154,12 +158,21 @@ def build_flow(model: SystemModel, graph: LaunchGraph, source: InterfaceSource) 
 
 
 def assemble(system: Sequence[SystemNode], composed: Sequence[NodeEndpoints]) -> FlowGraph:
-    """Return the computation graph of nodes already composed (same order as ``system``)."""
+    """Return the computation graph of nodes already composed (same order as ``system``).
+
+    ``composed`` may hold more: the controllers a spawner loads come right after it
+    (``topology.controllers``); their boxes link to the spawner's row.
+    """
     hosts = {n.container for n in system if n.container}
     nodes: dict[str, FlowNode] = {}
     keys: dict[int, str] = {}  # id of the NodeRecord -> key
     containers = 0
-    for entry, endpoints in zip(system, composed, strict=True):
+    for entry, endpoints, extra in _pair(system, composed):
+        if extra:
+            node = _controller(entry, endpoints, extra)
+            nodes[node.key] = node
+            keys[id(endpoints.node)] = node.key
+            continue
         if (entry.kind == "node_container" or entry.fqn in hosts) and not endpoints.endpoints:
             containers += 1  # a process for components: they are the graph's nodes
             continue
@@ -178,13 +191,49 @@ def assemble(system: Sequence[SystemNode], composed: Sequence[NodeEndpoints]) ->
         for connection in grouped[section]:
             _add(topics, edges, connection, keys, nodes)
     namespaces = {n.namespace for n in nodes.values()}
+    unnamed = _unnamed(c for c in composed if id(c.node) in keys)
     for topic in topics.values():
         topic.sources = sorted(set(topic.sources), key=natural)
         topic.sinks = sorted(set(topic.sinks), key=natural)
+        topic.maybe = _maybe(topic, unnamed)
         topic.namespace = _home(topic, nodes, namespaces)
     edges = _local(edges, topics, nodes)
     unique = sorted(set(edges), key=lambda e: (natural(e.source), natural(e.target)))
     return FlowGraph(nodes, topics, unique, containers)
+
+
+def _pair(system: Sequence[SystemNode], composed: Sequence[NodeEndpoints],
+          ) -> list[tuple[SystemNode, NodeEndpoints, int]]:
+    """Return each composed node with its row of the table, and its rank among extras.
+
+    A launched node takes the next row; a node the launch does not start (a controller)
+    shares the row of the one before it (its spawner) and counts from 1.
+    """
+    out: list[tuple[SystemNode, NodeEndpoints, int]] = []
+    rows = iter(system)
+    extra = 0
+    for endpoints in composed:
+        if endpoints.spawner is not None and out:
+            extra += 1
+            out.append((out[-1][0], endpoints, extra))
+            continue
+        row = next(rows, None)
+        if row is None:
+            raise ValueError("more composed nodes than nodes in the picture")
+        extra = 0
+        out.append((row, endpoints, 0))
+    if next(rows, None) is not None:
+        raise ValueError("fewer composed nodes than nodes in the picture")
+    return out
+
+
+def _controller(spawner: SystemNode, endpoints: NodeEndpoints, number: int) -> FlowNode:
+    """Return a controller's box: a node of its manager's process, started by a spawner."""
+    base = replace(spawner, fqn=endpoints.fqn or f"{spawner.fqn} (controller {number})",
+                   executable=endpoints.executable or "?", kind="controller")
+    node = _node(base, endpoints)
+    node.key = f"n{spawner.index}c{number}"
+    return node
 
 
 def _node(entry: SystemNode, endpoints: NodeEndpoints) -> FlowNode:
@@ -203,6 +252,38 @@ def _node(entry: SystemNode, endpoints: NodeEndpoints) -> FlowNode:
             node.unresolved.append(f"{composed.endpoint.kind.value} {written}: "
                                    f"{composed.reason or 'not known before launch'}")
     return node
+
+
+def _unnamed(composed: Iterable[NodeEndpoints]) -> list[tuple[str, str, str | None, str]]:
+    """Return the endpoints whose name is not known: section, role, type, node.
+
+    A controller whose interface is not known (its type is not) may be on any name
+    (``*``): the picture never says "nobody publishes" on the strength of it.
+    """
+    found: list[tuple[str, str, str | None, str]] = []
+    for node in composed:
+        who = node.fqn or node.node.executable_label()
+        if node.spawner is not None and node.interface is None:
+            found.append(("*", "*", None, who))
+        found += [(*ROLES[end.endpoint.kind], end.endpoint.type, who)
+                  for end in node.endpoints if end.name is None]
+    return found
+
+
+def _maybe(topic: FlowTopic, unnamed: list[tuple[str, str, str | None, str]]) -> list[str]:
+    """Return the nodes that may take the role nobody takes on ``topic``, by their type.
+
+    ``joint_state_broadcaster`` builds its topic's name at run time: ``/joint_states``
+    that ``robot_state_publisher`` reads is not "published by nobody" then.
+    """
+    roles = SECTIONS[topic.section]
+    lacking = [role for role in roles
+               if not (topic.sources if role in SOURCE_ROLES else topic.sinks)]
+    if not lacking:
+        return []
+    return sorted({node for section, role, kind, node in unnamed
+                   if section in (topic.section, "*") and (role in lacking or role == "*")
+                   and (kind is None or not topic.types or kind in topic.types)})
 
 
 def _add(topics: dict[str, FlowTopic], edges: list[FlowEdge], connection: Connection,

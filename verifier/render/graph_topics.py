@@ -46,8 +46,28 @@ def sections(view: GraphView, nodes: list[NodeEndpoints]) -> dict[str, list[dict
 
     fqns = {id(n.node): n.fqn for n in nodes}
     grouped = connections(nodes)
-    return {section: [_connection(view, c, fqns) for c in grouped[section]]
-            for section in SECTIONS}
+    found: dict[str, list[dict[str, Any]]] = {
+        section: [_connection(view, c, fqns) for c in grouped[section]]
+        for section in SECTIONS}
+    found["controllers"] = [_controller(view, n) for n in nodes if n.spawn is not None]
+    return found
+
+
+def _controller(view: GraphView, composed: NodeEndpoints) -> dict[str, Any]:
+    """Return one controller a spawner loads: where it runs, its type, what is unknown."""
+    assert composed.spawn is not None
+    where = view.where(composed.spawn.spawner.origin)
+    return {
+        "name": composed.spawn.name,
+        "node": composed.fqn,
+        "manager": composed.spawn.manager,
+        "type": composed.executable,
+        "defined": not composed.spawn.undefined,
+        "found": composed.interface is not None,
+        "note": composed.note,
+        "spawner": f"{where['file']}:{where['line']}",
+        "condition": where["condition"],
+    }
 
 
 def _connection(view: GraphView, connection: Connection,
@@ -106,6 +126,12 @@ def render_text(doc: dict[str, Any], out: TextIO) -> None:
                     out.write(f"        {role}: {names}\n")
             if entry["condition"]:
                 out.write(f"        when {entry['condition']}\n")
+    if doc.get("controllers"):
+        out.write("controllers:\n")
+        for entry in doc["controllers"]:
+            kind = entry["type"] or "type not known"
+            out.write(f"    {entry['node'] or entry['name']}  {kind}  (in "
+                      f"{entry['manager'] or '?'}, spawned at {entry['spawner']})\n")
     modelled = [node for node in doc["nodes"] if node.get("interface")
                 and node["interface"]["found"] and node["interface"]["note"]]
     if modelled:

@@ -10,17 +10,21 @@ sources; ``check`` imports it only when a launched node has sources (the wiring 
 Unknowns stay unknown: a name that needs something not known before launch (a symbolic
 namespace, a remap rule with an argument in it, a parameter set from an expression) comes
 out as ``None`` with the reason.
+The controllers ros2_control's spawners load are added after their spawner
+(``topology.controllers``).
 """
 
 from __future__ import annotations
 
 import shlex
 from dataclasses import dataclass, field
-from typing import Protocol
+from pathlib import Path
+from typing import TYPE_CHECKING, Protocol
 
 from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, Origin
 from launchverify.ir.subst import Sub, walk
 from launchverify.ir.symbolic import Arg, EnvInput, Select
+from launchverify.models.ros2_control import CONTROL_NODE, MANAGER_NAME
 from launchverify.models.ros_names import node_fqn
 from launchverify.parameters import effective_parameters
 from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface
@@ -36,7 +40,12 @@ from launchverify.topology.resolve import (
 from launchverify.workspace.packages import Package, PackageIndex
 from launchverify.workspace.paths import display_path
 
+if TYPE_CHECKING:
+    from launchverify.frontends.param_file import ParamFile
+
 SERVICE_KINDS = (EndpointKind.SERVICE, EndpointKind.CLIENT)
+# Names a node's code gives itself where the extractor cannot see it (a variable).
+DEFAULT_NODE_NAMES = {CONTROL_NODE: MANAGER_NAME}
 
 
 class InterfaceSource(Protocol):
@@ -62,6 +71,7 @@ class WorkspaceInterfaces:
         self.models = models
         self._read: dict[str, list[NodeInterface]] = {}
         self._failed: dict[str, str] = {}
+        self._param_files: dict[Path, ParamFile] = {}
 
     def interface(self, package: str, executable: str,
                   component: bool) -> tuple[NodeInterface | None, str | None]:
@@ -92,6 +102,26 @@ class WorkspaceInterfaces:
             what = "component" if component else "executable"
             return None, f"no {what} {executable} found in the sources of {package}"
         return match, None
+
+    def parameter_file(self, path: str) -> ParamFile | None:
+        """Return a parameter file a command line names (a spawner's ``--param-file``).
+
+        Read as the evaluator reads a node's: found as ros2 launch would, and only inside
+        the workspace; ``None`` when it is elsewhere, missing or not readable.
+        """
+        from launchverify.frontends.param_file import load_param_file
+        from launchverify.workspace.paths import resolved
+
+        if not path or not Path(path).is_absolute():
+            return None
+        located = self.index.locate(Path(path))
+        if located is None or not any(resolved(located).is_relative_to(w)
+                                      for w in self.index.workspaces):
+            return None
+        if located not in self._param_files:
+            self._param_files[located] = load_param_file(located)
+        loaded = self._param_files[located]
+        return loaded if loaded.readable else None
 
     def _modelled(self, package: str, executable: str, component: bool,
                   missing: bool) -> tuple[NodeInterface | None, str | None]:
@@ -143,6 +173,21 @@ class ComposedEndpoint:
 
 
 @dataclass(frozen=True, slots=True)
+class Spawn:
+    """How a ros2_control controller becomes a node: a spawner asks its manager to load it.
+
+    ``undefined``: no source gives the controller's type although every one was read, so
+    the manager refuses to load it; ``defined`` then names the controllers it does know.
+    """
+
+    spawner: NodeRecord
+    name: str
+    manager: str | None  # the manager's fully qualified name, when known
+    undefined: bool = False
+    defined: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True, slots=True)
 class NodeEndpoints:
     """A launched node, its interface (``None``: ``note`` says why) and its endpoints.
 
@@ -156,6 +201,12 @@ class NodeEndpoints:
     endpoints: tuple[ComposedEndpoint, ...] = ()
     note: str | None = None
     fqn: str | None = None  # from the launch, else from the name its sources give
+    spawn: Spawn | None = None  # a controller: how it is loaded
+
+    @property
+    def spawner(self) -> NodeRecord | None:
+        """Return the spawner that loads this node, a controller; ``None`` for others."""
+        return None if self.spawn is None else self.spawn.spawner
 
 
 @dataclass
@@ -196,8 +247,14 @@ class Composer:
         return self.symbolic or self.graph.runs(origin) is not False
 
     def compose(self) -> list[NodeEndpoints]:
-        """Return every node of the view with its fully qualified endpoints."""
-        return [self.node(node) for node in self.graph.nodes if self.shown(node.origin)]
+        """Return every node of the view with its fully qualified endpoints.
+
+        The controllers spawners load come right after their spawner.
+        """
+        from launchverify.topology.controllers import with_controllers
+
+        return with_controllers(
+            self, [self.node(node) for node in self.graph.nodes if self.shown(node.origin)])
 
     def node(self, node: NodeRecord) -> NodeEndpoints:
         """Return one node's endpoints (none, with a note, when its interface is unknown)."""
@@ -227,7 +284,8 @@ class Composer:
                 identity.name_reason = ("the node's name is not known before launch: "
                                         + self.describe(node.name))
         else:
-            identity.name = interface.node_name
+            identity.name = interface.node_name or DEFAULT_NODE_NAMES.get(
+                (interface.package, interface.executable))
             if identity.name is None:
                 identity.name_reason = "neither the launch nor the sources give the node's name"
         if node.namespace is not None:
@@ -242,10 +300,7 @@ class Composer:
             identity.rules.extend(given)
         if reason is not None:  # an unknown one after them: whatever it renames is unknown
             identity.rules.append(UnknownRule(reason))
-        for remap in node.remappings:
-            if remap.scope and not self.symbolic and self.graph.runs(remap.origin) is False:
-                continue
-            identity.rules.append(self.rule(remap.src, remap.dst, remap.origin))
+        identity.rules.extend(self.remap_rules(node))
         name, namespace, reason = node_identity(
             identity.name, identity.namespace, identity.rules,
             launch_named=node.name is not None, launch_namespaced=node.namespace is not None)
@@ -256,6 +311,16 @@ class Composer:
         identity.name, identity.namespace = name, namespace
         return identity
 
+    def launch_of(self, node: NodeRecord) -> LaunchRecord | None:
+        """Return the process record that starts a node (its command line), if any."""
+        launches = self.graph.derived.get("launch_of_node")
+        if launches is None:  # built once per graph: a fleet has many nodes
+            launches = {id(launch.node): launch for launch in self.graph.launches
+                        if launch.node is not None}
+            self.graph.derived["launch_of_node"] = launches
+        found = launches.get(id(node))
+        return found if isinstance(found, LaunchRecord) else None
+
     def ros_argument_rules(self, node: NodeRecord) -> tuple[list[RuleLike], str | None]:
         """Return the ``-r``/``--remap`` rules of a node's command line (they come first).
 
@@ -264,14 +329,8 @@ class Composer:
         puts ``--ros-args`` before them). The second item says why the rules are not all
         known (a word not known before launch where a rule could be), ``None`` when they are.
         """
-        launches = self.graph.derived.get("launch_of_node")
-        if launches is None:  # built once per graph: a fleet has many nodes
-            launches = {id(launch.node): launch for launch in self.graph.launches
-                        if launch.node is not None}
-            self.graph.derived["launch_of_node"] = launches
-        launch = launches.get(id(node))
-        if not isinstance(launch, LaunchRecord) or not (launch.arguments
-                                                       or launch.ros_arguments):
+        launch = self.launch_of(node)
+        if launch is None or not (launch.arguments or launch.ros_arguments):
             return [], None
         where = f"{display_path(launch.origin.span.file)}:{launch.origin.span.line}"
         rules: list[RuleLike] = []
@@ -296,6 +355,12 @@ class Composer:
             except ValueError:
                 words.append(text)
         return words
+
+    def remap_rules(self, node: NodeRecord) -> list[RuleLike]:
+        """Return the rules of a node's launch remappings that this view applies."""
+        return [self.rule(remap.src, remap.dst, remap.origin) for remap in node.remappings
+                if not (remap.scope and not self.symbolic
+                        and self.graph.runs(remap.origin) is False)]
 
     def rule(self, src: Sub, dst: Sub, origin: Origin) -> RuleLike:
         """Return one remap rule, or an unknown one saying which side is not known."""

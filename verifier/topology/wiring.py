@@ -2,7 +2,8 @@
 
 One view per launch graph, built once and shared by the rules of one check (kept in the
 graph's ``derived`` data): the nodes that run under the arguments as given (or may: a
-condition not known before launch), each with its composed endpoints, grouped into
+condition not known before launch) and the ros2_control controllers their spawners load,
+each with its composed endpoints, grouped into
 topics, services and actions (``connections``), and what the launch starts whose
 endpoints are not known: nodes without an interface (a package without sources here),
 plain processes (``ros2 bag play``, a simulator), and endpoints whose name is unknown.
@@ -110,6 +111,19 @@ def workspace_view(graph: LaunchGraph, ctx: RuleContext) -> WiringView:
     return view_of(graph, reader)
 
 
+def any_view(graph: LaunchGraph, ctx: RuleContext) -> WiringView:
+    """Return the graph's view for rules that need no sources (shipped models suffice).
+
+    The workspace's view when a package index is known, else one of shipped models only.
+    """
+    if ctx.packages is not None:
+        return workspace_view(graph, ctx)
+    from launchverify.topology.compose import WorkspaceInterfaces
+    from launchverify.workspace.packages import PackageIndex
+
+    return view_of(graph, WorkspaceInterfaces(PackageIndex()))
+
+
 def globs_option(ctx: RuleContext, key: str, default: tuple[str, ...] = ()) -> tuple[str, ...]:
     """Return a configured list of name globs (``default`` when the configuration is silent)."""
     value = ctx.options.get(key)
@@ -128,8 +142,7 @@ def view_of(graph: LaunchGraph, source: InterfaceSource) -> WiringView:
     from launchverify.topology.connections import ROLES, connections
 
     composer = Composer(graph, source, symbolic=False)
-    nodes = [composer.node(node) for node in graph.nodes
-             if graph.runs(node.origin) is not False]
+    nodes = composer.compose()  # the symbolic=False view: the nodes that run or may
     grouped = connections(nodes)
     view = WiringView(graph, composer, nodes,
                       {section: {c.name: c for c in grouped[section]} for section in SECTIONS})

@@ -1,0 +1,434 @@
+"""ros2_control's controllers as nodes of the computation graph.
+
+Controllers are nodes no launch file starts: a ``spawner`` asks the controller manager to
+load them, and they run in the manager's process, each a node named after the controller
+in the manager's namespace. ``with_controllers`` adds them after their spawner: their type
+from the spawner's ``--controller-type`` or ``--param-file``, else the manager's
+``<name>.type`` parameter; their interface from the type's model. A controller whose type
+or interface is not known is a node whose endpoints are not known, never one that has none.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from launchverify.graph import NodeRecord
+from launchverify.ir.subst import Sub, Text
+from launchverify.models.ros2_control import CONTROL_NODE, MANAGER_NAME, SPAWNER
+from launchverify.models.ros_names import node_fqn, node_key_matches
+from launchverify.parameters import effective_parameters
+from launchverify.topology.compose import (
+    ComposedEndpoint,
+    Composer,
+    NodeEndpoints,
+    Spawn,
+    WorkspaceInterfaces,
+    _Identity,
+    _remap_rules,
+)
+from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface
+from launchverify.topology.resolve import Rule, RuleLike, UnknownRule
+
+if TYPE_CHECKING:
+    from launchverify.frontends.param_file import ParamFile
+
+
+
+def with_controllers(composer: Composer, composed: list[NodeEndpoints]) -> list[NodeEndpoints]:
+    """Return ``composed`` with the controllers each spawner loads right after it."""
+    if not any((c.package, c.executable) == SPAWNER for c in composed):
+        return composed
+    return Spawners(composer).with_controllers(composed)
+
+
+class Spawners:
+    """The spawners of one composed view, and the controllers they load."""
+
+    def __init__(self, composer: Composer) -> None:
+        self.composer = composer
+
+    def with_controllers(self, composed: list[NodeEndpoints]) -> list[NodeEndpoints]:
+        """Return ``composed`` with each spawner's controllers right after it.
+
+        A spawner whose command line is known becomes a node that calls its manager's
+        services (when the manager is launched here); one that is not stays a node whose
+        endpoints are not known.
+        """
+        managers = {c.fqn: c for c in composed
+                    if (c.package, c.executable) == CONTROL_NODE and c.fqn is not None}
+        out: list[NodeEndpoints] = []
+        for entry in composed:
+            if (entry.package, entry.executable) != SPAWNER:
+                out.append(entry)
+                continue
+            spawner, controllers = self.spawned(entry, managers)
+            out.append(spawner)
+            out.extend(controllers)
+        return out
+
+    def spawned(self, entry: NodeEndpoints, managers: dict[str, NodeEndpoints],
+                ) -> tuple[NodeEndpoints, list[NodeEndpoints]]:
+        """Return a spawner as known from its command line, and the controllers it loads."""
+        node = entry.node
+        launch = self.composer.launch_of(node)
+        call = parse_spawner(self.spawner_words(launch.arguments) if launch is not None
+                             else [])
+        namespace = self.composer.text(node.namespace) if node.namespace is not None else "/"
+        manager = call.manager_fqn(namespace)
+        host = managers.get(manager) if manager is not None else None
+        controllers = [self.controller(node, name, call, manager, host)
+                       for name in call.controllers]
+        unknown = call.unknown or (None if manager is not None else
+                                   "the controller manager's name is not known before launch")
+        if unknown is not None:
+            return replace(entry, note=f"a ros2_control spawner: {unknown}"), controllers
+        return self.spawner(entry, call, manager or "", host is not None), controllers
+
+    def spawner_words(self, arguments: tuple[Sub, ...]) -> list[str | Sub]:
+        """Return a spawner's words: split, but a ``--controller-ros-args`` value kept whole.
+
+        That value is one word holding the controller's own ROS arguments
+        (``"-r ~/cmd_vel:=/cmd_vel"``).
+        """
+        words: list[str | Sub] = []
+        for argument in arguments:
+            if words and words[-1] == "--controller-ros-args":
+                text = self.composer.text(argument)
+                words.append(argument if text is None else text)
+                continue
+            words.extend(self.composer.words((argument,)))
+        return words
+
+    def spawner(self, entry: NodeEndpoints, call: SpawnerCall, manager: str,
+                served: bool) -> NodeEndpoints:
+        """Return a spawner as the client of its manager's services.
+
+        Only when the manager is launched here: one that runs elsewhere (a simulator's
+        plugin) serves them unbeknown to us, and a client nobody seems to serve would be
+        a false claim.
+        """
+        node = entry.node
+        span = node.origin.span
+        services = call.services() if served else []
+        endpoints = tuple(Endpoint(EndpointKind.CLIENT, f"{manager}/{service}",
+                                   f"controller_manager_msgs/srv/{_pascal(service)}", span)
+                          for service in services)
+        interface = NodeInterface(SPAWNER[0], SPAWNER[1], None, None, endpoints, ())
+        name = self.composer.text(node.name) if node.name is not None else (
+            f"spawner_{call.controllers[0]}" if call.controllers else None)
+        namespace = self.composer.text(node.namespace) if node.namespace is not None else "/"
+        fqn = node_fqn(namespace, name) if name is not None and namespace is not None else None
+        loads = ", ".join(call.controllers) or "no controller"
+        return NodeEndpoints(node, entry.package, entry.executable, interface,
+                             tuple(ComposedEndpoint(node, e, e.name) for e in endpoints),
+                             note=f"a ros2_control spawner: asks {manager} to load {loads}",
+                             fqn=fqn)
+
+    def controller(self, spawner: NodeRecord, name: str, call: SpawnerCall,
+                   manager: str | None, host: NodeEndpoints | None) -> NodeEndpoints:
+        """Return one controller: a node of its manager's process, named after it.
+
+        Its interface is its type's (``diff_drive_controller/DiffDriveController``), the
+        type being what the spawner's ``--controller-type`` or ``--param-file``, else the
+        manager's parameters, say. It runs when its spawner does (its place and
+        condition are the spawner's).
+        """
+        namespace = None if manager is None else manager.rpartition("/")[0] or "/"
+        fqn = None if namespace is None else node_fqn(namespace, name)
+        kind, reason, undefined = self.controller_type(spawner, name, fqn, call, host)
+        undefined = undefined and call.unknown is None  # an option not understood may give it
+        spawn = Spawn(spawner, name, manager, undefined,
+                      self.defined(host) if undefined and host is not None else ())
+        package = kind.partition("/")[0] if kind is not None and "/" in kind else None
+        parameters = tuple(p for p in host.node.parameters
+                           if p.file is not None or p.scope) if host is not None else ()
+        record = replace(spawner, kind="node", package=_text(package), executable=_text(kind),
+                         name=Text(name), namespace=_text(namespace), fqn=_text(fqn),
+                         remappings=(), parameters=parameters, container=None,
+                         executable_written=None, autostart=None)
+        what = f"controller {name} loaded by a spawner"
+        if namespace is None:
+            return NodeEndpoints(record, package, kind, None, fqn=fqn, spawn=spawn, note=(
+                f"{what}: its controller manager's name is not known before launch"))
+        if kind is None or package is None:
+            return NodeEndpoints(record, package, kind, None, fqn=fqn, spawn=spawn,
+                                 note=f"{what}: {reason or f'its type {kind} names no package'}")
+        interface, note = self.composer.source.interface(package, kind, False)
+        if interface is None:
+            return NodeEndpoints(record, package, kind, None, fqn=fqn, spawn=spawn,
+                                 note=f"{what} ({kind}): {note}")
+        identity = _Identity(name, namespace, rules=self.controller_rules(call, host))
+        endpoints = tuple(self.composer.endpoint(record, e, identity) for e in interface.endpoints)
+        return NodeEndpoints(record, package, kind, interface, endpoints, fqn=fqn, spawn=spawn,
+                             note=f"{what} ({kind})" + (f"; {note}" if note else ""))
+
+    def controller_type(self, spawner: NodeRecord, name: str, fqn: str | None,
+                        call: SpawnerCall, host: NodeEndpoints | None,
+                        ) -> tuple[str | None, str | None, bool]:
+        """Return a controller's type (``package/Class``), or ``None`` and why not.
+
+        The third item is ``True`` when the type is surely given nowhere: every source
+        was read, and the manager will refuse to load the controller.
+
+        As the spawner and the manager decide it: ``--controller-type``, else a
+        ``type`` for the controller in the spawner's ``--param-file`` (it sets the
+        manager's ``<name>.type``), else the manager's own ``<name>.type`` parameter.
+        Since 2025 the spawner also reads the files of its own ``--params-file`` ROS
+        arguments (launch's ``parameters=`` on the spawner) as ``--param-file``s.
+        """
+        if call.controller_type is not None:
+            given = self.word(call.controller_type)
+            return given, None if given is not None else (
+                "its --controller-type is not known before launch"), False
+        for file in call.param_files:
+            text = self.word(file)
+            if text is None:
+                return None, "the spawner's --param-file is not known before launch", False
+            loaded = self.parameter_file(text)
+            if loaded is None:
+                return None, f"the spawner's --param-file {text} could not be read", False
+            found = _type_in(loaded, name, fqn)
+            if found is not None:
+                return found, None, False
+        own, unknown = self.own_parameter_files(spawner)
+        for loaded in own:
+            found = _type_in(loaded, name, fqn)
+            if found is not None:
+                return found, None, False
+        if unknown is not None:
+            return None, unknown, False
+        if host is None:
+            return None, ("its controller manager is not started by this launch and the "
+                          "spawner's --param-file does not give its type"), False
+        effective = effective_parameters(self.composer.graph, self.named(host))
+        winner = effective.winner(f"{name}.type")
+        if winner is not None:
+            if isinstance(winner.value, str) and winner.value:
+                return winner.value, None, False
+            return None, f"the manager's parameter {name}.type is not known before launch", False
+        if not effective.complete:
+            return None, ("a parameter source of its controller manager could not be read: "
+                          "it may give the type"), False
+        return None, (f"neither the controller manager's parameters nor the spawner's "
+                      f"--param-file give {name}.type"), True
+
+    def own_parameter_files(self, spawner: NodeRecord) -> tuple[list[ParamFile], str | None]:
+        """Return the parameter files launch gives the spawner node, and why not all.
+
+        launch_ros passes them (and a file of its inline values) as ``--params-file``; a
+        value that could be a controller's type, or a file not read, leaves it unknown.
+        """
+        found: list[ParamFile] = []
+        for param in spawner.parameters:
+            if param.file is not None:
+                loaded = (None if param.source is None
+                          else self.composer.graph.param_files.get(param.source))
+                if loaded is None or not loaded.readable:
+                    return found, "a parameter file of the spawner could not be read"
+                found.append(loaded)
+            elif param.name is None or (self.composer.text(param.name) or "type") \
+                    .rpartition(".")[2] == "type":
+                return found, "the spawner's own parameters may give the type"
+        return found, None
+
+    def defined(self, host: NodeEndpoints) -> tuple[str, ...]:
+        """Return the controllers a manager's parameters give a type (for did-you-mean)."""
+        effective = effective_parameters(self.composer.graph, self.named(host))
+        return tuple(sorted(name[:-len(".type")] for name in effective.values
+                            if name.endswith(".type") and name.count(".") == 1))
+
+    def named(self, host: NodeEndpoints) -> NodeRecord:
+        """Return a manager's record with the name its code gives it when launch gives none.
+
+        ``ros2_control_node`` is ``controller_manager`` unless renamed: the blocks of its
+        parameter files under that name are its own. The record is kept with the graph,
+        whose parameter cache knows records by identity (a freed one's could be reused).
+        """
+        if host.fqn is None or self.composer.graph.base(host.node.fqn) is not None:
+            return host.node
+        kept = self.composer.graph.derived.setdefault("named_managers", {})
+        record = kept.get(id(host.node))
+        if not isinstance(record, NodeRecord):
+            record = kept[id(host.node)] = replace(host.node, fqn=Text(host.fqn))
+        return record
+
+    def word(self, value: str | Sub) -> str | None:
+        """Return a command-line word when known."""
+        return value if isinstance(value, str) else self.composer.text(value)
+
+    def parameter_file(self, text: str) -> ParamFile | None:
+        """Return a parameter file the evaluation read, else one read from the workspace."""
+        loaded = self.composer.graph.param_files.get(Path(text))
+        if loaded is not None:
+            return loaded if loaded.readable else None
+        if isinstance(self.composer.source, WorkspaceInterfaces):
+            return self.composer.source.parameter_file(text)
+        return None
+
+    def controller_rules(self, call: SpawnerCall, host: NodeEndpoints | None,
+                         ) -> list[RuleLike]:
+        """Return the remap rules a controller node gets, in the order rcl applies them.
+
+        Its own (``--controller-ros-args``), then the manager process's command line
+        (launch's ``remappings``, ``-r`` rules): global arguments reach every node of a
+        process. The manager drops ``__node``/``__ns`` ones: the controller keeps its name.
+        """
+        rules: list[RuleLike] = []
+        if call.ros_args:
+            where = "a spawner's --controller-ros-args"
+            words = self.composer.words(tuple(Text(a) if isinstance(a, str) else a
+                                     for a in call.ros_args))
+            found, unknown = _remap_rules(words, True, where)
+            rules.extend(found)
+            if unknown is not None:
+                rules.append(UnknownRule(unknown))
+        if host is not None:
+            given, reason = self.composer.ros_argument_rules(host.node)
+            rules.extend(given)
+            if reason is not None:
+                rules.append(UnknownRule(reason))
+            rules.extend(self.composer.remap_rules(host.node))
+        return [r for r in rules if not (isinstance(r, Rule) and r.src in ("__node", "__ns"))]
+
+
+# ``spawner`` options (controller_manager, humble to rolling) and what they take
+_SPAWNER_VALUED = frozenset({
+    "-c", "--controller-manager", "-p", "--param-file", "-n", "--namespace", "-t",
+    "--controller-type", "--controller-manager-timeout", "--switch-timeout",
+    "--service-call-timeout", "--controller-ros-args"})
+_SPAWNER_FLAGS = frozenset({"--load-only", "--stopped", "--inactive", "-u",
+                            "--unload-on-kill", "--activate-as-group", "--switch-asap",
+                            "--no-switch-asap", "-h", "--help"})
+_SPAWNER_LISTS = frozenset({"--fallback_controllers", "--fallback-controllers"})
+
+
+@dataclass
+class SpawnerCall:
+    """What a ``controller_manager spawner`` command line asks for."""
+
+    controllers: list[str] = field(default_factory=list)
+    manager: str | Sub = MANAGER_NAME
+    namespace: str | Sub | None = None  # ``-n``: the manager's namespace (deprecated)
+    param_files: list[str | Sub] = field(default_factory=list)
+    controller_type: str | Sub | None = None
+    ros_args: list[str | Sub] = field(default_factory=list)
+    load_only: bool = False
+    inactive: bool = False
+    unload: bool = False
+    unknown: str | None = None  # why not everything it asks for is known
+
+    def manager_fqn(self, namespace: str | None) -> str | None:
+        """Return the manager's fully qualified name, as the spawner makes it.
+
+        A relative ``--controller-manager`` is taken in ``--namespace``, else in the
+        spawner's own namespace.
+        """
+        if not isinstance(self.manager, str) or not self.manager.strip("/"):
+            return None
+        if self.manager.startswith("/"):
+            return "/" + self.manager.strip("/")
+        base = self.namespace if self.namespace is not None else namespace
+        if not isinstance(base, str):
+            return None
+        base = "/" + base.strip("/")
+        return node_fqn(base, self.manager.strip("/"))
+
+    def services(self) -> list[str]:
+        """Return the manager's services the spawner calls."""
+        found = ["list_controllers", "load_controller"]
+        if not self.load_only:
+            found.append("configure_controller")
+            if not self.inactive:
+                found.append("switch_controller")
+        if self.unload:
+            found.append("unload_controller")
+        return found
+
+
+def parse_spawner(words: list[str | Sub]) -> SpawnerCall:
+    """Return what a spawner's arguments ask for (``unknown`` says what is not known).
+
+    Examples:
+        >>> call = parse_spawner(["jsb", "diff", "--param-file", "/c.yaml", "-c", "/cm"])
+        >>> call.controllers, call.param_files, call.manager_fqn("/")
+        (['jsb', 'diff'], ['/c.yaml'], '/cm')
+        >>> parse_spawner(["arm", "--controller-manager-timeout", "50"]).manager_fqn("/r1")
+        '/r1/controller_manager'
+    """
+    call = SpawnerCall()
+    index = 0
+    while index < len(words):
+        word = words[index]
+        index += 1
+        if not isinstance(word, str):  # a controller's name, or an option: not known
+            call.unknown = "an argument is not known before launch"
+            continue
+        if word == "--ros-args":  # the spawner's own ROS arguments from here on
+            break
+        option, equals, inline = word.partition("=")
+        if word in _SPAWNER_FLAGS:
+            call.load_only |= word == "--load-only"
+            call.inactive |= word in ("--inactive", "--stopped")
+            call.unload |= word in ("-u", "--unload-on-kill")
+        elif word in _SPAWNER_VALUED or (equals and option in _SPAWNER_VALUED):
+            if equals:
+                value: str | Sub = inline
+            elif index < len(words):
+                value = words[index]
+                index += 1
+            else:
+                call.unknown = f"{word} has no value"
+                break
+            _set_option(call, option if equals else word, value)
+        elif word in _SPAWNER_LISTS:
+            while index < len(words) and isinstance(words[index], str) \
+                    and not str(words[index]).startswith("-"):
+                index += 1
+        elif word.startswith("-"):
+            call.unknown = f"option {word} is not one launchverify knows"
+        else:
+            call.controllers.append(word)
+    return call
+
+
+def _set_option(call: SpawnerCall, option: str, value: str | Sub) -> None:
+    if option in ("-c", "--controller-manager"):
+        call.manager = value
+    elif option in ("-n", "--namespace"):
+        call.namespace = value
+    elif option in ("-p", "--param-file"):
+        call.param_files.append(value)
+    elif option in ("-t", "--controller-type"):
+        call.controller_type = value
+    elif option == "--controller-ros-args":
+        call.ros_args.append(value)
+
+
+def _type_in(loaded: ParamFile, name: str, fqn: str | None) -> str | None:
+    """Return the ``type`` a parameter file gives a controller (its own key before ``/**``).
+
+    The spawner looks for the controller's name (with or without its namespace), then
+    for a wildcard key.
+    """
+    own: str | None = None
+    wildcard: str | None = None
+    for block in loaded.blocks:
+        parameter = block.parameters.get("type")
+        if parameter is None or not isinstance(parameter.value, str):
+            continue
+        if block.key.strip("/") == name or (fqn is not None and block.key == fqn):
+            own = parameter.value
+        elif fqn is not None and node_key_matches(block.key, fqn):
+            wildcard = parameter.value
+    return own or wildcard
+
+
+def _text(value: str | None) -> Sub | None:
+    return None if value is None else Text(value)
+
+
+def _pascal(snake: str) -> str:
+    """Return ``ListControllers`` for ``list_controllers`` (a service type's name)."""
+    return "".join(part.capitalize() for part in snake.split("_"))
