@@ -33,8 +33,11 @@ from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
 from launchverify.rules.naming.invalid_name import InvalidName
 from launchverify.rules.naming.remap_collision import RemapCollision
 from launchverify.rules.parameters.inconsistent_sim_time import InconsistentSimTime
+from launchverify.rules.parameters.missing_required_parameter import MissingRequiredParameter
 from launchverify.rules.parameters.param_file_error import ParamFileError
 from launchverify.rules.parameters.param_type_conflict import ParamTypeConflict
+from launchverify.rules.parameters.parameter_type_mismatch import ParameterTypeMismatch
+from launchverify.rules.parameters.unknown_parameter import UnknownParameter
 from launchverify.rules.parameters.unmatched_param_block import UnmatchedParamBlock
 from launchverify.rules.wiring.competing_publishers import CompetingPublishers
 from launchverify.rules.wiring.missing_peer import MissingPeer
@@ -67,6 +70,9 @@ BUILTIN: tuple[type[Rule], ...] = (
     UnmatchedParamBlock,      # LV402
     ParamTypeConflict,        # LV403
     InconsistentSimTime,      # LV404
+    UnknownParameter,         # LV405
+    ParameterTypeMismatch,    # LV406
+    MissingRequiredParameter,  # LV408
     EventCycle,               # LV501
     DanglingEventTarget,      # LV502
     LifecycleDeadlock,        # LV503

@@ -34,6 +34,17 @@ class Contribution:
     span: Span  # where the value is written
     layer: str  # what kind of source: set_parameter, file, inline
     written: Sub | None = None  # the launch's expression, for a value not known here
+    key: str = EVERY_NODE  # the node key it is given under (a file's block, or the node's)
+    value_span: Span | None = None  # a file's scalar value as written (for fixes)
+
+    @property
+    def shared(self) -> bool:
+        """Return whether the value is given to every node alike (``/**``, SetParameter).
+
+        Such a value is meant for whichever nodes use it: one that does not is no mistake.
+        """
+        return self.layer == "set_parameter" or (
+            self.layer == "file" and self.key.strip("/") in ("**", "*"))
 
 
 @dataclass
@@ -99,7 +110,7 @@ def _resolve(graph: LaunchGraph, node: NodeRecord) -> EffectiveParameters:
             written = param.value if value is None and isinstance(param.value, Sub) else None
             table.setdefault(key, []).append((name, Contribution(
                 value, kind_of(value) if value is not None else "unknown",
-                param.origin.span, layer, written)))
+                param.origin.span, layer, written, key)))
     for key, entries in table.items():
         if not _applies(key, fqn, component):
             continue
@@ -145,7 +156,8 @@ def _add_file(graph: LaunchGraph, param: ParamRecord,
         entries = table.setdefault(block.key, [])
         for name, parameter in block.parameters.items():
             entries.append((name, Contribution(parameter.value, parameter.kind,
-                                               parameter.span, "file")))
+                                               parameter.span, "file", key=block.key,
+                                               value_span=parameter.value_span)))
 
 
 def _inline_value(graph: LaunchGraph, param: ParamRecord) -> object:

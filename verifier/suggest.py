@@ -316,3 +316,33 @@ def sole_typo(name: str, candidates: Iterable[str]) -> str | None:
         return None
     return close[0]
 
+
+
+def sole_spelling(name: str, candidates: Iterable[str]) -> str | None:
+    """Return the one candidate ``name`` writes another way: a typo or shortened words.
+
+    ``sole_typo``'s candidate, else the only candidate with the same words where each
+    differs at most by an abbreviation (``max_vel_x`` for ``max_velocity_x``). What makes
+    a parameter name an error rather than a warning.
+
+    Examples:
+        >>> sole_spelling("max_vel_x", ["max_velocity_x", "max_velocity_y"])
+        'max_velocity_x'
+        >>> sole_spelling("max_vel", ["max_velocity", "max_vertical"]) is None
+        True
+    """
+    pool = sorted(set(candidates))
+    typo = sole_typo(name, pool)
+    if typo is not None:
+        return typo
+    words = _words(name)
+    found = [c for c in pool if c != name and _abbreviates(words, _words(c))]
+    return found[0] if len(found) == 1 else None
+
+
+def _abbreviates(words: tuple[str, ...], others: tuple[str, ...]) -> bool:
+    """Return whether two names have the same words, one shortening some of the other's."""
+    if len(words) != len(others) or words == others:
+        return False
+    return all(a == b or _is_abbreviation(a, b) or _is_abbreviation(b, a)
+               for a, b in zip(words, others, strict=True))

@@ -52,7 +52,8 @@ class FileParameter:
 
     value: object
     kind: str  # bool, integer, double, string, or <kind>_array
-    span: Span
+    span: Span  # the key of a scalar (the value of a list)
+    value_span: Span | None = None  # a scalar's value as written
 
 
 @dataclass
@@ -270,8 +271,9 @@ class _Reader:
                     self.rcl_problem(f"parameter {name!r} has no value", key_node)
                     continue
                 parsed, kind = scalar(value)
-                block.parameters[name] = FileParameter(parsed, kind, span_of(self.path,
-                                                                             key_node))
+                block.parameters[name] = FileParameter(parsed, kind,
+                                                       span_of(self.path, key_node),
+                                                       span_of(self.path, value))
 
     def sequence(self, name: str, node: yaml.SequenceNode) -> FileParameter | None:
         values: list[object] = []

@@ -17,12 +17,12 @@ The controllers ros2_control's spawners load are added after their spawner
 from __future__ import annotations
 
 import shlex
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol
 
 from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, Origin
-from launchverify.ir.subst import Sub, walk
+from launchverify.ir.subst import Sub, Text, walk
 from launchverify.ir.symbolic import Arg, EnvInput, Select
 from launchverify.models.ros2_control import CONTROL_NODE, MANAGER_NAME
 from launchverify.models.ros_names import node_fqn
@@ -458,6 +458,22 @@ def compose(graph: LaunchGraph, source: InterfaceSource, *,
             symbolic: bool = False) -> list[NodeEndpoints]:
     """Return every node of the view with its fully qualified endpoints."""
     return Composer(graph, source, symbolic).compose()
+
+
+def named_record(graph: LaunchGraph, composed: NodeEndpoints) -> NodeRecord:
+    """Return a node's record named as its code names it, when the launch gives no name.
+
+    Parameter file blocks keyed by that name are the node's own (``ros2_control_node`` is
+    ``controller_manager``; a node's constructor gives its default name). The record is
+    kept with the graph, whose parameter cache knows records by identity.
+    """
+    if composed.fqn is None or graph.base(composed.node.fqn) is not None:
+        return composed.node
+    kept = graph.derived.setdefault("named_records", {})
+    record = kept.get(id(composed.node))
+    if not isinstance(record, NodeRecord):
+        record = kept[id(composed.node)] = replace(composed.node, fqn=Text(composed.fqn))
+    return record
 
 
 def _has_inputs(sub: Sub) -> bool:

@@ -27,6 +27,7 @@ from launchverify.topology.compose import (
     WorkspaceInterfaces,
     _Identity,
     _remap_rules,
+    named_record,
 )
 from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface
 from launchverify.topology.resolve import Rule, RuleLike, UnknownRule
@@ -202,7 +203,8 @@ class Spawners:
         if host is None:
             return None, ("its controller manager is not started by this launch and the "
                           "spawner's --param-file does not give its type"), False
-        effective = effective_parameters(self.composer.graph, self.named(host))
+        graph = self.composer.graph
+        effective = effective_parameters(graph, named_record(graph, host))
         winner = effective.winner(f"{name}.type")
         if winner is not None:
             if isinstance(winner.value, str) and winner.value:
@@ -235,24 +237,10 @@ class Spawners:
 
     def defined(self, host: NodeEndpoints) -> tuple[str, ...]:
         """Return the controllers a manager's parameters give a type (for did-you-mean)."""
-        effective = effective_parameters(self.composer.graph, self.named(host))
+        graph = self.composer.graph
+        effective = effective_parameters(graph, named_record(graph, host))
         return tuple(sorted(name[:-len(".type")] for name in effective.values
                             if name.endswith(".type") and name.count(".") == 1))
-
-    def named(self, host: NodeEndpoints) -> NodeRecord:
-        """Return a manager's record with the name its code gives it when launch gives none.
-
-        ``ros2_control_node`` is ``controller_manager`` unless renamed: the blocks of its
-        parameter files under that name are its own. The record is kept with the graph,
-        whose parameter cache knows records by identity (a freed one's could be reused).
-        """
-        if host.fqn is None or self.composer.graph.base(host.node.fqn) is not None:
-            return host.node
-        kept = self.composer.graph.derived.setdefault("named_managers", {})
-        record = kept.get(id(host.node))
-        if not isinstance(record, NodeRecord):
-            record = kept[id(host.node)] = replace(host.node, fqn=Text(host.fqn))
-        return record
 
     def word(self, value: str | Sub) -> str | None:
         """Return a command-line word when known."""

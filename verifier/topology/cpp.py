@@ -16,12 +16,20 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from launchverify.span import Span
+from launchverify.topology.cpp_parameters import (
+    cpp_type,
+    enum_type,
+    literal_value,
+    name_pattern,
+    value_type,
+)
 from launchverify.topology.model import (
     Endpoint,
     EndpointKind,
     FileInterfaces,
     MemberInit,
     NodeName,
+    Parameter,
 )
 from launchverify.topology.names import Resolved, merge, unknown
 from launchverify.topology.parsing import damaged, parse, short, span, text, walk
@@ -81,6 +89,19 @@ class _File:
     types: dict[str, str] = field(default_factory=dict)
     members: dict[str, str] = field(default_factory=dict)
     defaults: dict[str, Resolved] = field(default_factory=dict)
+    parameters: list[Parameter] = field(default_factory=list)
+    declaring_calls: int = 0  # declare_parameter(s) calls read
+    dynamic: set[str] = field(default_factory=set)  # descriptors with dynamic_typing = true
+    read_only: set[str] = field(default_factory=set)  # descriptors with read_only = true
+
+
+# NodeOptions that make a node take parameters it never declares (anything but ``false``)
+_UNDECLARED = re.compile(rb"(allow_undeclared_parameters|automatically_declare_parameters_"
+                         rb"from_overrides)\s*\(\s*(?!false\s*\))")
+# every spelling of a declaring call, to tell whether the tree showed them all
+DECLARING = re.compile(rb"\b(?:declare_parameters?|declare_parameter_if_not_declared|"
+                       rb"add_parameter|declare_or_get_parameter)\s*[<(]")
+_DESCRIPTOR_FLAG = re.compile(r"(\w+)\s*\.\s*(dynamic_typing|read_only)\s*=\s*true")
 
 
 def extract(path: Path, data: bytes) -> FileInterfaces:
@@ -103,12 +124,19 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
             endpoints.extend(_construction(context, node))
             names.extend(_node_name_initializer(context, node))
             inits.extend(_member_init(context, node))
+    undeclared = _UNDECLARED.search(data)
     return FileInterfaces(path, tuple(endpoints), tuple(names),
                           partial=damaged(tree.root_node),
                           aliases=tuple(sorted(context.aliases.items())),
                           members=tuple(sorted(context.members.items())),
                           inits=tuple(inits), classes=_classes(nodes),
-                          instantiated=_instantiated(nodes), loaders=_loaders(nodes))
+                          instantiated=_instantiated(nodes), loaders=_loaders(nodes),
+                          parameters=tuple(context.parameters),
+                          undeclared=None if undeclared is None else (
+                              f"its NodeOptions set {undeclared.group(1).decode()}"),
+                          bases=_bases(nodes),
+                          declarations_missed=len(DECLARING.findall(data))
+                          > context.declaring_calls)
 
 
 # --------------------------------------------------------------------------- the file
@@ -147,6 +175,10 @@ def _collect(context: _File, nodes: list[Node]) -> None:
             if kind == "field_declaration" and value is not None and target:
                 context.values.setdefault(target, []).extend(_initial(value))
         elif kind == "assignment_expression" and text(node.child_by_field_name("operator")) == "=":
+            flag = _DESCRIPTOR_FLAG.fullmatch(" ".join(text(node).split()))
+            if flag is not None:
+                (context.dynamic if flag.group(2) == "dynamic_typing"
+                 else context.read_only).add(flag.group(1))
             target = _variable(node.child_by_field_name("left"))
             value = node.child_by_field_name("right")
             updated = _parameter_update(node)
@@ -166,14 +198,24 @@ def _collect(context: _File, nodes: list[Node]) -> None:
 
 def _parameter_call(context: _File, node: Node) -> None:
     """Record ``declare_parameter`` defaults and ``get_parameter("p", var)`` targets."""
-    _, name, _, _ = _callee(node.child_by_field_name("function"))
+    _, name, template, _ = _callee(node.child_by_field_name("function"))
     arguments = _arguments(node)
+    if name in ("declare_parameters", "declare_parameter", "declare_parameter_if_not_declared",
+                "add_parameter", "declare_or_get_parameter"):
+        context.declaring_calls += 1
+    if name == "declare_parameters" and arguments:  # a map of names under a prefix
+        prefix = _literal(arguments[0])
+        context.parameters.append(Parameter(f"{prefix}.*" if prefix else "*", None,
+                                            span(context.path, node)))
+        return
     if name == "declare_parameter_if_not_declared":  # nav2_util's: the node comes first
         name, arguments = "declare_parameter", _skip_nodes(context, arguments)
     elif name in ("add_parameter", "declare_or_get_parameter"):  # nav2's LifecycleNode's
         name = "declare_parameter"
     if name not in ("declare_parameter", "get_parameter", "get_parameter_or") or not arguments:
         return
+    if name == "declare_parameter":
+        context.parameters.append(_declaration(context, node, arguments, template))
     parameter = _literal(arguments[0])
     if parameter is None:
         return
@@ -188,6 +230,42 @@ def _parameter_call(context: _File, node: Node) -> None:
             if name == "get_parameter_or" and len(arguments) > 2:
                 default = _resolve(context, arguments[2], 0)
                 context.defaults.setdefault(parameter, default)
+
+
+def _declaration(context: _File, node: Node, arguments: list[Node],
+                 template: Node | None) -> Parameter:
+    """Return one ``declare_parameter`` call as a declaration.
+
+    ``(name, default[, descriptor])`` or ``(name, type[, descriptor])``; a template
+    argument gives the type. Without a default, a typed parameter is required: the
+    template form throws at the declaration already, the others when the node reads it.
+    """
+    name = name_pattern(arguments[0], _literal)
+    where = span(context.path, node)
+    written = None if template is None or not template.named_children else text(
+        template.named_children[0])
+    declared = cpp_type(written) if written is not None else None
+    second = arguments[1] if len(arguments) > 1 else None
+    by_enum = enum_type(second) if second is not None else None
+    descriptor = arguments[2] if len(arguments) > 2 else (
+        second if second is not None and "escriptor" in text(second) else None)
+    if descriptor is second:
+        second = None
+    flags = {w for w in re.findall(r"\w+", text(descriptor))} if descriptor is not None else set()
+    # a descriptor this file builds in sight (a local variable, a literal) is judged by
+    # its flags; one from elsewhere may allow any type
+    seen = descriptor is None or "ParameterDescriptor" in text(descriptor) or (
+        descriptor.type == "identifier" and text(descriptor) in context.types)
+    dynamic = bool(flags & context.dynamic) or "dynamic_typing" in flags or not seen
+    read_only = bool(flags & context.read_only)
+    if by_enum is not None or (second is None and written is not None):
+        return Parameter(name, by_enum or declared, where, dynamic=dynamic, required=True,
+                         strict=by_enum is None, read_only=read_only)
+    if second is None:  # (name) or (name, descriptor): a dynamically typed declaration
+        return Parameter(name, None, where, dynamic=True, read_only=read_only)
+    kind = declared or value_type(second, lambda n: context.types.get(_variable(n) or ""))
+    return Parameter(name, kind, where, literal_value(second), dynamic=dynamic,
+                     read_only=read_only)
 
 
 _UPDATED = re.compile(r"""name\(?\)?\s*==\s*"([^"]+)"|"([^"]+)"\s*==\s*\w*name""")
@@ -706,6 +784,20 @@ def _classes(nodes: list[Node]) -> tuple[tuple[str, tuple[str, ...]], ...]:
             if member.type == "field_declaration" and written is not None:
                 related.update(text(t) for t in walk(written) if t.type == "type_identifier")
     return tuple(sorted((name, tuple(sorted(related))) for name, related in out.items()))
+
+
+def _bases(nodes: list[Node]) -> tuple[tuple[str, str], ...]:
+    """Return each class with its base classes as written (``nav2_util::LifecycleNode``)."""
+    found: list[tuple[str, str]] = []
+    for node in nodes:
+        name = node.child_by_field_name("name")
+        if node.type not in ("class_specifier", "struct_specifier") or name is None:
+            continue
+        for child in node.named_children:
+            if child.type == "base_class_clause":
+                found.extend((class_name(text(name)), "".join(text(b).split()))
+                             for b in child.named_children if b.type != "access_specifier")
+    return tuple(found)
 
 
 def _loaders(nodes: list[Node]) -> tuple[str, ...]:

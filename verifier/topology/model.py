@@ -55,6 +55,36 @@ class Endpoint:
 
 
 @dataclass(frozen=True, slots=True)
+class Parameter:
+    """One parameter a node's code declares (``declare_parameter``, a generated library).
+
+    ``name`` is relative to the node; ``*`` stands for a part built at run time
+    (``*.plugin`` for ``plugin_name + ".plugin"``). ``type`` is rcl's name (``double``,
+    ``string_array``), ``None`` when not known; ``dynamic`` when the descriptor allows any
+    type. ``required``: typed with no default, so the node fails unless it is given
+    (``strict``: already at the declaration, rclcpp's ``declare_parameter<T>(name)``).
+    ``bounds`` are inclusive ``(low, high)`` limits, either ``None`` when open; ``choices``
+    the values a validation allows.
+    """
+
+    name: str
+    type: str | None
+    span: Span
+    default: object = None
+    dynamic: bool = False
+    required: bool = False
+    strict: bool = False
+    read_only: bool = False
+    bounds: tuple[float | None, float | None] | None = None
+    choices: tuple[object, ...] | None = None
+    via: str | None = None  # generate_parameter_library, when declared by its YAML
+
+    def at(self, file: Path) -> Parameter:
+        """Return the same declaration located in ``file``."""
+        return replace(self, span=replace(self.span, file=file))
+
+
+@dataclass(frozen=True, slots=True)
 class NodeName:
     """A default node name given in code (``rclcpp::Node("talker")``, ``super().__init__``).
 
@@ -114,6 +144,10 @@ class FileInterfaces:
     classes: tuple[tuple[str, tuple[str, ...]], ...] = ()  # class -> bases and member types
     instantiated: tuple[str, ...] = ()  # classes the file's code builds (make_shared, new)
     loaders: tuple[str, ...] = ()  # base classes of the pluginlib plugins the file loads
+    parameters: tuple[Parameter, ...] = ()
+    undeclared: str | None = None  # why the node may accept parameters it never declares
+    bases: tuple[tuple[str, str], ...] = ()  # (class, base class as written), for parameters
+    declarations_missed: bool = False  # the text declares parameters the reader did not see
 
     def at(self, file: Path) -> FileInterfaces:
         """Return the same result for another file with identical content."""
@@ -123,7 +157,9 @@ class FileInterfaces:
                               tuple(n.at(file) for n in self.node_names),
                               self.problem, self.partial, self.aliases, self.members,
                               tuple(i.at(file) for i in self.inits), self.classes,
-                              self.instantiated, self.loaders)
+                              self.instantiated, self.loaders,
+                              tuple(p.at(file) for p in self.parameters), self.undeclared,
+                              self.bases, self.declarations_missed)
 
 
 @dataclass(frozen=True, slots=True)
@@ -144,3 +180,8 @@ class NodeInterface:
     sources: tuple[Path, ...]
     problems: tuple[str, ...] = ()
     model: str | None = None
+    parameters: tuple[Parameter, ...] = ()
+    # why ``parameters`` may not be every name the node accepts (``None``: they are)
+    parameters_open: str | None = "its parameter declarations were not read"
+    # the node option that declares any parameter given (then types are not fixed by code)
+    parameters_undeclared: str | None = None

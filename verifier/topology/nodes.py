@@ -11,9 +11,17 @@ from collections.abc import Iterable, Iterator
 from dataclasses import replace
 from pathlib import Path
 
+from launchverify.models.node_parameters import NODE_BASES
+from launchverify.span import Span
 from launchverify.topology.cpp import class_name, member_endpoints
 from launchverify.topology.files import file_interfaces
-from launchverify.topology.model import Endpoint, FileInterfaces, NodeInterface, NodeName
+from launchverify.topology.model import (
+    Endpoint,
+    FileInterfaces,
+    NodeInterface,
+    NodeName,
+    Parameter,
+)
 from launchverify.topology.sources import Target, package_targets
 from launchverify.topology.wrappers import normalise_type
 from launchverify.workspace.packages import Package, scan_sources
@@ -52,9 +60,58 @@ def target_interface(package: str, target: Target) -> NodeInterface:
                         "the endpoints they create are not listed")
     if not target.sources and not problems:
         problems.append("no source file found")
+    parameters = _parameters(results, bool(loaders))
     return NodeInterface(package, target.executable, target.component,
                          _node_name(results, target), tuple(endpoints),
-                         target.sources, tuple(problems))
+                         target.sources, tuple(problems), parameters=parameters,
+                         parameters_open=_parameters_open(results, target, parameters),
+                         parameters_undeclared=next(
+                             (r.undeclared for r in results if r.undeclared), None))
+
+
+def _parameters(results: list[FileInterfaces], plugins: bool) -> tuple[Parameter, ...]:
+    """Return every parameter the target's files declare (once per name and place).
+
+    A target that loads plugins accepts what they declare too: by convention under the
+    plugin's name, any ``<plugin>.<name>`` (``*.*``).
+    """
+    found = {(p.name, p.span.file, p.span.line): p for r in results for p in r.parameters}
+    declared = list(found.values())
+    if plugins:
+        declared.append(Parameter("*.*", None, declared[0].span if declared else
+                                  _nowhere(results), dynamic=True, via="plugins"))
+    return tuple(declared)
+
+
+def _nowhere(results: list[FileInterfaces]) -> Span:
+    return Span(results[0].file if results else Path(), 1, 1)
+
+
+def _parameters_open(results: list[FileInterfaces], target: Target,
+                     parameters: tuple[Parameter, ...]) -> str | None:
+    """Return why the node may accept names it is not seen to declare, ``None`` if not.
+
+    The sources not all read, NodeOptions that accept undeclared parameters, a name
+    declared entirely at run time, or a node base class whose code is not here.
+    """
+    if target.problems or not target.sources:
+        return "its sources were not all read"
+    unread = next((r for r in results if r.problem or r.declarations_missed), None)
+    if unread is not None:
+        return f"not every parameter declaration of {display_path(unread.file)} was read"
+    option = next((r.undeclared for r in results if r.undeclared), None)
+    if option is not None:
+        return option
+    if any(p.name == "*" for p in parameters):
+        return "it declares a parameter whose whole name is built at run time"
+    defined = {name for r in results for name, _ in r.bases} | {
+        name for r in results for name, _ in r.classes}
+    for result in results:
+        for _, base in result.bases:
+            if base.endswith("Node") and base not in NODE_BASES and \
+                    class_name(base.replace(".", "::")) not in defined:
+                return f"its node class derives from {base}, whose code is not read here"
+    return None
 
 
 def _instantiated_only(endpoints: list[Endpoint], results: list[FileInterfaces],

@@ -10,13 +10,21 @@ names are literals, variables or attributes assigned from literals, or parameter
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from launchverify.topology.model import Endpoint, EndpointKind, FileInterfaces, NodeName
+from launchverify.topology.model import (
+    Endpoint,
+    EndpointKind,
+    FileInterfaces,
+    NodeName,
+    Parameter,
+)
 from launchverify.topology.names import Resolved, merge, unknown
 from launchverify.topology.parsing import damaged, parse, short, span, text, walk
+from launchverify.topology.python_parameters import declaration, name_pattern, undeclared_option
 from launchverify.topology.wrappers import (
     TF_CLASSES,
     image_endpoints,
@@ -43,6 +51,7 @@ _CLASSES = {
 _QOS = {"create_publisher": (2, "qos_profile"), "create_subscription": (3, "qos_profile"),
         "create_lifecycle_publisher": (2, "qos_profile")}
 _NODE_CLASSES = ("Node", "LifecycleNode")
+_DECLARING = re.compile(rb"\bdeclare_parameters?\s*\(")
 _READERS = ("value", "string_value", "get_parameter_value", "as_string")
 
 
@@ -53,6 +62,8 @@ class _File:
     values: dict[str, list[Node]] = field(default_factory=dict)
     defaults: dict[str, Resolved] = field(default_factory=dict)
     loops: dict[str, str] = field(default_factory=dict)  # loop variable -> what it iterates
+    parameters: list[Parameter] = field(default_factory=list)
+    declaring_calls: int = 0  # declare_parameter(s) calls read
 
 
 def extract(path: Path, data: bytes) -> FileInterfaces:
@@ -68,7 +79,11 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
             endpoints.extend(_call(context, node))
             names.extend(_node_name(context, node))
     return FileInterfaces(path, tuple(endpoints), tuple(names),
-                          partial=damaged(tree.root_node))
+                          partial=damaged(tree.root_node), parameters=tuple(context.parameters),
+                          undeclared=undeclared_option(data.decode("utf-8", "replace")),
+                          bases=_bases(context, nodes),
+                          declarations_missed=len(_DECLARING.findall(data))
+                          > context.declaring_calls)
 
 
 def _collect(context: _File, nodes: list[Node]) -> None:
@@ -99,13 +114,33 @@ def _collect(context: _File, nodes: list[Node]) -> None:
         elif node.type == "call":
             function = node.child_by_field_name("function")
             arguments = _positional(node)
+            if _name(function) in ("declare_parameter", "declare_parameters"):
+                context.declaring_calls += 1
             if _name(function) == "declare_parameter" and arguments:
                 parameter = _string(arguments[0])
                 default = _argument(node, 1, "value")
+                context.parameters.append(declaration(
+                    context.path, node, name_pattern(arguments[0], _string), default,
+                    _argument(node, 2, "descriptor")))
                 if parameter is not None and default is not None:
                     context.defaults.setdefault(parameter, _resolve(context, default, 0))
             elif _name(function) == "declare_parameters":
                 _declare_parameters(context, node)
+
+
+def _bases(context: _File, nodes: list[Node]) -> tuple[tuple[str, str], ...]:
+    """Return each class with its base classes, named by where they are imported from."""
+    found: list[tuple[str, str]] = []
+    for node in nodes:
+        superclasses = node.child_by_field_name("superclasses")
+        if node.type != "class_definition" or superclasses is None:
+            continue
+        name = text(node.child_by_field_name("name"))
+        for base in superclasses.named_children:
+            if base.type in ("identifier", "attribute"):
+                written = text(base)
+                found.append((name, context.imports.get(written, written)))
+    return tuple(found)
 
 
 def _declare_parameters(context: _File, node: Node) -> None:
@@ -114,13 +149,24 @@ def _declare_parameters(context: _File, node: Node) -> None:
     listed = _argument(node, 1, "parameters")
     prefix = _string(namespace) if namespace is not None else ""
     if listed is None or listed.type != "list" or prefix is None:
+        pattern = f"{prefix}.*" if prefix else "*"  # names not known here
+        context.parameters.append(Parameter(pattern, None, span(context.path, node)))
         return
     for item in listed.named_children:
-        if item.type == "tuple" and len(item.named_children) >= 2:
-            parameter = _string(item.named_children[0])
-            if parameter is not None:
-                full = f"{prefix}.{parameter}" if prefix else parameter
-                context.defaults.setdefault(full, _resolve(context, item.named_children[1], 0))
+        if item.type != "tuple" or not item.named_children:
+            context.parameters.append(Parameter(f"{prefix}.*" if prefix else "*", None,
+                                                span(context.path, item)))
+            continue
+        elements = item.named_children
+        name = name_pattern(elements[0], _string)
+        full = f"{prefix}.{name}" if prefix else name
+        context.parameters.append(declaration(
+            context.path, item, full, elements[1] if len(elements) > 1 else None,
+            elements[2] if len(elements) > 2 else None))
+        parameter = _string(elements[0])
+        if parameter is not None and len(elements) >= 2:
+            full = f"{prefix}.{parameter}" if prefix else parameter
+            context.defaults.setdefault(full, _resolve(context, elements[1], 0))
 
 
 def _variable(node: Node | None) -> str | None:

@@ -43,6 +43,7 @@ _HARMLESS = frozenset({
     "ament_auto_find_build_dependencies", "ament_auto_add_library",
     "ament_python_install_package", "ament_target_dependencies", "ament_environment_hooks",
     "ament_index_register_resource", "ament_lint_auto_find_test_dependencies",
+    "add_ros_test", "call_for_each_rmw_implementation",  # tests: nothing in lib/<package>
 })
 _HARMLESS_PREFIXES = ("target_", "ament_export_", "ament_add_", "ament_auto_add_gtest",
                       "rosidl_", "ament_cmake_", "find_", "cuda_add_library")

@@ -1,0 +1,98 @@
+"""Each launched node's parameter contract: what its code declares, what the launch gives.
+
+The declarations come from the node's interface (``topology.nodes``: the workspace's
+sources), the values from ``parameters.effective_parameters``. A contract is judged only
+as far as it is known: ``open`` says why the node may accept names it is not seen to
+declare (then no name is unknown to it), and a node whose command line sets parameters
+itself (``-p``, ``--params-file`` in its arguments) may receive more than the launch's
+parameter sources say.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from fnmatch import fnmatchcase
+from typing import TYPE_CHECKING
+
+from launchverify.models.node_parameters import BUILTIN_PARAMETERS
+from launchverify.parameters import EffectiveParameters, effective_parameters
+from launchverify.topology.model import Parameter
+
+if TYPE_CHECKING:
+    from launchverify.topology.compose import NodeEndpoints
+    from launchverify.topology.wiring import WiringView
+
+_PARAMETER_FLAGS = frozenset({"-p", "--param", "--params-file"})
+
+
+@dataclass(frozen=True)
+class Contract:
+    """One launched node, the parameters its code declares and those it receives."""
+
+    composed: NodeEndpoints
+    declared: tuple[Parameter, ...]
+    received: EffectiveParameters
+    open: str | None  # why undeclared names may still be accepted; None: they are not
+    command_line: bool  # its command line sets parameters the sources above do not show
+    unmatched: str | None  # why file blocks for the node may be missed (its name unknown)
+
+    @property
+    def values_known(self) -> bool:
+        """Return whether ``received`` holds every value the node gets, as given."""
+        return self.received.complete and self.unmatched is None and not self.command_line
+
+    def declarations(self, name: str) -> list[Parameter]:
+        """Return the declarations of exactly ``name`` (several files may declare it)."""
+        return [p for p in self.declared if p.name == name]
+
+    def accepts(self, name: str) -> bool:
+        """Return whether the node declares ``name`` (or a pattern covers it)."""
+        return any(fnmatchcase(name, p.name) for p in self.declared) or any(
+            fnmatchcase(name, builtin) for builtin in BUILTIN_PARAMETERS)
+
+    def static_type(self, name: str) -> Parameter | None:
+        """Return the one declaration that fixes ``name``'s type, if they all agree."""
+        found = self.declarations(name)
+        if not found or any(p.dynamic or p.type is None for p in found):
+            return None
+        return found[0] if len({p.type for p in found}) == 1 else None
+
+    def concrete_names(self) -> list[str]:
+        """Return the declared names without run-time parts (did-you-mean candidates)."""
+        return sorted({p.name for p in self.declared if "*" not in p.name})
+
+
+def contracts(view: WiringView) -> list[Contract]:
+    """Return the contract of every node of the view whose code was read (once per view)."""
+    kept = view.graph.derived.setdefault("contracts", {})
+    found = kept.get(id(view))
+    if isinstance(found, list):
+        return found
+    result = [_contract(view, composed) for composed in view.nodes
+              if composed.interface is not None and composed.interface.parameters]
+    kept[id(view)] = result
+    return result
+
+
+def _contract(view: WiringView, composed: NodeEndpoints) -> Contract:
+    assert composed.interface is not None
+    interface = composed.interface
+    from launchverify.topology.compose import named_record
+
+    record = named_record(view.graph, composed)
+    received = effective_parameters(view.graph, record)
+    unmatched = None
+    if any(p.file is not None for p in record.parameters) and \
+            view.graph.base(record.fqn) is None:
+        unmatched = "its parameter files are keyed by node name, which the launch does not give"
+    return Contract(composed, interface.parameters, received, interface.parameters_open,
+                    _sets_parameters(view, composed), unmatched)
+
+
+def _sets_parameters(view: WiringView, composed: NodeEndpoints) -> bool:
+    """Return whether the node's command line may set parameters (``-p``, a file)."""
+    launch = view.composer.launch_of(composed.node)
+    if launch is None:
+        return False
+    words = view.composer.words(launch.arguments + launch.ros_arguments)
+    return any(not isinstance(w, str) or w in _PARAMETER_FLAGS for w in words)
