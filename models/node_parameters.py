@@ -15,3 +15,20 @@ NODE_BASES = frozenset({
     "rclpy.node.Node", "rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode",
     "rclpy.lifecycle.node.LifecycleNode",
 })
+# Constants of released libraries that name parameters (``bond::msg::Constants::...``)
+NAME_CONSTANTS = {
+    "bond::msg::Constants::DISABLE_HEARTBEAT_TIMEOUT_PARAM": "bond_disable_heartbeat_timeout",
+}
+# Released libraries that declare parameters on the node they are given, by the first part
+# of their headers' paths: the names they may declare (``None``: any name). A library not
+# listed is taken to declare none.
+LIBRARY_PARAMETERS: dict[str, tuple[str, ...] | None] = {
+    "image_transport": ("*.*",),  # <topic>.<transport>.<option>
+    "point_cloud_transport": ("*.*",),
+    "diagnostic_updater": ("diagnostic_updater.*",),
+    "nav2_util": None,  # declare_parameter_if_not_declared, introspection_mode, bond_*
+    "nav2_ros_common": None,
+    "nav2_costmap_2d": None,
+    "nav2_core": None,
+    "controller_interface": None,  # a controller's node is the manager's to parameterise
+}

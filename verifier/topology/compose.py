@@ -87,8 +87,8 @@ class WorkspaceInterfaces:
             from launchverify.topology.nodes import package_interfaces
 
             try:
-                self._read[package] = package_interfaces(Package(package,
-                                                                 source=found.source))
+                self._read[package] = package_interfaces(
+                    Package(package, source=found.source), self.index.header)
             except Exception as error:  # one package's surprise must not end the graph
                 self._failed[package] = f"{type(error).__name__}: {error}"
                 self._read[package] = []

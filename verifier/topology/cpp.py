@@ -135,6 +135,8 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
                           undeclared=None if undeclared is None else (
                               f"its NodeOptions set {undeclared.group(1).decode()}"),
                           bases=_bases(nodes),
+                          includes=tuple(text(n.child_by_field_name("path")).strip('"<>')
+                                         for n in nodes if n.type == "preproc_include"),
                           declarations_missed=len(DECLARING.findall(data))
                           > context.declaring_calls)
 
@@ -208,14 +210,16 @@ def _parameter_call(context: _File, node: Node) -> None:
         context.parameters.append(Parameter(f"{prefix}.*" if prefix else "*", None,
                                             span(context.path, node)))
         return
-    if name == "declare_parameter_if_not_declared":  # nav2_util's: the node comes first
+    helper = name != "declare_parameter"
+    if name in ("declare_parameter_if_not_declared", "declare_or_get_parameter"):
+        # nav2's helpers: the node comes first in their free-function forms
         name, arguments = "declare_parameter", _skip_nodes(context, arguments)
-    elif name in ("add_parameter", "declare_or_get_parameter"):  # nav2's LifecycleNode's
+    elif name == "add_parameter":  # nav2's LifecycleNode's
         name = "declare_parameter"
     if name not in ("declare_parameter", "get_parameter", "get_parameter_or") or not arguments:
         return
-    if name == "declare_parameter":
-        context.parameters.append(_declaration(context, node, arguments, template))
+    if name == "declare_parameter" and not _forwarded(arguments[0]):
+        context.parameters.append(_declaration(context, node, arguments, template, helper))
     parameter = _literal(arguments[0])
     if parameter is None:
         return
@@ -232,15 +236,50 @@ def _parameter_call(context: _File, node: Node) -> None:
                 context.defaults.setdefault(parameter, default)
 
 
+def _inside_try(node: Node) -> bool:
+    """Return whether ``node`` is in a ``try`` block of its function (errors caught)."""
+    parent = node.parent
+    while parent is not None and parent.type not in ("function_definition",
+                                                     "lambda_expression"):
+        if parent.type == "try_statement":
+            return True
+        parent = parent.parent
+    return False
+
+
+def _forwarded(name: Node) -> bool:
+    """Return whether a declared name is a parameter of the enclosing function.
+
+    Such a function is a helper (``declare_or_get_parameter(name, ...)`` forwarding to
+    rclcpp): its callers' calls are the declarations, each read where it is written.
+    """
+    if name.type != "identifier":
+        return False
+    parent = name.parent
+    while parent is not None and parent.type not in ("function_definition", "lambda_expression"):
+        parent = parent.parent
+    declarator = parent.child_by_field_name("declarator") if parent is not None else None
+    while declarator is not None and declarator.type != "function_declarator":
+        declarator = declarator.child_by_field_name("declarator")
+    parameters = declarator.child_by_field_name("parameters") if declarator else None
+    if parameters is None:
+        return False
+    return any(text(n) == text(name) for p in parameters.named_children for n in walk(p)
+               if n.type == "identifier")
+
+
 def _declaration(context: _File, node: Node, arguments: list[Node],
-                 template: Node | None) -> Parameter:
+                 template: Node | None, helper: bool = False) -> Parameter:
     """Return one ``declare_parameter`` call as a declaration.
 
     ``(name, default[, descriptor])`` or ``(name, type[, descriptor])``; a template
-    argument gives the type. Without a default, a typed parameter is required: the
-    template form throws at the declaration already, the others when the node reads it.
+    argument gives the type. Without a default, a typed parameter is required: rclcpp's
+    template form throws at the declaration already, the others (and ``helper``s such as
+    nav2's) when the node reads it. One declared inside a ``try`` is optional: the code
+    handles its absence.
     """
-    name = name_pattern(arguments[0], _literal)
+    name = name_pattern(arguments[0], _literal,
+                        lambda n: context.values.get(_variable(n) or "", []))
     where = span(context.path, node)
     written = None if template is None or not template.named_children else text(
         template.named_children[0])
@@ -258,14 +297,17 @@ def _declaration(context: _File, node: Node, arguments: list[Node],
         descriptor.type == "identifier" and text(descriptor) in context.types)
     dynamic = bool(flags & context.dynamic) or "dynamic_typing" in flags or not seen
     read_only = bool(flags & context.read_only)
+    owner = _owner(node)
     if by_enum is not None or (second is None and written is not None):
-        return Parameter(name, by_enum or declared, where, dynamic=dynamic, required=True,
-                         strict=by_enum is None, read_only=read_only)
+        required = not _inside_try(node)
+        return Parameter(name, by_enum or declared, where, dynamic=dynamic, required=required,
+                         strict=required and by_enum is None and not helper,
+                         read_only=read_only, owner=owner)
     if second is None:  # (name) or (name, descriptor): a dynamically typed declaration
-        return Parameter(name, None, where, dynamic=True, read_only=read_only)
+        return Parameter(name, None, where, dynamic=True, read_only=read_only, owner=owner)
     kind = declared or value_type(second, lambda n: context.types.get(_variable(n) or ""))
     return Parameter(name, kind, where, literal_value(second), dynamic=dynamic,
-                     read_only=read_only)
+                     read_only=read_only, owner=owner)
 
 
 _UPDATED = re.compile(r"""name\(?\)?\s*==\s*"([^"]+)"|"([^"]+)"\s*==\s*\w*name""")

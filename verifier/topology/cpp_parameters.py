@@ -13,6 +13,7 @@ import re
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from launchverify.models.node_parameters import NAME_CONSTANTS
 from launchverify.topology.parsing import text
 
 if TYPE_CHECKING:
@@ -127,22 +128,30 @@ def literal_value(node: Node) -> object:
     return None
 
 
-def name_pattern(node: Node, literal: Callable[[Node], str | None]) -> str:
+def name_pattern(node: Node, literal: Callable[[Node], str | None],
+                 values: Callable[[Node], list[Node]], depth: int = 0) -> str:
     """Return a declared name with ``*`` for each part built at run time.
 
-    ``plugin_name_ + ".max_vel_x"`` is ``*.max_vel_x``; a name read entirely at run time
-    is ``*`` (it could be any name).
+    ``plugin_name_ + ".max_vel_x"`` is ``*.max_vel_x`` (also through a variable holding
+    it); a name read entirely at run time is ``*`` (it could be any name).
     """
     found = literal(node)
     if found is not None:
         return found
+    if depth > 4:
+        return "*"
+    if node.type == "qualified_identifier" and "".join(text(node).split()) in NAME_CONSTANTS:
+        return NAME_CONSTANTS["".join(text(node).split())]
+    if node.type in ("identifier", "field_expression") and len(values(node)) == 1:
+        return name_pattern(values(node)[0], literal, values, depth + 1)
     if node.type == "binary_expression" and text(node.child_by_field_name("operator")) == "+":
         left, right = node.child_by_field_name("left"), node.child_by_field_name("right")
         if left is not None and right is not None:
-            return re.sub(r"\*+", "*", name_pattern(left, literal) + name_pattern(right, literal))
+            return re.sub(r"\*+", "*", name_pattern(left, literal, values, depth + 1)
+                          + name_pattern(right, literal, values, depth + 1))
     if node.type == "call_expression":  # std::string("x") + ...
         arguments = node.child_by_field_name("arguments")
         if arguments is not None and len(arguments.named_children) == 1 and \
                 text(node.child_by_field_name("function")).endswith("string"):
-            return name_pattern(arguments.named_children[0], literal)
+            return name_pattern(arguments.named_children[0], literal, values, depth + 1)
     return "*"

@@ -78,6 +78,7 @@ class Parameter:
     bounds: tuple[float | None, float | None] | None = None
     choices: tuple[object, ...] | None = None
     via: str | None = None  # generate_parameter_library, when declared by its YAML
+    owner: str | None = None  # the class whose code declares it, when inside one
 
     def at(self, file: Path) -> Parameter:
         """Return the same declaration located in ``file``."""
@@ -148,6 +149,7 @@ class FileInterfaces:
     undeclared: str | None = None  # why the node may accept parameters it never declares
     bases: tuple[tuple[str, str], ...] = ()  # (class, base class as written), for parameters
     declarations_missed: bool = False  # the text declares parameters the reader did not see
+    includes: tuple[str, ...] = ()  # ``#include`` paths as written
 
     def at(self, file: Path) -> FileInterfaces:
         """Return the same result for another file with identical content."""
@@ -159,7 +161,7 @@ class FileInterfaces:
                               tuple(i.at(file) for i in self.inits), self.classes,
                               self.instantiated, self.loaders,
                               tuple(p.at(file) for p in self.parameters), self.undeclared,
-                              self.bases, self.declarations_missed)
+                              self.bases, self.declarations_missed, self.includes)
 
 
 @dataclass(frozen=True, slots=True)

@@ -7,11 +7,11 @@ endpoint created by another registered component's class is left to that compone
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import replace
 from pathlib import Path
 
-from launchverify.models.node_parameters import NODE_BASES
+from launchverify.models.node_parameters import LIBRARY_PARAMETERS, NODE_BASES
 from launchverify.span import Span
 from launchverify.topology.cpp import class_name, member_endpoints
 from launchverify.topology.files import file_interfaces
@@ -32,14 +32,26 @@ from launchverify.workspace.paths import display_path
 SKIPPED = "parts the source reader does not understand were skipped"
 
 
-def package_interfaces(package: Package) -> list[NodeInterface]:
-    """Return the node interface of every executable and component of one package."""
-    return [target_interface(package.name, target) for target in package_targets(package)]
+# ``#include "pkg/x.hpp"`` -> the file in pkg's sources, when the workspace has them
+Headers = Callable[[str], Path | None]
+MAX_BASE_HEADERS = 24  # headers of other packages read for one target's base classes
 
 
-def target_interface(package: str, target: Target) -> NodeInterface:
+def package_interfaces(package: Package, headers: Headers | None = None) -> list[NodeInterface]:
+    """Return the node interface of every executable and component of one package.
+
+    ``headers`` finds the headers of other packages of the workspace, where a node class's
+    base may be declared (nav2's ``nav2::LifecycleNode`` declares parameters of its own).
+    """
+    return [target_interface(package.name, target, headers)
+            for target in package_targets(package)]
+
+
+def target_interface(package: str, target: Target, headers: Headers | None = None,
+                     ) -> NodeInterface:
     """Return what the sources of one executable or component create."""
     results = [file_interfaces(path) for path in target.sources]
+    results += _library_headers(results, target, headers)
     others = {_class(p) for p in target.other_components}
     aliases = dict(a for r in results for a in r.aliases)
     members = dict(m for r in results for m in r.members)
@@ -69,16 +81,65 @@ def target_interface(package: str, target: Target) -> NodeInterface:
                              (r.undeclared for r in results if r.undeclared), None))
 
 
+def _library_headers(results: list[FileInterfaces], target: Target,
+                     headers: Headers | None) -> list[FileInterfaces]:
+    """Return what the headers of other packages declare on the node the target builds.
+
+    Read from the workspace's sources: a base class's parameters (nav2's
+    ``nav2::LifecycleNode`` declares its own), and the names a library's functions
+    declare literally (``introspection_mode``). A header's helper that declares whatever
+    name it is given is no declaration (``_forwarded``); its callers' calls are. A
+    released library's header is looked up in ``LIBRARY_PARAMETERS`` instead.
+    """
+    found: list[FileInterfaces] = []
+    seen = set(target.sources)
+    pending = [i for r in results for i in r.includes]
+    wanted = {class_name(base.replace(".", "::")) for r in results for _, base in r.bases
+              if base.endswith("Node") and base not in NODE_BASES}
+    wanted -= {name for r in results for name, _ in r.classes}
+    released: set[str] = set()
+    while pending and len(found) < MAX_BASE_HEADERS:
+        include = pending.pop(0)
+        path = headers(include) if headers is not None else None
+        if path is None:
+            released.add(include.partition("/")[0])
+            continue
+        if path in seen:
+            continue
+        seen.add(path)
+        result = file_interfaces(path)
+        pending.extend(result.includes)
+        classes = {name for name, _ in result.classes} & wanted
+        wanted -= classes
+        found.append(replace(result, endpoints=(), node_names=(), inits=(),
+                             parameters=tuple(p for p in result.parameters
+                                              if p.owner in classes or "*" not in p.name),
+                             bases=tuple(b for b in result.bases if b[0] in classes),
+                             declarations_missed=False, undeclared=None))
+    return found + _released(released, results)
+
+
+def _released(libraries: set[str], results: list[FileInterfaces]) -> list[FileInterfaces]:
+    """Return what released libraries the target includes may declare (as patterns)."""
+    where = _nowhere(results)
+    declared: list[Parameter] = []
+    for library in sorted(libraries & LIBRARY_PARAMETERS.keys()):
+        names = LIBRARY_PARAMETERS[library]
+        declared += [Parameter(n, None, where, dynamic=True, via=library)
+                     for n in (names if names is not None else ("*",))]
+    return [FileInterfaces(where.file, parameters=tuple(declared))] if declared else []
+
+
 def _parameters(results: list[FileInterfaces], plugins: bool) -> tuple[Parameter, ...]:
     """Return every parameter the target's files declare (once per name and place).
 
-    A target that loads plugins accepts what they declare too: by convention under the
-    plugin's name, any ``<plugin>.<name>`` (``*.*``).
+    A target that loads plugins accepts what they declare too, which is not read here:
+    nav2's behaviors declare names without their plugin's prefix.
     """
     found = {(p.name, p.span.file, p.span.line): p for r in results for p in r.parameters}
     declared = list(found.values())
-    if plugins:
-        declared.append(Parameter("*.*", None, declared[0].span if declared else
+    if plugins:  # what plugins declare is not read (yet): any name
+        declared.append(Parameter("*", None, declared[0].span if declared else
                                   _nowhere(results), dynamic=True, via="plugins"))
     return tuple(declared)
 
@@ -102,6 +163,10 @@ def _parameters_open(results: list[FileInterfaces], target: Target,
     option = next((r.undeclared for r in results if r.undeclared), None)
     if option is not None:
         return option
+    library = next((p.via for p in parameters if p.name == "*" and p.via), None)
+    if library is not None:
+        return (f"it uses {library}, which declares parameters of its own" if library != "plugins"
+                else "it loads plugins chosen by parameters, whose own are not read")
     if any(p.name == "*" for p in parameters):
         return "it declares a parameter whose whole name is built at run time"
     defined = {name for r in results for name, _ in r.bases} | {

@@ -46,7 +46,7 @@ _HARMLESS = frozenset({
     "add_ros_test", "call_for_each_rmw_implementation",  # tests: nothing in lib/<package>
 })
 _HARMLESS_PREFIXES = ("target_", "ament_export_", "ament_add_", "ament_auto_add_gtest",
-                      "rosidl_", "ament_cmake_", "find_", "cuda_add_library")
+                      "ament_find_", "rosidl_", "ament_cmake_", "find_", "cuda_add_library")
 _TEST_FOLDERS = frozenset({"test", "tests", "testing"})
 _TARGET_COMMANDS = frozenset({"add_executable", "ament_auto_add_executable",
                               "cuda_add_executable", "add_library", "ament_auto_add_library",
@@ -333,6 +333,8 @@ class _CMake:
             self.properties(name, args)
         elif name == "add_subdirectory" and args and Path(args[0]).name in _TEST_FOLDERS:
             pass  # tests install no executables into lib/<package>
+        elif name.endswith("_package") and not args:
+            pass  # a project's setup macro (nav2_package()): compiler flags, no targets
         elif name not in _HARMLESS and not name.startswith(_HARMLESS_PREFIXES):
             self.complete = False  # include(), add_subdirectory(), unknown macros...
 

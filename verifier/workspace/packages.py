@@ -228,6 +228,21 @@ class PackageIndex:
         """Return the package called ``name``, if any."""
         return self._packages.get(name)
 
+    def header(self, include: str) -> Path | None:
+        """Return the source file an ``#include "pkg/x.hpp"`` names, in pkg's sources here.
+
+        ROS 2 packages install ``include/<pkg>/x.hpp`` (humble on: ``include/<pkg>/<pkg>/``).
+        """
+        first = include.partition("/")[0]
+        found = self.find(first) if first and first != include else None
+        if found is None or found.source is None:
+            return None
+        for base in (found.source / "include", found.source / "include" / first):
+            candidate = base / include
+            if candidate.is_file():
+                return candidate
+        return None
+
     def declares(self, path: Path, dependency: str) -> bool:
         """Return whether the package owning ``path`` declares ``dependency`` in package.xml.
 
