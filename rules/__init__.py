@@ -40,6 +40,7 @@ from launchverify.rules.parameters.parameter_type_mismatch import ParameterTypeM
 from launchverify.rules.parameters.unknown_parameter import UnknownParameter
 from launchverify.rules.parameters.unmatched_param_block import UnmatchedParamBlock
 from launchverify.rules.wiring.competing_publishers import CompetingPublishers
+from launchverify.rules.wiring.incompatible_qos import IncompatibleQos
 from launchverify.rules.wiring.missing_peer import MissingPeer
 from launchverify.rules.wiring.type_mismatch import TypeMismatch
 from launchverify.rules.wiring.unused_remap import UnusedRemap
@@ -83,4 +84,5 @@ BUILTIN: tuple[type[Rule], ...] = (
     MissingPeer,              # LV602
     TypeMismatch,             # LV603
     CompetingPublishers,      # LV604
+    IncompatibleQos,          # LV605
 )

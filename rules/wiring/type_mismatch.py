@@ -100,15 +100,8 @@ class TypeMismatch(Rule):
             witness=witness or None, node=describe_node(view, end.node),
             verb=VERBS[end.endpoint.kind], name=end.name, mine=end.endpoint.type,
             peer=peer, peer_verb=VERBS[writer.endpoint.kind], theirs=writer.endpoint.type)
+        from launchverify.topology.wiring import from_sources
+
         if not (from_sources(view, end) and from_sources(view, writer)):
             finding = dataclasses.replace(finding, severity=Severity.WARNING)
         return finding
-
-
-def from_sources(view: WiringView, end: ComposedEndpoint) -> bool:
-    """Return whether an end was read from the sources of the workspace (not a model)."""
-    for composed in view.nodes:
-        if composed.node is end.node:
-            interface = composed.interface
-            return interface is not None and end.endpoint.span.file in interface.sources
-    return False

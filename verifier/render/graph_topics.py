@@ -37,6 +37,12 @@ def node_interface(view: GraphView, composed: NodeEndpoints) -> dict[str, Any]:
             "parameter": c.endpoint.name_parameter, "reason": c.reason,
             "file": display_path(c.endpoint.span.file), "line": c.endpoint.span.line,
         } for c in composed.endpoints if c.name is None],
+        "parameters": [] if interface is None else [{
+            "name": p.name, "type": p.type, "default": p.default, "dynamic": p.dynamic,
+            "required": p.required, "via": p.via,
+            "file": display_path(p.span.file), "line": p.span.line,
+        } for p in interface.parameters],
+        "parameters_open": None if interface is None else interface.parameters_open,
     }
 
 
@@ -102,6 +108,9 @@ def _end(view: GraphView, composed: ComposedEndpoint,
         "value_from": composed.value_from,
         "remapped_by": composed.remapped_by,
         "via": endpoint.via,
+        "qos": None if endpoint.profile is None else {
+            "reliability": endpoint.profile.reliability,
+            "durability": endpoint.profile.durability},
         "source": f"{display_path(endpoint.span.file)}:{endpoint.span.line}",
         "launch": f"{where['file']}:{where['line']}",
         "condition": where["condition"],

@@ -11,7 +11,7 @@ values for one name leave it unknown rather than guessed.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -33,6 +33,7 @@ from launchverify.topology.model import (
 )
 from launchverify.topology.names import Resolved, merge, unknown
 from launchverify.topology.parsing import damaged, parse, short, span, text, walk
+from launchverify.topology.qos import qos_of
 from launchverify.topology.wrappers import (
     COSTMAP_CLASS,
     TF_CLASSES,
@@ -91,6 +92,7 @@ class _File:
     defaults: dict[str, Resolved] = field(default_factory=dict)
     parameters: list[Parameter] = field(default_factory=list)
     declaring_calls: int = 0  # declare_parameter(s) calls read
+    changes: dict[str, list[str]] = field(default_factory=dict)  # var -> ``var.x(...)`` calls
     dynamic: set[str] = field(default_factory=set)  # descriptors with dynamic_typing = true
     read_only: set[str] = field(default_factory=set)  # descriptors with read_only = true
 
@@ -196,6 +198,11 @@ def _collect(context: _File, nodes: list[Node]) -> None:
                 context.values.setdefault(target, []).extend(_initial(arguments))
         elif kind == "call_expression":
             _parameter_call(context, node)
+            function = node.child_by_field_name("function")
+            if function is not None and function.type == "field_expression":
+                changed = _variable(function.child_by_field_name("argument"))
+                if changed:
+                    context.changes.setdefault(changed, []).append(text(node))
 
 
 def _parameter_call(context: _File, node: Node) -> None:
@@ -540,8 +547,22 @@ def _endpoint(context: _File, node: Node, kind: EndpointKind, type_: str | None,
               name_arg: Node | None, qos: Node | None = None, via: str | None = None,
               written: str | None = None) -> Endpoint:
     resolved = _resolve(context, name_arg, 0) if name_arg is not None else None
-    return _built(kind, resolved, type_, span(context.path, node), _owner(node),
-                  short(text(qos), 40) if qos is not None else None, via, written)
+    built = _built(kind, resolved, type_, span(context.path, node), _owner(node),
+                   short(text(qos), 40) if qos is not None else None, via, written)
+    if qos is None or kind not in (EndpointKind.PUBLISHER, EndpointKind.SUBSCRIPTION):
+        return built
+    return replace(built, profile=qos_of(_qos_texts(context, qos)))
+
+
+def _qos_texts(context: _File, qos: Node) -> list[str]:
+    """Return the QoS argument's text, or a variable's initialiser and changes."""
+    variable = _variable(qos) if qos.type in ("identifier", "field_expression") else None
+    if variable is None:
+        return [text(qos)]
+    values = context.values.get(variable, [])
+    if len(values) != 1:
+        return []  # not known here, or assigned twice
+    return [text(values[0]), *context.changes.get(variable, [])]
 
 
 def _built(kind: EndpointKind, resolved: Resolved | None, type_: str | None, where: Span,

@@ -12,6 +12,7 @@ from pathlib import Path
 
 from launchverify.span import Span
 from launchverify.topology.names import Resolved
+from launchverify.topology.qos import Qos
 
 
 class EndpointKind(str, Enum):
@@ -48,6 +49,7 @@ class Endpoint:
     owner: str | None = None  # the class whose code creates it, when inside one
     note: str | None = None
     type_written: str | None = None  # the type as written, when ``type`` is not known
+    profile: Qos | None = None  # reliability and durability, when the code shows them
 
     def at(self, file: Path) -> Endpoint:
         """Return the same endpoint located in ``file`` (a cached result reused)."""

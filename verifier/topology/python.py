@@ -25,6 +25,7 @@ from launchverify.topology.model import (
 from launchverify.topology.names import Resolved, merge, unknown
 from launchverify.topology.parsing import damaged, parse, short, span, text, walk
 from launchverify.topology.python_parameters import declaration, name_pattern, undeclared_option
+from launchverify.topology.qos import qos_of
 from launchverify.topology.wrappers import (
     TF_CLASSES,
     image_endpoints,
@@ -64,6 +65,7 @@ class _File:
     loops: dict[str, str] = field(default_factory=dict)  # loop variable -> what it iterates
     parameters: list[Parameter] = field(default_factory=list)
     declaring_calls: int = 0  # declare_parameter(s) calls read
+    changes: dict[str, list[str]] = field(default_factory=dict)  # var -> ``var.x = ...``
 
 
 def extract(path: Path, data: bytes) -> FileInterfaces:
@@ -107,7 +109,12 @@ def _collect(context: _File, nodes: list[Node]) -> None:
             if target:
                 context.loops[target] = short(text(node.child_by_field_name("right")), 40)
         elif node.type == "assignment":
-            target = _variable(node.child_by_field_name("left"))
+            left = node.child_by_field_name("left")
+            if left is not None and left.type == "attribute":
+                changed = _variable(left.child_by_field_name("object"))
+                if changed:
+                    context.changes.setdefault(changed, []).append(text(node))
+            target = _variable(left)
             value = node.child_by_field_name("right")
             if target and value is not None:
                 context.values.setdefault(target, []).append(value)
@@ -302,9 +309,26 @@ def _endpoint(context: _File, call: Node, kind: EndpointKind, type_: str | None,
     reason = resolved.reason
     if resolved.parameter is not None and resolved.value is None:
         reason = f"parameter '{resolved.parameter}' has no default declared in this file"
+    profile = None
+    if qos is not None and kind in (EndpointKind.PUBLISHER, EndpointKind.SUBSCRIPTION):
+        profile = qos_of(_qos_texts(context, qos))
     return Endpoint(kind, resolved.value, type_, where, resolved.parameter,
                     resolved.value if resolved.parameter else None, qos_text, via,
-                    reason if resolved.value is None else None, owner)
+                    reason if resolved.value is None else None, owner, profile=profile)
+
+
+def _qos_texts(context: _File, qos: Node) -> list[str]:
+    """Return the QoS argument's text, or a variable's initialiser and changes."""
+    variable = _variable(qos) if qos.type in ("identifier", "attribute") else None
+    if variable is None:
+        return [text(qos)]
+    imported = context.imports.get(text(qos))
+    if imported is not None:  # from rclpy.qos import qos_profile_sensor_data
+        return [imported]
+    values = context.values.get(variable, [])
+    if len(values) != 1:
+        return []
+    return [text(values[0]), *context.changes.get(variable, [])]
 
 
 def _call(context: _File, node: Node) -> list[Endpoint]:

@@ -228,3 +228,12 @@ def numbered_siblings(first: str, second: str) -> bool:
         False
     """
     return _DIGITS.sub("#", first) == _DIGITS.sub("#", second)
+
+
+def from_sources(view: WiringView, end: ComposedEndpoint) -> bool:
+    """Return whether an end was read from the sources of the workspace (not a model)."""
+    for composed in view.nodes:
+        if composed.node is end.node:
+            interface = composed.interface
+            return interface is not None and end.endpoint.span.file in interface.sources
+    return False

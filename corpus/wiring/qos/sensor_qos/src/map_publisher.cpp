@@ -1,0 +1,14 @@
+#include <memory>
+
+#include "nav_msgs/msg/occupancy_grid.hpp"
+#include "rclcpp/rclcpp.hpp"
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("map_publisher");
+  auto map = node->create_publisher<nav_msgs::msg::OccupancyGrid>("map", rclcpp::QoS(1));
+  rclcpp::spin(node);
+  rclcpp::shutdown();
+  return 0;
+}
