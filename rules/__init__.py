@@ -36,6 +36,7 @@ from launchverify.rules.parameters.inconsistent_sim_time import InconsistentSimT
 from launchverify.rules.parameters.missing_required_parameter import MissingRequiredParameter
 from launchverify.rules.parameters.param_file_error import ParamFileError
 from launchverify.rules.parameters.param_type_conflict import ParamTypeConflict
+from launchverify.rules.parameters.parameter_out_of_range import ParameterOutOfRange
 from launchverify.rules.parameters.parameter_type_mismatch import ParameterTypeMismatch
 from launchverify.rules.parameters.unknown_parameter import UnknownParameter
 from launchverify.rules.parameters.unmatched_param_block import UnmatchedParamBlock
@@ -73,6 +74,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     InconsistentSimTime,      # LV404
     UnknownParameter,         # LV405
     ParameterTypeMismatch,    # LV406
+    ParameterOutOfRange,      # LV407
     MissingRequiredParameter,  # LV408
     EventCycle,               # LV501
     DanglingEventTarget,      # LV502

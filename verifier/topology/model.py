@@ -65,8 +65,9 @@ class Parameter:
     ``string_array``), ``None`` when not known; ``dynamic`` when the descriptor allows any
     type. ``required``: typed with no default, so the node fails unless it is given
     (``strict``: already at the declaration, rclcpp's ``declare_parameter<T>(name)``).
-    ``bounds`` are inclusive ``(low, high)`` limits, either ``None`` when open; ``choices``
-    the values a validation allows.
+    ``limits`` are the checks a value must pass, as generate_parameter_library names them:
+    ``("bounds", (low, high))`` inclusive, ``("gt", (x,))``, ``("gt_eq", ...)``,
+    ``("lt", ...)``, ``("lt_eq", ...)``, ``("one_of", ([a, b],))``.
     """
 
     name: str
@@ -77,8 +78,7 @@ class Parameter:
     required: bool = False
     strict: bool = False
     read_only: bool = False
-    bounds: tuple[float | None, float | None] | None = None
-    choices: tuple[object, ...] | None = None
+    limits: tuple[tuple[str, tuple[object, ...]], ...] = ()
     via: str | None = None  # generate_parameter_library, when declared by its YAML
     owner: str | None = None  # the class whose code declares it, when inside one
 

@@ -7,6 +7,7 @@ endpoint created by another registered component's class is left to that compone
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import replace
 from pathlib import Path
@@ -15,6 +16,7 @@ from launchverify.models.node_parameters import LIBRARY_PARAMETERS, NODE_BASES
 from launchverify.span import Span
 from launchverify.topology.cpp import class_name, member_endpoints
 from launchverify.topology.files import file_interfaces
+from launchverify.topology.generated_parameters import definitions, parameter_libraries
 from launchverify.topology.model import (
     Endpoint,
     FileInterfaces,
@@ -43,15 +45,22 @@ def package_interfaces(package: Package, headers: Headers | None = None) -> list
     ``headers`` finds the headers of other packages of the workspace, where a node class's
     base may be declared (nav2's ``nav2::LifecycleNode`` declares parameters of its own).
     """
-    return [target_interface(package.name, target, headers)
+    generated = parameter_libraries(package.source) if package.source is not None else {}
+    return [target_interface(package.name, target, headers, generated)
             for target in package_targets(package)]
 
 
 def target_interface(package: str, target: Target, headers: Headers | None = None,
-                     ) -> NodeInterface:
-    """Return what the sources of one executable or component create."""
+                     generated: dict[str, Path] | None = None) -> NodeInterface:
+    """Return what the sources of one executable or component create.
+
+    ``generated`` maps the headers (or modules) generate_parameter_library makes in the
+    package to their definition files: a target that includes one declares its
+    parameters.
+    """
     results = [file_interfaces(path) for path in target.sources]
     results += _library_headers(results, target, headers)
+    results += _generated(results, generated or {})
     others = {_class(p) for p in target.other_components}
     aliases = dict(a for r in results for a in r.aliases)
     members = dict(m for r in results for m in r.members)
@@ -117,6 +126,15 @@ def _library_headers(results: list[FileInterfaces], target: Target,
                              bases=tuple(b for b in result.bases if b[0] in classes),
                              declarations_missed=False, undeclared=None))
     return found + _released(released, results)
+
+
+def _generated(results: list[FileInterfaces],
+               generated: dict[str, Path]) -> list[FileInterfaces]:
+    """Return the definitions of the generated parameter libraries the target includes."""
+    used = {re.split(r"[/.]", i.removesuffix(".hpp").removesuffix(".h"))[-1]
+            for r in results for i in r.includes}
+    return [FileInterfaces(path, parameters=definitions(path))
+            for name, path in sorted(generated.items()) if name in used]
 
 
 def _released(libraries: set[str], results: list[FileInterfaces]) -> list[FileInterfaces]:

@@ -84,6 +84,7 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
                           partial=damaged(tree.root_node), parameters=tuple(context.parameters),
                           undeclared=undeclared_option(data.decode("utf-8", "replace")),
                           bases=_bases(context, nodes),
+                          includes=tuple(sorted(set(context.imports.values()))),
                           declarations_missed=len(_DECLARING.findall(data))
                           > context.declaring_calls)
 
