@@ -27,11 +27,11 @@ from pathlib import Path
 from launchverify import __version__
 from launchverify.topology.nodes import package_interfaces
 from launchverify.topology.shipped import ModelSource, dump_model, model_document
-from launchverify.workspace.packages import Package, scan_sources
+from launchverify.workspace.packages import Package, PackageIndex, scan_sources
 
 OUTPUT = Path(__file__).resolve().parent.parent / "models" / "interfaces"
 _KEEP = (".cpp", ".cc", ".cxx", ".hpp", ".hh", ".hxx", ".h", ".ipp", ".py", ".xml",
-         ".cmake", ".cfg", ".txt")
+         ".cmake", ".cfg", ".txt", ".yaml")  # .yaml: generate_parameter_library definitions
 
 
 @dataclass(frozen=True)
@@ -138,6 +138,7 @@ def generate(root: Path, output: Path, only: set[str]) -> dict[str, float]:
             tree = Path(temporary)
             commit = export(git, source.branch, tree)
             found = {name: folder for name, folder in scan_sources(tree)}
+            headers = PackageIndex([tree]).header  # base classes in sibling packages
             for package in packages:
                 folder = found.get(package)
                 if folder is None:
@@ -145,7 +146,8 @@ def generate(root: Path, output: Path, only: set[str]) -> dict[str, float]:
                           file=sys.stderr)
                     continue
                 started = time.perf_counter()
-                interfaces = [i for i in package_interfaces(Package(package, source=folder))
+                interfaces = [i for i in package_interfaces(Package(package, source=folder),
+                                                            headers)
                               if not _test_only(i.sources, folder)]
                 timings[package] = time.perf_counter() - started
                 where = folder.relative_to(tree).as_posix() if folder != tree else ""

@@ -209,11 +209,11 @@ def _modules_check_imports(*argv: str) -> str:
 
 def test_check_reads_sources_only_for_the_rules_that_compose(tmp_path: Path) -> None:
     """``check`` reads sources only for the rules that compose nodes with their code (the
-    wiring rules LV6, the node contracts LV405, LV406, LV408), and only when a launched
+    wiring rules LV6, the node contracts LV405-LV408), and only when a launched
     node's package has sources in the workspace."""
     pair = str(LAUNCH / "pair.launch.xml")
     assert _modules_check_imports(pair, "--workspace", str(WORKSPACE), "--ignore",
-                                  "LV6,LV405,LV406,LV408") == "[]"
+                                  "LV6,LV405,LV406,LV407,LV408") == "[]"
     released = tmp_path / "released.launch.xml"
     released.write_text('<launch><node pkg="demo_nodes_cpp" exec="talker"/></launch>')
     assert _modules_check_imports(str(released), "--workspace", str(tmp_path)) == "[]"

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import dataclasses
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
@@ -13,23 +12,23 @@ class MissingRequiredParameter(Rule):
     """A node declares a typed parameter without a default, and the launch never sets it.
 
     ## What it does
-    Finds parameters the node's code declares with a type but no default
-    (`declare_parameter<std::string>("robot_description")`,
-    `declare_parameter("port", rclcpp::PARAMETER_INTEGER)`,
-    `declare_parameter('port', Parameter.Type.INTEGER)`) that none of the node's parameter
-    sources sets, `/**` blocks and `SetParameter` included. Only nodes whose parameters
-    are all known are judged: every parameter file read, the node's name known when a
-    file is keyed by it, and no `-p` or `--params-file` on its own command line.
-
-    It is an error for rclcpp's template form, which throws at the declaration, and a
-    warning for the typed forms, which throw when the node reads the parameter.
+    Finds parameters the node's code requires: declared with rclcpp's template form and
+    no default (`declare_parameter<std::string>("port")`, nav2's
+    `declare_or_get_parameter<T>(name)`), or defined without `default_value` in a
+    generate_parameter_library YAML, outside any `try`. It reports one that none of the
+    node's parameter sources sets, `/**` blocks and `SetParameter` included. Only nodes
+    whose parameters are all known are judged: every parameter file read, the node's name
+    known when a file is keyed by it, and no `-p` or `--params-file` on its own command
+    line. A parameter declared with a type alone (`rclcpp::PARAMETER_STRING`,
+    `Parameter.Type.STRING`) is declared unset; whether that fails depends on how the code
+    reads it (`get_parameter(name, value)` just returns `false`), so it is not reported.
 
     ## Why it matters
     rclcpp's `declare_parameter<T>(name)` throws
     `UninitializedStaticallyTypedParameterException` (`Statically typed parameter 'x'
-    must be initialized`) at start (humble to rolling). The other typed forms declare the
-    parameter without a value, and `get_parameter` then throws
-    `ParameterUninitializedException` (rclcpp and rclpy alike).
+    must be initialized`) at start (humble to rolling); a generated parameter listener
+    throws for a definition without a default; nav2's helper throws
+    `InvalidParameterValueException`. The node dies before doing anything.
 
     ## Example
     ```python
@@ -46,15 +45,15 @@ class MissingRequiredParameter(Rule):
     severity = Severity.ERROR
     every_context = True
     message = ("{node} requires parameter '{name}' ({kind}, declared without a default), "
-               "and the launch never sets it: {consequence}")
+               "and the launch never sets it: the node throws at start")
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         from launchverify.topology.contracts import contracts
-        from launchverify.topology.wiring import describe_node, reads_sources, workspace_view
+        from launchverify.topology.wiring import any_view, describe_node, knows_code
 
-        if not reads_sources(graph, ctx):
+        if not knows_code(graph, ctx):
             return
-        view = workspace_view(graph, ctx)
+        view = any_view(graph, ctx)
         for contract in contracts(view):
             if not contract.values_known:
                 continue
@@ -68,9 +67,5 @@ class MissingRequiredParameter(Rule):
                     contract.composed.node.origin,
                     node=describe_node(view, contract.composed.node), name=name,
                     kind=declared.type or "typed",
-                    consequence="the node throws at start" if declared.strict else
-                    "the node throws when it reads it",
                     related=(Related(declared.span, f"'{name}' is declared here"),))
-                if not declared.strict:
-                    finding = dataclasses.replace(finding, severity=Severity.WARNING)
                 yield finding

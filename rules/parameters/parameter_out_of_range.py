@@ -48,13 +48,13 @@ class ParameterOutOfRange(Rule):
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         from launchverify.topology.contracts import contracts
-        from launchverify.topology.wiring import describe_node, reads_sources, workspace_view
+        from launchverify.topology.wiring import any_view, describe_node, knows_code
 
-        if not reads_sources(graph, ctx):
+        if not knows_code(graph, ctx):
             return
-        view = workspace_view(graph, ctx)
+        view = any_view(graph, ctx)
         for contract in contracts(view):
-            if contract.unmatched is not None:
+            if contract.unmatched is not None or not contract.received.complete:
                 continue
             for declared in contract.declared:
                 winner = contract.received.winner(declared.name) if declared.limits else None

@@ -52,14 +52,14 @@ class ParameterTypeMismatch(Rule):
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         from launchverify.topology.contracts import contracts
-        from launchverify.topology.wiring import describe_node, reads_sources, workspace_view
+        from launchverify.topology.wiring import any_view, describe_node, knows_code
 
-        if not reads_sources(graph, ctx):
+        if not knows_code(graph, ctx):
             return
-        view = workspace_view(graph, ctx)
+        view = any_view(graph, ctx)
         for contract in contracts(view):
             interface = contract.composed.interface
-            if contract.unmatched is not None or (
+            if contract.unmatched is not None or not contract.received.complete or (
                     interface is not None and interface.parameters_undeclared):
                 continue  # overrides declared from the command line come first, any type
             for name in sorted({p.name for p in contract.declared if "*" not in p.name}):

@@ -14,7 +14,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from launchverify.graph import NodeRecord
+from launchverify.graph import NodeRecord, ParamRecord
 from launchverify.ir.subst import Sub, Text
 from launchverify.models.ros2_control import CONTROL_NODE, MANAGER_NAME, SPAWNER
 from launchverify.models.ros_names import node_fqn, node_key_matches
@@ -31,6 +31,8 @@ from launchverify.topology.compose import (
 )
 from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface
 from launchverify.topology.resolve import Rule, RuleLike, UnknownRule
+
+SPAWNER_FILES = "<the spawner's parameter files>"
 
 if TYPE_CHECKING:
     from launchverify.frontends.param_file import ParamFile
@@ -145,6 +147,10 @@ class Spawners:
         package = kind.partition("/")[0] if kind is not None and "/" in kind else None
         parameters = tuple(p for p in host.node.parameters
                            if p.file is not None or p.scope) if host is not None else ()
+        if call.param_files or spawner.parameters or call.unknown is not None:
+            # the spawner loads more into the controller: not followed here, so what the
+            # controller receives is not all known (a file that cannot be read says so)
+            parameters += (ParamRecord(spawner.origin, file=Text(SPAWNER_FILES)),)
         record = replace(spawner, kind="node", package=_text(package), executable=_text(kind),
                          name=Text(name), namespace=_text(namespace), fqn=_text(fqn),
                          remappings=(), parameters=parameters, container=None,

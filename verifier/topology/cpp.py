@@ -217,7 +217,6 @@ def _parameter_call(context: _File, node: Node) -> None:
         context.parameters.append(Parameter(f"{prefix}.*" if prefix else "*", None,
                                             span(context.path, node)))
         return
-    helper = name != "declare_parameter"
     if name in ("declare_parameter_if_not_declared", "declare_or_get_parameter"):
         # nav2's helpers: the node comes first in their free-function forms
         name, arguments = "declare_parameter", _skip_nodes(context, arguments)
@@ -226,7 +225,7 @@ def _parameter_call(context: _File, node: Node) -> None:
     if name not in ("declare_parameter", "get_parameter", "get_parameter_or") or not arguments:
         return
     if name == "declare_parameter" and not _forwarded(arguments[0]):
-        context.parameters.append(_declaration(context, node, arguments, template, helper))
+        context.parameters.append(_declaration(context, node, arguments, template))
     parameter = _literal(arguments[0])
     if parameter is None:
         return
@@ -276,14 +275,13 @@ def _forwarded(name: Node) -> bool:
 
 
 def _declaration(context: _File, node: Node, arguments: list[Node],
-                 template: Node | None, helper: bool = False) -> Parameter:
+                 template: Node | None) -> Parameter:
     """Return one ``declare_parameter`` call as a declaration.
 
     ``(name, default[, descriptor])`` or ``(name, type[, descriptor])``; a template
-    argument gives the type. Without a default, a typed parameter is required: rclcpp's
-    template form throws at the declaration already, the others (and ``helper``s such as
-    nav2's) when the node reads it. One declared inside a ``try`` is optional: the code
-    handles its absence.
+    argument gives the type. Without a default, the template form (rclcpp's, and the
+    ``helper``s of nav2) is required: it throws at the declaration unless a value is
+    given. One declared inside a ``try`` is optional: the code handles its absence.
     """
     name = name_pattern(arguments[0], _literal,
                         lambda n: context.values.get(_variable(n) or "", []))
@@ -306,10 +304,11 @@ def _declaration(context: _File, node: Node, arguments: list[Node],
     read_only = bool(flags & context.read_only)
     owner = _owner(node)
     if by_enum is not None or (second is None and written is not None):
-        required = not _inside_try(node)
+        # the template form throws at the declaration when nothing gives a value (nav2's
+        # helper too); a type alone declares it unset, which the code may well check
+        required = by_enum is None and not _inside_try(node)
         return Parameter(name, by_enum or declared, where, dynamic=dynamic, required=required,
-                         strict=required and by_enum is None and not helper,
-                         read_only=read_only, owner=owner)
+                         strict=required, read_only=read_only, owner=owner)
     if second is None:  # (name) or (name, descriptor): a dynamically typed declaration
         return Parameter(name, None, where, dynamic=True, read_only=read_only, owner=owner)
     kind = declared or value_type(second, lambda n: context.types.get(_variable(n) or ""))

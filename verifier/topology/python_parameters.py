@@ -3,7 +3,7 @@
 rclpy types a parameter from its default (``0.5`` a double, ``1`` an integer), from a
 ``Parameter.Type`` given instead, or not at all: a declaration with neither (or a
 descriptor with ``dynamic_typing=True``) takes any type. A parameter declared with a type
-only has no value until one is given, and reading it raises.
+only has no value until one is given: reading it raises, which the code may handle.
 """
 
 from __future__ import annotations
@@ -97,23 +97,13 @@ def declaration(path: Path, call: Node, name: str, default: Node | None,
         descriptor is not None and descriptor.type != "call")
     read_only = bool(re.search(r"read_only\s*=\s*True", described))
     by_enum = enum_type(default)
-    if by_enum is not None:
-        return Parameter(name, by_enum, where, required=not dynamic and not _inside_try(call),
-                         read_only=read_only)
+    if by_enum is not None:  # declared unset: reading it raises, which code may handle
+        return Parameter(name, by_enum, where, read_only=read_only)
     if default is None or default.type == "none":  # rclpy: dynamically typed
         return Parameter(name, None, where, dynamic=True, read_only=read_only)
     return Parameter(name, value_type(default), where, literal_value(default),
                      dynamic=dynamic, read_only=read_only)
 
-
-def _inside_try(node: Node) -> bool:
-    """Return whether ``node`` is in a ``try`` block of its function (errors caught)."""
-    parent = node.parent
-    while parent is not None and parent.type not in ("function_definition", "lambda"):
-        if parent.type == "try_statement":
-            return True
-        parent = parent.parent
-    return False
 
 
 def name_pattern(node: Node, string: Callable[[Node], str | None]) -> str:

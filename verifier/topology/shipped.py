@@ -23,6 +23,11 @@ The format (``"format": 1``)::
 An endpoint lists only the fields that are set: ``kind``, ``name`` (as written; absent when
 unknown), ``type``, ``name_parameter``, ``parameter_default``, ``via``, ``note``,
 ``unresolved`` (the reason) and ``at`` (file and line in the package, at that commit).
+
+An interface may list the ``parameters`` its code declares (``name``, ``type``,
+``default``, ``dynamic``, ``required``, ``strict``, ``read_only``, ``limits``, ``via``,
+``at``; only those set) and ``parameters_open``: why it may accept other names. A model
+without them says its declarations were not read.
 """
 
 from __future__ import annotations
@@ -36,12 +41,14 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.span import Span
-from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface
+from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface, Parameter
 
 FORMAT = 1
 _PACKAGE_NAME = re.compile(r"[a-z][a-z0-9_]*")
 _COMMIT = re.compile(r"[0-9a-f]{40}")
 _FIELDS = ("name", "type", "name_parameter", "parameter_default", "via", "note")
+_PARAMETER_FIELDS = ("type", "default", "dynamic", "required", "strict", "read_only",
+                     "limits", "via")
 
 # A released node whose extracted code creates nothing most likely creates its endpoints
 # through another package's class (joint_state_publisher_gui builds joint_state_publisher's
@@ -106,7 +113,20 @@ def _interface_document(interface: NodeInterface, root: Path) -> dict[str, Any]:
     return {"executable": interface.executable, "component": interface.component,
             "node_name": interface.node_name,
             "problems": [_relative_text(p, root) for p in interface.problems],
-            "endpoints": endpoints}
+            "parameters_open": None if interface.parameters_open is None else
+            _relative_text(interface.parameters_open, root),
+            "endpoints": endpoints,
+            "parameters": [_parameter_document(p, root) for p in interface.parameters]}
+
+
+def _parameter_document(parameter: Parameter, root: Path) -> dict[str, Any]:
+    item: dict[str, Any] = {"name": parameter.name}
+    for name in _PARAMETER_FIELDS:
+        value = getattr(parameter, name)
+        if value not in (None, False, ()):
+            item[name] = [[c, list(a)] for c, a in value] if name == "limits" else value
+    item["at"] = f"{_relative(parameter.span.file, root)}:{parameter.span.line}"
+    return item
 
 
 def _endpoint_document(endpoint: Endpoint, root: Path) -> dict[str, Any]:
@@ -146,13 +166,19 @@ def dump_model(document: dict[str, Any]) -> str:
         lines.append(f"  {json.dumps(key)}: {json.dumps(value, sort_keys=False)},")
     lines.append('  "interfaces": [')
     for i, interface in enumerate(document["interfaces"]):
-        fields = {k: v for k, v in interface.items() if k != "endpoints"}
+        fields = {k: v for k, v in interface.items() if k not in ("endpoints", "parameters")}
         lines.append("    {" + ", ".join(f"{json.dumps(k)}: {json.dumps(v)}"
                                           for k, v in fields.items()) + ', "endpoints": [')
         endpoints = interface["endpoints"]
         for j, endpoint in enumerate(endpoints):
             comma = "," if j < len(endpoints) - 1 else ""
             lines.append(f"      {json.dumps(endpoint)}{comma}")
+        parameters = interface.get("parameters", [])
+        if parameters:
+            lines.append('    ], "parameters": [')
+            for j, parameter in enumerate(parameters):
+                comma = "," if j < len(parameters) - 1 else ""
+                lines.append(f"      {json.dumps(parameter)}{comma}")
         lines.append("    ]}" + ("," if i < len(document["interfaces"]) - 1 else ""))
     lines.append("  ]")
     lines.append("}")
@@ -193,10 +219,39 @@ def _interface(package: str, item: Any, source: ModelSource) -> NodeInterface:
         raise ModelError("'endpoints' and 'problems' must be lists")
     if not endpoints and not problems:  # never "creates nothing" on a model's word
         problems = [EMPTY_MODEL]
+    parameters = item.get("parameters")
+    if parameters is not None and not isinstance(parameters, list):
+        raise ModelError("'parameters' must be a list")
     return NodeInterface(package, _text(item, "executable"), _optional(item, "component"),
                          _optional(item, "node_name"),
                          tuple(_endpoint(e, source) for e in endpoints), (),
-                         tuple(problems), source.describe())
+                         tuple(problems), source.describe(),
+                         tuple(_parameter(p, source) for p in parameters or ()),
+                         _optional(item, "parameters_open") if parameters is not None else
+                         "its parameter declarations were not extracted into the model")
+
+
+def _parameter(item: Any, source: ModelSource) -> Parameter:
+    if not isinstance(item, dict) or not isinstance(item.get("name"), str):
+        raise ModelError("each parameter must be an object with a name")
+    limits = item.get("limits", [])
+    if not isinstance(limits, list) or not all(
+            isinstance(x, list) and len(x) == 2 and isinstance(x[1], list) for x in limits):
+        raise ModelError("'limits' must be a list of [check, [arguments]]")
+    return Parameter(item["name"], _optional(item, "type"), _span(item, source),
+                     item.get("default"), item.get("dynamic") is True,
+                     item.get("required") is True, item.get("strict") is True,
+                     item.get("read_only") is True,
+                     tuple((str(c), tuple(a)) for c, a in limits), _optional(item, "via"))
+
+
+def _span(item: dict[str, Any], source: ModelSource) -> Span:
+    """Return where a model's item is written: ``<repository>@<commit>/<path>:<line>``."""
+    where = _optional(item, "at") or ""
+    file, _, line = where.rpartition(":")
+    location = f"{source.label()}/{source.path}/{file}" if source.path else (
+        f"{source.label()}/{file}")
+    return Span(Path(location), int(line) if line.isdigit() else 1)
 
 
 def _endpoint(item: Any, source: ModelSource) -> Endpoint:
@@ -207,11 +262,7 @@ def _endpoint(item: Any, source: ModelSource) -> Endpoint:
     except ValueError:
         raise ModelError(f"unknown endpoint kind {item.get('kind')!r}") from None
     values = {name: _optional(item, name) for name in _FIELDS}
-    where = _optional(item, "at") or ""
-    file, _, line = where.rpartition(":")
-    location = f"{source.label()}/{source.path}/{file}" if source.path else (
-        f"{source.label()}/{file}")
-    span = Span(Path(location), int(line) if line.isdigit() else 1)
+    span = _span(item, source)
     reason = _optional(item, "unresolved")
     if values["name"] is None and reason is None:
         reason = "the name is not known"

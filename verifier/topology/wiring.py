@@ -96,6 +96,21 @@ def reads_sources(graph: LaunchGraph, ctx: RuleContext) -> bool:
     return False
 
 
+def knows_code(graph: LaunchGraph, ctx: RuleContext) -> bool:
+    """Return whether a node that may run has sources here or a shipped model.
+
+    What the node contract rules need: a model tells the parameters a released
+    package's nodes declare, without reading any source.
+    """
+    if reads_sources(graph, ctx):
+        return True
+    from launchverify.topology.shipped import shipped_packages
+
+    modelled = set(shipped_packages())
+    return any(graph.base(node.package) in modelled for node in graph.nodes
+               if graph.runs(node.origin) is not False)
+
+
 def workspace_view(graph: LaunchGraph, ctx: RuleContext) -> WiringView:
     """Return the graph's view with interfaces read from the workspace's sources.
 
