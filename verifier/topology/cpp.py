@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING
 from launchverify.span import Span
 from launchverify.topology.cpp_parameters import (
     cpp_type,
+    descriptor_bounds,
     enum_type,
     literal_value,
     name_pattern,
@@ -93,6 +94,7 @@ class _File:
     parameters: list[Parameter] = field(default_factory=list)
     declaring_calls: int = 0  # declare_parameter(s) calls read
     changes: dict[str, list[str]] = field(default_factory=dict)  # var -> ``var.x(...)`` calls
+    source: str = ""  # the file's text, for patterns the tree makes long-winded
     dynamic: set[str] = field(default_factory=set)  # descriptors with dynamic_typing = true
     read_only: set[str] = field(default_factory=set)  # descriptors with read_only = true
 
@@ -110,7 +112,7 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
     """Return the endpoints and node names one C++ source file creates."""
     tree = parse("cpp", data)
     nodes = walk(tree.root_node)
-    context = _File(path)
+    context = _File(path, source=data.decode("utf-8", "replace"))
     _collect(context, nodes)
     endpoints: list[Endpoint] = []
     names: list[NodeName] = []
@@ -312,8 +314,12 @@ def _declaration(context: _File, node: Node, arguments: list[Node],
     if second is None:  # (name) or (name, descriptor): a dynamically typed declaration
         return Parameter(name, None, where, dynamic=True, read_only=read_only, owner=owner)
     kind = declared or value_type(second, lambda n: context.types.get(_variable(n) or ""))
+    bounds = None
+    if descriptor is not None and descriptor.type == "identifier":
+        bounds = descriptor_bounds(context.source, text(descriptor))
     return Parameter(name, kind, where, literal_value(second), dynamic=dynamic,
-                     read_only=read_only, owner=owner)
+                     read_only=read_only, owner=owner,
+                     limits=(("bounds", bounds),) if bounds is not None else ())
 
 
 _UPDATED = re.compile(r"""name\(?\)?\s*==\s*"([^"]+)"|"([^"]+)"\s*==\s*\w*name""")

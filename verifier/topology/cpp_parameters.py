@@ -121,6 +121,11 @@ def literal_value(node: Node) -> object:
             return None
     if kind in ("true", "false"):
         return kind == "true"
+    if kind == "call_expression" and text(node.child_by_field_name("function")).endswith(
+            "ParameterValue"):
+        arguments = node.child_by_field_name("arguments")
+        if arguments is not None and len(arguments.named_children) == 1:
+            return literal_value(arguments.named_children[0])
     if kind == "unary_expression" and written.startswith("-") and node.named_children:
         inner = literal_value(node.named_children[-1])
         return -inner if isinstance(inner, (int, float)) and not isinstance(inner, bool) \
@@ -155,3 +160,38 @@ def name_pattern(node: Node, literal: Callable[[Node], str | None],
                 text(node.child_by_field_name("function")).endswith("string"):
             return name_pattern(arguments.named_children[0], literal, values, depth + 1)
     return "*"
+
+
+_NUMBER = r"([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)[fFlL]?"
+
+
+def descriptor_bounds(source: str, descriptor: str) -> tuple[float, float] | None:
+    """Return the ``[from, to]`` range a descriptor variable is given in the file, if one.
+
+    ``d.floating_point_range.push_back(r)`` (or ``= {r}``) with ``r.from_value = 0.0;
+    r.to_value = 1.0`` or ``r.set__from_value(0.0).set__to_value(1.0)``, or
+    ``d.integer_range[0].from_value = 1`` directly. Two different values for one end
+    leave the range unknown.
+    """
+    name = re.escape(descriptor)
+    ends: dict[str, set[str]] = {"from": set(), "to": set()}
+    direct = re.compile(rf"\b{name}\s*\.\s*(?:floating_point|integer)_range\s*(?:\[\s*0\s*\])?"
+                        rf"\s*\.\s*(from|to)_value\s*=\s*{_NUMBER}")
+    for end, value in direct.findall(source):
+        ends[end].add(value)
+    held = re.compile(rf"\b{name}\s*\.\s*(?:floating_point|integer)_range\s*(?:\.\s*push_back"
+                      rf"\s*\(\s*|=\s*\{{\s*)(\w+)")
+    for holder in set(held.findall(source)):
+        inner = re.escape(holder)
+        for end, value in re.findall(rf"\b{inner}\s*\.\s*(from|to)_value\s*=\s*{_NUMBER}",
+                                     source):
+            ends[end].add(value)
+        for end, value in re.findall(rf"\b{inner}\b[\w\s.()+-]*?\.\s*set__(from|to)_value\s*"
+                                     rf"\(\s*{_NUMBER}\s*\)", source):
+            ends[end].add(value)
+        for value in re.findall(rf"\b{inner}\s*\.\s*set__from_value\s*\([^)]*\)\s*\.\s*"
+                                rf"set__to_value\s*\(\s*{_NUMBER}\s*\)", source):
+            ends["to"].add(value)
+    if len(ends["from"]) != 1 or len(ends["to"]) != 1:
+        return None
+    return float(ends["from"].pop()), float(ends["to"].pop())

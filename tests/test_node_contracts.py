@@ -1,0 +1,157 @@
+"""Node contracts read from code: parameter declarations and QoS, without building.
+
+Each case is a snippet of a node's code and what the extractor must read from it (the
+traps as much as the bugs: a helper forwarding a name declares nothing, a declaration in
+a ``try`` is optional, a descriptor from elsewhere may allow any type).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from launchverify.topology.cpp import extract as extract_cpp
+from launchverify.topology.generated_parameters import definitions, parameter_libraries
+from launchverify.topology.model import Parameter
+from launchverify.topology.python import extract as extract_python
+from launchverify.topology.qos import Qos, incompatible, qos_of
+
+
+def _cpp(body: str) -> dict[str, Parameter]:
+    code = ("class N : public rclcpp::Node {\n public:\n  N() : Node(\"n\") {\n"
+            f"{body}\n  }}\n}};\n")
+    return {p.name: p for p in extract_cpp(Path("n.cpp"), code.encode()).parameters}
+
+
+CPP_CASES = [
+    # body, name, (type, default, dynamic, required)
+    ('declare_parameter("speed", 0.5);', "speed", ("double", 0.5, False, False)),
+    ('declare_parameter("count", 4);', "count", ("integer", 4, False, False)),
+    ('declare_parameter("on", true);', "on", ("bool", True, False, False)),
+    ('declare_parameter("frame", std::string("base"));', "frame", ("string", None, False, False)),
+    ('declare_parameter<double>("gain", 1);', "gain", ("double", 1, False, False)),
+    ('declare_parameter<std::string>("port");', "port", ("string", None, False, True)),
+    ('declare_parameter("port", rclcpp::PARAMETER_STRING);', "port",
+     ("string", None, False, False)),  # declared unset: the code may check for it
+    ('declare_parameter("v", std::vector<double>{1.0, 2.0});', "v",
+     ("double_array", None, False, False)),
+    ('declare_parameter("neg", -2.5);', "neg", ("double", -2.5, False, False)),
+    ('declare_parameter("x", 1.0, make_descriptor());', "x", ("double", 1.0, True, False)),
+    ('rcl_interfaces::msg::ParameterDescriptor d; d.dynamic_typing = true;\n'
+     'declare_parameter("y", 1.0, d);', "y", ("double", 1.0, True, False)),
+    ('try { declare_parameter<int>("maybe"); } catch (...) {}', "maybe",
+     ("integer", None, False, False)),
+    ('nav2::declare_parameter_if_not_declared(node, "rate", rclcpp::ParameterValue(2.0));',
+     "rate", ("double", 2.0, False, False)),
+    ('declare_parameter(plugin_name_ + ".max_vel", 0.5);', "*.max_vel",
+     ("double", 0.5, False, False)),
+]
+
+
+@pytest.mark.parametrize(("body", "name", "expected"), CPP_CASES)
+def test_cpp_declarations(body: str, name: str, expected: tuple[object, ...]) -> None:
+    found = _cpp(body)
+    assert name in found, sorted(found)
+    parameter = found[name]
+    assert (parameter.type, parameter.default, parameter.dynamic, parameter.required) == expected
+
+
+def test_a_helper_forwarding_its_argument_declares_nothing() -> None:
+    code = (b"template<typename T> T get_or(const std::string & name, const T & value) {\n"
+            b"  return node_->declare_parameter(name, value);\n}\n")
+    assert extract_cpp(Path("h.hpp"), code).parameters == ()
+
+
+def test_descriptor_ranges_become_bounds() -> None:
+    found = _cpp('rcl_interfaces::msg::ParameterDescriptor d;\n'
+                 'rcl_interfaces::msg::FloatingPointRange r;\n'
+                 'r.set__from_value(0.0).set__to_value(1.0);\n'
+                 'd.floating_point_range.push_back(r);\n'
+                 'declare_parameter("ratio", 0.5, d);')
+    assert found["ratio"].limits == (("bounds", (0.0, 1.0)),)
+
+
+def test_options_that_accept_undeclared_parameters_are_read() -> None:
+    code = (b"auto o = rclcpp::NodeOptions()"
+            b".automatically_declare_parameters_from_overrides(true);\n"
+            b'auto n = std::make_shared<rclcpp::Node>("n", o);\n')
+    assert extract_cpp(Path("m.cpp"), code).undeclared is not None
+    closed = b"auto o = rclcpp::NodeOptions().allow_undeclared_parameters(false);\n"
+    assert extract_cpp(Path("m.cpp"), closed).undeclared is None
+
+
+def test_python_declarations() -> None:
+    code = b"""
+from rcl_interfaces.msg import ParameterDescriptor
+from rclpy.node import Node
+from rclpy.parameter import Parameter
+
+class Driver(Node):
+    def __init__(self):
+        super().__init__('driver')
+        self.declare_parameter('baud', 115200)
+        self.declare_parameter('port', Parameter.Type.STRING)
+        self.declare_parameter('any', 0, ParameterDescriptor(dynamic_typing=True))
+        self.declare_parameter('loose')
+        self.declare_parameters('filters', [('enabled', True), ('window', 5.0)])
+        self.declare_parameter(f'{self.get_name()}.rate', 1.0)
+"""
+    result = extract_python(Path("d.py"), code)
+    found = {p.name: (p.type, p.default, p.dynamic, p.required) for p in result.parameters}
+    assert found == {"baud": ("integer", 115200, False, False),
+                     "port": ("string", None, False, False),
+                     "any": ("integer", 0, True, False), "loose": (None, None, True, False),
+                     "filters.enabled": ("bool", True, False, False),
+                     "filters.window": ("double", 5.0, False, False),
+                     "*.rate": ("double", 1.0, False, False)}
+    assert not result.declarations_missed
+    assert result.bases == (("Driver", "rclpy.node.Node"),)
+
+
+def test_generate_parameter_library_definitions(tmp_path: Path) -> None:
+    (tmp_path / "CMakeLists.txt").write_text(
+        "generate_parameter_library(limiter_parameters src/limiter.yaml)\n")
+    (tmp_path / "src").mkdir()
+    (tmp_path / "src" / "limiter.yaml").write_text(
+        "limiter:\n"
+        "  speed: {type: double, default_value: 1.0, validation: {bounds<>: [0.0, 2.0]}}\n"
+        "  mode: {type: string, default_value: a, validation: {one_of<>: [[a, b]]}}\n"
+        "  topic: {type: string}\n"
+        "  gains:\n    __map_joints:\n      p: {type: double, default_value: 0.0}\n")
+    libraries = parameter_libraries(tmp_path)
+    assert libraries == {"limiter_parameters": tmp_path / "src" / "limiter.yaml"}
+    found = {p.name: p for p in definitions(libraries["limiter_parameters"])}
+    assert found["speed"].limits == (("bounds", (0.0, 2.0)),)
+    assert found["mode"].limits == (("one_of", (["a", "b"],)),)
+    assert found["topic"].required and found["topic"].type == "string"
+    assert "gains.*.p" in found and not found["gains.*.p"].required
+
+
+QOS_CASES = [
+    (["rclcpp::SensorDataQoS()"], ("best_effort", "volatile")),
+    (["10"], ("reliable", "volatile")),
+    (["rclcpp::QoS(1).transient_local()"], ("reliable", "transient_local")),
+    (["rclcpp::QoS(rclcpp::KeepLast(5))", "qos.best_effort()"], ("best_effort", "volatile")),
+    (["rclcpp::SystemDefaultsQoS()"], (None, None)),
+    (["QoSProfile(depth=1, durability=DurabilityPolicy.TRANSIENT_LOCAL)"],
+     ("reliable", "transient_local")),
+    (["rclpy.qos.qos_profile_sensor_data"], ("best_effort", "volatile")),
+    (["QoSProfile(depth=1, reliability=policy)"], (None, None)),  # from a variable
+    (["rclcpp::QoS(1)", "qos.best_effort()", "qos.reliable()"], (None, "volatile")),
+]
+
+
+@pytest.mark.parametrize(("texts", "expected"), QOS_CASES)
+def test_qos_profiles(texts: list[str], expected: tuple[str | None, str | None]) -> None:
+    found = qos_of(texts)
+    assert found is not None and (found.reliability, found.durability) == expected
+
+
+def test_unknown_profiles_and_compatibility() -> None:
+    assert qos_of(["make_qos()"]) is None and qos_of([]) is None
+    best, reliable = Qos("best_effort", "volatile"), Qos("reliable", "volatile")
+    latched = Qos("reliable", "transient_local")
+    assert incompatible(best, reliable) and not incompatible(reliable, best)
+    assert incompatible(reliable, latched) and not incompatible(latched, reliable)
+    assert incompatible(Qos(None, None), reliable) is None
