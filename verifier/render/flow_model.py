@@ -59,6 +59,7 @@ class FlowTopic:
     tf: bool = False
     ref: str | None = None  # the topic this repeats, in the box of a node using it
     maybe: list[str] = field(default_factory=list)  # nodes whose unnamed endpoint may be on it
+    qos: dict[str, str] = field(default_factory=dict)  # node key -> its end's QoS, as read
 
     @property
     def topic(self) -> str:
@@ -303,6 +304,8 @@ def _add(topics: dict[str, FlowTopic], edges: list[FlowEdge], connection: Connec
             node = keys[id(end.node)]
             nodes[node].uses.setdefault(f"{connection.section}:{role}", []).append(
                 connection.name)
+            if end.endpoint.profile is not None:
+                topic.qos[node] = end.endpoint.profile.describe()
             if role in SOURCE_ROLES:
                 topic.sources.append(node)
                 edges.append(FlowEdge(node, key, connection.section, tf))

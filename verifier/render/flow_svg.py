@@ -213,6 +213,10 @@ def topic_tooltip(topic: FlowTopic, flow: FlowGraph) -> str:
     for side, keys in ((source_side, topic.sources), (sink_side, topic.sinks)):
         if keys:
             lines.append(f"{side} {_names([flow.nodes[k].fqn for k in keys])}")
+    if topic.qos:
+        lines.append("QoS (reliability, durability): " + "; ".join(
+            f"{flow.nodes[k].fqn} {q}" for k, q in sorted(topic.qos.items())
+            if k in flow.nodes)[:CONDITION_LIMIT])
     if topic.maybe:
         lines.append(f"may also be {source_side if not topic.sources else sink_side} "
                      f"{_names(topic.maybe)}, whose name for it is not known before launch")
