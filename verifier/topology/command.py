@@ -36,8 +36,8 @@ def add_parser(commands: Any) -> None:
     command.add_argument("--format", choices=("text", "json"), default="text",
                          help="text for people (default), json for programs")
     command.add_argument("-v", "--verbose", action="store_true",
-                         help="also say which source files had parts the reader skipped "
-                         "(once per file)")
+                         help="also list each node's declared parameters and say which "
+                         "source files had parts the reader skipped (once per file)")
 
 
 def run(args: argparse.Namespace, out: TextIO | None = None) -> int:
@@ -82,7 +82,7 @@ def run(args: argparse.Namespace, out: TextIO | None = None) -> int:
                     continue
                 said.add(problem)
                 notes.append(problem)
-            _print_text(interface, safe, notes)
+            _print_text(interface, safe, notes, args.verbose)
         count = sum(len(i.endpoints) for i in interfaces)
         print(f"{len(interfaces)} executables or components, {count} endpoints, "
               f"{cache_stats()['parsed']} files parsed in {elapsed:.2f} s", file=stream)
@@ -100,12 +100,22 @@ def _as_json(interface: NodeInterface) -> dict[str, Any]:
             "name_parameter": e.name_parameter, "parameter_default": e.parameter_default,
             "qos": e.qos, "via": e.via, "owner": e.owner, "note": e.note,
             "unresolved_reason": e.unresolved_reason,
+            "reliability": e.profile.reliability if e.profile else None,
+            "durability": e.profile.durability if e.profile else None,
             "file": display_path(e.span.file), "line": e.span.line, "column": e.span.column,
         } for e in interface.endpoints],
+        "parameters": [{
+            "name": p.name, "type": p.type, "default": p.default, "dynamic": p.dynamic,
+            "required": p.required, "read_only": p.read_only, "via": p.via,
+            "limits": [[check, list(arguments)] for check, arguments in p.limits],
+            "file": display_path(p.span.file), "line": p.span.line,
+        } for p in interface.parameters],
+        "parameters_open": interface.parameters_open,
     }
 
 
-def _print_text(interface: NodeInterface, stream: TextIO, notes: list[str]) -> None:
+def _print_text(interface: NodeInterface, stream: TextIO, notes: list[str],
+                verbose: bool = False) -> None:
     title = f"{interface.package} {interface.executable}".strip()
     if interface.component and interface.component != interface.executable:
         title += f" (component {interface.component})"
@@ -123,5 +133,15 @@ def _print_text(interface: NodeInterface, stream: TextIO, notes: list[str]) -> N
         print(line, file=stream)
         if e.unresolved_reason:
             print(f"  {'':<14} unknown: {e.unresolved_reason}", file=stream)
+    if verbose:
+        for p in interface.parameters:
+            default = "" if p.default is None else f" = {p.default!r}"
+            flags = "".join(f"  [{w}]" for w, on in (("required", p.required),
+                                                     ("any type", p.dynamic)) if on)
+            print(f"  {'parameter':<14} {p.name + default:<32} {p.type or '?':<40} "
+                  f"{display_path(p.span.file)}:{p.span.line}{flags}", file=stream)
+        if interface.parameters and interface.parameters_open:
+            print(f"  {'':<14} may take other parameters: {interface.parameters_open}",
+                  file=stream)
     for note in notes:
         print(f"  note: {note}", file=stream)

@@ -267,13 +267,17 @@ def _node_name(results: Iterable[FileInterfaces], target: Target) -> str | None:
 
 def workspace_interfaces(roots: Iterable[Path]) -> Iterator[NodeInterface]:
     """Yield the node interfaces of every package found below the given folders."""
+    from launchverify.workspace.packages import PackageIndex
+
+    roots = list(roots)
+    headers = PackageIndex(roots).header  # base classes in sibling packages
     seen: set[Path] = set()
     for root in roots:
         for name, folder in sorted(scan_sources(root), key=lambda item: str(item[1])):
             if folder in seen:
                 continue
             seen.add(folder)
-            yield from package_interfaces(Package(name, source=folder))
+            yield from package_interfaces(Package(name, source=folder), headers)
 
 
 def endpoints_of(interfaces: Iterable[NodeInterface]) -> list[Endpoint]:
