@@ -412,7 +412,7 @@ def test_transition_labels_follow_the_distribution() -> None:
 
 def codes_at(path: Path, distro: str | None = None) -> list[tuple[int, str]]:
     report = run_check(CheckOptions(paths=[path], workspace=path.parent, distro=distro,
-                                    select=["LV503", "LV504"]))
+                                    select=["LV503", "LV504", "LV508"]))
     return sorted((f.span.line, f.code) for f in report.findings)
 
 
@@ -421,7 +421,7 @@ def test_a_transition_filter_never_fires_before_rolling() -> None:
     line = next(i for i, text in enumerate(path.read_text().splitlines(), 1)
                 if "transition='configure'" in text)
     assert codes_at(path) == codes_at(path, "rolling") == []
-    assert codes_at(path, "jazzy") == codes_at(path, "humble") == [(line, "LV504")]
+    assert codes_at(path, "jazzy") == codes_at(path, "humble") == [(line, "LV508")]
 
 
 GATED = """
@@ -444,12 +444,12 @@ def test_a_dead_handler_gates_the_activation_in_the_search(tmp_path: Path) -> No
         graph = graph_of(path)
         assert "active" not in {s for s in analyse(graph).exploration.reached[0]}
         assert not analyse(graph).exploration.fired
-    # LV504 at the argument, though the handler is built apart from its registration;
+    # LV508 at the argument, though the handler is built apart from its registration;
     # LV503 at the registration, naming the activation that is never sent
     lines = (HEADER + GATED).splitlines()
     label = next(i for i, text in enumerate(lines, 1) if "transition=" in text)
     register = next(i for i, text in enumerate(lines, 1) if "RegisterEventHandler(" in text)
-    assert codes_at(path, "jazzy") == [(label, "LV504"), (register, "LV503")]
+    assert codes_at(path, "jazzy") == [(label, "LV508"), (register, "LV503")]
     report = run_check(CheckOptions(paths=[path], workspace=tmp_path, distro="jazzy",
                                     select=["LV503"]))
     assert "/a is never asked to activate and stays inactive" in report.findings[0].message
@@ -475,8 +475,8 @@ def test_what_waits_on_a_dead_handler_is_not_reported_apart(tmp_path: Path) -> N
     lines = (HEADER + WAITING).splitlines()
     label = next(i for i, text in enumerate(lines, 1) if "'inactve'" in text)
     report = run_check(CheckOptions(paths=[path], workspace=tmp_path,
-                                    select=["LV503", "LV504"]))
+                                    select=["LV503", "LV504", "LV508"]))
     found = sorted((f.span.line, f.code) for f in report.findings)
-    assert found == [(label - 1, "LV503"), (label, "LV504")]  # not the 'active' handler
+    assert found == [(label - 1, "LV503"), (label, "LV508")]  # not the 'active' handler
     assert "did you mean goal_state='inactive'?" in next(
-        f.message for f in report.findings if f.code == "LV504")
+        f.message for f in report.findings if f.code == "LV508")

@@ -1,1 +1,1 @@
-"""LV503-LV507: bring-up (lifecycle deadlocks and transitions, lifecycle managers, controllers)."""
+"""LV503-LV508: bring-up (lifecycle deadlocks, transitions and labels, managers, controllers)."""

@@ -5,7 +5,7 @@ labels by ``==``: a misspelled state (``'activated'``, ``'Active'``), a state pa
 event has (``'unconfigured'`` -> ``'inactive'``) or, before rolling, any ``transition``
 makes a handler that never fires, silently. The model (``models/lifecycle.py``) says why;
 this module finds the handlers, with where the frontend saw their labels written, so
-that LV504 points at the argument to fix and the bring-up search never fires them.
+that LV508 points at the argument to fix and the bring-up search never fires them.
 """
 
 from __future__ import annotations

@@ -97,6 +97,9 @@ def unanswerable_requests(graph: LaunchGraph,
     return answers
 
 
+# ----------------------------------------------------------------------------- LV508
+
+
 def dead_handler_labels(graph: LaunchGraph) -> list[Verdict]:
     """``OnStateTransition`` labels no lifecycle event carries: the handler never fires.
 
