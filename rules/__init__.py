@@ -28,6 +28,7 @@ from launchverify.rules.lifecycle.invalid_lifecycle_transition import (
 )
 from launchverify.rules.lifecycle.lifecycle_deadlock import LifecycleDeadlock
 from launchverify.rules.lifecycle.manager_unknown_node import ManagerUnknownNode
+from launchverify.rules.lifecycle.unknown_container import UnknownContainer
 from launchverify.rules.lifecycle.unknown_controller import UnknownController
 from launchverify.rules.lifecycle.unknown_lifecycle_label import UnknownLifecycleLabel
 from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
@@ -82,6 +83,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     LifecycleDeadlock,        # LV503
     InvalidLifecycleTransition,  # LV504
     ManagerUnknownNode,       # LV505
+    UnknownContainer,         # LV506
     UnknownController,        # LV507
     UnknownLifecycleLabel,    # LV508
     UnusedRemap,              # LV601

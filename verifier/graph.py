@@ -101,6 +101,19 @@ class NodeRecord:
 
 
 @dataclass(frozen=True, slots=True)
+class LoadRecord:
+    """A ``LoadComposableNodes`` / ``<load_composable_node>``: components sent to a container.
+
+    ``target`` is the container's name as given (a substitution), ``None`` when the target
+    is a container action (launch_ros then takes that action's own full name).
+    """
+
+    origin: Origin
+    target: Sub | None
+    components: int
+
+
+@dataclass(frozen=True, slots=True)
 class ArgumentRecord:
     """A launch argument declaration as it executed."""
 
@@ -412,6 +425,7 @@ class LaunchGraph:
     reruns: list[RerunRecord] = field(default_factory=list)
     requests: list[TransitionRequest] = field(default_factory=list)
     launches: list[LaunchRecord] = field(default_factory=list)  # what ``run`` starts
+    loads: list[LoadRecord] = field(default_factory=list)  # components sent to containers
     logs: dict[int, tuple[str, Sub]] = field(default_factory=dict)  # execution: level, text
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)

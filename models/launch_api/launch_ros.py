@@ -329,6 +329,7 @@ class LoadComposableNodes(Action):
         return a.LoadComposableNodes(
             **cv_common(self, cv), target=ir_target,
             composable_nodes=tuple(d.to_description(cv) for d in self._descriptions),
+            by_action=isinstance(target, ComposableNodeContainer),
         )
 
 

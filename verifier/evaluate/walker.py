@@ -52,6 +52,7 @@ from launchverify.graph import (
     IncludeRecord,
     LaunchGraph,
     LaunchRecord,
+    LoadRecord,
     NameRecord,
     Origin,
     PackageRef,
@@ -929,6 +930,9 @@ class Walker:
         target = reducer.reduce(action.target) if isinstance(action.target, s.Sub) else None
         for description in action.composable_nodes:
             self.nodes.run_composable(description, target, ctx)
+        self.graph.loads.append(LoadRecord(ctx.origin(action.span),
+                                           None if action.by_action else target,
+                                           len(action.composable_nodes)))
 
     def record_name(self, kind: str, value: s.Sub, origin: Origin) -> None:
         """Record a ROS name for validation when its value is concrete."""
