@@ -74,18 +74,25 @@ def test_every_shipped_model_parses_and_names_its_source_commit(package: str) ->
 
 
 def test_shipped_models_are_data_not_code() -> None:
-    """Only the documented keys: no source text, qos expressions or owners leak in."""
+    """Only the documented keys: no source text, qos expressions or owners leak in; a
+    parameter's default is plain data."""
     allowed = {"kind", "name", "type", "name_parameter", "parameter_default", "via",
                "note", "unresolved", "at"}
+    parameter_keys = {"name", "type", "default", "dynamic", "required", "strict", "read_only",
+                      "limits", "via", "at"}
     for package in shipped_packages():
         document = json.loads((ROOT / "models" / "interfaces" / f"{package}.json").read_text())
         assert set(document) == {"format", "package", "source", "extracted_with",
                                  "interfaces"}
         for interface in document["interfaces"]:
             assert set(interface) == {"executable", "component", "node_name", "problems",
-                                      "endpoints"}
+                                      "parameters_open", "endpoints", "parameters"}
             for endpoint in interface["endpoints"]:
                 assert set(endpoint) <= allowed, (package, endpoint)
+            for parameter in interface["parameters"]:
+                assert set(parameter) <= parameter_keys, (package, parameter)
+                assert isinstance(parameter.get("default"), (type(None), bool, int, float, str,
+                                                             list)), (package, parameter)
 
 
 def test_nav2_servers_as_checked_against_their_sources() -> None:

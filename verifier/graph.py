@@ -159,6 +159,10 @@ class IncludeRecord:
     # an argument's name comes from what launchverify cannot know (code it does not see):
     # it may be any name
     unknown_names: bool = False
+    # a path computed from an argument: its name, and the values tried (each one an
+    # include of its own under the guard ``argument == value``)
+    computed_from: str | None = None
+    candidates: tuple[str, ...] = ()
 
     def missing_required(self) -> list[StaticArgument]:
         """Return the required arguments this include does not pass (launch raises).

@@ -491,17 +491,70 @@ class Walker:
 
     def do_Include(self, action: a.Include, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
-        written_in = ctx.file
         location = reducer.reduce(action.path)
         origin = ctx.origin(action.span)
         record = IncludeRecord(origin=origin, action=action, location=location, target=None,
                                status="loaded")
         self.graph.includes.append(record)
-        path_text = text_of(location) or self.graph.base(location)
+        written = text_of(location)
+        as_given = None if written is not None else self.graph.base(location)
+        if written is None and self.include_candidates(action, ctx, record, as_given is None):
+            return
+        path_text = written or as_given
         if path_text is None:
             record.status = "unresolved"
             self.mark_incomplete()
             return
+        self.include_path(action, ctx, record, path_text)
+
+    def include_candidates(self, action: a.Include, ctx: Ctx, record: IncludeRecord,
+                           patterns: bool) -> bool:
+        """Follow an include whose path an argument computes, once per value it may take.
+
+        Each value is an include of its own under the guard ``argument == value``, so a
+        finding in one sensor's file names the value that reaches it. ``False`` when the
+        path is not computed from one argument with known candidates. ``patterns``: the
+        workspace may give them (the arguments as given name no file); otherwise only the
+        argument's choices do.
+        """
+        from launchverify.evaluate.candidates import candidates_of
+
+        found = candidates_of(action.path, self.scopes, self.graph, self.index,
+                              self.reducer.at(ctx, action.span), patterns)
+        if found is None:
+            return False
+        record.status = "computed"
+        record.computed_from = found.name
+        record.candidates = found.values
+        if not found.complete:
+            self.mark_incomplete()  # other values may name other files
+        current = self.current_file  # each branch starts where the include is written
+        for value in found.values:
+            self.current_file = current
+            guard = StrEquals(found.input, s.Text(value), where=action.span)
+            if self.reducer.at(ctx, action.span).guard(guard) is False:
+                continue
+            inner = ctx.guarded(guard)
+            with self.scope(env=False):
+                self.scopes.set(found.name, s.Text(value), ())
+                location = self.reducer.at(inner, action.span).reduce(action.path)
+                path_text = text_of(location)
+                branch = IncludeRecord(origin=inner.origin(action.span), action=action,
+                                       location=location, target=None, status="loaded",
+                                       computed_from=found.name, candidates=(value,))
+                self.graph.includes.append(branch)
+                if path_text is None:
+                    branch.status = "unresolved"
+                    self.mark_incomplete()
+                    continue
+                self.include_path(action, inner, branch, path_text)
+        return True
+
+    def include_path(self, action: a.Include, ctx: Ctx, record: IncludeRecord,
+                     path_text: str) -> None:
+        """Follow an include to the file ``path_text`` names (the rest of ``do_Include``)."""
+        written_in = ctx.file
+        location = record.location
         target, note = self.resolve_path(path_text, written_in, action.path)
         record.note = note
         if target is None:

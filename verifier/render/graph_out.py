@@ -165,6 +165,7 @@ class GraphView:
                 {"target": display_path(i.target) if i.target else self.value(i.location),
                  "status": i.status,
                  "arguments": {n: self.value(v) for n, v, _ in i.arguments if n is not None},
+                 "computed_from": i.computed_from, "candidates": list(i.candidates),
                  **self.where(i.origin)}
                 for i in graph.includes if self.shown(i.origin)
             ],

@@ -8,7 +8,9 @@ Two ways to range over arguments (``Mode``):
   holds for *every* assignment (a condition that can never be true).
 - ``SWITCHES``: the combinations of the launch's switches. A switch is an argument with
   ``choices`` or a boolean default (``true``/``false``/``1``/``0``, any case): it takes
-  its choices, or the default and its opposite. Every other argument keeps its default
+  its choices, or the default and its opposite. An argument an include path is computed
+  from (``$(find-pkg-share $(var sensor)_launch)``) is one too: it takes its default and
+  the values the include was followed for. Every other argument keeps its default
   (or its pinned value). Used to claim that something *can* happen (two nodes collide):
   a namespace or robot-name argument names one robot per launch, and varying it freely
   would make every namespaced node collide with every other one.
@@ -56,6 +58,7 @@ class ArgumentDomain:
     symbolic_default: bool = False  # some default depends on something unknown
     required: bool = False  # declared somewhere without a default
     exposed: bool = True  # part of the root's interface (see argument_domains)
+    candidates: tuple[str, ...] = ()  # values a computed include path was followed for
 
     @property
     def boolean(self) -> bool:
@@ -67,7 +70,7 @@ class ArgumentDomain:
     def switch(self) -> bool:
         """Return whether the argument is varied in ``SWITCHES`` mode."""
         return self.pinned is None and self.exposed and (
-            self.choices is not None or self.boolean)
+            self.choices is not None or self.boolean or bool(self.candidates))
 
     def values(self, mode: Mode) -> tuple[str, ...] | None:
         """Return the finite set of values a given argument takes, or ``None`` (any)."""
@@ -78,6 +81,8 @@ class ArgumentDomain:
             return tuple(sorted(self.defaults))  # not the user's to set: its default
         if self.choices is not None:
             return self.choices
+        if mode is Mode.SWITCHES and self.candidates and not self.symbolic_default:
+            return tuple(sorted(self.defaults | set(self.candidates)))
         if mode is Mode.SWITCHES and self.boolean:
             values = set(self.defaults)
             values.update(_OPPOSITE.get(d.strip(), "false" if d.strip().lower() in
@@ -123,6 +128,10 @@ def argument_domains(graph: LaunchGraph) -> dict[str, ArgumentDomain]:
               or any(argument.name in passed for passed in argument.via_includes)}
     for domain in out.values():
         domain.exposed = domain.name in listed
+    for include in graph.includes:
+        if include.status == "computed" and include.computed_from in out:
+            domain = out[include.computed_from]
+            domain.candidates = tuple(sorted({*domain.candidates, *include.candidates}))
     for name, value in graph.pinned.items():
         out.setdefault(name, ArgumentDomain(name)).pinned = value
     return out
