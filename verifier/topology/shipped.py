@@ -173,8 +173,8 @@ def dump_model(document: dict[str, Any]) -> str:
         for j, endpoint in enumerate(endpoints):
             comma = "," if j < len(endpoints) - 1 else ""
             lines.append(f"      {json.dumps(endpoint)}{comma}")
-        parameters = interface.get("parameters", [])
-        if parameters:
+        parameters = interface.get("parameters")
+        if parameters is not None:
             lines.append('    ], "parameters": [')
             for j, parameter in enumerate(parameters):
                 comma = "," if j < len(parameters) - 1 else ""
