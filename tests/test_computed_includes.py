@@ -74,3 +74,21 @@ def test_a_file_name_pattern_tries_the_files_that_fit(tmp_path: Path,
         findings = json.loads(capsys.readouterr().out)["findings"]
         assert [(f["code"], f["witness"]) for f in findings if f["code"] == "LV101"] == \
             expected
+
+
+def test_a_computed_path_outside_the_workspace_is_not_listed(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """The folder a computed file name points into is listed only inside the workspace:
+    a launch file cannot make the check reveal another folder's file names."""
+    outside = tmp_path / "outside"
+    outside.mkdir()
+    (outside / "private_key.launch.xml").write_text("<launch/>")
+    workspace = tmp_path / "ws"
+    workspace.mkdir()
+    root = workspace / "main.launch.xml"
+    root.write_text(f'<launch><arg name="name"/><include file="{outside}/$(var name).launch.xml"/>'
+                    "</launch>")
+    main(["graph", str(root), "--workspace", str(workspace), "--symbolic"])
+    includes = json.loads(capsys.readouterr().out)["includes"]
+    assert [i["status"] for i in includes] == ["unresolved"]
+    assert "private_key" not in json.dumps(includes)

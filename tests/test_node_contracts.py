@@ -155,3 +155,25 @@ def test_unknown_profiles_and_compatibility() -> None:
     assert incompatible(best, reliable) and not incompatible(reliable, best)
     assert incompatible(reliable, latched) and not incompatible(latched, reliable)
     assert incompatible(Qos(None, None), reliable) is None
+
+
+def test_build_files_name_no_file_outside_their_package(tmp_path: Path) -> None:
+    """A pull request's CMakeLists.txt or #include cannot make the reader open a secret."""
+    from launchverify.workspace.packages import PackageIndex
+
+    secret = tmp_path / "secret.yaml"
+    secret.write_text("leak:\n  token: {type: string, default_value: hunter2}\n")
+    package = tmp_path / "ws" / "pkg"
+    (package / "include" / "pkg").mkdir(parents=True)
+    (package / "package.xml").write_text(
+        "<package format='3'><name>pkg</name><version>0.0.0</version><description>d"
+        "</description><maintainer email='a@b.c'>m</maintainer><license>MIT</license>"
+        "</package>")
+    (package / "CMakeLists.txt").write_text(
+        "generate_parameter_library(leak ../../secret.yaml)\n"
+        f"generate_parameter_library(abs {secret})\n")
+    assert parameter_libraries(package) == {}
+    index = PackageIndex([tmp_path / "ws"])
+    assert index.header("pkg/../../../secret.yaml") is None
+    (package / "include" / "pkg" / "base.hpp").write_text("// a header\n")
+    assert index.header("pkg/base.hpp") == package / "include" / "pkg" / "base.hpp"

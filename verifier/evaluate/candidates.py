@@ -81,7 +81,8 @@ def _from_workspace(path: s.Sub, name: str, scopes: Scopes, index: PackageIndex,
             values = [m.group(1) for n in index.names() if (m := pattern.fullmatch(n))]
         else:
             whole = text_of(reducer.reduce(path))
-            if whole and _MARK in Path(whole).name and _MARK not in str(Path(whole).parent):
+            if whole and _MARK in Path(whole).name and _MARK not in str(Path(whole).parent) \
+                    and _inside(Path(whole).parent, index):
                 folder = Path(whole).parent
                 pattern = _pattern(Path(whole).name)
                 values = sorted(m.group(1) for f in _listing(folder)
@@ -90,7 +91,7 @@ def _from_workspace(path: s.Sub, name: str, scopes: Scopes, index: PackageIndex,
         for value in sorted(set(values)):
             scopes.set(name, s.Text(value), ())
             target = text_of(reducer.reduce(path))
-            if target is not None and Path(target).is_file():
+            if target is not None and _inside(Path(target), index) and Path(target).is_file():
                 found.append(value)
         return found
     finally:
@@ -103,6 +104,16 @@ def _pattern(marked: str) -> re.Pattern[str]:
         return re.compile(re.escape(before) + r"(.+?)" + re.escape(after).replace(
             re.escape(_MARK), r"\1"))
     return re.compile(re.escape(before) + r"(.+?)" + re.escape(after))
+
+
+def _inside(path: Path, index: PackageIndex) -> bool:
+    """Return whether a path lies in a workspace checked (nothing else is listed or probed)."""
+    from launchverify.workspace.paths import resolved
+
+    if not path.is_absolute():
+        return False
+    real = resolved(path)
+    return any(real.is_relative_to(w) for w in index.workspaces)
 
 
 def _listing(folder: Path) -> list[str]:

@@ -40,9 +40,17 @@ def parameter_libraries(source: Path) -> dict[str, Path]:
             continue
         for name, path in pattern.findall(written):
             path = re.sub(r"\$\{(?:CMAKE_CURRENT_SOURCE_DIR|PROJECT_SOURCE_DIR)\}/?", "", path)
-            if "$" not in name and "$" not in path:
-                found[name.rpartition(".")[2]] = source / path
+            definition = source / path
+            if "$" not in name and "$" not in path and _inside(definition, source):
+                found[name.rpartition(".")[2]] = definition
     return found
+
+
+def _inside(path: Path, source: Path) -> bool:
+    """Return whether a definition lies in its package (a build file names no other file)."""
+    from launchverify.workspace.paths import resolved
+
+    return resolved(path).is_relative_to(resolved(source))
 
 
 def definitions(path: Path) -> tuple[Parameter, ...]:

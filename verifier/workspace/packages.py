@@ -239,8 +239,9 @@ class PackageIndex:
             return None
         for base in (found.source / "include", found.source / "include" / first):
             candidate = base / include
-            if candidate.is_file():
-                return candidate
+            if resolved(candidate).is_relative_to(resolved(found.source)) and \
+                    candidate.is_file():
+                return candidate  # inside the package: ``..`` in an include reads no more
         return None
 
     def declares(self, path: Path, dependency: str) -> bool:
