@@ -37,7 +37,7 @@ class Candidates:
     name: str  # the configuration the path reads
     input: s.Sub  # its value in scope (the argument), for the guards
     values: tuple[str, ...]
-    complete: bool  # the values are all the argument may take (its choices)
+    complete: bool  # the launch as given is among them (its choices, or its default)
 
 
 def candidates_of(path: s.Sub, scopes: Scopes, graph: LaunchGraph, index: PackageIndex,
@@ -63,7 +63,11 @@ def candidates_of(path: s.Sub, scopes: Scopes, graph: LaunchGraph, index: Packag
     values = _from_workspace(path, name, scopes, index, reducer) if patterns else []
     if not values:
         return None
-    return Candidates(name, current, tuple(values[:MAX_CANDIDATES]), False)
+    # the launch as given is seen whole when its value is among them (other values are
+    # the user's to give, like any argument's); a default that names no file is not
+    default = text_of(reducer.reduce(current.default)) if current.default is not None else None
+    return Candidates(name, current, tuple(values[:MAX_CANDIDATES]),
+                      default in values[:MAX_CANDIDATES])
 
 
 def _from_workspace(path: s.Sub, name: str, scopes: Scopes, index: PackageIndex,

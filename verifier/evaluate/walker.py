@@ -527,7 +527,7 @@ class Walker:
         record.computed_from = found.name
         record.candidates = found.values
         if not found.complete:
-            self.mark_incomplete()  # other values may name other files
+            self.mark_incomplete()  # the value as given names no file tried
         current = self.current_file  # each branch starts where the include is written
         for value in found.values:
             self.current_file = current
