@@ -138,7 +138,7 @@ def generate(root: Path, output: Path, only: set[str]) -> dict[str, float]:
             tree = Path(temporary)
             commit = export(git, source.branch, tree)
             found = {name: folder for name, folder in scan_sources(tree)}
-            headers = PackageIndex([tree]).header  # base classes in sibling packages
+            lookup = PackageIndex([tree]).lookup()  # base classes in sibling packages
             for package in packages:
                 folder = found.get(package)
                 if folder is None:
@@ -147,7 +147,7 @@ def generate(root: Path, output: Path, only: set[str]) -> dict[str, float]:
                     continue
                 started = time.perf_counter()
                 interfaces = [i for i in package_interfaces(Package(package, source=folder),
-                                                            headers)
+                                                            lookup)
                               if not _test_only(i.sources, folder)]
                 timings[package] = time.perf_counter() - started
                 where = folder.relative_to(tree).as_posix() if folder != tree else ""

@@ -15,6 +15,9 @@ NODE_BASES = frozenset({
     "rclpy.node.Node", "rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode",
     "rclpy.lifecycle.node.LifecycleNode",
 })
+# Base classes by prefix that declare no parameters on the node deriving from them
+NO_PARAMETERS = ("std::", "boost::", "rclcpp::", "rclcpp_lifecycle::", "rclpy.",
+                 "enable_shared_from_this", "object")
 # Constants of released libraries that name parameters (``bond::msg::Constants::...``)
 NAME_CONSTANTS = {
     "bond::msg::Constants::DISABLE_HEARTBEAT_TIMEOUT_PARAM": "bond_disable_heartbeat_timeout",

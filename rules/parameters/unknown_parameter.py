@@ -4,10 +4,15 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Fix, Related, Rule, RuleContext, Severity, rename
 from launchverify.span import Span
+
+if TYPE_CHECKING:
+    from launchverify.parameters import Contribution
+    from launchverify.topology.wiring import WiringView
 from launchverify.suggest import did_you_mean, sole_spelling
 
 
@@ -68,6 +73,7 @@ class UnknownParameter(Rule):
             return
         view = any_view(graph, ctx)
         reported: set[tuple[object, ...]] = set()
+        takers = _takers(view)
         for contract in contracts(view):
             if contract.open is not None:
                 continue
@@ -83,6 +89,8 @@ class UnknownParameter(Rule):
                     if contribution.shared or where in reported:
                         continue
                     reported.add(where)
+                    if takers.get(_source(contribution, name), 0) > 0:
+                        continue  # one value given to several nodes: another one takes it
                     typo = sole_spelling(name, known)
                     if typo is None and modelled:
                         continue  # another release of the package may declare it
@@ -96,6 +104,46 @@ class UnknownParameter(Rule):
                     if typo is not None:
                         finding = dataclasses.replace(finding, severity=Severity.ERROR)
                     yield finding
+
+
+def _takers(view: WiringView) -> dict[tuple[object, ...], int]:
+    """Return, per place a value is written, how many nodes it reaches may take it.
+
+    A dict or file given to several nodes (rtabmap's ``parameters`` list, passed to
+    odometry, sync and SLAM alike) is meant for whichever of them declares each name: a
+    name one of them takes, or one reaching a node whose declarations are not all known,
+    is no mistake of the others.
+    """
+    from launchverify.topology.contracts import contracts
+
+    judged = {id(c.composed.node): c for c in contracts(view)}
+    reached: dict[tuple[object, ...], int] = {}
+    for composed in view.nodes:
+        from launchverify.parameters import effective_parameters
+        from launchverify.topology.compose import named_record
+
+        contract = judged.get(id(composed.node))
+        received = contract.received if contract is not None else effective_parameters(
+            view.graph, named_record(view.graph, composed))
+        for name, given in received.values.items():
+            takes = contract is None or contract.open is not None or contract.accepts(name)
+            for contribution in given:
+                key = _source(contribution, name)
+                reached[key] = reached.get(key, 0) + (1 if takes else 0)
+    return reached
+
+
+def _source(contribution: Contribution, name: str) -> tuple[object, ...]:
+    """Return what identifies one written value across the nodes it is given to.
+
+    A file's value by its place; an inline value by its file, name and value (a dict
+    kept in a variable is written once, but each node's ``parameters=[...]`` names it at
+    its own place).
+    """
+    span = contribution.span
+    if contribution.layer == "file":
+        return (span.file, span.line, span.column, name)
+    return (span.file, name, repr(contribution.value))
 
 
 def _rename_key(span: Span, name: str, meant: str) -> Fix | None:

@@ -88,7 +88,7 @@ class WorkspaceInterfaces:
 
             try:
                 self._read[package] = package_interfaces(
-                    Package(package, source=found.source), self.index.header)
+                    Package(package, source=found.source), self.index.lookup())
             except Exception as error:  # one package's surprise must not end the graph
                 self._failed[package] = f"{type(error).__name__}: {error}"
                 self._read[package] = []

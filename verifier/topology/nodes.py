@@ -8,15 +8,16 @@ endpoint created by another registered component's class is left to that compone
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Iterable, Iterator
 from dataclasses import replace
 from pathlib import Path
 
-from launchverify.models.node_parameters import LIBRARY_PARAMETERS, NODE_BASES
+from launchverify.models.node_parameters import LIBRARY_PARAMETERS
 from launchverify.span import Span
 from launchverify.topology.cpp import class_name, member_endpoints
 from launchverify.topology.files import file_interfaces
 from launchverify.topology.generated_parameters import definitions, parameter_libraries
+from launchverify.topology.inherited import Lookup, inherited
 from launchverify.topology.model import (
     Endpoint,
     FileInterfaces,
@@ -34,23 +35,21 @@ from launchverify.workspace.paths import display_path
 SKIPPED = "parts the source reader does not understand were skipped"
 
 
-# ``#include "pkg/x.hpp"`` -> the file in pkg's sources, when the workspace has them
-Headers = Callable[[str], Path | None]
-MAX_BASE_HEADERS = 24  # headers of other packages read for one target's base classes
+MAX_LIBRARY_HEADERS = 24  # headers of other packages read for what their functions declare
 
 
-def package_interfaces(package: Package, headers: Headers | None = None) -> list[NodeInterface]:
+def package_interfaces(package: Package, lookup: Lookup | None = None) -> list[NodeInterface]:
     """Return the node interface of every executable and component of one package.
 
-    ``headers`` finds the headers of other packages of the workspace, where a node class's
-    base may be declared (nav2's ``nav2::LifecycleNode`` declares parameters of its own).
+    ``lookup`` finds other packages' headers and files in the workspace, where a node
+    class's base may be (nav2's ``nav2::LifecycleNode`` declares parameters of its own).
     """
     generated = parameter_libraries(package.source) if package.source is not None else {}
-    return [target_interface(package.name, target, headers, generated)
+    return [target_interface(package.name, target, lookup, generated)
             for target in package_targets(package)]
 
 
-def target_interface(package: str, target: Target, headers: Headers | None = None,
+def target_interface(package: str, target: Target, lookup: Lookup | None = None,
                      generated: dict[str, Path] | None = None) -> NodeInterface:
     """Return what the sources of one executable or component create.
 
@@ -59,7 +58,8 @@ def target_interface(package: str, target: Target, headers: Headers | None = Non
     parameters.
     """
     results = [file_interfaces(path) for path in target.sources]
-    results += _library_headers(results, target, headers)
+    bases, missing = inherited(results, target.sources, lookup)
+    results += bases + _library_headers(results, target, lookup)
     results += _generated(results, generated or {})
     others = {_class(p) for p in target.other_components}
     aliases = dict(a for r in results for a in r.aliases)
@@ -85,31 +85,28 @@ def target_interface(package: str, target: Target, headers: Headers | None = Non
     return NodeInterface(package, target.executable, target.component,
                          _node_name(results, target), tuple(endpoints),
                          target.sources, tuple(problems), parameters=parameters,
-                         parameters_open=_parameters_open(results, target, parameters),
+                         parameters_open=_parameters_open(results, target, parameters,
+                                                          missing),
                          parameters_undeclared=next(
                              (r.undeclared for r in results if r.undeclared), None))
 
 
 def _library_headers(results: list[FileInterfaces], target: Target,
-                     headers: Headers | None) -> list[FileInterfaces]:
-    """Return what the headers of other packages declare on the node the target builds.
+                     lookup: Lookup | None) -> list[FileInterfaces]:
+    """Return what the headers of other packages declare on the node by literal names.
 
-    Read from the workspace's sources: a base class's parameters (nav2's
-    ``nav2::LifecycleNode`` declares its own), and the names a library's functions
-    declare literally (``introspection_mode``). A header's helper that declares whatever
-    name it is given is no declaration (``_forwarded``); its callers' calls are. A
-    released library's header is looked up in ``LIBRARY_PARAMETERS`` instead.
+    Their functions given the node declare names of their own (nav2's services declare
+    ``introspection_mode``); a helper that declares whatever name it is given is no
+    declaration (``_forwarded``): its callers' calls are. A released library's header is
+    looked up in ``LIBRARY_PARAMETERS`` instead.
     """
     found: list[FileInterfaces] = []
     seen = set(target.sources)
     pending = [i for r in results for i in r.includes]
-    wanted = {class_name(base.replace(".", "::")) for r in results for _, base in r.bases
-              if base.endswith("Node") and base not in NODE_BASES}
-    wanted -= {name for r in results for name, _ in r.classes}
     released: set[str] = set()
-    while pending and len(found) < MAX_BASE_HEADERS:
+    while pending and len(found) < MAX_LIBRARY_HEADERS:
         include = pending.pop(0)
-        path = headers(include) if headers is not None else None
+        path = lookup.header(include) if lookup is not None else None
         if path is None:
             released.add(include.partition("/")[0])
             continue
@@ -118,13 +115,8 @@ def _library_headers(results: list[FileInterfaces], target: Target,
         seen.add(path)
         result = file_interfaces(path)
         pending.extend(result.includes)
-        classes = {name for name, _ in result.classes} & wanted
-        wanted -= classes
-        found.append(replace(result, endpoints=(), node_names=(), inits=(),
-                             parameters=tuple(p for p in result.parameters
-                                              if p.owner in classes or "*" not in p.name),
-                             bases=tuple(b for b in result.bases if b[0] in classes),
-                             declarations_missed=False, undeclared=None))
+        found.append(FileInterfaces(path, parameters=tuple(
+            p for p in result.parameters if "*" not in p.name)))
     return found + _released(released, results)
 
 
@@ -167,11 +159,12 @@ def _nowhere(results: list[FileInterfaces]) -> Span:
 
 
 def _parameters_open(results: list[FileInterfaces], target: Target,
-                     parameters: tuple[Parameter, ...]) -> str | None:
+                     parameters: tuple[Parameter, ...], missing: set[str]) -> str | None:
     """Return why the node may accept names it is not seen to declare, ``None`` if not.
 
     The sources not all read, NodeOptions that accept undeclared parameters, a name
-    declared entirely at run time, or a node base class whose code is not here.
+    declared entirely at run time, or a node base class whose code is not here
+    (``missing``).
     """
     if target.problems or not target.sources:
         return "its sources were not all read"
@@ -187,13 +180,9 @@ def _parameters_open(results: list[FileInterfaces], target: Target,
                 else "it loads plugins chosen by parameters, whose own are not read")
     if any(p.name == "*" for p in parameters):
         return "it declares a parameter whose whole name is built at run time"
-    defined = {name for r in results for name, _ in r.bases} | {
-        name for r in results for name, _ in r.classes}
-    for result in results:
-        for _, base in result.bases:
-            if base.endswith("Node") and base not in NODE_BASES and \
-                    class_name(base.replace(".", "::")) not in defined:
-                return f"its node class derives from {base}, whose code is not read here"
+    if missing:
+        return (f"its node class derives from {sorted(missing)[0]}, whose code is not read "
+                "here")
     return None
 
 
@@ -270,14 +259,14 @@ def workspace_interfaces(roots: Iterable[Path]) -> Iterator[NodeInterface]:
     from launchverify.workspace.packages import PackageIndex
 
     roots = list(roots)
-    headers = PackageIndex(roots).header  # base classes in sibling packages
+    lookup = PackageIndex(roots).lookup()  # base classes in sibling packages
     seen: set[Path] = set()
     for root in roots:
         for name, folder in sorted(scan_sources(root), key=lambda item: str(item[1])):
             if folder in seen:
                 continue
             seen.add(folder)
-            yield from package_interfaces(Package(name, source=folder), headers)
+            yield from package_interfaces(Package(name, source=folder), lookup)
 
 
 def endpoints_of(interfaces: Iterable[NodeInterface]) -> list[Endpoint]:

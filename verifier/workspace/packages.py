@@ -16,9 +16,13 @@ import re
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from launchverify.workspace.paths import link_inside, resolved
 from launchverify.workspace.reading import read_file
+
+if TYPE_CHECKING:
+    from launchverify.topology.inherited import Lookup
 
 SKIP_DIRS = frozenset({
     ".git", ".hg", ".svn", "build", "install", "log", "node_modules", "__pycache__",
@@ -243,6 +247,21 @@ class PackageIndex:
                     candidate.is_file():
                 return candidate  # inside the package: ``..`` in an include reads no more
         return None
+
+    def package_files(self, name: str) -> list[Path]:
+        """Return the C++ and Python files of a package's sources here (none when built)."""
+        found = self.find(name)
+        if found is None or found.source is None:
+            return []
+        suffixes = {".cpp", ".cc", ".cxx", ".hpp", ".hh", ".hxx", ".h", ".py"}
+        return sorted(p for p in found.source.rglob("*") if p.suffix in suffixes
+                      and p.is_file() and not p.is_symlink())
+
+    def lookup(self) -> Lookup:
+        """Return where the topology readers find other packages' headers and files."""
+        from launchverify.topology.inherited import Lookup
+
+        return Lookup(self.header, self.package_files)
 
     def declares(self, path: Path, dependency: str) -> bool:
         """Return whether the package owning ``path`` declares ``dependency`` in package.xml.
