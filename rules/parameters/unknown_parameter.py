@@ -85,10 +85,10 @@ class UnknownParameter(Rule):
                     continue
                 for contribution in given:
                     span = contribution.span
-                    where = (span.file, span.line, span.column, name)
+                    where = _source(contribution, name)
                     if contribution.shared or where in reported:
                         continue
-                    reported.add(where)
+                    reported.add(where)  # one written value, reported once
                     if takers.get(_source(contribution, name), 0) > 0:
                         continue  # one value given to several nodes: another one takes it
                     typo = sole_spelling(name, known)
