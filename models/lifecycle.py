@@ -221,13 +221,17 @@ class NeverMatches:
     """Why an ``OnStateTransition``'s labels match no event, and what would.
 
     ``field`` is the argument to change; ``hint`` the change, as it would be written
-    (``goal_state='active'``, ``leave out start_state='unconfigured'``).
+    (``goal_state='active'``, ``leave out start_state='unconfigured'``). ``pair``: each
+    label is one rcl publishes in its field, but no single event carries them together
+    (LV504: the handler awaits a transition the node cannot take from that state); else
+    one label is never published in its field at all (LV508).
     """
 
     field: str
     value: str
     reason: str
     hint: str | None = None
+    pair: bool = False
 
     @property
     def argument(self) -> str:
@@ -363,7 +367,7 @@ def _combination_problem(given: dict[str, str]) -> NeverMatches:
         hint = (f"leave out transition='{label}'"
                 if any(_passes(e, states) for e in EVENTS) else None)
         return NeverMatches("transition", label, f"no '{label}' event has those states: "
-                            f"'{label}' events go {hops}", hint)
+                            f"'{label}' events go {hops}", hint, pair=True)
     assert start is not None and goal is not None
     between = sorted({e.goal for e in EVENTS if e.start == start}
                      & {e.start for e in EVENTS if e.goal == goal})
@@ -372,10 +376,11 @@ def _combination_problem(given: dict[str, str]) -> NeverMatches:
         return NeverMatches("start_state", start, f"no single event goes from '{start}' to "
                             f"'{goal}': the node passes through '{middle}' ('{start}' -> "
                             f"'{middle}', then '{middle}' -> '{goal}')",
-                            f"start_state='{middle}'")
+                            f"start_state='{middle}'", pair=True)
     origins = {e.start for e in EVENTS if e.goal == goal}
     return NeverMatches("start_state", start, f"no transition event goes from '{start}' to "
-                        f"'{goal}': events that end in '{goal}' start in {_quoted(origins)}")
+                        f"'{goal}': events that end in '{goal}' start in {_quoted(origins)}",
+                        pair=True)
 
 
 # What people write for a state, and the state they mean.

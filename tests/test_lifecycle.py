@@ -402,6 +402,17 @@ def test_a_filter_never_matches_exactly_when_no_event_passes_it(
         assert lc.never_matches(tuple(filters.items()), "humble") is not None
 
 
+@given(st.dictionaries(st.sampled_from(lc.FILTER_FIELDS),
+                       st.sampled_from([*lc.STATE_LABELS, *lc.EVENT_TRANSITION_LABELS])))
+def test_a_pair_is_labels_each_published_alone(filters: dict[str, str]) -> None:
+    # LV504 (a pair no single event carries) or LV508 (a label never published in its field)
+    problem = lc.never_matches(tuple(filters.items()), "rolling")
+    if problem is not None:
+        alone = all(lc.never_matches(((field, label),), "rolling") is None
+                    for field, label in filters.items())
+        assert problem.pair == alone
+
+
 def test_transition_labels_follow_the_distribution() -> None:
     assert [lc.transition_labels(d) for d in distros.DISTROS] == [
         False, False, False, False, True]
@@ -480,3 +491,51 @@ def test_what_waits_on_a_dead_handler_is_not_reported_apart(tmp_path: Path) -> N
     assert found == [(label - 1, "LV503"), (label, "LV508")]  # not the 'active' handler
     assert "did you mean goal_state='inactive'?" in next(
         f.message for f in report.findings if f.code == "LV508")
+
+
+CONTAINERS = """
+from launch.actions import ExecuteProcess, GroupAction
+from launch.substitutions import EnvironmentVariable
+from launch_ros.actions import ComposableNodeContainer, LoadComposableNodes, PushRosNamespace
+from launch_ros.descriptions import ComposableNode
+
+
+def generate_launch_description():
+    container = ComposableNodeContainer(name='c', namespace='', package='rclcpp_components',
+                                        executable='component_container')
+    return LaunchDescription([{host}GroupAction([
+        PushRosNamespace('r1'), container,
+        LoadComposableNodes(target_container=container, composable_node_descriptions=[
+            ComposableNode(package='p', plugin='p::A', name='a')]),
+        LoadComposableNodes(target_container='c', composable_node_descriptions=[
+            ComposableNode(package='p', plugin='p::B', name='b')]),
+    ])])
+"""
+
+
+def lv506(tmp_path: Path, host: str = "") -> list[tuple[int, str]]:
+    path = write(tmp_path, CONTAINERS.format(host=host))
+    report = run_check(CheckOptions(paths=[path], workspace=tmp_path, select=["LV506"]))
+    return [(f.span.line, f.severity.value) for f in report.findings]
+
+
+def test_a_load_waits_for_its_container_as_launch_ros_names_it(tmp_path: Path) -> None:
+    path = write(tmp_path, CONTAINERS.format(host=""))
+    graph = run_check(CheckOptions(paths=[path], workspace=tmp_path,
+                                   select=["LV506"])).graphs[0]
+    # the container action is its full name; a relative name is resolved in /
+    assert [graph.base(load.target) for load in graph.loads] == ["/r1/c", "c"]
+    assert {graph.base(n.fqn): graph.base(n.container) for n in graph.nodes
+            if n.composable} == {"/r1/a": "/r1/c", "/r1/b": "c"}
+    line = next(i for i, text in enumerate((HEADER + CONTAINERS).splitlines(), 1)
+                if "target_container='c'" in text)
+    assert lv506(tmp_path) == [(line, "error")]
+
+
+@pytest.mark.parametrize("host", [
+    "Node(package='p', executable='x', name='c', namespace='/'),",  # any node named so
+    "Node(package='p', executable=EnvironmentVariable('EXE')),",  # may be a container
+    "ExecuteProcess(cmd=['ros2', 'run', 'rclcpp_components', 'component_container']),",
+])
+def test_what_may_be_the_container_keeps_the_load_quiet(tmp_path: Path, host: str) -> None:
+    assert lv506(tmp_path, host) == []

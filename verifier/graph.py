@@ -104,8 +104,8 @@ class NodeRecord:
 class LoadRecord:
     """A ``LoadComposableNodes`` / ``<load_composable_node>``: components sent to a container.
 
-    ``target`` is the container's name as given (a substitution), ``None`` when the target
-    is a container action (launch_ros then takes that action's own full name).
+    ``target`` is the container's name as launch_ros takes it: the name given, or a
+    container action's full name once it ran; ``None`` when not known.
     """
 
     origin: Origin

@@ -322,20 +322,14 @@ class LoadComposableNodes(Action):
 
     def to_ir(self, cv: Converter) -> a.Action:
         target = self._target_container
-        if isinstance(target, ComposableNodeContainer):
-            ir_target: s.Sub | a.Action = _container_name(target, cv)
-        else:
+        ir_target: s.Sub | a.Action | None = (
+            cv.action(target) if isinstance(target, ComposableNodeContainer) else None)
+        if ir_target is None:  # launch_ros takes the container's node_name once it ran
             ir_target = cv.sub(target)
         return a.LoadComposableNodes(
             **cv_common(self, cv), target=ir_target,
             composable_nodes=tuple(d.to_description(cv) for d in self._descriptions),
-            by_action=isinstance(target, ComposableNodeContainer),
         )
-
-
-def _container_name(container: ComposableNodeContainer, cv: Converter) -> s.Sub:
-    parts = [cv.sub(container._node_namespace), s.Text("/"), cv.sub(container._node_name)]
-    return s.concat(parts)
 
 
 class PushRosNamespace(Action):

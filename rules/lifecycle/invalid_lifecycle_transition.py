@@ -7,6 +7,7 @@ from collections.abc import Hashable, Iterator
 from launchverify.graph import LaunchGraph
 from launchverify.lifecycle import bringup
 from launchverify.lifecycle.verdicts import (
+    impossible_handler_pairs,
     refused_transitions,
     report,
     unanswerable_requests,
@@ -28,8 +29,13 @@ class InvalidLifecycleTransition(PollingRule):
     `DESTROY`, which the state machine does not have. When one request's success makes
     another fail, the first is reported; `--explain` prints the trace.
 
-    A handler waiting under a label no lifecycle event carries is LV508's; what it gates
-    in the bring-up is LV503's.
+    It also reports an `OnStateTransition` that awaits a transition the node cannot take
+    from a state: labels rcl publishes, each in its own field, that no single event
+    carries together (`start_state='unconfigured', goal_state='inactive'`: configure
+    publishes unconfigured -> configuring, then configuring -> inactive), at the argument
+    to change. A label rcl never publishes in its field (`'activated'`, `'Active'`,
+    `start_state='finalized'`, any `transition=` before rolling) is LV508's; what such a
+    handler gates in the bring-up is LV503's.
 
     ## Why it matters
     The node logs `Unable to start transition`, launch logs `Failed to make transition`,
@@ -62,6 +68,8 @@ class InvalidLifecycleTransition(PollingRule):
             yield asked, None if verdict is None else report(self, verdict)
 
     def direct(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        for verdict in impossible_handler_pairs(graph):
+            yield report(self, verdict)
         analysis = bringup(graph)
         for verdict in refused_transitions(graph, analysis) if analysis else ():
             yield report(self, verdict)

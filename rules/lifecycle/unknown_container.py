@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph, LoadRecord
+from launchverify.ir.subst import Sub
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 from launchverify.suggest import sole_spelling
 
@@ -26,9 +27,10 @@ class UnknownContainer(Rule):
 
     A target that no container comes close to is not reported: the container may come
     from another launch or a robot's running system. Nor is one when a node's name is not
-    known before launch, when part of the launch could not be read, or in a file that
-    another launch file includes, checked alone (its includers' namespaces decide where
-    the container runs; it is judged through them).
+    known before launch, when a process started by command may be a container, when part
+    of the launch could not be read, or in a file that another launch file includes,
+    checked alone (its includers' namespaces decide where the container runs; it is
+    judged through them).
 
     ## Why it matters
     launch_ros waits for `<target>/_container/load_node` with no timeout: the components
@@ -60,6 +62,9 @@ class UnknownContainer(Rule):
                  and load.target is not None]
         if not loads or not graph.launchable_alone() or not graph.complete_as_given():
             return  # an includer's namespaces may put the container where the target says
+        if any(_may_host(graph, p.cmd) for p in graph.processes
+               if graph.runs(p.origin) is not False):
+            return  # a process started by command may be the container, renamed
         names: set[str] = set()
         containers: dict[str, object] = {}
         for node in graph.nodes:
@@ -93,6 +98,12 @@ class UnknownContainer(Rule):
         count = f"{load.components} component{'s' * (load.components != 1)}"
         yield self.finding(load.origin, related=related, count=count, target=target,
                            meant=repr(meant))
+
+
+def _may_host(graph: LaunchGraph, cmd: tuple[Sub, ...]) -> bool:
+    """Return whether a process's command may start a container (or is not known)."""
+    words = [graph.base(word) for word in cmd]
+    return any(w is None or "container" in w for w in words)
 
 
 def _near(target: str, containers: list[str]) -> str | None:

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
-from launchverify.lifecycle.verdicts import dead_handler_labels, report
+from launchverify.lifecycle.verdicts import report, unknown_handler_labels
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 
 
@@ -16,18 +16,18 @@ class UnknownLifecycleLabel(Rule):
     Checks the labels of every `OnStateTransition(start_state=, goal_state=,
     transition=)` against rcl's state machine, at the argument to change, with the label
     most likely meant. launch_ros compares each with the event's label by `==`, so the
-    handler never fires when a label is not one rcl publishes (`'activated'`,
-    `'configured'`, `'Active'`, `transition='activating'`, a substitution), when no single
-    event carries the pair (`start_state='unconfigured', goal_state='inactive'`: configure
-    publishes unconfigured -> configuring, then configuring -> inactive), or when a state
-    is never left or reached (`start_state='finalized'`). Before rolling, rcl publishes
+    handler never fires when a label is not one rcl publishes in its field
+    (`'activated'`, `'configured'`, `'Active'`, `transition='activating'`, a
+    substitution), or when a state is never left or reached (`start_state='finalized'`).
+    Before rolling, rcl publishes
     events with an empty transition label (ros2/rcl#1019), so for a distribution checked
     (`--distro`, `ROS_DISTRO`) up to kilted any `transition=` is reported too. A handler
     with its own `matcher` is not checked: launch_ros then ignores the labels.
 
     What such a handler gates in the bring-up (the activation it would send, the nodes
-    waiting for it) is LV503's; a transition the node cannot take from its state is
-    LV504's.
+    waiting for it) is LV503's. Labels rcl publishes, each in its field, that no single
+    event carries together (`start_state='unconfigured', goal_state='inactive'`) await a
+    transition the node cannot take from that state: LV504's.
 
     ## Why it matters
     Nothing is logged at all: the handler never fires, and what it runs (the activation,
@@ -52,5 +52,5 @@ class UnknownLifecycleLabel(Rule):
     message = "{text}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        for verdict in dead_handler_labels(graph):
+        for verdict in unknown_handler_labels(graph):
             yield report(self, verdict)

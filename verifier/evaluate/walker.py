@@ -117,6 +117,8 @@ class Walker:
         self.executed_processes: dict[tuple[object, ...], int | None] = {}
         self.file_stack: list[tuple[Path, tuple[tuple[str | None, str], ...]]] = []
         self.incomplete = False  # something before this point was not understood
+        # the container actions that ran, by id, with their full names (LoadComposableNodes)
+        self.container_names: dict[int, tuple[a.Action, s.Sub | None]] = {}
 
     # ------------------------------------------------------------------ recording
 
@@ -975,16 +977,25 @@ class Walker:
 
     def do_ComposableNodeContainer(self, action: a.ComposableNodeContainer, ctx: Ctx) -> None:
         container = self.nodes.run_node(action, ctx)
+        self.container_names[id(action)] = (action, container.fqn)
         for description in action.composable_nodes:
             self.nodes.run_composable(description, container.fqn, ctx)
 
     def do_LoadComposableNodes(self, action: a.LoadComposableNodes, ctx: Ctx) -> None:
-        reducer = self.reducer.at(ctx, action.span)
-        target = reducer.reduce(action.target) if isinstance(action.target, s.Sub) else None
+        """Load into the container as launch_ros names it (``LoadComposableNodes.execute``).
+
+        A container action given as the target stands for its ``node_name``: its full name,
+        pushed namespace included, once it has run (before, launch_ros raises: unknown).
+        """
+        target: s.Sub | None = None
+        if isinstance(action.target, s.Sub):
+            target = self.reducer.at(ctx, action.span).reduce(action.target)
+        else:
+            ran = self.container_names.get(id(action.target))
+            target = ran[1] if ran is not None and ran[0] is action.target else None
         for description in action.composable_nodes:
             self.nodes.run_composable(description, target, ctx)
-        self.graph.loads.append(LoadRecord(ctx.origin(action.span),
-                                           None if action.by_action else target,
+        self.graph.loads.append(LoadRecord(ctx.origin(action.span), target,
                                            len(action.composable_nodes)))
 
     def record_name(self, kind: str, value: s.Sub, origin: Origin) -> None:

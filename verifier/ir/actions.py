@@ -424,7 +424,6 @@ class LoadComposableNodes(Action):
 
     target: Sub | Action
     composable_nodes: tuple[ComposableNode, ...]
-    by_action: bool = False  # the target was a container action: its own full name counts
     kind = "load_composable_node"
 
 

@@ -100,14 +100,30 @@ def unanswerable_requests(graph: LaunchGraph,
 # ----------------------------------------------------------------------------- LV508
 
 
-def dead_handler_labels(graph: LaunchGraph) -> list[Verdict]:
-    """``OnStateTransition`` labels no lifecycle event carries: the handler never fires.
+def impossible_handler_pairs(graph: LaunchGraph) -> list[Verdict]:
+    """``OnStateTransition`` labels rcl publishes, but never together in one event.
 
-    Reported at the argument to change, with the label the author most likely meant.
+    The handler awaits a transition the node cannot take from that state
+    (``'unconfigured'`` -> ``'inactive'`` passes through ``'configuring'``): LV504.
+    """
+    return _dead_label_verdicts(graph, pair=True)
+
+
+def unknown_handler_labels(graph: LaunchGraph) -> list[Verdict]:
+    """``OnStateTransition`` labels rcl never publishes in their field: LV508."""
+    return _dead_label_verdicts(graph, pair=False)
+
+
+def _dead_label_verdicts(graph: LaunchGraph, pair: bool) -> list[Verdict]:
+    """Return the handlers that never fire, of one kind (``pair`` or not).
+
+    Each at the argument to change, with the label the author most likely meant.
     """
     out = []
     for dead in dead_handlers(graph):
         problem = dead.problem
+        if problem.pair != pair:
+            continue
         message = (f"{problem.argument} matches no lifecycle event, so this handler never "
                    f"fires and what it runs never starts: {problem.reason}")
         if problem.hint is not None:

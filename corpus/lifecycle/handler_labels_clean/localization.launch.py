@@ -22,7 +22,7 @@ def generate_launch_description():
                                name='map_server', namespace='')
     amcl = LifecycleNode(package='nav2_amcl', executable='amcl', name='amcl', namespace='')
     on_amcl_inactive = OnStateTransition(
-        target_lifecycle_node=amcl, start_state='configuring',  # expect-not: LV508
+        target_lifecycle_node=amcl, start_state='configuring',  # expect-not: LV504 LV508
         goal_state='inactive',
         entities=[change(amcl, Transition.TRANSITION_ACTIVATE)])
     return LaunchDescription([
@@ -33,14 +33,14 @@ def generate_launch_description():
         # expect-not: LV503
         RegisterEventHandler(OnStateTransition(
             target_lifecycle_node=map_server,
-            goal_state='inactive',  # expect-not: LV508
+            goal_state='inactive',  # expect-not: LV504 LV508
             entities=[change(map_server, Transition.TRANSITION_ACTIVATE)])),
         # expect-not: LV503
         RegisterEventHandler(on_amcl_inactive),
         # expect-not: LV503
         RegisterEventHandler(OnStateTransition(
             target_lifecycle_node=amcl,
-            start_state='activating', goal_state='active',  # expect-not: LV508
+            start_state='activating', goal_state='active',  # expect-not: LV504 LV508
             entities=[Node(package='nav2_planner', executable='planner_server',
                            name='planner_server')])),
         # expect-not: LV503
@@ -49,11 +49,11 @@ def generate_launch_description():
             entities=[LogInfo(msg='map ready')])),
         # fires on the way down, even on a failed shutdown
         RegisterEventHandler(OnStateTransition(
-            target_lifecycle_node=map_server, goal_state='finalized',  # expect-not: LV508
+            target_lifecycle_node=map_server, goal_state='finalized',  # expect-not: LV504 LV508
             entities=[LogInfo(msg='map server finalized')])),
         # a transition label: events carry one on rolling (ros2/rcl#1269), so with no
         # distribution given this may fire; --distro jazzy reports it (test_lifecycle.py)
         RegisterEventHandler(OnStateTransition(
-            target_lifecycle_node=map_server, transition='configure',  # expect-not: LV508
+            target_lifecycle_node=map_server, transition='configure',  # expect-not: LV504 LV508
             entities=[LogInfo(msg='map server configuring')])),
     ])

@@ -30,17 +30,17 @@ def generate_launch_description():
         # expect: LV503
         RegisterEventHandler(OnStateTransition(
             target_lifecycle_node=map_server,
-            goal_state='configured',  # expect: LV508
+            goal_state='configured',  # expect: LV508  # expect-not: LV504
             entities=[change(map_server, Transition.TRANSITION_ACTIVATE)])),
         # expect-not: LV503
         RegisterEventHandler(OnStateTransition(
-            target_lifecycle_node=amcl, goal_state='inactive',  # expect-not: LV508
+            target_lifecycle_node=amcl, goal_state='inactive',  # expect-not: LV504 LV508
             entities=[change(amcl, Transition.TRANSITION_ACTIVATE)])),
         # rcl's labels are lower case: the planner never starts
         # expect: LV503
         RegisterEventHandler(OnStateTransition(
             target_lifecycle_node=amcl,
-            goal_state='Active',  # expect: LV508
+            goal_state='Active',  # expect: LV508  # expect-not: LV504
             entities=[Node(package='nav2_planner', executable='planner_server',
                            name='planner_server')])),
         # waits for map_server to become active, which only the 'configured' handler would

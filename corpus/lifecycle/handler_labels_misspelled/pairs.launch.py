@@ -1,4 +1,5 @@
-"""Labels that exist, but no single event carries them together (or a state is no label)."""
+"""Labels that exist, but no single event carries them together (LV504), or that rcl never
+publishes in their field (LV508)."""
 from launch import LaunchDescription
 from launch.actions import EmitEvent, LogInfo, RegisterEventHandler
 from launch.events import matches_action
@@ -28,29 +29,29 @@ def generate_launch_description():
         # expect: LV503
         RegisterEventHandler(OnStateTransition(
             target_lifecycle_node=talker,
-            start_state='unconfigured',  # expect: LV508
+            start_state='unconfigured',  # expect: LV504
             goal_state='inactive',
             entities=[change(talker, Transition.TRANSITION_ACTIVATE)])),
         # 'activating' is a state; the transition's label is 'activate'
         # expect: LV503
         RegisterEventHandler(OnStateTransition(
             target_lifecycle_node=listener, goal_state='inactive',
-            transition='activating',  # expect: LV508
+            transition='activating',  # expect: LV508  # expect-not: LV504
             entities=[change(listener, Transition.TRANSITION_ACTIVATE)])),
         # nothing goes from active to unconfigured in one event; it gates only a log,
         # so the bring-up does not depend on it
         # expect-not: LV503
         RegisterEventHandler(OnStateTransition(
-            target_lifecycle_node=talker, start_state='active',  # expect: LV508
+            target_lifecycle_node=talker, start_state='active',  # expect: LV504
             goal_state='unconfigured',
             entities=[LogInfo(msg='talker cleaned up')])),
         # no transition leaves 'finalized'
         RegisterEventHandler(OnStateTransition(
-            target_lifecycle_node=talker, start_state='finalized',  # expect: LV508
+            target_lifecycle_node=talker, start_state='finalized',  # expect: LV508  # expect-not: LV504
             entities=[LogInfo(msg='talker gone')])),
         # a matcher of its own: launch_ros ignores the labels
         RegisterEventHandler(OnStateTransition(
-            target_lifecycle_node=talker, goal_state='whatever',  # expect-not: LV508
+            target_lifecycle_node=talker, goal_state='whatever',  # expect-not: LV504 LV508
             matcher=lambda event: True,
             entities=[LogInfo(msg='talker moved')])),
     ])
