@@ -59,8 +59,9 @@ def target_interface(package: str, target: Target, lookup: Lookup | None = None,
     """
     results = [file_interfaces(path) for path in target.sources]
     bases, missing = inherited(results, target.sources, lookup)
-    results += bases + _library_headers(results, target, lookup)
-    results += _generated(results, generated or {})
+    # read for the declarations only: what the node's own files create stays theirs
+    declaring = [*results, *bases, *_library_headers(results, target, lookup),
+                 *_generated(results, generated or {})]
     others = {_class(p) for p in target.other_components}
     aliases = dict(a for r in results for a in r.aliases)
     members = dict(m for r in results for m in r.members)
@@ -81,11 +82,11 @@ def target_interface(package: str, target: Target, lookup: Lookup | None = None,
                         "the endpoints they create are not listed")
     if not target.sources and not problems:
         problems.append("no source file found")
-    parameters = _parameters(results, bool(loaders))
+    parameters = _parameters(declaring, bool(loaders))
     return NodeInterface(package, target.executable, target.component,
                          _node_name(results, target), tuple(endpoints),
                          target.sources, tuple(problems), parameters=parameters,
-                         parameters_open=_parameters_open(results, target, parameters,
+                         parameters_open=_parameters_open(declaring, target, parameters,
                                                           missing),
                          parameters_undeclared=next(
                              (r.undeclared for r in results if r.undeclared), None))
