@@ -184,6 +184,7 @@ class PackageIndex:
         self._roots: dict[Path, Package] | None = None  # share/source folder -> package
         self._located: dict[Path, Path | None] = {}
         self._installed_from: dict[Path, list[Path]] = {}
+        self._files: dict[str, list[Path]] = {}  # package -> its source files (package_files)
         self._python_packages: dict[str, list[Path]] | None = None  # name -> packages
         self._site: list[Path] | None = None
         self.sources: dict[str, list[Path]] = {}  # every source folder of each name
@@ -249,13 +250,17 @@ class PackageIndex:
         return None
 
     def package_files(self, name: str) -> list[Path]:
-        """Return the C++ and Python files of a package's sources here (none when built)."""
-        found = self.find(name)
-        if found is None or found.source is None:
-            return []
-        suffixes = {".cpp", ".cc", ".cxx", ".hpp", ".hh", ".hxx", ".h", ".py"}
-        return sorted(p for p in found.source.rglob("*") if p.suffix in suffixes
-                      and p.is_file() and not p.is_symlink())
+        """Return the C++ and Python files of a package's sources here (none when built).
+
+        Listed once per index: every node class deriving from a class of that package asks.
+        """
+        if name not in self._files:
+            found = self.find(name)
+            suffixes = {".cpp", ".cc", ".cxx", ".hpp", ".hh", ".hxx", ".h", ".py"}
+            self._files[name] = [] if found is None or found.source is None else sorted(
+                p for p in found.source.rglob("*") if p.suffix in suffixes
+                and p.is_file() and not p.is_symlink())
+        return self._files[name]
 
     def lookup(self) -> Lookup:
         """Return where the topology readers find other packages' headers and files."""
