@@ -32,6 +32,7 @@ from launchverify.rules.lifecycle.unknown_container import UnknownContainer
 from launchverify.rules.lifecycle.unknown_controller import UnknownController
 from launchverify.rules.lifecycle.unknown_lifecycle_label import UnknownLifecycleLabel
 from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
+from launchverify.rules.naming.invalid_domain_id import InvalidDomainId
 from launchverify.rules.naming.invalid_name import InvalidName
 from launchverify.rules.naming.remap_collision import RemapCollision
 from launchverify.rules.parameters.inconsistent_sim_time import InconsistentSimTime
@@ -57,6 +58,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     DuplicateNodeName,        # LV101
     InvalidName,              # LV102
     RemapCollision,           # LV103
+    InvalidDomainId,          # LV104
     UndeclaredArgument,       # LV201
     UnusedArgument,           # LV202
     InvalidDefault,           # LV203

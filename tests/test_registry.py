@@ -66,5 +66,5 @@ def test_resolve_accepts_codes_slugs_and_prefixes() -> None:
 
 def test_select_and_ignore() -> None:
     chosen = {r.code for r in select(["LV1", "LV201"], ["LV102"])}
-    assert chosen == {"LV101", "LV103", "LV201"}
+    assert chosen == {"LV101", "LV103", "LV104", "LV201"}
     assert len(select(None, None)) == len(all_rules())

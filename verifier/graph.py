@@ -114,6 +114,19 @@ class LoadRecord:
 
 
 @dataclass(frozen=True, slots=True)
+class EnvRecord:
+    """An environment variable the launch sets, and where.
+
+    ``SetEnvironmentVariable`` / ``<set_env>``, or a process's own ``additional_env`` /
+    ``<env>``.
+    """
+
+    name: str
+    value: Sub | None  # None: unset
+    origin: Origin
+
+
+@dataclass(frozen=True, slots=True)
 class ArgumentRecord:
     """A launch argument declaration as it executed."""
 
@@ -430,6 +443,7 @@ class LaunchGraph:
     requests: list[TransitionRequest] = field(default_factory=list)
     launches: list[LaunchRecord] = field(default_factory=list)  # what ``run`` starts
     loads: list[LoadRecord] = field(default_factory=list)  # components sent to containers
+    environment_sets: list[EnvRecord] = field(default_factory=list)  # what the launch sets
     logs: dict[int, tuple[str, Sub]] = field(default_factory=dict)  # execution: level, text
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections import defaultdict
 from collections.abc import Iterator
 
+from launchverify.dds.discovery import discovery_of
 from launchverify.events import meeting_origin
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.ir import subst as s
@@ -129,6 +130,8 @@ def collision(graph: LaunchGraph, first: NodeRecord, second: NodeRecord,
     first_origin = meeting_origin(graph, first, second)
     if first_origin is None:
         return None  # one starts only once the other has ended for good
+    if discovery_of(graph, first).apart(discovery_of(graph, second)):
+        return None  # different DDS domains: neither ever sees the other
     if not _same_unknowns(graph, first.fqn, second.fqn):
         return None
     first_text, second_text = graph.base(first.fqn), graph.base(second.fqn)

@@ -46,6 +46,7 @@ from launchverify.graph import (
     ArgumentRecord,
     ConditionRecord,
     ConfigRead,
+    EnvRecord,
     ExecutedRecord,
     FileRef,
     HandlerRecord,
@@ -690,8 +691,9 @@ class Walker:
         reducer = self.reducer.at(ctx, action.span)
         name = reducer.text(action.name)
         if name is not None:
-            self.scopes.env[name] = _guard_env(ctx, reducer.reduce(action.value),
-                                               self.scopes.env.get(name), name)
+            value = reducer.reduce(action.value)
+            self.graph.environment_sets.append(EnvRecord(name, value, ctx.origin(action.span)))
+            self.scopes.env[name] = _guard_env(ctx, value, self.scopes.env.get(name), name)
 
     def do_UnsetEnv(self, action: a.UnsetEnv, ctx: Ctx) -> None:
         name = self.reducer.at(ctx, action.span).text(action.name)
@@ -947,6 +949,7 @@ class Walker:
             reduced = reducer.reduce(value)
             if key is not None:
                 env.append((key, reduced))
+                self.graph.environment_sets.append(EnvRecord(key, reduced, ctx.origin(span)))
 
         def timeout(value: s.Sub | float | None) -> s.Sub | float | None:
             return reducer.reduce(value) if isinstance(value, s.Sub) else value

@@ -81,9 +81,19 @@ class GraphView:
             "remappings": [[self.value(r.src), self.value(r.dst)] for r in node.remappings],
             "parameters": [self.parameter(p) for p in node.parameters],
             "effective_parameters": self.effective(node),
+            "dds": self.dds(node),
             **self.where(node.origin),
             **self.interface(node),
         }
+
+    def dds(self, node: NodeRecord) -> dict[str, Any] | None:
+        """Return the node's DDS domain and discovery range, as given; ``None`` if symbolic."""
+        if self.symbolic:
+            return None
+        from launchverify.dds.discovery import discovery_of
+
+        found = discovery_of(self.graph, node)
+        return {"domain": found.domain, "discovery_range": found.range}
 
     def interface(self, node: NodeRecord) -> dict[str, Any]:
         """Return ``{"interface": ...}`` for a node when endpoints are composed, else ``{}``."""

@@ -201,11 +201,15 @@ def together(graph: LaunchGraph, first: NodeRecord, second: NodeRecord) -> Witne
 
     As LV101 decides it: the event structure may keep them apart (one starts once the
     other has ended), and their conditions may exclude each other; an empty witness
-    means under the arguments as given.
+    means under the arguments as given. Nodes in different DDS domains never meet.
     """
     first_origin = meeting_origin(graph, first, second)
     if first_origin is None:
         return None
+    from launchverify.dds.discovery import discovery_of
+
+    if discovery_of(graph, first).apart(discovery_of(graph, second)):
+        return None  # different DDS domains: they never meet
     if graph.runs(first_origin) is True and graph.runs(second.origin) is True:
         return Witness()
     return reasoner_for(graph).together(first_origin.path, second.origin.path)
