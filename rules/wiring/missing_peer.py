@@ -51,6 +51,10 @@ class MissingPeer(PollingRule):
     name is only known at run time. It judges a launch file only where it is the whole
     launch: as an entry point, complete as given, or through the files that include it.
 
+    Ends in different DDS domains never meet (`ROS_DOMAIN_ID` set per group or per
+    node): a subscription whose every publisher runs in another domain is reported too,
+    naming both domains, unless a `domain_bridge` runs in the launch.
+
     ## Why it matters
     Nothing fails: the node starts, waits for data that never comes, and `ros2 topic
     list` shows both names. This is the "why does my node receive nothing" bug, usually
@@ -117,9 +121,11 @@ class MissingPeer(PollingRule):
         assert end.name is not None
         section = ROLES[end.endpoint.kind][0]
         name = end.name
-        if (built_in(name) or name_matches(name, external)
-                or view.writers(section, name) or view.anything_may_write(section)):
+        if built_in(name) or name_matches(name, external) or view.anything_may_write(section):
             return None
+        writers = view.writers(section, name)
+        if writers:
+            return self.across_domains(view, composed, end, section, writers)
         close = close_writers(view, composed, end, section)
         who = describe_node(view, composed.node)
         related: tuple[Related, ...] = (
@@ -141,6 +147,33 @@ class MissingPeer(PollingRule):
             hint=", nor anything close: fed from outside the launch? (then list it in "
                  "external-names)")
         return dataclasses.replace(finding, severity=Severity.INFO)
+
+
+    def across_domains(self, view: WiringView, composed: NodeEndpoints, end: ComposedEndpoint,
+                       section: str, writers: list[ComposedEndpoint]) -> Finding | None:
+        """Return the finding when every writer of the name runs in another DDS domain.
+
+        Nothing crosses domains but a bridge: with a ``domain_bridge`` in the launch (its
+        topics are not read yet), nothing is claimed.
+        """
+        from launchverify.dds.discovery import discovery_of
+        from launchverify.topology.wiring import VERBS, describe_node
+
+        mine = discovery_of(view.graph, composed.node)
+        if not all(mine.apart(discovery_of(view.graph, w.node)) for w in writers) or any(
+                view.graph.base(n.package) == "domain_bridge" for n in view.graph.nodes):
+            return None
+        writer = writers[0]
+        theirs = discovery_of(view.graph, writer.node)
+        peer = describe_node(view, writer.node)
+        return self.finding(
+            composed.node.origin, node=describe_node(view, composed.node),
+            verb=VERBS[end.endpoint.kind], name=end.name, writes=WRITE_VERBS[section],
+            hint=(f" in its DDS domain {mine.domain}: {peer} {WRITE_VERBS[section]} it in "
+                  f"domain {theirs.domain}, and no bridge carries it"),
+            related=(Related(end.endpoint.span, f"{VERBS[end.endpoint.kind]} "
+                             f"{end.name} here"),
+                     Related(writer.node.origin.span, f"{peer} is launched here")))
 
 
 def built_in(name: str) -> bool:

@@ -1,0 +1,15 @@
+#include <memory>
+
+#include "rclcpp/rclcpp.hpp"
+#include "sensor_msgs/msg/battery_state.hpp"
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  auto node = std::make_shared<rclcpp::Node>("fleet_dashboard");
+  auto battery = node->create_subscription<sensor_msgs::msg::BatteryState>(
+    "/fleet/battery", 10, [](sensor_msgs::msg::BatteryState::ConstSharedPtr) {});
+  rclcpp::spin(node);
+  rclcpp::shutdown();
+  return 0;
+}
