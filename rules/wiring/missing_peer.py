@@ -53,7 +53,9 @@ class MissingPeer(PollingRule):
 
     Ends in different DDS domains never meet (`ROS_DOMAIN_ID` set per group or per
     node): a subscription whose every publisher runs in another domain is reported too,
-    naming both domains, unless a `domain_bridge` runs in the launch.
+    naming both domains, unless a `domain_bridge` forwards the topic between them (its
+    YAML configuration: `from_domain`, `to_domain`, `topics`); a bridge whose
+    configuration cannot be read may forward anything.
 
     ## Why it matters
     Nothing fails: the node starts, waits for data that never comes, and `ros2 topic
@@ -153,15 +155,21 @@ class MissingPeer(PollingRule):
                        section: str, writers: list[ComposedEndpoint]) -> Finding | None:
         """Return the finding when every writer of the name runs in another DDS domain.
 
-        Nothing crosses domains but a bridge: with a ``domain_bridge`` in the launch (its
-        topics are not read yet), nothing is claimed.
+        Nothing crosses domains but a bridge: one whose configuration forwards the topic
+        between the two domains serves it, and a bridge whose configuration is not known
+        may serve anything.
         """
+        from launchverify.dds.bridges import carried, crossings
         from launchverify.dds.discovery import discovery_of
         from launchverify.topology.wiring import VERBS, describe_node
 
         mine = discovery_of(view.graph, composed.node)
-        if not all(mine.apart(discovery_of(view.graph, w.node)) for w in writers) or any(
-                view.graph.base(n.package) == "domain_bridge" for n in view.graph.nodes):
+        if not all(mine.apart(discovery_of(view.graph, w.node)) for w in writers):
+            return None
+        bridges = crossings(view.graph)
+        if bridges is None or any(
+                carried(bridges, end.name or "", discovery_of(view.graph, w.node).domain,
+                        mine.domain) for w in writers):
             return None
         writer = writers[0]
         theirs = discovery_of(view.graph, writer.node)

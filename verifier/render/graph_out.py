@@ -86,6 +86,15 @@ class GraphView:
             **self.interface(node),
         }
 
+    def bridges(self) -> list[dict[str, Any]] | None:
+        """Return what domain_bridge nodes forward; ``None`` when one's config is not known."""
+        from launchverify.dds.bridges import crossings
+
+        found = crossings(self.graph)
+        return None if found is None else [
+            {"topic": c.topic, "type": c.type, "from_domain": c.source, "to_domain": c.target}
+            for c in found]
+
     def dds(self, node: NodeRecord) -> dict[str, Any] | None:
         """Return the node's DDS domain and discovery range, as given; ``None`` if symbolic."""
         if self.symbolic:
@@ -180,6 +189,7 @@ class GraphView:
                 for i in graph.includes if self.shown(i.origin)
             ],
             "lifecycle": self.lifecycle(),
+            "bridges": self.bridges(),
             "arguments": [
                 {"name": a.name, "default": self.value(a.default), "value": self.value(a.value),
                  "description": a.description,

@@ -79,6 +79,19 @@ class WiringView:
                     or self.unresolved.get((section, WRITERS[section])))
 
 
+def _known_bridge(graph: LaunchGraph, composed: NodeEndpoints) -> bool:
+    """Return whether a node is a domain_bridge whose configuration says what it forwards.
+
+    It then publishes only what it carries across domains (``dds.bridges``), which the
+    rules ask about by domain: it is no node that may publish anything.
+    """
+    if composed.package != "domain_bridge":
+        return False
+    from launchverify.dds.bridges import crossings
+
+    return crossings(graph) is not None
+
+
 def reads_sources(graph: LaunchGraph, ctx: RuleContext) -> bool:
     """Return whether a node that may run belongs to a package with sources here.
 
@@ -163,7 +176,7 @@ def view_of(graph: LaunchGraph, source: InterfaceSource) -> WiringView:
                       {section: {c.name: c for c in grouped[section]} for section in SECTIONS})
     for composed in nodes:
         if composed.interface is None:
-            if not silent(composed):
+            if not silent(composed) and not _known_bridge(graph, composed):
                 view.unknown_nodes.append(composed)
             continue
         for end in composed.endpoints:
