@@ -177,3 +177,49 @@ def test_build_files_name_no_file_outside_their_package(tmp_path: Path) -> None:
     assert index.header("pkg/../../../secret.yaml") is None
     (package / "include" / "pkg" / "base.hpp").write_text("// a header\n")
     assert index.header("pkg/base.hpp") == package / "include" / "pkg" / "base.hpp"
+
+
+def _package(root: Path, name: str, files: dict[str, str]) -> Path:
+    folder = root / name
+    for relative, text in files.items():
+        (folder / relative).parent.mkdir(parents=True, exist_ok=True)
+        (folder / relative).write_text(text)
+    (folder / "package.xml").write_text(
+        f"<package format='3'><name>{name}</name><version>0.0.0</version><description>d"
+        "</description><maintainer email='a@b.c'>m</maintainer><license>MIT</license>"
+        "</package>")
+    return folder
+
+
+def test_a_base_class_in_a_sibling_package_declares_on_the_node(tmp_path: Path) -> None:
+    """rtabmap's nodes derive from ``CommonDataSubscriber`` (another package): what its code
+    declares is the node's; a base whose code is nowhere leaves the node open."""
+    from launchverify.topology.nodes import package_interfaces
+    from launchverify.workspace.packages import Package, PackageIndex
+
+    _package(tmp_path, "sync", {
+        "include/sync/subscriber.hpp": "namespace sync { class Subscriber {\n public:\n"
+                                       "  void setup(rclcpp::Node & node);\n}; }\n",
+        "src/subscriber.cpp": '#include "sync/subscriber.hpp"\nnamespace sync {\n'
+                              "void Subscriber::setup(rclcpp::Node & node) {\n"
+                              '  node.declare_parameter("approx_sync", true);\n}\n}\n'})
+    node = ('#include "sync/subscriber.hpp"\n#include "rclcpp/rclcpp.hpp"\n'
+            "class Viz : public rclcpp::Node, public {base} {{\n public:\n"
+            '  Viz() : Node("viz") {{ declare_parameter("rate", 1.0); }}\n}};\n'
+            "int main() {{ return 0; }}\n")
+    cmake = ("cmake_minimum_required(VERSION 3.8)\nproject(viz)\n"
+             "add_executable(viz src/viz.cpp)\ninstall(TARGETS viz DESTINATION lib/viz)\n")
+    for base, declared, open_ in (("sync::Subscriber", {"rate", "approx_sync"}, None),
+                                  ("other::Mixin", {"rate"}, "other::Mixin")):
+        folder = _package(tmp_path / base.replace("::", "_"), "viz",
+                          {"CMakeLists.txt": cmake, "src/viz.cpp": node.format(base=base)})
+        index = PackageIndex([tmp_path / base.replace("::", "_"), tmp_path / "sync"])
+        interface = next(i for i in package_interfaces(Package("viz", source=folder),
+                                                       index.lookup())
+                         if i.executable == "viz")
+        assert {p.name for p in interface.parameters} == declared
+        if open_ is None:
+            assert interface.parameters_open is None
+        else:
+            assert interface.parameters_open is not None and "Mixin" in \
+                interface.parameters_open

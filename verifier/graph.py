@@ -498,6 +498,19 @@ class LaunchGraph:
         self._texts_by_id[id(sub)] = (sub, text)
         return text
 
+    def launch_of(self, node: NodeRecord) -> LaunchRecord | None:
+        """Return the process record that starts a node (its command line), if any.
+
+        A component has none of its own: it runs in its container's process.
+        """
+        launches = self.derived.get("launch_of_node")
+        if launches is None:  # built once per graph: a fleet has many nodes
+            launches = {id(launch.node): launch for launch in self.launches
+                        if launch.node is not None}
+            self.derived["launch_of_node"] = launches
+        found = launches.get(id(node))
+        return found if isinstance(found, LaunchRecord) else None
+
     @property
     def processes(self) -> list[LaunchRecord]:
         """Return the plain processes (``ExecuteProcess``, ``<executable>``) it starts."""

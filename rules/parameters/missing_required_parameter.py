@@ -48,13 +48,14 @@ class MissingRequiredParameter(Rule):
                "and the launch never sets it: the node throws at start")
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        from launchverify.topology.contracts import contracts
-        from launchverify.topology.wiring import any_view, describe_node, knows_code
+        from launchverify.topology.contracts import judged
+        from launchverify.topology.wiring import describe_node
 
-        if not knows_code(graph, ctx):
+        found = judged(graph, ctx)
+        if found is None:
             return
-        view = any_view(graph, ctx)
-        for contract in contracts(view):
+        view, contracts = found
+        for contract in contracts:
             if not contract.values_known:
                 continue
             required = {p.name: p for p in contract.declared

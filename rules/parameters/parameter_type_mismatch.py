@@ -51,13 +51,14 @@ class ParameterTypeMismatch(Rule):
                "({value}): the node refuses it and fails at start")
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        from launchverify.topology.contracts import contracts
-        from launchverify.topology.wiring import any_view, describe_node, knows_code
+        from launchverify.topology.contracts import judged
+        from launchverify.topology.wiring import describe_node
 
-        if not knows_code(graph, ctx):
+        found = judged(graph, ctx)
+        if found is None:
             return
-        view = any_view(graph, ctx)
-        for contract in contracts(view):
+        view, contracts = found
+        for contract in contracts:
             interface = contract.composed.interface
             if contract.unmatched is not None or not contract.received.complete or (
                     interface is not None and interface.parameters_undeclared):

@@ -12,6 +12,7 @@ from launchverify.span import Span
 
 if TYPE_CHECKING:
     from launchverify.parameters import Contribution
+    from launchverify.topology.contracts import Contract
     from launchverify.topology.wiring import WiringView
 from launchverify.suggest import did_you_mean, sole_spelling
 
@@ -66,15 +67,16 @@ class UnknownParameter(Rule):
                "runs {what}")
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        from launchverify.topology.contracts import contracts
-        from launchverify.topology.wiring import any_view, describe_node, knows_code
+        from launchverify.topology.contracts import judged
+        from launchverify.topology.wiring import describe_node
 
-        if not knows_code(graph, ctx):
+        found = judged(graph, ctx)
+        if found is None:
             return
-        view = any_view(graph, ctx)
+        view, contracts = found
         reported: set[tuple[object, ...]] = set()
-        takers = _takers(view)
-        for contract in contracts(view):
+        takers = _takers(view, contracts)
+        for contract in contracts:
             if contract.open is not None:
                 continue
             known = contract.concrete_names()
@@ -106,7 +108,7 @@ class UnknownParameter(Rule):
                     yield finding
 
 
-def _takers(view: WiringView) -> dict[tuple[object, ...], int]:
+def _takers(view: WiringView, contracts: list[Contract]) -> dict[tuple[object, ...], int]:
     """Return, per place a value is written, how many nodes it reaches may take it.
 
     A dict or file given to several nodes (rtabmap's ``parameters`` list, passed to
@@ -114,14 +116,12 @@ def _takers(view: WiringView) -> dict[tuple[object, ...], int]:
     name one of them takes, or one reaching a node whose declarations are not all known,
     is no mistake of the others.
     """
-    from launchverify.topology.contracts import contracts
+    from launchverify.parameters import effective_parameters
+    from launchverify.topology.compose import named_record
 
-    judged = {id(c.composed.node): c for c in contracts(view)}
+    judged = {id(c.composed.node): c for c in contracts}
     reached: dict[tuple[object, ...], int] = {}
     for composed in view.nodes:
-        from launchverify.parameters import effective_parameters
-        from launchverify.topology.compose import named_record
-
         contract = judged.get(id(composed.node))
         received = contract.received if contract is not None else effective_parameters(
             view.graph, named_record(view.graph, composed))

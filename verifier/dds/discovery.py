@@ -62,21 +62,15 @@ def discovery_of(graph: LaunchGraph, node: NodeRecord) -> Discovery:
 
 def _process_of(graph: LaunchGraph, node: NodeRecord) -> LaunchRecord | None:
     """Return the process a node runs in: its own, or its container's."""
-    launches = graph.derived.get("launch_of_node")
-    if launches is None:
-        launches = {id(launch.node): launch for launch in graph.launches
-                    if launch.node is not None}
-        graph.derived["launch_of_node"] = launches
     if node.container is None:
-        found = launches.get(id(node))
-        return found if isinstance(found, LaunchRecord) else None
-    container = graph.base(node.container)
-    for record in graph.nodes:
-        if not record.composable and container is not None and graph.base(record.fqn) == \
-                "/" + container.strip("/"):
-            found = launches.get(id(record))
-            return found if isinstance(found, LaunchRecord) else None
-    return None
+        return graph.launch_of(node)
+    containers = graph.derived.get("containers_by_name")
+    if not isinstance(containers, dict):  # built once per graph: components are many
+        containers = {graph.base(r.fqn): r for r in graph.nodes if not r.composable}
+        graph.derived["containers_by_name"] = containers
+    name = graph.base(node.container)
+    container = containers.get("/" + name.strip("/")) if name is not None else None
+    return graph.launch_of(container) if isinstance(container, NodeRecord) else None
 
 
 def _variable(graph: LaunchGraph, launch: LaunchRecord | None, name: str,

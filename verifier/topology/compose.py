@@ -21,7 +21,7 @@ from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol
 
-from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, Origin
+from launchverify.graph import LaunchGraph, NodeRecord, Origin
 from launchverify.ir.subst import Sub, Text, walk
 from launchverify.ir.symbolic import Arg, EnvInput, Select
 from launchverify.models.ros2_control import CONTROL_NODE, MANAGER_NAME
@@ -311,16 +311,6 @@ class Composer:
         identity.name, identity.namespace = name, namespace
         return identity
 
-    def launch_of(self, node: NodeRecord) -> LaunchRecord | None:
-        """Return the process record that starts a node (its command line), if any."""
-        launches = self.graph.derived.get("launch_of_node")
-        if launches is None:  # built once per graph: a fleet has many nodes
-            launches = {id(launch.node): launch for launch in self.graph.launches
-                        if launch.node is not None}
-            self.graph.derived["launch_of_node"] = launches
-        found = launches.get(id(node))
-        return found if isinstance(found, LaunchRecord) else None
-
     def ros_argument_rules(self, node: NodeRecord) -> tuple[list[RuleLike], str | None]:
         """Return the ``-r``/``--remap`` rules of a node's command line (they come first).
 
@@ -329,7 +319,7 @@ class Composer:
         puts ``--ros-args`` before them). The second item says why the rules are not all
         known (a word not known before launch where a rule could be), ``None`` when they are.
         """
-        launch = self.launch_of(node)
+        launch = self.graph.launch_of(node)
         if launch is None or not (launch.arguments or launch.ros_arguments):
             return [], None
         where = f"{display_path(launch.origin.span.file)}:{launch.origin.span.line}"

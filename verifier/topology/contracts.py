@@ -19,6 +19,8 @@ from launchverify.parameters import EffectiveParameters, effective_parameters
 from launchverify.topology.model import Parameter
 
 if TYPE_CHECKING:
+    from launchverify.graph import LaunchGraph
+    from launchverify.rule import RuleContext
     from launchverify.topology.compose import NodeEndpoints
     from launchverify.topology.wiring import WiringView
 
@@ -62,6 +64,20 @@ class Contract:
         return sorted({p.name for p in self.declared if "*" not in p.name})
 
 
+def judged(graph: LaunchGraph, ctx: RuleContext) -> tuple[WiringView, list[Contract]] | None:
+    """Return the graph's view and its nodes' contracts for the parameter rules.
+
+    ``None`` when no node that may run has sources here or a shipped model: then there is
+    no code to hold the launch to, and nothing is composed.
+    """
+    from launchverify.topology.wiring import any_view, knows_code
+
+    if not knows_code(graph, ctx):
+        return None
+    view = any_view(graph, ctx)
+    return view, contracts(view)
+
+
 def contracts(view: WiringView) -> list[Contract]:
     """Return the contract of every node of the view whose code was read (once per view)."""
     kept = view.graph.derived.setdefault("contracts", {})
@@ -91,7 +107,7 @@ def _contract(view: WiringView, composed: NodeEndpoints) -> Contract:
 
 def _sets_parameters(view: WiringView, composed: NodeEndpoints) -> bool:
     """Return whether the node's command line may set parameters (``-p``, a file)."""
-    launch = view.composer.launch_of(composed.node)
+    launch = view.graph.launch_of(composed.node)
     if launch is None:
         return False
     words = view.composer.words(launch.arguments + launch.ros_arguments)

@@ -75,7 +75,7 @@ class Spawners:
                 ) -> tuple[NodeEndpoints, list[NodeEndpoints]]:
         """Return a spawner as known from its command line, and the controllers it loads."""
         node = entry.node
-        launch = self.composer.launch_of(node)
+        launch = self.composer.graph.launch_of(node)
         call = parse_spawner(self.spawner_words(launch.arguments) if launch is not None
                              else [])
         namespace = self.composer.text(node.namespace) if node.namespace is not None else "/"

@@ -94,7 +94,7 @@ class _File:
     parameters: list[Parameter] = field(default_factory=list)
     declaring_calls: int = 0  # declare_parameter(s) calls read
     changes: dict[str, list[str]] = field(default_factory=dict)  # var -> ``var.x(...)`` calls
-    source: str = ""  # the file's text, for patterns the tree makes long-winded
+    data: bytes = b""  # the file's bytes, for patterns the tree makes long-winded
     dynamic: set[str] = field(default_factory=set)  # descriptors with dynamic_typing = true
     read_only: set[str] = field(default_factory=set)  # descriptors with read_only = true
 
@@ -112,7 +112,7 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
     """Return the endpoints and node names one C++ source file creates."""
     tree = parse("cpp", data)
     nodes = walk(tree.root_node)
-    context = _File(path, source=data.decode("utf-8", "replace"))
+    context = _File(path, data=data)
     _collect(context, nodes)
     endpoints: list[Endpoint] = []
     names: list[NodeName] = []
@@ -316,7 +316,7 @@ def _declaration(context: _File, node: Node, arguments: list[Node],
     kind = declared or value_type(second, lambda n: context.types.get(_variable(n) or ""))
     bounds = None
     if descriptor is not None and descriptor.type == "identifier":
-        bounds = descriptor_bounds(context.source, text(descriptor))
+        bounds = descriptor_bounds(context.data.decode("utf-8", "replace"), text(descriptor))
     return Parameter(name, kind, where, literal_value(second), dynamic=dynamic,
                      read_only=read_only, owner=owner,
                      limits=(("bounds", bounds),) if bounds is not None else ())

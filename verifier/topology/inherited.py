@@ -16,6 +16,7 @@ from dataclasses import dataclass, replace
 from pathlib import Path
 
 from launchverify.models.node_parameters import NO_PARAMETERS, NODE_BASES
+from launchverify.topology.cpp import class_name as cpp_class_name
 from launchverify.topology.files import file_interfaces
 from launchverify.topology.model import FileInterfaces
 
@@ -34,8 +35,8 @@ class Lookup:
 
 
 def class_name(written: str) -> str:
-    """Return ``LifecycleNode`` for ``nav2::LifecycleNode<T>`` (or ``a.b.C``)."""
-    return written.split("<", 1)[0].replace(".", "::").rsplit("::", 1)[-1]
+    """Return ``LifecycleNode`` for ``nav2::LifecycleNode<T>``, or a Python ``a.b.C``."""
+    return cpp_class_name(written.replace(".", "::"))
 
 
 def node_classes(results: list[FileInterfaces]) -> set[str]:

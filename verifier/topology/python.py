@@ -82,7 +82,7 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
             names.extend(_node_name(context, node))
     return FileInterfaces(path, tuple(endpoints), tuple(names),
                           partial=damaged(tree.root_node), parameters=tuple(context.parameters),
-                          undeclared=undeclared_option(data.decode("utf-8", "replace")),
+                          undeclared=undeclared_option(data),
                           bases=_bases(context, nodes),
                           includes=tuple(sorted(set(context.imports.values()))),
                           declarations_missed=len(_DECLARING.findall(data))

@@ -24,14 +24,14 @@ if TYPE_CHECKING:
 # ``Parameter.Type.DOUBLE`` and ``ParameterType.PARAMETER_DOUBLE`` -> rcl's type names
 _ENUM = {**{name.removeprefix("PARAMETER_"): kind for name, kind in PARAMETER_TYPES.items()},
          **PARAMETER_TYPES}
-_UNDECLARED = re.compile(r"(allow_undeclared_parameters|automatically_declare_parameters_"
-                         r"from_overrides)\s*=\s*(?!False\b)")
+_UNDECLARED = re.compile(rb"(allow_undeclared_parameters|automatically_declare_parameters_"
+                         rb"from_overrides)\s*=\s*(?!False\b)")
 
 
-def undeclared_option(source: str) -> str | None:
+def undeclared_option(source: bytes) -> str | None:
     """Return the option that lets a node take parameters it never declares, if set."""
     found = _UNDECLARED.search(source)
-    return None if found is None else f"its Node is built with {found.group(1)}"
+    return None if found is None else f"its Node is built with {found.group(1).decode()}"
 
 
 def value_type(node: Node | None) -> str | None:

@@ -297,6 +297,12 @@ def shipped_packages() -> list[str]:
                   if entry.name.endswith(".json"))
 
 
+@lru_cache(maxsize=1)
+def modelled_packages() -> frozenset[str]:
+    """Return the packages a model is shipped for, listed once per process."""
+    return frozenset(shipped_packages())
+
+
 @lru_cache(maxsize=64)
 def shipped_model(package: str) -> PackageModel | None:
     """Return the shipped model of one package (read on first use), ``None`` when none.

@@ -117,9 +117,9 @@ def knows_code(graph: LaunchGraph, ctx: RuleContext) -> bool:
     """
     if reads_sources(graph, ctx):
         return True
-    from launchverify.topology.shipped import shipped_packages
+    from launchverify.topology.shipped import modelled_packages
 
-    modelled = set(shipped_packages())
+    modelled = modelled_packages()
     return any(graph.base(node.package) in modelled for node in graph.nodes
                if graph.runs(node.origin) is not False)
 

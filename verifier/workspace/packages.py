@@ -185,6 +185,7 @@ class PackageIndex:
         self._located: dict[Path, Path | None] = {}
         self._installed_from: dict[Path, list[Path]] = {}
         self._files: dict[str, list[Path]] = {}  # package -> its source files (package_files)
+        self._headers: dict[str, Path | None] = {}  # #include path -> its file (header)
         self._python_packages: dict[str, list[Path]] | None = None  # name -> packages
         self._site: list[Path] | None = None
         self.sources: dict[str, list[Path]] = {}  # every source folder of each name
@@ -238,6 +239,11 @@ class PackageIndex:
 
         ROS 2 packages install ``include/<pkg>/x.hpp`` (humble on: ``include/<pkg>/<pkg>/``).
         """
+        if include not in self._headers:  # every target of a package asks the same
+            self._headers[include] = self._header(include)
+        return self._headers[include]
+
+    def _header(self, include: str) -> Path | None:
         first = include.partition("/")[0]
         found = self.find(first) if first and first != include else None
         if found is None or found.source is None:
