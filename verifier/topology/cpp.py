@@ -310,7 +310,7 @@ def _declaration(context: _File, node: Node, arguments: list[Node],
         # helper too); a type alone declares it unset, which the code may well check
         required = by_enum is None and not _inside_try(node)
         return Parameter(name, by_enum or declared, where, dynamic=dynamic, required=required,
-                         strict=required, read_only=read_only, owner=owner)
+                         read_only=read_only, owner=owner)
     if second is None:  # (name) or (name, descriptor): a dynamically typed declaration
         return Parameter(name, None, where, dynamic=True, read_only=read_only, owner=owner)
     kind = declared or value_type(second, lambda n: context.types.get(_variable(n) or ""))

@@ -90,7 +90,7 @@ def _parameter(path: Path, name: str, node: yaml.MappingNode,
     limits = _limits(fields.get("validation"))
     read_only = _plain(fields["read_only"]) is True if "read_only" in fields else False
     return Parameter(name, kind, span_of(path, node), value, dynamic=kind is None,
-                     required=default is None, strict=default is None, read_only=read_only,
+                     required=default is None, read_only=read_only,
                      limits=limits, via=VIA)
 
 

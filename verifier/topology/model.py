@@ -63,8 +63,8 @@ class Parameter:
     ``name`` is relative to the node; ``*`` stands for a part built at run time
     (``*.plugin`` for ``plugin_name + ".plugin"``). ``type`` is rcl's name (``double``,
     ``string_array``), ``None`` when not known; ``dynamic`` when the descriptor allows any
-    type. ``required``: typed with no default, so the node fails unless it is given
-    (``strict``: already at the declaration, rclcpp's ``declare_parameter<T>(name)``).
+    type. ``required``: typed with no default in a form that throws at start unless a value
+    is given (rclcpp's ``declare_parameter<T>(name)``, a generated definition).
     ``limits`` are the checks a value must pass, as generate_parameter_library names them:
     ``("bounds", (low, high))`` inclusive, ``("gt", (x,))``, ``("gt_eq", ...)``,
     ``("lt", ...)``, ``("lt_eq", ...)``, ``("one_of", ([a, b],))``.
@@ -76,7 +76,6 @@ class Parameter:
     default: object = None
     dynamic: bool = False
     required: bool = False
-    strict: bool = False
     read_only: bool = False
     limits: tuple[tuple[str, tuple[object, ...]], ...] = ()
     via: str | None = None  # generate_parameter_library, when declared by its YAML

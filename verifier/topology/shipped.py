@@ -25,7 +25,7 @@ unknown), ``type``, ``name_parameter``, ``parameter_default``, ``via``, ``note``
 ``unresolved`` (the reason) and ``at`` (file and line in the package, at that commit).
 
 An interface may list the ``parameters`` its code declares (``name``, ``type``,
-``default``, ``dynamic``, ``required``, ``strict``, ``read_only``, ``limits``, ``via``,
+``default``, ``dynamic``, ``required``, ``read_only``, ``limits``, ``via``,
 ``at``; only those set) and ``parameters_open``: why it may accept other names. A model
 without them says its declarations were not read.
 """
@@ -47,7 +47,7 @@ FORMAT = 1
 _PACKAGE_NAME = re.compile(r"[a-z][a-z0-9_]*")
 _COMMIT = re.compile(r"[0-9a-f]{40}")
 _FIELDS = ("name", "type", "name_parameter", "parameter_default", "via", "note")
-_PARAMETER_FIELDS = ("type", "default", "dynamic", "required", "strict", "read_only",
+_PARAMETER_FIELDS = ("type", "default", "dynamic", "required", "read_only",
                      "limits", "via")
 
 # A released node whose extracted code creates nothing most likely creates its endpoints
@@ -240,7 +240,7 @@ def _parameter(item: Any, source: ModelSource) -> Parameter:
         raise ModelError("'limits' must be a list of [check, [arguments]]")
     return Parameter(item["name"], _optional(item, "type"), _span(item, source),
                      item.get("default"), item.get("dynamic") is True,
-                     item.get("required") is True, item.get("strict") is True,
+                     item.get("required") is True,
                      item.get("read_only") is True,
                      tuple((str(c), tuple(a)) for c, a in limits), _optional(item, "via"))
 
