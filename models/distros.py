@@ -19,6 +19,7 @@ FIRST = {
     "LifecycleTransition": "iron",
     "the <lifecycle_node> tag": "rolling",
     "the <composable_lifecycle_node> tag": "rolling",
+    "ROS_AUTOMATIC_DISCOVERY_RANGE": "iron",  # rcl's discovery_options.c
 }
 _CURRENT: ContextVar[str | None] = ContextVar("launchverify_distro", default=None)
 

@@ -2,16 +2,20 @@
 
 from __future__ import annotations
 
+import dataclasses
 from collections import defaultdict
 from collections.abc import Iterator
 
-from launchverify.dds.discovery import discovery_of
+from launchverify.dds.discovery import meet
 from launchverify.events import meeting_origin
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import Arg, Select, depends_on_unknowns, rests_on_unknowns
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 from launchverify.smt import Witness, reasoner_for
+
+CALLER_DOMAIN = (" if the caller's ROS_DOMAIN_ID is unset or 0 (the launch sets one node's "
+                 "domain and leaves the other's to the environment it is started in)")
 
 
 class DuplicateNodeName(Rule):
@@ -36,6 +40,12 @@ class DuplicateNodeName(Rule):
     not compared, nor are nodes under conditions on what launchverify cannot know (a
     value of code it does not see, an environment variable): the user's arguments do
     not decide whether they run.
+
+    Nodes in different DDS domains never see each other (`ROS_DOMAIN_ID` set per group,
+    per node or per container), nor do two processes one of which turns discovery off
+    (`ROS_AUTOMATIC_DISCOVERY_RANGE=OFF`, from iron on): they are no duplicates. A node
+    whose domain the launch leaves to the environment it is started in is taken to be
+    in the default domain 0, and a collision that rests on that is a warning.
 
     Two nodes that never run at the same time are not duplicates either: a node started
     by an `OnProcessExit` handler of the other one's process (or later in a chain of
@@ -91,13 +101,18 @@ class DuplicateNodeName(Rule):
             found = first_collision(graph, node, candidates)
             if found is not None:
                 other, fqn, witness = found
-                yield self.finding(
+                finding = self.finding(
                     node.origin,
                     related=(Related(other.origin.span, "first started here"),),
                     witness=witness.values or None,
                     fqn=fqn,
                     other=other.origin.span.short(),
                 )
+                if meet(graph, other, node) is None:  # only if the caller's domain is 0
+                    finding = dataclasses.replace(
+                        finding, severity=Severity.WARNING,
+                        message=finding.message + CALLER_DOMAIN)
+                yield finding
             position[id(node)] = len(seen)
             seen.append(node)
             all_by_name[key].append(node)
@@ -130,8 +145,8 @@ def collision(graph: LaunchGraph, first: NodeRecord, second: NodeRecord,
     first_origin = meeting_origin(graph, first, second)
     if first_origin is None:
         return None  # one starts only once the other has ended for good
-    if discovery_of(graph, first).apart(discovery_of(graph, second)):
-        return None  # different DDS domains: neither ever sees the other
+    if not meet(graph, first, second, assume_default=True):
+        return None  # DDS keeps them apart (domains, discovery off), or may
     if not _same_unknowns(graph, first.fqn, second.fqn):
         return None
     first_text, second_text = graph.base(first.fqn), graph.base(second.fqn)

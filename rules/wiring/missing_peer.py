@@ -128,6 +128,8 @@ class MissingPeer(PollingRule):
         writers = view.writers(section, name)
         if writers:
             return self.across_domains(view, composed, end, section, writers)
+        if bridged_in(view, composed, name):
+            return None
         close = close_writers(view, composed, end, section)
         who = describe_node(view, composed.node)
         related: tuple[Related, ...] = (
@@ -153,35 +155,70 @@ class MissingPeer(PollingRule):
 
     def across_domains(self, view: WiringView, composed: NodeEndpoints, end: ComposedEndpoint,
                        section: str, writers: list[ComposedEndpoint]) -> Finding | None:
-        """Return the finding when every writer of the name runs in another DDS domain.
+        """Return the finding when DDS keeps every writer of the name from the node.
 
-        Nothing crosses domains but a bridge: one whose configuration forwards the topic
-        between the two domains serves it, and a bridge whose configuration is not known
+        Different domains, or a discovery range ``OFF``, on facts only. Nothing crosses
+        domains but a bridge: one whose configuration forwards the topic from a writer's
+        domain into the node's serves it, and a bridge whose configuration is not known
         may serve anything.
         """
-        from launchverify.dds.bridges import carried, crossings
+        from launchverify.dds.bridges import crossings, feeding
         from launchverify.dds.discovery import discovery_of
         from launchverify.topology.wiring import VERBS, describe_node
 
-        mine = discovery_of(view.graph, composed.node)
-        if not all(mine.apart(discovery_of(view.graph, w.node)) for w in writers):
+        graph = view.graph
+        mine = discovery_of(graph, composed.node)
+        theirs = [discovery_of(graph, w.node) for w in writers]
+        if any(mine.meets(other) is not False for other in theirs):
             return None
-        bridges = crossings(view.graph)
+        bridges = crossings(graph)
         if bridges is None or any(
-                carried(bridges, end.name or "", discovery_of(view.graph, w.node).domain,
-                        mine.domain) for w in writers):
+                _number(c.target) == _number(mine.domain) and
+                (absolute_name(c.topic) != end.name or  # fed from another name
+                 any(_number(c.source) == _number(other.domain) for other in theirs))
+                for c in feeding(bridges, end.name or "")):
             return None
         writer = writers[0]
-        theirs = discovery_of(view.graph, writer.node)
         peer = describe_node(view, writer.node)
+        apart = mine.why_apart(theirs[0])
+        where = (f" in its DDS domain {mine.domain}: {peer} {WRITE_VERBS[section]} it in "
+                 f"domain {theirs[0].domain}, and no bridge carries it"
+                 if apart.startswith("domain") else
+                 f": {peer} {WRITE_VERBS[section]} it, but {apart}")
         return self.finding(
             composed.node.origin, node=describe_node(view, composed.node),
             verb=VERBS[end.endpoint.kind], name=end.name, writes=WRITE_VERBS[section],
-            hint=(f" in its DDS domain {mine.domain}: {peer} {WRITE_VERBS[section]} it in "
-                  f"domain {theirs.domain}, and no bridge carries it"),
+            hint=where,
             related=(Related(end.endpoint.span, f"{VERBS[end.endpoint.kind]} "
                              f"{end.name} here"),
                      Related(writer.node.origin.span, f"{peer} is launched here")))
+
+
+def bridged_in(view: WiringView, composed: NodeEndpoints, name: str) -> bool:
+    """Return whether a bridge publishes the name into a domain that may be the node's."""
+    from launchverify.dds.bridges import crossings, feeding
+    from launchverify.dds.discovery import CALLER, discovery_of
+
+    bridges = crossings(view.graph)
+    if not bridges:
+        return False
+    mine = discovery_of(view.graph, composed.node).domain
+    return any(mine in (None, CALLER) or _number(c.target) == _number(mine)
+               for c in feeding(bridges, name))
+
+
+def _number(domain: str | None) -> object:
+    """Return a domain as rcl reads it, for comparing a bridge's with a node's."""
+    from launchverify.dds.discovery import domain_number
+
+    return domain_number(domain)
+
+
+def absolute_name(name: str) -> str:
+    """Return a bridge's topic name as a fully qualified name."""
+    from launchverify.dds.bridges import absolute
+
+    return absolute(name)
 
 
 def built_in(name: str) -> bool:

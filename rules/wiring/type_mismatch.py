@@ -65,6 +65,42 @@ class TypeMismatch(Rule):
             for connection in by_name.values():
                 if len(connection.types()) > 1:
                     yield from self.connection(view, connection)
+        yield from self.bridged(view)
+
+    def bridged(self, view: WiringView) -> Iterator[Finding]:
+        """Yield a finding for each end whose type differs from what a bridge forwards.
+
+        A domain_bridge subscribes with the type its configuration names, in the source
+        domain, and publishes with it in the target domain: a publisher there of another
+        type feeds nothing across, a subscriber of another type hears nothing.
+        """
+        from launchverify.dds.bridges import absolute, crossings, message_type
+        from launchverify.dds.discovery import discovery_of, domain_number
+        from launchverify.topology.wiring import VERBS, describe_node, from_sources
+
+        for crossing in crossings(view.graph) or []:
+            if crossing.type is None or crossing.span is None:
+                continue
+            forwarded = message_type(crossing.type)
+            connections = view.by_name.get("topics", {})
+            for name, domain, role in ((absolute(crossing.topic), crossing.source, "publishers"),
+                                       (crossing.writes, crossing.target, "subscribers")):
+                connection = connections.get(name)
+                for end in connection.ends.get(role, []) if connection else []:
+                    theirs = end.endpoint.type
+                    if theirs is None or message_type(theirs) == forwarded or \
+                            domain_number(discovery_of(view.graph, end.node).domain) != \
+                            domain_number(domain):
+                        continue
+                    peer = describe_node(view, end.node)
+                    finding = self.finding(
+                        crossing.span, node=f"a domain_bridge (domain {crossing.source} to "
+                        f"{crossing.target})", verb="forwards", name=name, mine=forwarded,
+                        peer=peer, peer_verb=VERBS[end.endpoint.kind], theirs=theirs,
+                        related=(Related(end.endpoint.span, f"{peer}'s type is {theirs} here"),
+                                 Related(end.node.origin.span, f"{peer} is launched here")))
+                    yield finding if from_sources(view, end) else dataclasses.replace(
+                        finding, severity=Severity.WARNING)
 
     def connection(self, view: WiringView, connection: Connection) -> Iterator[Finding]:
         """Yield a finding for each end whose type differs from a writer it meets."""

@@ -18,6 +18,7 @@ from launchverify.evaluate.values import BaseReducer, Reducer, is_unset, text_of
 from launchverify.graph import Origin
 from launchverify.ir import subst as s
 from launchverify.ir.symbolic import (
+    ExecutablePath,
     Guard,
     PathCondition,
     Select,
@@ -158,7 +159,7 @@ class ScopeReducer(_Located, Reducer):
         found = self.walker.index.find(package)
         self.walker.record_package(package, self._origin(), found is not None, "executable",
                                    written)
-        return Unknown(f"path of {executable} in {package}")
+        return ExecutablePath(f"path of {executable} in {package}", executable, package)
 
     def this_file(self, directory: bool) -> s.Sub:
         current = self.walker.current_file

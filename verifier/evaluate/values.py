@@ -20,6 +20,7 @@ from launchverify.ir.symbolic import (
     Arg,
     CommandOutput,
     EnvInput,
+    ExecutablePath,
     Guard,
     NsPrefix,
     Opaque,
@@ -152,6 +153,7 @@ class Reducer:
             EnvInput: lambda x: self.env_input(x) if isinstance(x, EnvInput) else x,
             Unknown: lambda x: x,
             CommandOutput: lambda x: x,
+            ExecutablePath: lambda x: x,
             Unset: lambda x: x,
             Select: self._select,
             NsPrefix: self._ns_prefix,
@@ -222,7 +224,7 @@ class Reducer:
     def executable_path(self, executable: str, package: str,
                         written: Span | None = None) -> s.Sub:
         """Return the path of an executable of a package."""
-        return Unknown(f"path of {executable} in {package}")
+        return ExecutablePath(f"path of {executable} in {package}", executable, package)
 
     def this_file(self, directory: bool) -> s.Sub:
         """Return the current launch file (or its folder)."""

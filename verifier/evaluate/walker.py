@@ -506,9 +506,23 @@ class Walker:
         path_text = written or as_given
         if path_text is None:
             record.status = "unresolved"
+            record.arguments = self.passed_arguments(action, ctx)
             self.mark_incomplete()
             return
         self.include_path(action, ctx, record, path_text)
+
+    def passed_arguments(self, action: a.Include, ctx: Ctx
+                         ) -> tuple[tuple[str | None, s.Sub, Span], ...]:
+        """Return what an include passes to a file launchverify does not read.
+
+        For ``graph`` and the models of known files (a domain_bridge's ``config``).
+        """
+        passed = []
+        for argument in action.arguments:
+            reducer = self.reducer.at(ctx, argument.span)
+            passed.append((text_of(reducer.reduce(argument.name)),
+                           reducer.reduce(argument.value), argument.span))
+        return tuple(passed)
 
     def include_candidates(self, action: a.Include, ctx: Ctx, record: IncludeRecord,
                            patterns: bool) -> bool:
@@ -563,6 +577,7 @@ class Walker:
         if target is None:
             absent = self.in_workspace(Path(path_text)) and not machine_dependent(location)
             record.status = "missing" if absent else "external"
+            record.arguments = self.passed_arguments(action, ctx)
             self.mark_incomplete()
             return
         record.target = target

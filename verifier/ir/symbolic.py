@@ -74,6 +74,14 @@ class CommandOutput(Unknown):
 
 
 @dataclass(frozen=True, slots=True)
+class ExecutablePath(Unknown):
+    """Where ``$(exec-in-pkg)`` finds an executable: unknown, but which one is known."""
+
+    executable: str = ""
+    package: str = ""
+
+
+@dataclass(frozen=True, slots=True)
 class Unset(Sub):
     """No value: a configuration not set on some path (reading it fails at run time)."""
 

@@ -10,6 +10,7 @@ from __future__ import annotations
 import json
 from typing import TYPE_CHECKING, Any, TextIO
 
+from launchverify.dds.discovery import CALLER, discovery_of
 from launchverify.graph import LaunchGraph, NodeRecord, Origin, ParamRecord
 from launchverify.ir.subst import Sub
 from launchverify.lifecycle.explore import Where
@@ -88,21 +89,23 @@ class GraphView:
 
     def bridges(self) -> list[dict[str, Any]] | None:
         """Return what domain_bridge nodes forward; ``None`` when one's config is not known."""
-        from launchverify.dds.bridges import crossings
+        from launchverify.dds.bridges import absolute, crossings
 
         found = crossings(self.graph)
         return None if found is None else [
-            {"topic": c.topic, "type": c.type, "from_domain": c.source, "to_domain": c.target}
+            {"topic": absolute(c.topic), "published_as": c.writes, "type": c.type,
+             "from_domain": c.source, "to_domain": c.target,
+             "file": display_path(c.span.file) if c.span else None,
+             "line": c.span.line if c.span else None}
             for c in found]
 
     def dds(self, node: NodeRecord) -> dict[str, Any] | None:
-        """Return the node's DDS domain and discovery range, as given; ``None`` if symbolic."""
+        """Return the node's DDS domain and discovery settings, as given; ``None`` if symbolic."""
         if self.symbolic:
             return None
-        from launchverify.dds.discovery import discovery_of
-
         found = discovery_of(self.graph, node)
-        return {"domain": found.domain, "discovery_range": found.range}
+        return {"domain": found.domain, "discovery_range": found.range,
+                "localhost_only": found.localhost_only}
 
     def interface(self, node: NodeRecord) -> dict[str, Any]:
         """Return ``{"interface": ...}`` for a node when endpoints are composed, else ``{}``."""
@@ -273,6 +276,11 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
                   f"({node['file']}:{node['line']})\n")
         if node["condition"]:
             out.write(f"    when {node['condition']}\n")
+        dds = node["dds"] or {}
+        if any(v != CALLER for v in dds.values()):  # what the launch sets
+            shown = {k: ("not known" if v is None else v) for k, v in dds.items()}
+            out.write(f"    dds domain {shown['domain']}, discovery range "
+                      f"{shown['discovery_range']}\n")
         for src, dst in node["remappings"]:
             out.write(f"    remap {src} -> {dst}\n")
         for param in node["parameters"]:
@@ -288,6 +296,14 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
                 if "file" not in param:
                     out.write(f"    param {param['name']} = {param['value']}\n")
     _lifecycle_text(doc["lifecycle"], out)
+    if doc["bridges"]:
+        out.write("bridges:\n")
+        for crossing in doc["bridges"]:
+            renamed = (f" as {crossing['published_as']}"
+                       if crossing["published_as"] != crossing["topic"] else "")
+            out.write(f"    {crossing['topic']}{renamed} [{crossing['type']}]  domain "
+                      f"{crossing['from_domain']} -> {crossing['to_domain']}  "
+                      f"({crossing['file']}:{crossing['line']})\n")
     for process in doc["processes"]:
         out.write(f"process: {' '.join(str(c) for c in process['cmd'])}  "
                   f"({process['file']}:{process['line']})\n")

@@ -51,6 +51,7 @@ class SystemNode:
     container: str | None
     remappings: list[tuple[str, str]]
     parameters: list[tuple[str, str, str]]  # name, value, where it comes from
+    domain: str | None = None  # its DDS domain, as ``graph`` gives it
     marks: list[Mark] = field(default_factory=list)
     components: list[SystemNode] = field(default_factory=list)
 
@@ -78,6 +79,7 @@ class Namespace:
     label: str
     nodes: list[SystemNode] = field(default_factory=list)
     children: dict[str, Namespace] = field(default_factory=dict)
+    kept: bool = False  # a DDS domain's box: drawn even when it holds one namespace
 
     def count(self) -> int:
         """Return how many nodes (components included) the box holds, nested ones too."""
@@ -125,8 +127,37 @@ def build_model(report: Report, graph: LaunchGraph,
             states=states.get(fqn, []), manager=managers.get(fqn),
             container=entry["container"],
             remappings=[(str(s), str(d)) for s, d in entry["remappings"]],
-            parameters=_parameters(entry), marks=marks.get(index, [])))
-    return SystemModel(_group(nodes), nodes, document["processes"], lifecycle)
+            parameters=_parameters(entry), marks=marks.get(index, []),
+            domain=(entry["dds"] or {}).get("domain")))
+    return SystemModel(_by_domain(nodes), nodes, document["processes"], lifecycle)
+
+
+def _by_domain(nodes: list[SystemNode]) -> Namespace:
+    """Return the namespace tree, under one box per DDS domain when there are several.
+
+    A component is in its container's domain, so a container never leaves its box.
+    """
+    domains: dict[str | None, list[SystemNode]] = defaultdict(list)
+    for node in nodes:
+        domains[node.domain].append(node)
+    if len(domains) < 2:
+        return _group(nodes)
+    root = Namespace("/", "/")
+    for domain, members in sorted(domains.items(), key=lambda item: _domain_key(item[0])):
+        tree = _group(members)
+        label = ("DDS domain not known" if domain is None
+                 else "DDS domain: the caller's" if domain.startswith("<")
+                 else f"DDS domain {domain}")
+        root.children[label] = Namespace(f"({label})", label, tree.nodes, tree.children,
+                                         kept=True)
+    return root
+
+
+def _domain_key(domain: str | None) -> tuple[int, int, str]:
+    """Sort domains by number, the caller's and unknown ones last."""
+    if domain is None:
+        return (2, 0, "")
+    return (0, int(domain), "") if domain.isdigit() else (1, 0, domain)
 
 
 def _namespace_of(entry: dict[str, Any], fqn: str) -> str:

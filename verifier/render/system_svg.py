@@ -97,7 +97,7 @@ def _natural(text: str) -> list[object]:
 
 def _collapse(namespace: Namespace) -> Namespace:
     """Return the first namespace down a chain of empty single-child namespaces."""
-    while not namespace.nodes and len(namespace.children) == 1:
+    while not namespace.nodes and len(namespace.children) == 1 and not namespace.kept:
         namespace = next(iter(namespace.children.values()))
     return namespace
 
@@ -106,9 +106,11 @@ def _top_level(root: Namespace) -> list[Placed]:
     boxes = []
     if root.nodes:
         boxes.append(Placed(Namespace("/", "/", nodes=root.nodes), "/"))
-    for key in sorted(root.children, key=_natural):
+    keys = list(root.children) if any(c.kept for c in root.children.values()) \
+        else sorted(root.children, key=_natural)  # DDS domains come sorted by number
+    for key in keys:
         child = _collapse(root.children[key])
-        boxes.append(Placed(child, child.path))
+        boxes.append(Placed(child, child.label if child.kept else child.path))
     return boxes
 
 
@@ -194,6 +196,7 @@ def _processes_height(count: int) -> float:
 def _draw_namespace(canvas: Canvas, namespace: Namespace, label: str, x: float, y: float,
                     width: float, depth: int) -> None:
     height = _namespace_height(namespace, width)
+    title = namespace.label if namespace.kept else f"namespace {namespace.path}"
     canvas.add(f'<g class="ns d{min(depth, 3)}"><rect x="{x:.1f}" y="{y:.1f}" '
                f'width="{width:.1f}" height="{height:.1f}" rx="5"/>')
     count = f"{namespace.count()}"
@@ -201,7 +204,7 @@ def _draw_namespace(canvas: Canvas, namespace: Namespace, label: str, x: float, 
     canvas.add(f'<text class="nsl" x="{x + PAD:.1f}" y="{y + 15:.1f}">'
                f"{_fit(label, room, 7.2)}</text>"
                f'<text class="nsc" x="{x + width - PAD:.1f}" y="{y + 15:.1f}">{count}</text>'
-               "<title>" + esc(f"namespace {namespace.path}: {count} nodes") + "</title></g>")
+               "<title>" + esc(f"{title}: {count} nodes") + "</title></g>")
     inner = width - 2 * PAD
     cursor = y + HEADER
     plain, hosts, children = _parts(namespace)

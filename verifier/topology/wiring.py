@@ -19,7 +19,7 @@ from fnmatch import fnmatchcase
 from typing import TYPE_CHECKING
 
 from launchverify.events import meeting_origin
-from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord
+from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, Origin
 from launchverify.smt import Witness, reasoner_for
 from launchverify.topology.model import EndpointKind
 
@@ -90,6 +90,13 @@ def _known_bridge(graph: LaunchGraph, composed: NodeEndpoints) -> bool:
     from launchverify.dds.bridges import crossings
 
     return crossings(graph) is not None
+
+
+def _bridge_process(graph: LaunchGraph, origin: Origin) -> bool:
+    """Return whether a plain process is a domain_bridge whose configuration is known."""
+    from launchverify.dds.bridges import bridge_origins, crossings
+
+    return crossings(graph) is not None and origin in bridge_origins(graph)
 
 
 def reads_sources(graph: LaunchGraph, ctx: RuleContext) -> bool:
@@ -182,7 +189,8 @@ def view_of(graph: LaunchGraph, source: InterfaceSource) -> WiringView:
         for end in composed.endpoints:
             if end.name is None:
                 view.unresolved.setdefault(ROLES[end.endpoint.kind], []).append(end)
-    view.processes = [p for p in graph.processes if graph.runs(p.origin) is not False]
+    view.processes = [p for p in graph.processes if graph.runs(p.origin) is not False
+                      and not _bridge_process(graph, p.origin)]
     kept["view"] = view
     return view
 
@@ -214,15 +222,16 @@ def together(graph: LaunchGraph, first: NodeRecord, second: NodeRecord) -> Witne
 
     As LV101 decides it: the event structure may keep them apart (one starts once the
     other has ended), and their conditions may exclude each other; an empty witness
-    means under the arguments as given. Nodes in different DDS domains never meet.
+    means under the arguments as given. Nodes DDS may keep apart (``dds.discovery.meet``)
+    never meet: an error rests only on nodes that surely see each other.
     """
     first_origin = meeting_origin(graph, first, second)
     if first_origin is None:
         return None
-    from launchverify.dds.discovery import discovery_of
+    from launchverify.dds.discovery import meet
 
-    if discovery_of(graph, first).apart(discovery_of(graph, second)):
-        return None  # different DDS domains: they never meet
+    if meet(graph, first, second) is not True:
+        return None  # DDS keeps them apart, or may (a domain left to the caller)
     if graph.runs(first_origin) is True and graph.runs(second.origin) is True:
         return Witness()
     return reasoner_for(graph).together(first_origin.path, second.origin.path)
