@@ -52,10 +52,12 @@ class MissingPeer(PollingRule):
     launch: as an entry point, complete as given, or through the files that include it.
 
     Ends in different DDS domains never meet (`ROS_DOMAIN_ID` set per group or per
-    node): a subscription whose every publisher runs in another domain is reported too,
-    naming both domains, unless a `domain_bridge` forwards the topic between them (its
-    YAML configuration: `from_domain`, `to_domain`, `topics`); a bridge whose
-    configuration cannot be read may forward anything.
+    node), nor does a process whose discovery is off (`ROS_AUTOMATIC_DISCOVERY_RANGE=OFF`)
+    meet any other: a subscription whose every publisher is kept apart so is reported
+    too, naming both domains, unless a `domain_bridge` forwards the topic between them
+    (its YAML configuration: `from_domain`, `to_domain`, `topics`, a `remap` naming what
+    the subscriber hears); a bridge whose configuration cannot be read may forward
+    anything. A domain the launch leaves to its caller may be any: no finding rests on it.
 
     ## Why it matters
     Nothing fails: the node starts, waits for data that never comes, and `ros2 topic

@@ -28,6 +28,10 @@ class TypeMismatch(Rule):
     has exited); the finding names the argument values under which they meet when the
     arguments as given do not start both.
 
+    A `domain_bridge` subscribes and publishes with the type its configuration names: a
+    publisher in the bridge's source domain, or a subscriber in its target domain, of
+    another type is reported at the configuration's entry.
+
     It is an error when both ends are read from the workspace's sources, a warning when
     an interface comes from elsewhere (a model of a released package).
 
