@@ -100,10 +100,15 @@ class GraphView:
             for c in found]
 
     def dds(self, node: NodeRecord) -> dict[str, Any] | None:
-        """Return the node's DDS domain and discovery settings, as given; ``None`` if symbolic."""
-        if self.symbolic:
-            return None
+        """Return the node's DDS domain and discovery settings, as given.
+
+        Symbolic: the domain's expression, the rest ``None`` (it is rarely an argument).
+        """
         found = discovery_of(self.graph, node)
+        if self.symbolic:
+            source = found.domain_source
+            return {"domain": self.value(source) if isinstance(source, Sub) else source,
+                    "discovery_range": None, "localhost_only": None}
         return {"domain": found.domain, "discovery_range": found.range,
                 "localhost_only": found.localhost_only}
 

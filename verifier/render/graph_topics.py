@@ -114,6 +114,7 @@ def _end(view: GraphView, composed: ComposedEndpoint,
         "source": f"{display_path(endpoint.span.file)}:{endpoint.span.line}",
         "launch": f"{where['file']}:{where['line']}",
         "condition": where["condition"],
+        "domain": (view.dds(node) or {}).get("domain"),
     }
 
 
