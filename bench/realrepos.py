@@ -17,6 +17,7 @@ this runs
         --repo ros-navigation/navigation2 --repo autowarefoundation/autoware_launch
     python bench/realrepos.py --corpus /tmp/lv-corpus --against /tmp/old/bin/launchverify
     python bench/realrepos.py --corpus /tmp/lv-corpus --min-files 20 --repeat 1
+    python bench/realrepos.py --corpus /tmp/lv-corpus --startup --repeat 20
 
 The commit of each repository is printed from the corpus manifest, so figures can be
 compared between runs. Standard library only.
@@ -104,6 +105,66 @@ def check_times(corpus: Path, folder: Path, repeat: int,
     }
 
 
+_ONE_XML = """<launch>
+  <arg name="robot" default="r1"/>
+  <group>
+    <push_ros_namespace namespace="$(var robot)"/>
+    <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>
+    <node pkg="demo_nodes_cpp" exec="listener" name="listener"/>
+  </group>
+</launch>
+"""
+_ONE_PY = """from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='r1'),
+        Node(package='demo_nodes_cpp', executable='talker',
+             namespace=LaunchConfiguration('robot')),
+    ])
+"""
+
+
+def startup_times(repeat: int) -> dict[str, float]:
+    """Time ``--version`` and one-file checks (XML, Python), alternating, in a small workspace.
+
+    The workspace is one package with the two files (written here); medians of
+    ``repeat`` rounds after one warm-up round (bytecode and caches as a user has them).
+    """
+    workspace = Path(tempfile.mkdtemp(prefix="lv-bench-startup-"))
+    try:
+        package = workspace / "src" / "demo"
+        (package / "launch").mkdir(parents=True)
+        (package / "package.xml").write_text(
+            '<package format="3"><name>demo</name><version>0.0.0</version>'
+            "<description>d</description><maintainer email='a@b.c'>a</maintainer>"
+            "<license>MIT</license></package>\n")
+        (package / "launch" / "one.launch.xml").write_text(_ONE_XML)
+        (package / "launch" / "one.launch.py").write_text(_ONE_PY)
+        env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+        commands = {
+            "version": [*launchverify(), "--version"],
+            "xml": [*launchverify(), "check", str(package / "launch" / "one.launch.xml"),
+                    "--workspace", str(workspace), "--no-cache", "-q", "--exit-zero"],
+            "python": [*launchverify(), "check", str(package / "launch" / "one.launch.py"),
+                       "--workspace", str(workspace), "--no-cache", "-q", "--exit-zero"],
+        }
+        seconds: dict[str, list[float]] = {name: [] for name in commands}
+        for round_ in range(repeat + 1):
+            for name, command in commands.items():
+                started = time.perf_counter()
+                subprocess.run(command, env=env, stdout=subprocess.DEVNULL, check=False)
+                if round_:  # the first round warms up
+                    seconds[name].append(time.perf_counter() - started)
+        return {name: statistics.median(values) for name, values in seconds.items()}
+    finally:
+        shutil.rmtree(workspace, ignore_errors=True)
+
+
 def oracle_seconds(corpus: Path, repo: str) -> tuple[float, int] | None:
     """Time the real launch library over a repository's launch files, one process each."""
     needed = ("ORACLE", "ORACLE_PY", "ORACLE_PYTHONPATH")
@@ -145,7 +206,15 @@ def main() -> int:
     parser.add_argument("--against", metavar="LAUNCHVERIFY",
                         help="another launchverify executable (an older install) to time "
                              "cold, alternating with this one")
+    parser.add_argument("--startup", action="store_true",
+                        help="only time one-file checks against `launchverify --version`")
     args = parser.parse_args()
+    if args.startup:
+        figures = startup_times(max(args.repeat, 10))
+        base = figures["version"]
+        for name, value in figures.items():
+            print(f"{name:<8} {value:.3f} s  {value / base:.1f}x --version")
+        return 0
     against = [args.against] if args.against else None
     manifest = json.loads((args.corpus / "manifest.json").read_text())
     commits = {r.get("repo", r.get("name")): r.get("commit", "?")

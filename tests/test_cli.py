@@ -175,7 +175,7 @@ def test_the_collector_is_paused_for_one_shot_commands_only(
 def test_the_command_pauses_the_collector_from_its_start(
         argv: list[str], collecting: bool, monkeypatch: pytest.MonkeyPatch) -> None:
     import launchverify.cli
-    from launchverify import command
+    from launchverify.process import command
 
     seen: list[bool] = []
 
@@ -186,6 +186,7 @@ def test_the_command_pauses_the_collector_from_its_start(
     monkeypatch.setattr(launchverify.cli, "main", main)
     monkeypatch.setattr(sys, "argv", ["launchverify", *argv])
     monkeypatch.setattr(command.threading, "active_count", lambda: 1)
+    monkeypatch.setattr("launchverify.process.code_cache.install", lambda: None)
 
     def leave(status: int) -> None:
         raise SystemExit(f"left with {status}")

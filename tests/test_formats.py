@@ -6,8 +6,8 @@ import io
 import json
 import re
 import shutil
+import sys
 import xml.etree.ElementTree as ET
-from email.message import Message
 from pathlib import Path
 from typing import Any
 
@@ -138,15 +138,25 @@ def test_sarif_include_chain_witness_and_trace() -> None:
 
 
 def test_sarif_help_uri_comes_from_the_documentation_url(
-        monkeypatch: pytest.MonkeyPatch) -> None:
-    fake = Message()
-    fake["Project-URL"] = "Homepage, https://example.org/lv"
-    fake["Project-URL"] = "Documentation, https://example.org/docs/rules.md"
-    monkeypatch.setattr(links, "metadata", lambda name: fake)
+        monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> None:
+    from launchverify.process import distributions
+
+    info = tmp_path / "launchverify-9.0.dist-info"  # first on the path: it wins
+    info.mkdir()
+    (info / "METADATA").write_text(
+        "Metadata-Version: 2.1\nName: launchverify\n"
+        "Project-URL: Homepage, https://example.org/lv\n"
+        "Project-URL: Documentation, https://example.org/docs/rules.md\n\nThe README.\n"
+        "Project-URL: Body, https://example.org/not-a-header\n")
+    monkeypatch.setattr(sys, "path", [str(tmp_path), *sys.path])
+    distributions.distributions.cache_clear()
     links.project_urls.cache_clear()
     try:
+        assert links.project_urls() == {"homepage": "https://example.org/lv",
+                                        "documentation": "https://example.org/docs/rules.md"}
         driver = sarif_of(check(DUPLICATES))["runs"][0]["tool"]["driver"]
     finally:
+        distributions.distributions.cache_clear()
         links.project_urls.cache_clear()
     lv101 = next(r for r in driver["rules"] if r["id"] == "LV101")
     assert lv101["helpUri"] == "https://example.org/docs/rules.md#lv101-duplicate-node-name"

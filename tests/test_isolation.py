@@ -426,7 +426,7 @@ def test_workers_may_read_launchverify_where_python_finds_it(tmp_path: Path) -> 
     # A model may import one of launchverify's modules late, after the worker is
     # confined: the folders Python finds the packages in (a strict editable install's
     # tree of links) and the folders the links point into must both be readable.
-    from launchverify.isolation.pool import readable_folders
+    from launchverify.isolation.confine import readable_folders
     from launchverify.own_code import package_folders
     from launchverify.workspace.packages import PackageIndex
 

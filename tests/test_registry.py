@@ -68,3 +68,30 @@ def test_select_and_ignore() -> None:
     chosen = {r.code for r in select(["LV1", "LV201"], ["LV102"])}
     assert chosen == {"LV101", "LV103", "LV104", "LV201"}
     assert len(select(None, None)) == len(all_rules())
+
+
+def test_plugin_rules_come_from_entry_points(tmp_path: Path,
+                                            monkeypatch: pytest.MonkeyPatch) -> None:
+    from launchverify.process import distributions
+
+    (tmp_path / "acme_rules.py").write_text(
+        "from launchverify.rule import Rule, Severity\n\n\n"
+        "class NoTalker(Rule):\n"
+        '    """No talkers.\n\n    ## What it does\n    x\n"""\n\n'
+        '    code = "LV901"\n    slug = "no-talker"\n    severity = Severity.WARNING\n'
+        '    message = "talker"\n\n    def check(self, graph, ctx):\n        return iter(())\n\n\n'
+        "RULES = [NoTalker]\n")
+    for name, group in (("acme_rules-1.0.dist-info", "launchverify.rules"),
+                        ("shadowed-1.0.dist-info", "other.group")):
+        (tmp_path / name).mkdir()
+        (tmp_path / name / "entry_points.txt").write_text(
+            f"[console_scripts]\nacme = acme_rules:main\n\n[{group}]\nacme = acme_rules:RULES\n")
+    monkeypatch.setattr("sys.path", [str(tmp_path), *__import__("sys").path])
+    distributions.distributions.cache_clear()
+    all_rules.cache_clear()
+    try:
+        codes = [rule.code for rule in all_rules()]
+    finally:
+        distributions.distributions.cache_clear()
+        all_rules.cache_clear()
+    assert codes.count("LV901") == 1 and codes == sorted(codes)

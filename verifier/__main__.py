@@ -1,5 +1,5 @@
 """Allow ``python -m launchverify``."""
 
-from launchverify.command import run
+from launchverify.process.command import run
 
 run()

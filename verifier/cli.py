@@ -26,7 +26,6 @@ from typing import TYPE_CHECKING, Any, NoReturn, TextIO, cast
 
 from launchverify import __version__
 from launchverify.ament import excluded_by_ament
-from launchverify.command import LONG_RUNNING
 from launchverify.config import (
     Config,
     ConfigError,
@@ -54,6 +53,7 @@ from launchverify.findings.baseline import BaselineError, write_baseline
 from launchverify.findings.cache import ResultCache, default_cache_dir, disabled_by_environment
 from launchverify.findings.fixes import Outcome, fix_all, hidden, unified_diff
 from launchverify.models.distros import DISTROS
+from launchverify.process.command import LONG_RUNNING
 from launchverify.registry import RegistryError
 from launchverify.render.inert import InertWriter, inert, inert_block
 from launchverify.rule import Rule, Severity
@@ -356,7 +356,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     # that run long, a server and a launch, whose garbage must go as they run.
     long_running = args.command in LONG_RUNNING
     if long_running:
-        gc.enable()  # paused from the start by the command (launchverify.command)
+        gc.enable()  # paused from the start by the command (launchverify.process.command)
     paused = nullcontext() if long_running else collector_paused()
     try:
         with paused:

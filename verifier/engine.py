@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import gc
 import os
+import sys
 import time
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Iterator
@@ -200,7 +201,7 @@ def confine_reads(index: PackageIndex, workspace: Path, paths: Iterable[Path]
     include instead of the file's content in a code frame. Returns the folders workers
     may read.
     """
-    from launchverify.isolation.pool import readable_folders
+    from launchverify.isolation.confine import readable_folders
 
     readable = readable_folders(index, workspace)
     reading.confine([*readable, *(canonical(p) for p in paths)])
@@ -295,14 +296,15 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     from launchverify.findings.fixes import within
     from launchverify.frontends import launch_format
     from launchverify.isolation.confine import Limits
-    from launchverify.isolation.pool import IsolatedPython
-    from launchverify.isolation.zygote import discard_ahead, start_ahead
+    from launchverify.isolation.lazy import LazyPython
     from launchverify.models import distros
     from launchverify.workspace.interfaces import Interfaces
 
     config = options.config
     workspace, sources, prefixes = folders
     if any(launch_format(f) == "python" for f in found):
+        from launchverify.isolation.zygote import start_ahead
+
         start_ahead()  # its interpreter imports the models while the index is built
     index = PackageIndex.from_environment(sources, prefixes)
     readable = confine_reads(index, workspace, options.paths)
@@ -323,10 +325,9 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     limits = Limits(seconds=options.time_limit)
     graphs = []
     with distros.checking(options.distro), reading.size_limit(options.max_file_size), \
-            IsolatedPython(index, workspace, jobs=options.jobs or default_jobs(),
-                           limits=limits, distro=options.distro,
-                           environment=options.environment,
-                           arguments=options.arguments, readable=readable) as python:
+            LazyPython(index=index, workspace=workspace, jobs=options.jobs or default_jobs(),
+                       limits=limits, distro=options.distro, environment=options.environment,
+                       arguments=options.arguments, readable=readable) as python:
         loader = FileCache(index, workspace, python)
         python.prefetch(canonical(f) for f in files if launch_format(f) == "python")
         loader.read_ahead(canonical(f) for f in files)
@@ -338,7 +339,8 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
             if options.progress is not None:
                 options.progress(done + 1, len(files))
         python_files, protections = python.evaluated, python.protections
-    discard_ahead()  # started for files that were all excluded, say
+    if "launchverify.isolation.zygote" in sys.modules:  # started for excluded files, say
+        sys.modules["launchverify.isolation.zygote"].discard_ahead()
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
     includers = includers_of()
     for graph in graphs:

@@ -45,8 +45,6 @@ class FileCache:
     def __init__(self, index: PackageIndex, workspace: Path,
                  python: PythonLoader | None = None,
                  environment: dict[str, str] | None = None) -> None:
-        from launchverify.isolation.pool import IsolatedPython
-
         self.index = index
         self._files: dict[Path, LoadedFile] = {}
         self._param_files: dict[Path, ParamFile] = {}
@@ -59,8 +57,11 @@ class FileCache:
         self._opaque_runs: dict[a.OpaqueFunction, list[_OpaqueRun]] = {}
         # the files each loaded file includes by a path known without a context
         self._includes: dict[Path, tuple[Path, ...]] = {}
-        self._owned = (IsolatedPython(index, workspace, environment=environment)
-                       if python is None else None)
+        self._owned = None
+        if python is None:
+            from launchverify.isolation.pool import IsolatedPython
+
+            self._owned = IsolatedPython(index, workspace, environment=environment)
         self.python: PythonLoader = python or self._owned  # type: ignore[assignment]
 
     def close(self) -> None:

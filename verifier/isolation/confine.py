@@ -26,7 +26,14 @@ import os
 import sys
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from typing import Any
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from launchverify.own_code import package_folders
+from launchverify.workspace.paths import resolved
+
+if TYPE_CHECKING:
+    from launchverify.workspace.packages import PackageIndex
 
 try:
     import resource
@@ -346,3 +353,31 @@ def _address_space() -> int:
         return pages * os.sysconf("SC_PAGE_SIZE")
     except (OSError, ValueError, IndexError):
         return 0
+
+
+def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
+    """Return the folders a worker may read: the workspace, packages, Python, system libraries.
+
+    Everything else (home folders, ``/proc``, ``/etc``) stays unreadable where Landlock
+    is available, so a launch file cannot copy secrets into its findings.
+    """
+    folders = {str(workspace)}
+    folders.update(str(folder) for folder in (*index.workspaces, *index.prefixes))
+    folders.update(str(folder) for found in index.sources.values() for folder in found)
+    prefixes = (sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix)
+    folders.update(prefixes)
+    # Python's own folders: beneath a prefix, site-packages-like, or on PYTHONPATH (a ROS
+    # installation's); not the folder launchverify was started in.
+    python_path = os.environ.get("PYTHONPATH", "").split(os.pathsep)
+    folders.update(entry for entry in sys.path if entry and (
+        entry in python_path or entry.endswith(("site-packages", "dist-packages"))
+        or any(entry.startswith(prefix + os.sep) for prefix in prefixes)))
+    # launchverify's own packages where Python finds them (a module a model imports late
+    # is read there), and their real folders: a strict editable install links each
+    # module of its tree into the checkout
+    folders.update(package_folders())
+    folders.update(str(resolved(Path(folder, "__init__.py")).parent)
+                   for folder in package_folders())
+    folders.update(("/usr/lib", "/usr/lib64", "/lib", "/lib64", "/usr/share/zoneinfo",
+                    "/etc/ld.so.cache", "/etc/localtime"))
+    return tuple(outermost(folders))

@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import os
 import select
-import sys
 import time
 from collections import deque
 from collections.abc import Callable, Iterable, Mapping
@@ -25,15 +24,13 @@ from launchverify.frontends.python.importer import absent_modules_asked
 from launchverify.ir import actions as a
 from launchverify.isolation.channel import Channel, ChannelError, Closed
 from launchverify.isolation.codec import CodecError, Decoder, Encoder, TooLarge
-from launchverify.isolation.confine import WITHOUT_LANDLOCK, Limits, outermost
+from launchverify.isolation.confine import WITHOUT_LANDLOCK, Limits, readable_folders
 from launchverify.isolation.worker import Setting
 from launchverify.isolation.zygote import Zygote
-from launchverify.own_code import package_folders
 from launchverify.problems import Problem, ProblemKind, ProblemSink
 from launchverify.span import Span
 from launchverify.workspace import reading
 from launchverify.workspace.packages import PackageIndex
-from launchverify.workspace.paths import resolved
 from launchverify.workspace.reading import read_file
 
 GRACE = 2.0  # seconds past the time limit before a worker is killed
@@ -470,31 +467,3 @@ def _failed(span: Span, message: str, kind: ProblemKind) -> a.OpaqueResult:
 
 def _no_register(function: Callable[..., Any]) -> int:
     raise CodecError("launchverify sends no functions to a worker")
-
-
-def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
-    """Return the folders a worker may read: the workspace, packages, Python, system libraries.
-
-    Everything else (home folders, ``/proc``, ``/etc``) stays unreadable where Landlock
-    is available, so a launch file cannot copy secrets into its findings.
-    """
-    folders = {str(workspace)}
-    folders.update(str(folder) for folder in (*index.workspaces, *index.prefixes))
-    folders.update(str(folder) for found in index.sources.values() for folder in found)
-    prefixes = (sys.prefix, sys.base_prefix, sys.exec_prefix, sys.base_exec_prefix)
-    folders.update(prefixes)
-    # Python's own folders: beneath a prefix, site-packages-like, or on PYTHONPATH (a ROS
-    # installation's); not the folder launchverify was started in.
-    python_path = os.environ.get("PYTHONPATH", "").split(os.pathsep)
-    folders.update(entry for entry in sys.path if entry and (
-        entry in python_path or entry.endswith(("site-packages", "dist-packages"))
-        or any(entry.startswith(prefix + os.sep) for prefix in prefixes)))
-    # launchverify's own packages where Python finds them (a module a model imports late
-    # is read there), and their real folders: a strict editable install links each
-    # module of its tree into the checkout
-    folders.update(package_folders())
-    folders.update(str(resolved(Path(folder, "__init__.py")).parent)
-                   for folder in package_folders())
-    folders.update(("/usr/lib", "/usr/lib64", "/lib", "/lib64", "/usr/share/zoneinfo",
-                    "/etc/ld.so.cache", "/etc/localtime"))
-    return tuple(outermost(folders))

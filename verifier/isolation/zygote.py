@@ -356,7 +356,9 @@ def _warm_up(setting: Setting) -> None:
 
 # launchverify's own sys.path first (-I ignores PYTHONPATH), then the models' imports,
 # which run while launchverify builds its index; then the setup, read from the pipe
+# (the dataclasses' compiled methods are read from launchverify's cache, never written)
 _BOOT = ("import json, sys; sys.path[:] = json.loads(sys.argv[3]); "
+         "from launchverify.process.code_cache import install; install(); "
          "from launchverify.isolation.zygote import boot; boot(*sys.argv[1:3])")
 
 

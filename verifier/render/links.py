@@ -8,24 +8,15 @@ generated). Without the metadata (a copy run from sources), there is no link.
 from __future__ import annotations
 
 from functools import cache
-from importlib.metadata import PackageNotFoundError, metadata
 
+from launchverify.process.distributions import project_urls as distribution_urls
 from launchverify.rule import Rule
 
 
 @cache
 def project_urls() -> dict[str, str]:
     """Return the package's ``Project-URL`` entries by lower-case label (none if absent)."""
-    try:
-        entries = metadata("launchverify").get_all("Project-URL") or []
-    except PackageNotFoundError:
-        return {}
-    urls: dict[str, str] = {}
-    for entry in entries:
-        label, _, url = entry.partition(",")
-        if url.strip():
-            urls[label.strip().lower()] = url.strip()
-    return urls
+    return distribution_urls("launchverify")
 
 
 def documentation_base() -> str | None:

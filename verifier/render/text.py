@@ -12,10 +12,8 @@ finding on its own.
 
 from __future__ import annotations
 
-from typing import TextIO
-
-from rich.console import Console
-from rich.text import Text
+import os
+from typing import TYPE_CHECKING, TextIO
 
 from launchverify.engine import Report
 from launchverify.findings.fixes import applicable, fixable, hidden
@@ -23,6 +21,9 @@ from launchverify.render import links
 from launchverify.render.inert import inert
 from launchverify.rule import Finding, Severity
 from launchverify.workspace.sources import source_line, source_lines
+
+if TYPE_CHECKING:
+    from rich.console import Console
 
 STYLES = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow", Severity.INFO: "cyan"}
 
@@ -57,25 +58,48 @@ class Lines:
 
     def __init__(self, out: TextIO, color: bool | None) -> None:
         # --color always/never decide; auto follows the terminal and NO_COLOR (rich reads it)
-        self.console = Console(file=out, highlight=False, soft_wrap=True,
-                               force_terminal=color, no_color=None if color is None else not color)
         self.out = out
-        self.plain = self.console.color_system is None
+        self.console: Console | None = None
+        if color or (color is None and _may_style(out)):  # rich is imported only then
+            from rich.console import Console
+
+            self.console = Console(file=out, highlight=False, soft_wrap=True,
+                                   force_terminal=color,
+                                   no_color=None if color is None else not color)
+        self.plain = self.console is None or self.console.color_system is None
 
     def __call__(self, *pieces: Piece, style: str | None = None) -> None:
         """Write one line."""
-        if self.plain:
+        from_rich = self.console
+        if self.plain or from_rich is None:
             text = inert(
                 "".join(piece if isinstance(piece, str) else piece[0] for piece in pieces))
             if "\t" in text:  # tab stops count terminal cells (wide, zero-width): rich's way
+                from rich.text import Text
+
                 cells = Text(text)
-                cells.expand_tabs(self.console.tab_size)
+                cells.expand_tabs(from_rich.tab_size if from_rich is not None else 8)
                 text = cells.plain
             self.out.write(text + "\n")
         else:
+            from rich.text import Text
+
             safe = [inert(piece) if isinstance(piece, str) else (inert(piece[0]), piece[1])
                     for piece in pieces]
-            self.console.print(Text.assemble(*safe, style=style or ""))
+            from_rich.print(Text.assemble(*safe, style=style or ""))
+
+
+def _may_style(out: TextIO) -> bool:
+    """Return whether rich could choose colours for ``out`` (else it surely would not).
+
+    rich styles a terminal, or any stream when ``FORCE_COLOR`` or ``TTY_COMPATIBLE`` asks.
+    """
+    if os.environ.get("FORCE_COLOR") or os.environ.get("TTY_COMPATIBLE"):
+        return True
+    try:
+        return out.isatty()
+    except (AttributeError, ValueError, OSError):
+        return True  # rich decides
 
 
 def render_text(report: Report, out: TextIO, *, color: bool | None = None,

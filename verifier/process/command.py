@@ -6,7 +6,8 @@ end; the collector walking it again and again was a third of a large check, and 
 of a one-file check went to collections during the imports), and the process leaves
 without freeing its objects (freeing a large check's objects one by one took 0.4 s of a
 3 s check of the fleet bench). ``cli.main`` turns the collector back on for the commands
-that run long (``LONG_RUNNING``).
+that run long (``LONG_RUNNING``). The methods ``dataclasses`` generates are compiled once
+and kept between runs (``code_cache``).
 """
 
 import gc
@@ -22,9 +23,14 @@ def run() -> None:
     command = next((arg for arg in sys.argv[1:] if not arg.startswith("-")), None)
     if command not in LONG_RUNNING:
         gc.disable()
+    from launchverify.process.code_cache import install
+
+    code = install()
     from launchverify.cli import main
 
     status = main()
+    if code is not None:
+        code.save()
     try:
         sys.stdout.flush()
         sys.stderr.flush()

@@ -1,0 +1,1 @@
+"""The ``launchverify`` process: its entry point and what makes its start-up quick."""

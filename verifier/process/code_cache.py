@@ -1,0 +1,109 @@
+"""Compiled code for the methods ``dataclasses`` generates, kept between runs.
+
+``@dataclass`` writes each class's ``__init__``, ``__repr__``, ``__eq__``... as source
+text and compiles it when the class is defined: about 0.6 ms a class, and a check
+defines some 200 of them before it reads a file, two thirds of its start-up. The text is
+the same from run to run, so its compiled code is too: this module lets ``dataclasses``
+find it in a file beside launchverify's own modules, written as Python writes bytecode
+there (in ``__pycache__``, only when the folder is writable and bytecode writing is not
+turned off), and never inside a checked workspace's files. The file holds code compiled
+from texts ``dataclasses`` itself produced; a file of another Python, or that does not
+read back, is ignored.
+"""
+
+from __future__ import annotations
+
+import builtins
+import contextlib
+import dataclasses
+import marshal
+import os
+import sys
+import tempfile
+from pathlib import Path
+from types import CodeType
+from typing import Any
+
+MOST_ENTRIES = 4000  # beyond, only what the last run used is kept
+_HEADER = f"launchverify dataclass code {sys.version}".encode()
+
+
+class CodeCache:
+    """Compiled method texts by their source, loaded from and saved to one file."""
+
+    def __init__(self, path: Path) -> None:
+        self.path = path
+        self.known: dict[str, CodeType] = _load(path)
+        self.used: dict[str, CodeType] = {}
+        self.added = 0
+
+    def exec(self, source: Any, globals: dict[str, Any] | None = None,
+             locals: dict[str, Any] | None = None) -> None:
+        """Run ``source`` as ``exec`` does, compiling a text only once across runs."""
+        if not isinstance(source, str):
+            return builtins.exec(source, globals, locals)
+        code = self.known.get(source)
+        if code is None:
+            code = compile(source, "<string>", "exec")
+            self.known[source] = code
+            self.added += 1
+        self.used[source] = code
+        return builtins.exec(code, globals, locals)
+
+    def save(self) -> None:
+        """Write the file when this run compiled something new (atomically; quietly)."""
+        if not self.added or sys.dont_write_bytecode:
+            return
+        kept = self.known if len(self.known) <= MOST_ENTRIES else self.used
+        temporary: Path | None = None
+        try:
+            self.path.parent.mkdir(exist_ok=True)
+            handle, name = tempfile.mkstemp(dir=self.path.parent, prefix=".dataclass-")
+            temporary = Path(name)
+            with os.fdopen(handle, "wb") as out:
+                out.write(_HEADER + b"\n")
+                marshal.dump(kept, out)
+            temporary.chmod(0o644)  # as Python leaves bytecode (mkstemp makes it private)
+            temporary.replace(self.path)
+        except (OSError, ValueError):
+            if temporary is not None:
+                with contextlib.suppress(OSError):
+                    temporary.unlink()
+
+
+def install(folder: Path | None = None) -> CodeCache | None:
+    """Let ``dataclasses`` take compiled code from the cache; return it (``None``: not here).
+
+    ``dataclasses`` looks up ``exec`` in its own module's globals first, so placing the
+    cache's there changes nothing else. Pythons whose ``dataclasses`` builds no text are
+    left alone.
+    """
+    if not hasattr(dataclasses, "_create_fn") and not hasattr(dataclasses, "_FuncBuilder"):
+        return None
+    cache_folder = folder or Path(__file__).parent.parent / "__pycache__"  # as imported
+    cache = CodeCache(cache_folder / f"dataclass-code.{sys.implementation.cache_tag}.bin")
+    dataclasses.exec = cache.exec  # type: ignore[attr-defined]
+    return cache
+
+
+def uninstall() -> None:
+    """Give ``dataclasses`` the built-in ``exec`` back."""
+    dataclasses.__dict__.pop("exec", None)
+
+
+def _load(path: Path) -> dict[str, CodeType]:
+    """Return the compiled texts a file holds, none when it is absent, stale or broken."""
+    try:
+        data = path.read_bytes()
+    except OSError:
+        return {}
+    header, _, body = data.partition(b"\n")
+    if header != _HEADER:
+        return {}
+    try:
+        loaded = marshal.loads(body)
+    except (EOFError, ValueError, TypeError):
+        return {}
+    if not isinstance(loaded, dict):
+        return {}
+    return {k: v for k, v in loaded.items() if isinstance(k, str) and isinstance(v, CodeType)}
