@@ -104,13 +104,18 @@ def _read_lines(path: Path, mtime_ns: int, size: int) -> tuple[bytes, ...]:
 
 
 def _frame_span(frame: FrameType) -> Span:
-    return _span_at(frame.f_code, frame.f_lasti, frame.f_lineno)
+    code = frame.f_code
+    return _span_at(code, code.co_filename, frame.f_lasti, frame.f_lineno)
 
 
 @functools.lru_cache(maxsize=4096)
-def _span_at(code: CodeType, lasti: int, lineno: int | None) -> Span:
-    """Return the span of one instruction (a loop gets the same object: sent once)."""
-    path = Path(code.co_filename)
+def _span_at(code: CodeType, filename: str, lasti: int, lineno: int | None) -> Span:
+    """Return the span of one instruction (a loop gets the same object: sent once).
+
+    ``filename`` is part of the key: code objects compare equal without it, and two
+    launch files alike but for a string are evaluated by one worker one after the other.
+    """
+    path = Path(filename)
     line = lineno or 1
     positions = _positions(code)
     if positions is not None:

@@ -1,7 +1,8 @@
 """launchverify's side of the workers: Python launch files in, validated IR out.
 
 ``IsolatedPython`` stands where the in-process Python frontend stood (``load(path,
-sink)``): each Python launch file is evaluated by a fresh worker forked from the zygote,
+sink)``): each Python launch file is evaluated by a worker forked from the zygote (one
+that is done may take the next file of its repository, ``reuse``),
 up to ``jobs`` at once (``prefetch`` queues files the check will need), and what comes
 back is decoded by ``codec`` with every field checked. A worker whose file has
 OpaqueFunctions stays until the check ends, so the walk can run them when it reaches
@@ -49,6 +50,8 @@ class _Worker:
     loaded: int = 0  # callbacks its evaluation made (those a fresh worker makes again)
     recycled: bool = False  # ended to bound memory; a fresh one takes over when asked
     spent: float = 0.0  # seconds its file's requests took: the time limit is for all of them
+    repository: Path | None = None  # the files it may take after this one (``reuse``)
+    reused: bool = False  # it evaluated another file before this one
 
 
 @dataclass(eq=False)
@@ -104,6 +107,9 @@ class IsolatedPython:
         self._running: list[_Request] = []
         self._workers: dict[_Worker, None] = {}  # alive for OpaqueFunctions, oldest use first
         self._helpers: dict[Path, bool] = {}
+        self._idle: dict[Path, list[_Worker]] = {}  # done, and may take a file of their repository
+        self._repositories: dict[Path, Path] = {}
+        self.reused = 0  # files evaluated by a worker that had evaluated another
 
     # ------------------------------------------------------------------ the loader
 
@@ -134,6 +140,10 @@ class IsolatedPython:
 
     def close(self) -> None:
         """End every worker and the zygote."""
+        for idle in self._idle.values():
+            for worker in idle:
+                worker.channel.close()
+        self._idle.clear()
         for worker in self._workers:
             worker.channel.close()
         for request in self._running:
@@ -156,8 +166,23 @@ class IsolatedPython:
         while self._queue and len(self._running) < self.jobs:
             self._start(self._queue.popleft())
 
-    def _start(self, load: _Load) -> None:
-        """Start a worker on a file (a failure to start one is a problem on the file)."""
+    def _start(self, load: _Load, *, fresh: bool = False) -> None:
+        """Start a worker on a file (a failure to start one is a problem on the file).
+
+        A worker done with another file of the same repository takes it when one is idle
+        (``reuse``), unless ``fresh``.
+        """
+        repository = self._repository(load.path)
+        idle = self._idle.get(repository) if not fresh else None
+        if idle and self._readable(load.path):
+            done = idle.pop()
+            worker = _Worker(load.path, done.number, done.channel, repository=repository,
+                             reused=True)
+            load.request = self._send(worker, {"op": "load", "path": str(load.path)})
+            load.request.load = load
+            self._running.append(load.request)
+            self.reused += 1
+            return
         try:
             number, fd = self._spawn(load.path)
         except OSError as error:
@@ -166,10 +191,50 @@ class IsolatedPython:
                 ProblemKind.EVALUATION, "the evaluation of this file failed: no process "
                 f"could be started for it ({error.strerror or error})", Span.of_file(load.path)))
             return
-        worker = _Worker(load.path, number, Channel(fd))
+        worker = _Worker(load.path, number, Channel(fd), repository=repository)
         load.request = self._send(worker, None)
         load.request.load = load
         self._running.append(load.request)
+
+    def _repository(self, path: Path) -> Path:
+        """Return the files a worker of ``path`` may also evaluate: its repository's.
+
+        The nearest folder with ``.git`` up to the workspace, else the file's package, else
+        its folder.
+        """
+        folder = path.parent
+        known = self._repositories.get(folder)
+        if known is None:
+            known = folder
+            owner = self.setting.index.owner(path)
+            if owner is not None and owner.source is not None:
+                known = owner.source
+            for parent in (folder, *folder.parents):
+                if (parent / ".git").exists():
+                    known = parent
+                    break
+                if parent == self.setting.workspace:
+                    break
+            self._repositories[folder] = known
+        return known
+
+    def _readable(self, path: Path) -> bool:
+        """Return whether every worker may read ``path``'s folder (a first file's may be added)."""
+        folder = os.path.realpath(path.parent)
+        return any(folder == f or folder.startswith(f.rstrip("/") + "/")
+                   for f in self.setting.readable)
+
+    def _park(self, worker: _Worker) -> None:
+        """Keep a worker that may take another file of its repository (a few at most)."""
+        if worker.repository is None:
+            worker.channel.close()
+            return
+        self._idle.setdefault(worker.repository, []).append(worker)
+        while sum(len(idle) for idle in self._idle.values()) > self.jobs:
+            oldest = next(key for key, idle in self._idle.items() if idle)
+            self._idle[oldest].pop(0).channel.close()
+            if not self._idle[oldest]:
+                del self._idle[oldest]
 
     def _spawn(self, path: Path) -> tuple[int, int]:
         """Ask the zygote for a worker on ``path``; a new zygote if the old one is gone."""
@@ -273,10 +338,16 @@ class IsolatedPython:
     # ------------------------------------------------------------------ answers
 
     def _loaded(self, load: _Load, request: _Request) -> None:
-        load.done = True
-        self.evaluated += 1
         worker = request.worker
         reply = request.reply
+        if worker.reused and (reply is None or reply.get("op") != "loaded"):
+            worker.channel.close()  # what an earlier file left may be the cause: again, alone
+            self.reused -= 1
+            load.request = None
+            self._start(load, fresh=True)
+            return
+        load.done = True
+        self.evaluated += 1
         if reply is None or reply.get("op") != "loaded":
             if reply is None:
                 why, where = f"its process {request.failure}", Span.of_file(load.path)
@@ -317,6 +388,10 @@ class IsolatedPython:
         if callbacks:
             worker.loaded = len(callbacks)
             self._keep(worker)
+        elif reply.get("reusable") is True:
+            self._park(worker)
+
+
         else:
             worker.channel.close()  # nothing more to ask: the worker exits
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import shutil
 import traceback
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -23,6 +24,7 @@ from launchverify.frontends.python.sandbox import TimeLimitExceeded, arm, time_l
 from launchverify.isolation.channel import Channel, ChannelError
 from launchverify.isolation.codec import Decoder, Encoder
 from launchverify.isolation.confine import Confinement, Limits
+from launchverify.isolation.reuse import Baseline
 from launchverify.models import distros
 from launchverify.problems import ProblemSink
 from launchverify.workspace.packages import PackageIndex
@@ -54,7 +56,7 @@ def serve(fd: int, request: dict[str, Any], scratch: str, setting: Setting,
         channel = Channel(fd)
         protections = confinement.apply(scratch, _with_folder(setting.readable, request))
         arm(scratch, setting.environment)
-        _Worker(channel, setting, protections.describe()).run(request)
+        _Worker(channel, setting, protections.describe(), scratch).run(request)
     except BaseException:  # our own failure: the parent reports the worker's end
         if setting.debug:
             traceback.print_exc()
@@ -63,11 +65,16 @@ def serve(fd: int, request: dict[str, Any], scratch: str, setting: Setting,
 
 
 class _Worker:
-    def __init__(self, channel: Channel, setting: Setting, protections: str) -> None:
+    def __init__(self, channel: Channel, setting: Setting, protections: str,
+                 scratch: str) -> None:
         self.channel = channel
         self.setting = setting
         self.protections = protections
+        self.scratch = scratch
         self.callbacks: list[Callable[..., Any]] = []
+        self.baseline: Baseline | None = None
+        self.reused_no_more: str | None = None  # why it may take no other file
+        self.loads = 0
 
     def register(self, function: Callable[..., Any]) -> int:
         self.callbacks.append(function)
@@ -75,16 +82,21 @@ class _Worker:
 
     def run(self, request: dict[str, Any]) -> None:
         with distros.checking(self.setting.distro):
+            self.baseline = Baseline.take()
             self.answer(self.load, request)
             while True:
                 try:
                     request = self.channel.receive()
                 except ChannelError:
                     return  # the parent is done with this file
-                self.answer(self.call, request)
+                self.answer(self.load if request.get("op") == "load" else self.call, request)
 
     def answer(self, handler: Callable[[dict[str, Any]], dict[str, Any]],
                request: dict[str, Any]) -> None:
+        if handler == self.load and self.loads and self.reused_no_more is None:
+            # another file before this one: was the worker left as it was? (no timer runs)
+            self.reused_no_more = ("no baseline" if self.baseline is None
+                                   else self.baseline.disturbed())
         try:
             with time_limit(self.setting.limits.seconds):
                 reply = handler(request)
@@ -93,9 +105,19 @@ class _Worker:
                      "where": _user_line(error)}
         except BaseException as error:
             reply = {"op": "error", "message": _describe(error), "where": _user_line(error)}
+        if handler == self.load and not reply.get("again"):
+            if self.reused_no_more is None and (self.callbacks or reply.get("op") != "loaded"):
+                self.reused_no_more = ("an OpaqueFunction keeps it" if self.callbacks
+                                       else "its file failed")
+            reply["reusable"] = self.reused_no_more is None  # (the rest is checked if reused)
+            _clear(self.scratch)
         self.channel.send(reply)
 
     def load(self, request: dict[str, Any]) -> dict[str, Any]:
+        if self.loads and self.reused_no_more is not None:  # the parent starts it elsewhere
+            return {"op": "error", "message": "this worker takes no other file: "
+                    f"{self.reused_no_more}", "where": None, "again": True}
+        self.loads += 1
         path = Path(request["path"])
         sink = ProblemSink()
         frontend = PythonFrontend(self.setting.index, self.setting.workspace,
@@ -116,6 +138,20 @@ class _Worker:
             return {"op": "error", "message": "malformed call", "where": None}
         result = self.callbacks[number](arguments[0], Path(str(arguments[1])))
         return {"op": "result", "data": Encoder(self.register).encode(result)}
+
+
+def _clear(scratch: str) -> None:
+    """Empty the scratch folder between files (the next one starts with nothing there)."""
+    try:
+        entries = list(os.scandir(scratch))
+    except OSError:
+        return
+    for entry in entries:
+        with contextlib.suppress(Exception):  # what is refused stays: the next file copes
+            if entry.is_dir(follow_symlinks=False):
+                shutil.rmtree(entry.path, ignore_errors=True)
+            else:
+                Path(entry.path).unlink()
 
 
 def _not_callable(*args: object) -> None:

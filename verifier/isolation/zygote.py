@@ -1,4 +1,4 @@
-"""The zygote: a fresh interpreter started once per check that forks one worker per file.
+"""The zygote: a fresh interpreter started once per check that forks the workers.
 
 It is started with ``exec``, never forked from launchverify, and with an environment
 built from scratch: no byte of the caller's environment (a CI job's tokens, on the

@@ -1,0 +1,108 @@
+"""One worker evaluates several Python files of a repository, and no file pays for another.
+
+A file that crashes its worker, patches the launch API models, leaves a thread or a timer
+running, or changes a signal handler costs only itself: the files after it are evaluated
+as a fresh worker would (``isolation/reuse.py``).
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from launchverify.engine import CheckOptions, run_check
+from launchverify.ir import actions as a
+from launchverify.isolation.pool import IsolatedPython
+from launchverify.problems import ProblemSink
+from launchverify.workspace.packages import PackageIndex
+
+PLAIN = """\
+import os, signal, threading, builtins, time
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    description = LaunchDescription([
+        DeclareLaunchArgument('robot', default_value='r1'),
+        Node(package='demo_nodes_cpp', executable='talker', name='{name}')])
+    {disturb}
+    return description
+"""
+# what a file does once its description is built (a file broken by it fails alone anyway)
+DISTURBING = {
+    "crash": "os._exit(3)",
+    "patch": "DeclareLaunchArgument.__init__ = lambda self, *a, **k: None",
+    "builtins": "builtins.sorted = lambda value, **k: []",
+    "thread": "threading.Thread(target=time.sleep, args=(30,), daemon=True).start()",
+    "timer": "signal.setitimer(signal.ITIMER_VIRTUAL, 30)",
+    "handler": "signal.signal(signal.SIGUSR1, lambda *a: None)",
+}
+# files after b that reuse a worker: c takes a fresh one after a disturbance; a crash
+# also costs b's retry in a fresh worker, and the sandbox refuses threads (nothing is left)
+REUSED = {"crash": 1, "thread": 3}
+
+
+def _package(root: Path, files: dict[str, str]) -> list[Path]:
+    (root / "package.xml").write_text(
+        "<package format='3'><name>demo</name><version>0.0.0</version><description>d"
+        "</description><maintainer email='a@b.c'>a</maintainer><license>MIT</license>"
+        "</package>\n")
+    (root / "launch").mkdir()
+    paths = []
+    for name, text in files.items():
+        path = root / "launch" / f"{name}.launch.py"
+        path.write_text(text)
+        paths.append(path)
+    return paths
+
+
+def _plain(name: str, disturb: str = "pass") -> str:
+    return PLAIN.format(name=name, disturb=disturb)
+
+
+def _names(launch: a.LaunchFile | None) -> list[str]:
+    assert launch is not None
+    return [action.name.describe() for action in launch.actions  # type: ignore[attr-defined]
+            if isinstance(action, a.Node) and action.name is not None]
+
+
+def test_files_of_one_package_share_a_worker(tmp_path: Path) -> None:
+    paths = _package(tmp_path, {f"f{n}": _plain(f"node{n}") for n in range(6)})
+    with IsolatedPython(PackageIndex([tmp_path]), tmp_path, jobs=1) as python:
+        python.prefetch(paths)
+        names = [_names(python.load(path, ProblemSink())) for path in paths]
+        assert python.reused == 5 and python.evaluated == 6
+    assert names == [[f"node{n}"] for n in range(6)]
+
+
+@pytest.mark.parametrize("kind", sorted(DISTURBING))
+def test_a_file_that_disturbs_its_worker_costs_only_itself(kind: str, tmp_path: Path) -> None:
+    paths = _package(tmp_path, {"a_first": _plain("first"), "b_disturbing":
+                                _plain("disturbing", DISTURBING[kind]),
+                                "c_after": _plain("after"), "d_last": _plain("last")})
+    with IsolatedPython(PackageIndex([tmp_path]), tmp_path, jobs=1) as python:
+        python.prefetch(paths)
+        sinks = [ProblemSink() for _ in paths]
+        loaded = [python.load(path, sink) for path, sink in zip(paths, sinks, strict=True)]
+        assert python.reused == REUSED.get(kind, 2)
+    assert _names(loaded[0]) == ["first"] and not sinks[0].problems
+    assert _names(loaded[2]) == ["after"] and not sinks[2].problems, sinks[2].problems
+    assert _names(loaded[3]) == ["last"] and not sinks[3].problems
+
+
+def test_reuse_gives_the_findings_of_fresh_workers(tmp_path: Path,
+                                                  monkeypatch: pytest.MonkeyPatch) -> None:
+    files = {f"f{n}": _plain("twin" if n % 2 else f"node{n}") for n in range(6)}
+    files["g"] = _plain("twin", DISTURBING["patch"])
+    _package(tmp_path, files)
+
+    def findings() -> list[tuple[str, str, int]]:
+        report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+        return sorted((f.code, f.span.file.name, f.span.line) for f in report.findings)
+
+    reused = findings()
+    monkeypatch.setattr(IsolatedPython, "_park", lambda self, worker: worker.channel.close())
+    assert findings() == reused
