@@ -18,6 +18,7 @@ this runs
     python bench/realrepos.py --corpus /tmp/lv-corpus --against /tmp/old/bin/launchverify
     python bench/realrepos.py --corpus /tmp/lv-corpus --min-files 20 --repeat 1
     python bench/realrepos.py --corpus /tmp/lv-corpus --startup --repeat 20
+    python bench/realrepos.py --corpus /tmp/lv-corpus --whole --repeat 1
 
 The commit of each repository is printed from the corpus manifest, so figures can be
 compared between runs. Standard library only.
@@ -165,14 +166,18 @@ def startup_times(repeat: int) -> dict[str, float]:
         shutil.rmtree(workspace, ignore_errors=True)
 
 
-def oracle_seconds(corpus: Path, repo: str) -> tuple[float, int] | None:
-    """Time the real launch library over a repository's launch files, one process each."""
+def oracle_seconds(corpus: Path, repo: str | None) -> tuple[float, int] | None:
+    """Time the real launch library over a repository's launch files, one process each.
+
+    ``repo`` ``None``: over every launch file of the corpus.
+    """
     needed = ("ORACLE", "ORACLE_PY", "ORACLE_PYTHONPATH")
     if any(name not in os.environ for name in needed):
         return None
     out = Path(tempfile.mkdtemp(prefix="lv-bench-oracle-")) / "results.jsonl"
     command = [sys.executable, str(Path(os.environ["ORACLE"]) / "run_oracle.py"),
-               "--corpus", str(corpus), "--out", str(out), "--jobs", "1", "--repo", repo]
+               "--corpus", str(corpus), "--out", str(out), "--jobs", "1",
+               *(["--repo", repo] if repo else ["--all"])]
     started = time.perf_counter()
     subprocess.run(command, capture_output=True, check=False,
                    env={**os.environ, "CORPUS": str(corpus)})
@@ -193,6 +198,28 @@ def largest(manifest: dict[str, object], at_least: int) -> list[str]:
                   key=lambda r: (-counts[r], r))
 
 
+def whole(corpus: Path, repeat: int) -> int:
+    """Print one cold check of the whole corpus against the real library over its files."""
+    command = [*launchverify(), "check", str(corpus), "--workspace", str(corpus),
+               "--format", "json", "--exit-zero", "-q", "--no-cache"]
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    ours, library = [], []
+    for _ in range(repeat):
+        ours.append(timed(command, env))
+        found = oracle_seconds(corpus, None)
+        if found is not None:
+            library.append(found[0])
+    seconds = statistics.median(s for s, _ in ours)
+    peak = max(m for _, m in ours)
+    print(f"whole corpus: launchverify {seconds:.2f} s cold (peak {peak} MB)", end="")
+    if library:
+        real = statistics.median(library)
+        print(f", the real library {real:.1f} s: {real / seconds:.1f}x")
+    else:
+        print(" (no oracle environment: no ratio)")
+    return 0
+
+
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--corpus", type=Path, required=True,
@@ -208,7 +235,13 @@ def main() -> int:
                              "cold, alternating with this one")
     parser.add_argument("--startup", action="store_true",
                         help="only time one-file checks against `launchverify --version`")
+    parser.add_argument("--whole", action="store_true",
+                        help="only time one cold check of the whole corpus, against the "
+                             "real library over every launch file (with the oracle's "
+                             "environment), the two alternating")
     args = parser.parse_args()
+    if args.whole:
+        return whole(args.corpus, args.repeat)
     if args.startup:
         figures = startup_times(max(args.repeat, 10))
         base = figures["version"]

@@ -620,7 +620,8 @@ def test_without_landlock_nothing_is_written_either(outcome: Outcome,
     assert "Landlock (turned off by LAUNCHVERIFY_WITHOUT_LANDLOCK)" in report.protections
     assert _snapshot(outcome.root, outcome.root / "tmp") == before
     for name in ("sentinel.launch.xml", "sentinel.launch.py"):
-        assert [f.code for f in report.findings if f.span.file.name == name] == ["LV101"]
+        assert [f.code for f in report.findings if f.span.file.name == name] == ["LV101"], [
+            f.message for f in report.findings if f.span.file.name == name]
 
 
 # --------------------------------------------------------------------------- the terminal

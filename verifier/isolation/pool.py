@@ -109,6 +109,7 @@ class IsolatedPython:
         self._helpers: dict[Path, bool] = {}
         self._idle: dict[Path, list[_Worker]] = {}  # done, and may take a file of their repository
         self._repositories: dict[Path, Path] = {}
+        self._queued: dict[Path, int] = {}  # files queued, by repository
         self.reused = 0  # files evaluated by a worker that had evaluated another
 
     # ------------------------------------------------------------------ the loader
@@ -120,6 +121,8 @@ class IsolatedPython:
                 load = _Load(path)
                 self._loads[path] = load
                 self._queue.append(load)
+                repository = self._repository(path)
+                self._queued[repository] = self._queued.get(repository, 0) + 1
         self._start_queued()
 
     def load(self, path: Path, sink: ProblemSink) -> a.LaunchFile | None:
@@ -131,6 +134,7 @@ class IsolatedPython:
             self._start(load)  # needed now: it starts whatever else runs
         elif load.request is None and not load.done:  # queued: needed now
             self._queue.remove(load)
+            self._dequeued(load)
             self._start(load)
         while not load.done:
             self._pump()
@@ -164,7 +168,13 @@ class IsolatedPython:
 
     def _start_queued(self) -> None:
         while self._queue and len(self._running) < self.jobs:
-            self._start(self._queue.popleft())
+            load = self._queue.popleft()
+            self._dequeued(load)
+            self._start(load)
+
+    def _dequeued(self, load: _Load) -> None:
+        repository = self._repository(load.path)
+        self._queued[repository] = self._queued.get(repository, 1) - 1
 
     def _start(self, load: _Load, *, fresh: bool = False) -> None:
         """Start a worker on a file (a failure to start one is a problem on the file).
@@ -183,8 +193,8 @@ class IsolatedPython:
             self._running.append(load.request)
             self.reused += 1
             return
-        try:
-            number, fd = self._spawn(load.path)
+        try:  # a worker prepares to take more files when more of its repository wait
+            number, fd = self._spawn(load.path, reuse=self._queued.get(repository, 0) > 0)
         except OSError as error:
             load.done = True
             load.problems.append(Problem(
@@ -236,13 +246,16 @@ class IsolatedPython:
             if not self._idle[oldest]:
                 del self._idle[oldest]
 
-    def _spawn(self, path: Path) -> tuple[int, int]:
-        """Ask the zygote for a worker on ``path``; a new zygote if the old one is gone."""
+    def _spawn(self, path: Path, *, reuse: bool = False) -> tuple[int, int]:
+        """Ask the zygote for a worker on ``path``; a new zygote if the old one is gone.
+
+        ``reuse``: the worker records its state before the file, to take another after.
+        """
         for attempt in range(2):
             if self._zygote is None:
                 self._zygote = Zygote(self.setting)
             try:
-                return self._zygote.spawn({"path": str(path)})
+                return self._zygote.spawn({"path": str(path), "reuse": reuse})
             except OSError:
                 self._zygote.close()
                 self._zygote = None

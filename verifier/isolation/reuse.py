@@ -6,17 +6,20 @@ controls all of them already, so evaluating two of them in one process buys an a
 nothing; the boundaries that matter (worker and launchverify, worker and machine) stay.
 What must not happen is one file changing how the next one is evaluated by accident:
 after each file, ``Baseline.disturbed`` compares the worker with the state it had before
-its first file. A file that patched launchverify's models or ``builtins``, left a thread
-(a ``threading.Timer``) or a timer signal behind, changed a signal handler, the import
-system or the working folder, or registered an OpaqueFunction (its process stays for
-it) ends the worker's reuse. What a file imported from the workspace is forgotten after
-each evaluation anyway (``frontends.python.importer``).
+its first file. A file that rebound anything in a loaded module (launchverify's models,
+``builtins``, ``os``, ``yaml``... and the classes of those the models read with), kept a
+library imported that was not before, left a thread (a ``threading.Timer``) or a timer
+signal behind, changed a signal handler, the import system or the working folder, or
+registered an OpaqueFunction (its process stays for it) ends the worker's reuse. What a
+file imported from the workspace is forgotten after each evaluation anyway
+(``frontends.python.importer``).
 """
 
 from __future__ import annotations
 
 import builtins
 import gc
+import operator
 import signal
 import sys
 import threading
@@ -33,51 +36,60 @@ _TIMERS = tuple(getattr(signal, name) for name in ("ITIMER_REAL", "ITIMER_VIRTUA
                                                     "ITIMER_PROF") if hasattr(signal, name))
 
 
-def _module_digest(module: ModuleType) -> int:
-    """Return a digest of what a module binds, and of what its own classes bind.
+# modules whose classes are compared too (what the models and the frontend read with);
+# every module's own bindings are
+_CLASSES_OF = ("launchverify.models", "yaml", "pathlib", "posixpath", "os", "tempfile",
+               "shutil", "json", "builtins")
 
-    Only integers are built (no tuple per entry): the worker's collector is on, and a
-    digest that allocated containers would set it walking the whole heap.
+
+def _bindings(module: ModuleType, classes: bool) -> tuple[object, ...]:
+    """Return what a module binds (and what its own classes bind), names and values.
+
+    The values themselves are kept and later compared with ``is``: ``id()`` raises an
+    audit event, and the worker's audit hook made a digest of ids ten times slower.
     """
-    ids: list[int] = []
+    found: list[object] = []
     own = module.__name__
     for name, value in list(vars(module).items()):
-        ids.append(hash(name))
-        ids.append(id(value))
-        if isinstance(value, type) and value.__module__ == own:
-            for key, item in list(vars(value).items()):
-                ids.append(hash(key))
-                ids.append(id(item))
-    return hash(tuple(ids))
+        found.append(name)
+        found.append(value)
+        if classes and isinstance(value, type) and value.__module__ == own:
+            for entry in list(vars(value).items()):
+                found.extend(entry)
+    return tuple(found)
 
 
-def _watched() -> dict[str, ModuleType]:
-    """Return the modules a launch file must leave alone: the models and ``builtins``.
+def _same(old: tuple[object, ...], new: tuple[object, ...]) -> bool:
+    return len(old) == len(new) and all(map(operator.is_, old, new))
 
-    (A launch file reaches launchverify only through the models of the launch API.)
-    """
-    found = {name: module for name, module in list(sys.modules.items())
-             if isinstance(module, ModuleType) and name.startswith("launchverify.models")}
-    found["builtins"] = builtins
-    return found
+
+def _modules() -> dict[str, ModuleType]:
+    """Return every module loaded, by name."""
+    return {name: module for name, module in list(sys.modules.items())
+            if isinstance(module, ModuleType)}
+
+
+def _all_bindings(modules: dict[str, ModuleType]) -> dict[str, tuple[object, ...]]:
+    return {name: _bindings(module, name.startswith(_CLASSES_OF))
+            for name, module in modules.items()}
 
 
 @dataclass(frozen=True)
 class Baseline:
     """A worker's state before its first file, to compare with after each one."""
 
-    modules: dict[str, int]
+    modules: dict[str, tuple[object, ...]]
     threads: int
     handlers: tuple[object, ...]
-    hooks: tuple[int, ...]
+    hooks: tuple[object, ...]
     cwd: str
 
     @classmethod
     def take(cls) -> Baseline:
         """Record the worker's state now."""
         with _collector_paused():
-            return cls({name: _module_digest(module) for name, module in _watched().items()},
-                       threading.active_count(), _handlers(), _hooks(), _cwd())
+            return cls(_all_bindings(_modules()), threading.active_count(), _handlers(),
+                       _hooks(), _cwd())
 
     def disturbed(self) -> str | None:
         """Return what a file left changed (``None``: the worker may take another file)."""
@@ -87,13 +99,18 @@ class Baseline:
             return "a timer is left armed"
         if _handlers() != self.handlers:
             return "a signal handler changed"
-        if _hooks() != self.hooks:
+        if not _same(self.hooks, _hooks()):
             return "the import system changed"
         if _cwd() != self.cwd:
             return "the working folder changed"
         with _collector_paused():
-            for name, module in _watched().items():
-                if name in self.modules and self.modules[name] != _module_digest(module):
+            modules = _modules()
+            added = modules.keys() - self.modules.keys()
+            if added:  # imported and kept (a library): as the file may have left it
+                return f"{min(added)} stays imported"
+            for name, module in modules.items():
+                if not _same(self.modules[name],
+                             _bindings(module, name.startswith(_CLASSES_OF))):
                     return f"{name} was changed"
         return None
 
@@ -113,9 +130,9 @@ def _handlers() -> tuple[object, ...]:
     return tuple(signal.getsignal(number) for number in _SIGNALS)
 
 
-def _hooks() -> tuple[int, ...]:
-    return (*map(id, sys.meta_path), *map(id, sys.path_hooks), id(sys.excepthook),
-            id(sys.gettrace()), id(sys.getprofile()), id(builtins.__import__))
+def _hooks() -> tuple[object, ...]:
+    return (*sys.meta_path, *sys.path_hooks, sys.excepthook, sys.gettrace(), sys.getprofile(),
+            builtins.__import__)
 
 
 def _cwd() -> str:

@@ -82,7 +82,9 @@ class _Worker:
 
     def run(self, request: dict[str, Any]) -> None:
         with distros.checking(self.setting.distro):
-            self.baseline = Baseline.take()
+            # recorded only when the parent may send more (touching every module copies
+            # the zygote's pages: about 10 ms)
+            self.baseline = Baseline.take() if request.get("reuse") else None
             self.answer(self.load, request)
             while True:
                 try:
@@ -106,9 +108,11 @@ class _Worker:
         except BaseException as error:
             reply = {"op": "error", "message": _describe(error), "where": _user_line(error)}
         if handler == self.load and not reply.get("again"):
-            if self.reused_no_more is None and (self.callbacks or reply.get("op") != "loaded"):
+            if self.reused_no_more is None and (self.callbacks or reply.get("op") != "loaded"
+                                                or self.baseline is None):
                 self.reused_no_more = ("an OpaqueFunction keeps it" if self.callbacks
-                                       else "its file failed")
+                                       else "its file failed" if reply.get("op") != "loaded"
+                                       else "it was not asked to take more")
             reply["reusable"] = self.reused_no_more is None  # (the rest is checked if reused)
             _clear(self.scratch)
         self.channel.send(reply)
