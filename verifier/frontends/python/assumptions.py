@@ -43,6 +43,7 @@ def checked(run: Callable[[], tuple[_T, Sequence[Problem]]],
     describes (``None`` when it describes nothing).
     """
     answers, fixed, branches = WORLD.answers, WORLD.fixed, WORLD.branches
+    WORLD.answered.clear()  # what this run assumes (a worker may have run another file)
     result, found = run()
     failed = any(p.kind is ProblemKind.EVALUATION for p in found)
     branched = WORLD.branches != branches
