@@ -42,7 +42,6 @@ from launchverify.engine import (
     UsageError,
     build_index,
     canonical,
-    collector_paused,
     confine_reads,
     parse_arguments,
     parse_environment,
@@ -53,6 +52,7 @@ from launchverify.findings.baseline import BaselineError, write_baseline
 from launchverify.findings.cache import ResultCache, default_cache_dir, disabled_by_environment
 from launchverify.findings.fixes import Outcome, fix_all, hidden, unified_diff
 from launchverify.models.distros import DISTROS
+from launchverify.process.collector import collector_paused
 from launchverify.process.command import LONG_RUNNING
 from launchverify.registry import RegistryError
 from launchverify.render.inert import InertWriter, inert, inert_block
@@ -352,7 +352,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     handlers = {"check": _check, "report": _report, "graph": _graph, "rules": _rules,
                 "explain": _explain, "run": _run, "completion": _completion, "lsp": _lsp,
                 "interfaces": topology_command.run}
-    # Until the output is written (engine.collector_paused says why); not for the commands
+    # Until the output is written (process.collector says why); not for the commands
     # that run long, a server and a launch, whose garbage must go as they run.
     long_running = args.command in LONG_RUNNING
     if long_running:

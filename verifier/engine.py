@@ -9,13 +9,11 @@ reached its file agrees (an argument unused standalone may be read by an include
 from __future__ import annotations
 
 import dataclasses
-import gc
 import os
 import sys
 import time
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
@@ -32,6 +30,7 @@ from launchverify.findings.cache import (
     settled,
     stamps_of,
 )
+from launchverify.process.collector import collector_paused
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.span import Span
 from launchverify.workspace import reading
@@ -260,25 +259,6 @@ def run_check(options: CheckOptions) -> Report:
         with Background(partial(Includers.of_workspace, sources)) as scan:
             return _check_files(options, tree, folders, scan.result, started,
                                 discover(options.paths, filter_files=options.launch_files_only))
-
-
-@contextmanager
-def collector_paused() -> Iterator[None]:
-    """Pause Python's cycle collector while a check runs (it resumes after).
-
-    What a check builds lives until its end: the graphs of every root, which the rules
-    read last. The collector, triggered by allocations, walked those growing graphs again
-    and again: 30% of a check of autoware_launch or of the 41-repository corpus. Objects
-    are still freed when unreferenced; only cycles wait for the end of the check (the
-    corpus's peak memory: 507 -> 524 MB).
-    """
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
 
 
 def _check_files(options: CheckOptions, tree: ConfigTree,

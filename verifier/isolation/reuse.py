@@ -18,16 +18,15 @@ file imported from the workspace is forgotten after each evaluation anyway
 from __future__ import annotations
 
 import builtins
-import gc
 import operator
 import signal
 import sys
 import threading
-from collections.abc import Iterator
-from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
+
+from launchverify.process.collector import collector_paused
 
 _SIGNALS = tuple(getattr(signal, name) for name in (
     "SIGALRM", "SIGVTALRM", "SIGPROF", "SIGTERM", "SIGINT", "SIGHUP", "SIGCHLD", "SIGPIPE",
@@ -87,7 +86,7 @@ class Baseline:
     @classmethod
     def take(cls) -> Baseline:
         """Record the worker's state now."""
-        with _collector_paused():
+        with collector_paused():
             return cls(_all_bindings(_modules()), threading.active_count(), _handlers(),
                        _hooks(), _cwd())
 
@@ -103,7 +102,7 @@ class Baseline:
             return "the import system changed"
         if _cwd() != self.cwd:
             return "the working folder changed"
-        with _collector_paused():
+        with collector_paused():
             modules = _modules()
             added = modules.keys() - self.modules.keys()
             if added:  # imported and kept (a library): as the file may have left it
@@ -113,17 +112,6 @@ class Baseline:
                              _bindings(module, name.startswith(_CLASSES_OF))):
                     return f"{name} was changed"
         return None
-
-
-@contextmanager
-def _collector_paused() -> Iterator[None]:
-    enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if enabled:
-            gc.enable()
 
 
 def _handlers() -> tuple[object, ...]:
