@@ -19,7 +19,6 @@ import dataclasses
 import marshal
 import os
 import sys
-import tempfile
 from pathlib import Path
 from types import CodeType
 from typing import Any
@@ -54,6 +53,8 @@ class CodeCache:
         """Write the file when this run compiled something new (atomically; quietly)."""
         if not self.added or sys.dont_write_bytecode:
             return
+        import tempfile  # only to write (its imports are a tenth of this module's purpose)
+
         kept = self.known if len(self.known) <= MOST_ENTRIES else self.used
         temporary: Path | None = None
         try:
