@@ -5,13 +5,14 @@ as a small launch file's evaluation). Within one repository the author of the fi
 controls all of them already, so evaluating two of them in one process buys an attacker
 nothing; the boundaries that matter (worker and launchverify, worker and machine) stay.
 What must not happen is one file changing how the next one is evaluated by accident:
-after each file, ``Baseline.disturbed`` compares the worker with the state it had before
-its first file. A file that rebound anything in a loaded module (launchverify's models,
-``builtins``, ``os``, ``yaml``... and the classes of those the models read with), kept a
-library imported that was not before, left a thread (a ``threading.Timer``) or a timer
-signal behind, changed a signal handler, the import system or the working folder, or
-registered an OpaqueFunction (its process stays for it) ends the worker's reuse. What a
-file imported from the workspace is forgotten after each evaluation anyway
+before it takes another file, ``Baseline.disturbed`` compares the worker with the state
+it had before its first (recorded only when the parent may send more). A file that
+rebound anything in a loaded module (launchverify's models, ``builtins``, ``os``,
+``yaml``... and the classes of those the models read with), kept a library imported
+that was not before, left a thread (a ``threading.Timer``) or a timer signal behind,
+changed a signal handler, the import system or the working folder, or registered an
+OpaqueFunction (its process stays for it) ends the worker's reuse. What a file imported
+from the workspace is forgotten after each evaluation anyway
 (``frontends.python.importer``).
 """
 
@@ -45,7 +46,8 @@ def _bindings(module: ModuleType, classes: bool) -> tuple[object, ...]:
     """Return what a module binds (and what its own classes bind), names and values.
 
     The values themselves are kept and later compared with ``is``: ``id()`` raises an
-    audit event, and the worker's audit hook made a digest of ids ten times slower.
+    audit event, which the worker's audit hook hears (a digest of ids was ten times
+    slower than this before the hook learnt to return at once for it).
     """
     found: list[object] = []
     own = module.__name__
