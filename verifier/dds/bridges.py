@@ -122,8 +122,7 @@ def _bridges(graph: LaunchGraph) -> Iterator[_Bridge]:
                           launch.origin)
     for include in graph.includes:
         if include.status != "loaded" and graph.runs(include.origin) is not False and \
-                include.location.describe().endswith("/" + LAUNCH_FILE) and \
-                PACKAGE in include.location.describe():
+                _names_bridge_launch(include.location.describe()):
             given = {name: graph.base(value) for name, value, _ in include.arguments}
             passed: list[str | None] = []
             for option, argument in (("--from", "from_domain"), ("--to", "to_domain")):
@@ -131,6 +130,21 @@ def _bridges(graph: LaunchGraph) -> Iterator[_Bridge]:
                     passed += [option, given[argument]]
             passed.append(given.get("config"))
             yield _Bridge(tuple(passed), include.origin)
+
+
+def _names_bridge_launch(written: str) -> bool:
+    """Return whether an include's path is domain_bridge's own launch file.
+
+    Examples:
+        >>> tail = "/launch/domain_bridge.launch.xml"
+        >>> _names_bridge_launch("<share folder of domain_bridge>" + tail)
+        True
+        >>> _names_bridge_launch("<share folder of my_domain_bridge>" + tail)
+        False
+    """
+    share = (f"<share folder of {PACKAGE}>", f"$(find-pkg-share {PACKAGE})")
+    return written.endswith(f"/launch/{LAUNCH_FILE}") and any(
+        written.startswith(prefix) or f"/share/{PACKAGE}/" in written for prefix in share)
 
 
 def _is_bridge(graph: LaunchGraph, word: Sub) -> bool:
