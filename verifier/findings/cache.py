@@ -28,7 +28,6 @@ import os
 import pickle
 import stat
 import sys
-import tempfile
 import time
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, fields
@@ -340,6 +339,8 @@ class BlobStore:
 
 def _write(path: Path, value: object) -> bool:
     """Pickle a value to ``path`` atomically (a reader never sees half a file)."""
+    import tempfile  # a run answered from the cache writes nothing (4 ms of its imports)
+
     try:
         handle, temporary = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
     except OSError:
