@@ -6,6 +6,8 @@ import dataclasses
 from collections.abc import Hashable, Iterator
 from typing import TYPE_CHECKING
 
+from launchverify.dds.bridges import crossings, feeding
+from launchverify.dds.discovery import CALLER, discovery_of
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, PollingRule, Related, RuleContext, Severity
 from launchverify.rules.wiring.unused_remap import BUILT_IN_NAMES, BUILT_IN_PRIVATE
@@ -164,8 +166,6 @@ class MissingPeer(PollingRule):
         domain into the node's serves it, and a bridge whose configuration is not known
         may serve anything.
         """
-        from launchverify.dds.bridges import crossings, feeding
-        from launchverify.dds.discovery import discovery_of
         from launchverify.topology.wiring import VERBS, describe_node
 
         graph = view.graph
@@ -175,9 +175,8 @@ class MissingPeer(PollingRule):
             return None
         bridges = crossings(graph)
         if bridges is None or any(
-                _number(c.target) == _number(mine.domain) and
-                (absolute_name(c.topic) != end.name or  # fed from another name
-                 any(_number(c.source) == _number(other.domain) for other in theirs))
+                c.enters(mine.domain) and (c.reads != end.name  # fed from another name
+                                           or any(c.leaves(other.domain) for other in theirs))
                 for c in feeding(bridges, end.name or "")):
             return None
         writer = writers[0]
@@ -198,29 +197,11 @@ class MissingPeer(PollingRule):
 
 def bridged_in(view: WiringView, composed: NodeEndpoints, name: str) -> bool:
     """Return whether a bridge publishes the name into a domain that may be the node's."""
-    from launchverify.dds.bridges import crossings, feeding
-    from launchverify.dds.discovery import CALLER, discovery_of
-
     bridges = crossings(view.graph)
     if not bridges:
         return False
     mine = discovery_of(view.graph, composed.node).domain
-    return any(mine in (None, CALLER) or _number(c.target) == _number(mine)
-               for c in feeding(bridges, name))
-
-
-def _number(domain: str | None) -> object:
-    """Return a domain as rcl reads it, for comparing a bridge's with a node's."""
-    from launchverify.dds.discovery import domain_number
-
-    return domain_number(domain)
-
-
-def absolute_name(name: str) -> str:
-    """Return a bridge's topic name as a fully qualified name."""
-    from launchverify.dds.bridges import absolute
-
-    return absolute(name)
+    return any(mine in (None, CALLER) or c.enters(mine) for c in feeding(bridges, name))
 
 
 def built_in(name: str) -> bool:

@@ -78,8 +78,8 @@ class TypeMismatch(Rule):
         domain, and publishes with it in the target domain: a publisher there of another
         type feeds nothing across, a subscriber of another type hears nothing.
         """
-        from launchverify.dds.bridges import absolute, crossings, message_type
-        from launchverify.dds.discovery import discovery_of, domain_number
+        from launchverify.dds.bridges import crossings, message_type
+        from launchverify.dds.discovery import discovery_of
         from launchverify.topology.wiring import VERBS, describe_node, from_sources
 
         for crossing in crossings(view.graph) or []:
@@ -87,14 +87,13 @@ class TypeMismatch(Rule):
                 continue
             forwarded = message_type(crossing.type)
             connections = view.by_name.get("topics", {})
-            for name, domain, role in ((absolute(crossing.topic), crossing.source, "publishers"),
-                                       (crossing.writes, crossing.target, "subscribers")):
+            for name, there, role in ((crossing.reads, crossing.leaves, "publishers"),
+                                      (crossing.writes, crossing.enters, "subscribers")):
                 connection = connections.get(name)
                 for end in connection.ends.get(role, []) if connection else []:
                     theirs = end.endpoint.type
                     if theirs is None or message_type(theirs) == forwarded or \
-                            domain_number(discovery_of(view.graph, end.node).domain) != \
-                            domain_number(domain):
+                            not there(discovery_of(view.graph, end.node).domain):
                         continue
                     peer = describe_node(view, end.node)
                     finding = self.finding(

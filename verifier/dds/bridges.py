@@ -19,6 +19,7 @@ from pathlib import Path
 
 import yaml
 
+from launchverify.dds.discovery import domain_number
 from launchverify.frontends.yaml_reader import YamlLoadError, compose, span_of
 from launchverify.graph import LaunchGraph, Origin
 from launchverify.ir.subst import Sub
@@ -51,9 +52,22 @@ class Crossing:
     origin: Origin | None = None
 
     @property
+    def reads(self) -> str:
+        """Return the fully qualified name the bridge subscribes to."""
+        return absolute(self.topic)
+
+    @property
     def writes(self) -> str:
         """Return the fully qualified name the bridge publishes under."""
         return absolute(self.published or self.topic)
+
+    def leaves(self, domain: str | None) -> bool:
+        """Return whether it reads in ``domain`` (compared as rcl reads domains)."""
+        return domain_number(self.source) == domain_number(domain)
+
+    def enters(self, domain: str | None) -> bool:
+        """Return whether it writes in ``domain``."""
+        return domain_number(self.target) == domain_number(domain)
 
 
 @dataclass(frozen=True, slots=True)

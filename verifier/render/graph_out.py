@@ -89,11 +89,11 @@ class GraphView:
 
     def bridges(self) -> list[dict[str, Any]] | None:
         """Return what domain_bridge nodes forward; ``None`` when one's config is not known."""
-        from launchverify.dds.bridges import absolute, crossings
+        from launchverify.dds.bridges import crossings
 
         found = crossings(self.graph)
         return None if found is None else [
-            {"topic": absolute(c.topic), "published_as": c.writes, "type": c.type,
+            {"topic": c.reads, "published_as": c.writes, "type": c.type,
              "from_domain": c.source, "to_domain": c.target,
              "file": display_path(c.span.file) if c.span else None,
              "line": c.span.line if c.span else None}
