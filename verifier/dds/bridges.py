@@ -95,9 +95,20 @@ def crossings(graph: LaunchGraph) -> list[Crossing] | None:
     return found
 
 
-def bridge_origins(graph: LaunchGraph) -> list[Origin]:
-    """Return where the launch starts its bridges."""
-    return [bridge.origin for bridge in _bridges(graph)]
+def runs_bridge(graph: LaunchGraph, origin: Origin) -> bool:
+    """Return whether the node or process launched at ``origin`` is a known bridge.
+
+    Known: every bridge's configuration was read. Such a bridge publishes only what it
+    carries across domains, which the rules ask about by domain: it is no node or
+    process that may publish anything.
+    """
+    if crossings(graph) is None:
+        return False
+    kept = graph.derived.setdefault("bridges", {})
+    launched = kept.get("origins")
+    if not isinstance(launched, set):
+        launched = kept["origins"] = {id(bridge.origin) for bridge in _bridges(graph)}
+    return id(origin) in launched
 
 
 def feeding(bridges: Sequence[Crossing], name: str) -> list[Crossing]:

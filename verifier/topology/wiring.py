@@ -18,8 +18,10 @@ from dataclasses import dataclass, field
 from fnmatch import fnmatchcase
 from typing import TYPE_CHECKING
 
+from launchverify.dds.bridges import runs_bridge
+from launchverify.dds.discovery import meet
 from launchverify.events import meeting_origin
-from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, Origin
+from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord
 from launchverify.smt import Witness, reasoner_for
 from launchverify.topology.model import EndpointKind
 
@@ -77,26 +79,6 @@ class WiringView:
         """
         return bool(self.unknown_nodes or self.processes
                     or self.unresolved.get((section, WRITERS[section])))
-
-
-def _known_bridge(graph: LaunchGraph, composed: NodeEndpoints) -> bool:
-    """Return whether a node is a domain_bridge whose configuration says what it forwards.
-
-    It then publishes only what it carries across domains (``dds.bridges``), which the
-    rules ask about by domain: it is no node that may publish anything.
-    """
-    if composed.package != "domain_bridge":
-        return False
-    from launchverify.dds.bridges import crossings
-
-    return crossings(graph) is not None
-
-
-def _bridge_process(graph: LaunchGraph, origin: Origin) -> bool:
-    """Return whether a plain process is a domain_bridge whose configuration is known."""
-    from launchverify.dds.bridges import bridge_origins, crossings
-
-    return crossings(graph) is not None and origin in bridge_origins(graph)
 
 
 def reads_sources(graph: LaunchGraph, ctx: RuleContext) -> bool:
@@ -183,14 +165,14 @@ def view_of(graph: LaunchGraph, source: InterfaceSource) -> WiringView:
                       {section: {c.name: c for c in grouped[section]} for section in SECTIONS})
     for composed in nodes:
         if composed.interface is None:
-            if not silent(composed) and not _known_bridge(graph, composed):
+            if not silent(composed) and not runs_bridge(graph, composed.node.origin):
                 view.unknown_nodes.append(composed)
             continue
         for end in composed.endpoints:
             if end.name is None:
                 view.unresolved.setdefault(ROLES[end.endpoint.kind], []).append(end)
     view.processes = [p for p in graph.processes if graph.runs(p.origin) is not False
-                      and not _bridge_process(graph, p.origin)]
+                      and not runs_bridge(graph, p.origin)]
     kept["view"] = view
     return view
 
@@ -228,8 +210,6 @@ def together(graph: LaunchGraph, first: NodeRecord, second: NodeRecord) -> Witne
     first_origin = meeting_origin(graph, first, second)
     if first_origin is None:
         return None
-    from launchverify.dds.discovery import meet
-
     if meet(graph, first, second) is not True:
         return None  # DDS keeps them apart, or may (a domain left to the caller)
     if graph.runs(first_origin) is True and graph.runs(second.origin) is True:
