@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Iterator
 
+from launchverify.dds.discovery import DOMAIN
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 
@@ -45,7 +46,7 @@ class InvalidDomainId(Rule):
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         for setting in graph.environment_sets:
-            if setting.name != "ROS_DOMAIN_ID" or setting.value is None or \
+            if setting.name != DOMAIN or setting.value is None or \
                     graph.runs(setting.origin) is False:
                 continue
             value = graph.base(setting.value)

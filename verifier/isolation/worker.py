@@ -4,7 +4,8 @@ Forked from the zygote for one file, it closes every descriptor but its channel,
 the zygote's session, confines itself (``confine``), arms the audit hook, then runs the
 file and sends back its IR as plain data. It stays to run the file's OpaqueFunctions when
 the parent's walk reaches them, one request at a time, each under the time limit, until
-the parent closes the channel. It never returns: it ends with ``os._exit``, so nothing the
+the parent closes the channel; a worker without any may take the next file of its
+repository instead (``reuse``). It never returns: it ends with ``os._exit``, so nothing the
 launch file registered (``atexit``, finalizers) runs after the last answer.
 """
 
@@ -73,8 +74,7 @@ class _Worker:
         self.scratch = scratch
         self.callbacks: list[Callable[..., Any]] = []
         self.baseline: Baseline | None = None
-        self.reused_no_more: str | None = None  # why it may take no other file
-        self.loads = 0
+        self.kept_by: str | None = None  # why it may take no other file
 
     def register(self, function: Callable[..., Any]) -> int:
         self.callbacks.append(function)
@@ -91,14 +91,27 @@ class _Worker:
                     request = self.channel.receive()
                 except ChannelError:
                     return  # the parent is done with this file
-                self.answer(self.load if request.get("op") == "load" else self.call, request)
+                if request.get("op") == "load":
+                    self.load_another(request)
+                else:
+                    self.answer(self.call, request)
+
+    def load_another(self, request: dict[str, Any]) -> None:
+        """Evaluate another file of the repository if the last one left the worker as it was.
+
+        Checked here, with no timer running; when it may not, the parent starts the file
+        in a fresh worker.
+        """
+        if self.kept_by is None and self.baseline is not None:
+            self.kept_by = self.baseline.disturbed()
+        if self.kept_by is not None:
+            self.channel.send({"op": "error", "message": "this worker takes no other file: "
+                               f"{self.kept_by}", "where": None, "again": True})
+            return
+        self.answer(self.load, request)
 
     def answer(self, handler: Callable[[dict[str, Any]], dict[str, Any]],
                request: dict[str, Any]) -> None:
-        if handler == self.load and self.loads and self.reused_no_more is None:
-            # another file before this one: was the worker left as it was? (no timer runs)
-            self.reused_no_more = ("no baseline" if self.baseline is None
-                                   else self.baseline.disturbed())
         try:
             with time_limit(self.setting.limits.seconds):
                 reply = handler(request)
@@ -107,21 +120,16 @@ class _Worker:
                      "where": _user_line(error)}
         except BaseException as error:
             reply = {"op": "error", "message": _describe(error), "where": _user_line(error)}
-        if handler == self.load and not reply.get("again"):
-            if self.reused_no_more is None and (self.callbacks or reply.get("op") != "loaded"
-                                                or self.baseline is None):
-                self.reused_no_more = ("an OpaqueFunction keeps it" if self.callbacks
-                                       else "its file failed" if reply.get("op") != "loaded"
-                                       else "it was not asked to take more")
-            reply["reusable"] = self.reused_no_more is None  # (the rest is checked if reused)
+        if handler == self.load:
+            self.kept_by = ("an OpaqueFunction keeps it" if self.callbacks
+                            else "its file failed" if reply.get("op") != "loaded"
+                            else "it was not asked to take more" if self.baseline is None
+                            else None)
+            reply["reusable"] = self.kept_by is None  # (the rest is checked if it is reused)
             _clear(self.scratch)
         self.channel.send(reply)
 
     def load(self, request: dict[str, Any]) -> dict[str, Any]:
-        if self.loads and self.reused_no_more is not None:  # the parent starts it elsewhere
-            return {"op": "error", "message": "this worker takes no other file: "
-                    f"{self.reused_no_more}", "where": None, "again": True}
-        self.loads += 1
         path = Path(request["path"])
         sink = ProblemSink()
         frontend = PythonFrontend(self.setting.index, self.setting.workspace,
