@@ -381,3 +381,8 @@ def readable_folders(index: PackageIndex, workspace: Path) -> tuple[str, ...]:
     folders.update(("/usr/lib", "/usr/lib64", "/lib", "/lib64", "/usr/share/zoneinfo",
                     "/etc/ld.so.cache", "/etc/localtime"))
     return tuple(outermost(folders))
+
+
+def beneath(folder: str, folders: Iterable[str]) -> bool:
+    """Return whether ``folder`` is one of ``folders`` or inside one of them (real paths)."""
+    return any(folder == f or folder.startswith(f.rstrip("/") + "/") for f in folders)

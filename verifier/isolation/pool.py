@@ -25,7 +25,7 @@ from launchverify.frontends.python.importer import absent_modules_asked
 from launchverify.ir import actions as a
 from launchverify.isolation.channel import Channel, ChannelError, Closed
 from launchverify.isolation.codec import CodecError, Decoder, Encoder, TooLarge
-from launchverify.isolation.confine import WITHOUT_LANDLOCK, Limits, readable_folders
+from launchverify.isolation.confine import WITHOUT_LANDLOCK, Limits, beneath, readable_folders
 from launchverify.isolation.worker import Setting
 from launchverify.isolation.zygote import Zygote
 from launchverify.problems import Problem, ProblemKind, ProblemSink
@@ -230,9 +230,7 @@ class IsolatedPython:
 
     def _readable(self, path: Path) -> bool:
         """Return whether every worker may read ``path``'s folder (a first file's may be added)."""
-        folder = os.path.realpath(path.parent)
-        return any(folder == f or folder.startswith(f.rstrip("/") + "/")
-                   for f in self.setting.readable)
+        return beneath(os.path.realpath(path.parent), self.setting.readable)
 
     def _park(self, worker: _Worker) -> None:
         """Keep a worker that may take another file of its repository (a few at most)."""

@@ -24,7 +24,7 @@ from launchverify.frontends.python import PythonFrontend
 from launchverify.frontends.python.sandbox import TimeLimitExceeded, arm, time_limit
 from launchverify.isolation.channel import Channel, ChannelError
 from launchverify.isolation.codec import Decoder, Encoder
-from launchverify.isolation.confine import Confinement, Limits
+from launchverify.isolation.confine import Confinement, Limits, beneath
 from launchverify.isolation.reuse import Baseline
 from launchverify.models import distros
 from launchverify.problems import ProblemSink
@@ -173,9 +173,7 @@ def _not_callable(*args: object) -> None:
 def _with_folder(readable: tuple[str, ...], request: dict[str, Any]) -> tuple[str, ...]:
     """Add the launch file's folder to what may be read, unless it is there already."""
     folder = os.path.realpath(Path(request["path"]).parent)
-    if any(folder == f or folder.startswith(f.rstrip("/") + "/") for f in readable):
-        return readable
-    return (*readable, folder)
+    return readable if beneath(folder, readable) else (*readable, folder)
 
 
 def _keep_only(fd: int, *, keep_stderr: bool = False) -> None:
