@@ -59,26 +59,26 @@ class Lines:
     def __init__(self, out: TextIO, color: bool | None) -> None:
         # --color always/never decide; auto follows the terminal and NO_COLOR (rich reads it)
         self.out = out
-        self.console: Console | None = None
+        self.styled: Console | None = None  # rich, when it styles the output
+        self.tab_size = 8
         if color or (color is None and _may_style(out)):  # rich is imported only then
             from rich.console import Console
 
-            self.console = Console(file=out, highlight=False, soft_wrap=True,
-                                   force_terminal=color,
-                                   no_color=None if color is None else not color)
-        self.plain = self.console is None or self.console.color_system is None
+            console = Console(file=out, highlight=False, soft_wrap=True, force_terminal=color,
+                              no_color=None if color is None else not color)
+            self.tab_size = console.tab_size
+            self.styled = console if console.color_system is not None else None
 
     def __call__(self, *pieces: Piece, style: str | None = None) -> None:
         """Write one line."""
-        from_rich = self.console
-        if self.plain or from_rich is None:
+        if self.styled is None:
             text = inert(
                 "".join(piece if isinstance(piece, str) else piece[0] for piece in pieces))
             if "\t" in text:  # tab stops count terminal cells (wide, zero-width): rich's way
                 from rich.text import Text
 
                 cells = Text(text)
-                cells.expand_tabs(from_rich.tab_size if from_rich is not None else 8)
+                cells.expand_tabs(self.tab_size)
                 text = cells.plain
             self.out.write(text + "\n")
         else:
@@ -86,7 +86,7 @@ class Lines:
 
             safe = [inert(piece) if isinstance(piece, str) else (inert(piece[0]), piece[1])
                     for piece in pieces]
-            from_rich.print(Text.assemble(*safe, style=style or ""))
+            self.styled.print(Text.assemble(*safe, style=style or ""))
 
 
 def _may_style(out: TextIO) -> bool:
