@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import dataclasses
 import os
-import sys
 import time
 from collections import defaultdict
 from collections.abc import Callable, Iterable, Iterator
@@ -282,7 +281,8 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
 
     config = options.config
     workspace, sources, prefixes = folders
-    if any(launch_format(f) == "python" for f in found):
+    ahead = any(launch_format(f) == "python" for f in found)
+    if ahead:
         from launchverify.isolation.zygote import start_ahead
 
         start_ahead()  # its interpreter imports the models while the index is built
@@ -319,8 +319,10 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
             if options.progress is not None:
                 options.progress(done + 1, len(files))
         python_files, protections = python.evaluated, python.protections
-    if "launchverify.isolation.zygote" in sys.modules:  # started for excluded files, say
-        sys.modules["launchverify.isolation.zygote"].discard_ahead()
+    if ahead:  # started for files that were all excluded, say
+        from launchverify.isolation.zygote import discard_ahead
+
+        discard_ahead()
     included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
     includers = includers_of()
     for graph in graphs:

@@ -12,6 +12,7 @@ from collections import defaultdict
 from dataclasses import dataclass, field
 from typing import Any
 
+from launchverify.dds.discovery import CALLER
 from launchverify.engine import Report
 from launchverify.graph import LaunchGraph
 from launchverify.render.graph_out import GraphView
@@ -146,7 +147,7 @@ def _by_domain(nodes: list[SystemNode]) -> Namespace:
     for domain, members in sorted(domains.items(), key=lambda item: _domain_key(item[0])):
         tree = _group(members)
         label = ("DDS domain not known" if domain is None
-                 else "DDS domain: the caller's" if domain.startswith("<")
+                 else "DDS domain: the caller's" if domain == CALLER
                  else f"DDS domain {domain}")
         root.children[label] = Namespace(f"({label})", label, tree.nodes, tree.children,
                                          kept=True)
