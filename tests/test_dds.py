@@ -145,3 +145,26 @@ def test_a_bridge_through_its_own_launch_file(tmp_path: Path,
     assert document["includes"][0]["arguments"]["config"] == str(tmp_path / "bridge.yaml")
     assert [(b["topic"], b["from_domain"], b["to_domain"]) for b in document["bridges"]] == [
         ("/scan", "5", "2")]
+
+
+def test_the_report_draws_a_box_per_domain(tmp_path: Path) -> None:
+    launch = FLEET / "fleet_wiring" / "launch" / "station_bridged.launch.xml"
+    page = tmp_path / "report.html"
+    assert main(["report", str(launch), "--workspace", str(launch.parents[2]),
+                 "-o", str(page)]) in (0, 1)
+    boxes = [title for title in ("DDS domain 0", "DDS domain 7", "DDS domain: the caller")
+             if f"<title>{title}" in page.read_text()]
+    assert boxes == ["DDS domain 0", "DDS domain 7", "DDS domain: the caller"]
+    single = FLEET.parent.parent / "naming" / "duplicate_same_scope" / "dup.launch.xml"
+    assert main(["report", str(single), "-o", str(page)]) in (0, 1)
+    assert "DDS domain" not in page.read_text()
+
+
+def test_graph_text_shows_domains_and_bridges(capsys: pytest.CaptureFixture[str]) -> None:
+    launch = FLEET / "fleet_wiring" / "launch" / "station_remapped.launch.xml"
+    assert main(["graph", str(launch), "--workspace", str(launch.parents[2]),
+                 "--format", "text"]) == 0
+    out = capsys.readouterr().out
+    assert f"dds domain 7, discovery range {CALLER}" in out
+    assert ("/fleet/battery as /station/robot7_battery [sensor_msgs/msg/BatteryState]  "
+            "domain 7 -> 0") in out
