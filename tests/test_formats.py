@@ -216,7 +216,9 @@ class _ThroughRich(text_output.Lines):
 
     def __init__(self, out: Any, color: bool | None) -> None:
         super().__init__(out, color)
-        self.plain = False
+        from rich.console import Console
+
+        self.styled = Console(file=out, highlight=False, soft_wrap=True, no_color=True)
 
 
 def _text(report: Report, monkeypatch: pytest.MonkeyPatch, *, rich: bool) -> str:
@@ -231,7 +233,7 @@ def _text(report: Report, monkeypatch: pytest.MonkeyPatch, *, rich: bool) -> str
 def test_plain_text_is_what_rich_prints_without_colours(
         monkeypatch: pytest.MonkeyPatch) -> None:
     report = check(TRACE, WITNESS, INCLUDES, DUPLICATES, workspace=CORPUS)
-    assert report.findings and text_output.Lines(io.StringIO(), None).plain
+    assert report.findings and text_output.Lines(io.StringIO(), None).styled is None
     assert _text(report, monkeypatch, rich=False) == _text(report, monkeypatch, rich=True)
 
 
