@@ -11,7 +11,6 @@ from __future__ import annotations
 import dataclasses
 import os
 import time
-from collections import defaultdict
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
@@ -37,6 +36,7 @@ from launchverify.workspace.packages import PackageIndex, find_workspace, worksp
 from launchverify.workspace.paths import display_path, relative_file
 
 if TYPE_CHECKING:
+    from launchverify.findings.verdicts import Verdicts
     from launchverify.graph import LaunchGraph
     from launchverify.ir.symbolic import PathCondition
     from launchverify.workspace.includers import Includers
@@ -539,36 +539,24 @@ def _isolated(rule: Rule, findings: Callable[[], Iterable[Finding]], file: Path 
         yield InternalError().rule_failed(rule.code, file or Path.cwd(), error)
 
 
+def judge(graphs: list[LaunchGraph], rules: list[type[Rule]], ctx: RuleContext,
+          jobs: int = 1) -> tuple[list[Verdicts], Callable[[int], Rule]]:
+    """Run every rule on every graph (in up to ``jobs`` processes): each graph's verdicts.
+
+    Also returns each rule's object in this process (the one whose ``finish`` concludes).
+    """
+    from launchverify.findings.verdicts import verdicts_of
+    from launchverify.parallel.fanout import RuleRun, rule_findings
+
+    run = RuleRun(graphs, rules, ctx, _isolated, dead)
+    found = rule_findings(run, jobs)
+    return verdicts_of(run, found), run.instance
+
+
 def run_rules(graphs: list[LaunchGraph], rules: list[type[Rule]],
               ctx: RuleContext, jobs: int = 1) -> list[Finding]:
     """Run every rule on every graph (in up to ``jobs`` processes) and merge the findings."""
-    from launchverify.parallel.fanout import RuleRun, rule_findings
+    from launchverify.findings.verdicts import merge
 
-    merged: dict[tuple[object, ...], Finding] = {}
-    votes: dict[tuple[object, ...], set[int]] = defaultdict(set)  # graphs that agree
-    reach: dict[Path, int] = defaultdict(int)
-    for graph in graphs:
-        for path in graph.files:
-            reach[path] += 1
-    unanimous = {rule.code for rule in rules if getattr(rule, "every_context", False)}
-    run = RuleRun(graphs, rules, ctx, _isolated, dead)
-    found = rule_findings(run, jobs)
-    everything = list(range(len(graphs)))
-    for r, rule_class in enumerate(rules):
-        for g in run.order(rule_class, everything):
-            for finding in found[(r, g)]:
-                key = finding.key()
-                votes[key].add(g)
-                known = merged.get(key)
-                if known is None or len(finding.chain) < len(known.chain):
-                    merged[key] = finding
-        rule = run.instance(r)
-        run.poll(r)  # the answers its checks gathered, wherever they ran
-        for finding in _isolated(rule, partial(rule.finish, ctx),
-                                 graphs[0].root if graphs else None):
-            merged.setdefault(finding.key(), finding)
-    kept = [
-        f for key, f in merged.items()
-        if f.code not in unanimous or len(votes[key]) >= reach[f.span.file]
-    ]
-    return sorted(kept, key=Finding.sort_key)
+    verdicts, instance = judge(graphs, rules, ctx, jobs)
+    return merge(verdicts, rules, ctx, instance, _isolated)

@@ -9,7 +9,7 @@ yields findings built with ``self.finding(...)``: a rule cannot mislabel itself.
 from __future__ import annotations
 
 import enum
-from collections.abc import Hashable, Iterator, Mapping
+from collections.abc import Hashable, Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, ClassVar
 
@@ -142,16 +142,43 @@ class RuleContext:
     # What the check's configuration says for rules (``engine.rule_options``): name globs
     # under ``external-names`` and ``single-writer-topics``.
     options: dict[str, object] = field(default_factory=dict)
-    settled: dict[str, set[object]] = field(default_factory=dict)
+    settled: dict[str, Settled] = field(default_factory=dict)
     memo: dict[str, dict[object, object]] = field(default_factory=dict)
 
-    def settled_for(self, code: str) -> set[object]:
-        """Return the set of places a rule has settled (created on first use)."""
-        return self.settled.setdefault(code, set())
+    def settled_for(self, code: str) -> Settled:
+        """Return the places a rule has settled (created on first use)."""
+        return self.settled.setdefault(code, Settled())
 
     def memo_for(self, code: str) -> dict[object, object]:
         """Return what a rule gathers across graphs for its ``finish`` (created on first use)."""
         return self.memo.setdefault(code, {})
+
+
+class Settled:
+    """The places a rule marked ``every_context`` found settled, across graphs.
+
+    Skipping a settled place makes one graph's findings depend on the graphs judged
+    before it; ``log`` makes that dependency visible, per graph: the places the graph
+    settled, and those it skipped because another graph had (a result kept between
+    checks is valid only while the places it skipped are still settled by some graph).
+    """
+
+    def __init__(self, places: Iterable[object] = ()) -> None:
+        self.places = set(places)
+        self.log: tuple[set[object], set[object]] | None = None  # (settled, relied on)
+
+    def __contains__(self, place: object) -> bool:
+        if place not in self.places:
+            return False
+        if self.log is not None:
+            self.log[1].add(place)
+        return True
+
+    def add(self, place: object) -> None:
+        """Record that some evaluation shows the finding cannot stand at ``place``."""
+        self.places.add(place)
+        if self.log is not None:
+            self.log[0].add(place)
 
 
 class Poll:
@@ -254,6 +281,34 @@ class Rule:
     def lead(cls, heading: str) -> str:
         """Return the first paragraph of a section on one line (a short why or fix)."""
         return " ".join(cls.section(heading).split("\n\n", 1)[0].split())
+
+
+class GatheringRule(Rule):
+    """A rule that judges across graphs: each graph tells what it knows, then one verdict.
+
+    ``gather`` depends on its graph alone (what it returns is kept with the graph's other
+    results, and may come from another process or an earlier check); ``conclude`` judges
+    what every graph gathered, in the order of the check's graphs.
+    """
+
+    def gather(self, graph: LaunchGraph, ctx: RuleContext) -> object:
+        """Return what this graph tells the rule (picklable)."""
+        raise NotImplementedError
+
+    def conclude(self, gathered: list[object], ctx: RuleContext) -> Iterator[Finding]:
+        """Yield the findings every graph's contribution together shows."""
+        raise NotImplementedError
+
+    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
+        gathered = ctx.memo_for(self.code).setdefault("gathered", [])
+        assert isinstance(gathered, list)
+        gathered.append(self.gather(graph, ctx))
+        return iter(())
+
+    def finish(self, ctx: RuleContext) -> Iterator[Finding]:
+        gathered = ctx.memo_for(self.code).get("gathered", [])
+        assert isinstance(gathered, list)
+        return self.conclude(gathered, ctx)
 
 
 class PollingRule(Rule):

@@ -15,7 +15,7 @@ from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.models.node_names import BUILTIN_NAMES, InnerNode, inner_nodes
 from launchverify.models.ros_names import node_key_matches
 from launchverify.parameters import file_readers
-from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+from launchverify.rule import Finding, GatheringRule, Related, RuleContext, Severity
 from launchverify.suggest import sole_typo
 from launchverify.topology.shipped import shipped_node_names
 from launchverify.workspace.package_contents import name_literals, unnamed_node_names
@@ -105,7 +105,11 @@ class _FileUse:
     receivers: dict[str, Receiver] = field(default_factory=dict)
 
 
-class UnmatchedParamBlock(Rule):
+# what one graph tells: the node names it starts, and the uses of each parameter file
+_Gathered = tuple[set[str], dict[Path, _FileUse]]
+
+
+class UnmatchedParamBlock(GatheringRule):
     """A parameter file block whose node key matches none of the nodes that load the file.
 
     ## What it does
@@ -154,17 +158,12 @@ class UnmatchedParamBlock(Rule):
     severity = Severity.WARNING
     message = "parameter block {key!r} matches none of the nodes that load {file}{hint}"
 
-    def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        uses = ctx.memo_for(self.code)
-        started = ctx.memo_for(self.code + ":started")  # node names any launch starts
-        for node in graph.nodes:
-            if (fqn := graph.base(node.fqn)) is not None:
-                started[fqn.rpartition("/")[2]] = True
+    def gather(self, graph: LaunchGraph, ctx: RuleContext) -> _Gathered:
+        started = {fqn.rpartition("/")[2] for node in graph.nodes
+                   if (fqn := graph.base(node.fqn)) is not None}
+        uses: dict[Path, _FileUse] = {}
         for path, param_file in graph.param_files.items():
-            use = uses.get(path)
-            if not isinstance(use, _FileUse):
-                use = _FileUse(param_file)
-                uses[path] = use
+            use = uses[path] = _FileUse(param_file)
             receivers = receivers_of(graph, path, ctx.packages)
             if receivers is None:
                 use.undecided = True
@@ -174,12 +173,23 @@ class UnmatchedParamBlock(Rule):
                 for index, block in enumerate(param_file.blocks):
                     if receiver.matches(block.key):
                         use.matched.add(index)
-        return iter(())
+        return started, uses
 
-    def finish(self, ctx: RuleContext) -> Iterator[Finding]:
-        started = {str(name) for name in ctx.memo_for(self.code + ":started")}
-        for path, use in ctx.memo_for(self.code).items():
-            assert isinstance(use, _FileUse) and isinstance(path, Path)
+    def conclude(self, gathered: list[object], ctx: RuleContext) -> Iterator[Finding]:
+        started: set[str] = set()  # node names any launch starts
+        uses: dict[Path, _FileUse] = {}
+        for part in gathered:
+            assert isinstance(part, tuple)
+            starts: set[str] = part[0]
+            graph_uses: dict[Path, _FileUse] = part[1]
+            started |= starts
+            for path, each in graph_uses.items():
+                use = uses.setdefault(path, _FileUse(each.param_file))
+                use.undecided |= each.undecided
+                use.matched |= each.matched
+                for label, receiver in each.receivers.items():
+                    use.receivers.setdefault(label, receiver)
+        for path, use in uses.items():
             if use.undecided or not use.receivers:
                 continue
             names = {r.fqn.rpartition("/")[2]: r.fqn for r in use.receivers.values()

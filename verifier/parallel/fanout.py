@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING, TypeGuard
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
 from launchverify.parallel.forked import can_fork
-from launchverify.rule import Finding, Poll, PollingRule, Rule, RuleContext
+from launchverify.rule import Finding, GatheringRule, PollingRule, Rule, RuleContext
 
 if TYPE_CHECKING:
     from concurrent.futures import Future
@@ -42,6 +42,10 @@ MIN_WORK = 2000
 PerGraph = dict[tuple[int, int], list[Finding]]
 # (rule index, graph index) -> a polling rule's answers in that graph, in its order
 Answers = dict[tuple[int, int], list[tuple[Hashable, Finding | None]]]
+# (rule index, graph index) -> what a gathering rule took from that graph
+Gathered = dict[tuple[int, int], object]
+# (rule index, graph index) -> the places that graph settled, and those it relied on
+SettledLog = dict[tuple[int, int], tuple[set[object], set[object]]]
 Isolate = Callable[[Rule, Callable[[], Iterable[Finding]], Path | None], Iterator[Finding]]
 Dead = Callable[[LaunchGraph, PathCondition], bool]
 
@@ -57,6 +61,8 @@ class RuleRun:
     dead: Dead  # a finding's place can run under no arguments (engine.dead)
     instances: dict[int, Rule] = field(default_factory=dict)  # one per rule and process
     answers: Answers = field(default_factory=dict)  # polling rules', gathered in this process
+    gathered: Gathered = field(default_factory=dict)  # gathering rules', in this process
+    settled: SettledLog = field(default_factory=dict)  # rules asking every context
 
     def instance(self, index: int) -> Rule:
         """Return this process's instance of a rule (its ``check`` and ``finish`` share it)."""
@@ -79,35 +85,58 @@ class RuleRun:
         out: PerGraph = {}
         for r in rule_indices:
             rule = self.instance(r)
+            places = (self.ctx.settled_for(rule.code)
+                      if getattr(rule, "every_context", False) else None)
             for g in self.order(self.rules[r], graph_indices):
                 graph = self.graphs[g]
                 check = partial(rule.check, graph, self.ctx)
                 if _polls(rule):
                     check = partial(_answering, rule, graph, self.ctx,
                                     self.answers.setdefault((r, g), []))
+                elif _gathers(rule):
+                    check = partial(_gathering, rule, graph, self.ctx, self.gathered, (r, g))
+                if places is not None:
+                    places.log = self.settled[(r, g)] = (set(), set())
                 out[(r, g)] = [
                     finding for finding in self.isolate(rule, check, graph.root)
                     if not (finding.path and self.dead(graph, finding.path))]
+                if places is not None:
+                    places.log = None
         return out
-
-    def poll(self, index: int) -> None:
-        """Put a polling rule's answers to its poll, graph by graph as one process would."""
-        rule = self.instance(index)
-        if not _polls(rule):
-            return
-        poll = Poll(self.ctx, rule.code)
-        for g in self.order(self.rules[index], list(range(len(self.graphs)))):
-            for question, finding in self.answers.get((index, g), ()):
-                poll.answer(question, finding)
-
 
 def polled(rule: type[Rule]) -> bool:
     """Return whether a rule gathers by ``PollingRule``'s own poll (its check not changed)."""
     return issubclass(rule, PollingRule) and rule.check is PollingRule.check
 
 
+def gathers(rule: type[Rule]) -> bool:
+    """Return whether a rule gathers by ``GatheringRule``'s own means (check not changed)."""
+    return issubclass(rule, GatheringRule) and rule.check is GatheringRule.check
+
+
+def graph_wise(rule: type[Rule]) -> bool:
+    """Return whether a rule's findings come from what it says of each graph on its own.
+
+    What it says of one graph may then be computed anywhere (another process, an earlier
+    check) and put together with the others'. A ``finish`` of its own needs every graph
+    in the process that ran its ``check``.
+    """
+    return rule.finish is Rule.finish or polled(rule) or gathers(rule)
+
+
 def _polls(rule: Rule) -> TypeGuard[PollingRule]:
     return polled(type(rule))
+
+
+def _gathers(rule: Rule) -> TypeGuard[GatheringRule]:
+    return gathers(type(rule))
+
+
+def _gathering(rule: GatheringRule, graph: LaunchGraph, ctx: RuleContext, into: Gathered,
+               key: tuple[int, int]) -> Iterator[Finding]:
+    """``GatheringRule.check`` keeping what it gathers for the merge (a child's go back)."""
+    into[key] = rule.gather(graph, ctx)
+    yield from ()
 
 
 def _answering(rule: PollingRule, graph: LaunchGraph, ctx: RuleContext,
@@ -177,13 +206,14 @@ def _drain(run: RuleRun, pieces: list[Piece], counter: NextPiece) -> PerGraph:
     return out
 
 
-Collected = tuple[PerGraph, Answers, dict[int, int]]
+Collected = tuple[PerGraph, Answers, Gathered, SettledLog, dict[int, int]]
 
 
 def _child() -> Collected:
     """Run pieces in a forked child; return what ``rule_findings`` merges.
 
-    Their findings, the polling rules' answers, and how many z3 queries it asked per graph.
+    Their findings, the polling and gathering rules' answers, the places settled, and how
+    many z3 queries it asked per graph.
     """
     run = _SHARED["run"]
     pieces = _SHARED["pieces"]
@@ -194,8 +224,10 @@ def _child() -> Collected:
     found = _drain(run, pieces, counter)
     after = _queries(run.graphs)
     answers = {key: run.answers[key] for key in found if key in run.answers}
-    return found, answers, {g: n - before.get(g, 0) for g, n in after.items()
-                            if n != before.get(g, 0)}
+    gathered = {key: run.gathered[key] for key in found if key in run.gathered}
+    settled = {key: run.settled[key] for key in found if key in run.settled}
+    return found, answers, gathered, settled, {g: n - before.get(g, 0) for g, n in after.items()
+                                               if n != before.get(g, 0)}
 
 
 def _queries(graphs: list[LaunchGraph]) -> dict[int, int]:
@@ -235,9 +267,11 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
                 collected = _collected(future)
                 if collected is None:
                     continue
-                found, answers, queries = collected
+                found, answers, gathered, settled, queries = collected
                 out.update(found)
                 run.answers.update(answers)
+                run.gathered.update(gathered)
+                run.settled.update(settled)
                 for g, count in queries.items():
                     run.graphs[g].queries_elsewhere += count
     finally:
@@ -258,8 +292,7 @@ def _collected(future: Future[Collected]) -> Collected | None:
 
 def gathering(rules: list[type[Rule]]) -> list[int]:
     """Return the rules that must see every graph in one process (a ``finish`` of their own)."""
-    return [r for r, rule in enumerate(rules)
-            if rule.finish is not Rule.finish and not polled(rule)]
+    return [r for r, rule in enumerate(rules) if not graph_wise(rule)]
 
 
 def pieces(run: RuleRun, exclude: Iterable[int] = ()) -> list[Piece]:
