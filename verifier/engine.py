@@ -15,12 +15,13 @@ from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeVar
 
 from launchverify.config import Config, ConfigTree, matches
 from launchverify.findings.cache import (
     Entry,
     FolderStamp,
+    Kept,
     ResultCache,
     in_use,
     key_of,
@@ -36,6 +37,7 @@ from launchverify.workspace.packages import PackageIndex, find_workspace, worksp
 from launchverify.workspace.paths import display_path, relative_file
 
 if TYPE_CHECKING:
+    from launchverify.findings.incremental import Incremental
     from launchverify.findings.verdicts import Verdicts
     from launchverify.graph import LaunchGraph
     from launchverify.ir.symbolic import PathCondition
@@ -46,6 +48,7 @@ if TYPE_CHECKING:
 # half of such a run.
 
 DEFAULT_TIME_LIMIT = 10.0
+T = TypeVar("T")
 
 
 class UsageError(Exception):
@@ -99,6 +102,7 @@ class Report:
     queries: int | None = None
     loaded: set[Path] | None = None
     cached: bool = False  # read from the cache between runs, not checked again
+    kept: Kept | None = None  # what the next check may keep of this one (not stored with it)
 
     def display_path(self, path: Path) -> str:
         """Return a path as the user gave it, else relative to the working directory."""
@@ -127,7 +131,7 @@ class Report:
         findings = [dataclasses.replace(f, path=()) if f.path else f for f in self.findings]
         return dataclasses.replace(self, findings=findings, graphs=[],
                                    unseen=self.not_judged(), queries=self.solver_queries(),
-                                   loaded=self.loaded_files())
+                                   loaded=self.loaded_files(), kept=None)
 
     def not_judged(self) -> list[tuple[str, Span]]:
         """Return where evaluations were incomplete (reason, place), each once, as met.
@@ -233,8 +237,15 @@ def _require_paths(options: CheckOptions) -> None:
             raise UsageError(f"no such file or folder: {str(path)!r}")
 
 
-def run_check(options: CheckOptions) -> Report:
-    """Check launch files and return the findings, de-duplicated and sorted."""
+def run_check(options: CheckOptions, stored: tuple[Entry, Kept] | None = None,
+              *, keep: bool = False) -> Report:
+    """Check launch files and return the findings, de-duplicated and sorted.
+
+    ``stored``: the last check's result for the same options (its roots that read no
+    edited file are not checked again); ``keep``: say in ``Report.kept`` what the next
+    check may keep of this one.
+    """
+    from launchverify.findings.incremental import Incremental
     from launchverify.parallel.forked import Background
     from launchverify.workspace.affected import affected_launch_files
     from launchverify.workspace.discover import discover
@@ -244,26 +255,39 @@ def run_check(options: CheckOptions) -> Report:
     _require_paths(options)
     reading.confine(None)  # the last check's folders; this one's are set once indexed
     config = options.config
-    tree = ConfigTree(config, nested=options.nested_configs)
-    with collector_paused():
+    other_reads: set[str] = set()  # what the check reads besides the roots' own files
+    incremental = Incremental(stored, other_reads, keep=keep or stored is not None)
+    # the workspace's includers are read again by every check: what they say is not kept
+    includers_in = partial(_unrecorded, Includers.of_workspace)
+    with collector_paused(), reading.recording(other_reads if incremental.on else None):
+        tree = ConfigTree(config, nested=options.nested_configs)
         workspace, sources, prefixes = package_folders(options.paths, options.workspace,
                                                        config.package_paths)
         folders = (workspace, sources, prefixes)
         if options.affected:  # pre-commit: what the changed files may break, or nothing
-            includers = Includers.of_workspace(sources)
+            includers = includers_in(sources)
             return _check_files(options, tree, folders, lambda: includers, started,
-                                affected_launch_files(options.paths, includers))
+                                affected_launch_files(options.paths, includers), incremental)
         # the scan starts before the index is built: small trees waited for it (it reads
         # every launch file of the workspace)
-        with Background(partial(Includers.of_workspace, sources)) as scan:
+        with Background(partial(includers_in, sources)) as scan:
             return _check_files(options, tree, folders, scan.result, started,
-                                discover(options.paths, filter_files=options.launch_files_only))
+                                _unrecorded(partial(discover,
+                                                    filter_files=options.launch_files_only),
+                                            options.paths),
+                                incremental)
+
+
+def _unrecorded(function: Callable[..., T], *args: object) -> T:
+    """Call a function whose reads no result kept between checks rests on."""
+    with reading.recording(None):
+        return function(*args)
 
 
 def _check_files(options: CheckOptions, tree: ConfigTree,
                  folders: tuple[Path, list[Path], list[Path]],
                  includers_of: Callable[[], Includers], started: float,
-                 found: list[Path]) -> Report:
+                 found: list[Path], incremental: Incremental) -> Report:
     """Check the launch files found (the workspace's includers may be read meanwhile).
 
     ``folders``: the workspace, package sources and install prefixes (``package_folders``).
@@ -273,10 +297,13 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     from launchverify.findings.baseline import apply_baseline
     from launchverify.findings.bounds import bounded
     from launchverify.findings.fixes import within
+    from launchverify.findings.incremental import settled_places
+    from launchverify.findings.verdicts import merge
     from launchverify.frontends import launch_format
     from launchverify.isolation.confine import Limits
     from launchverify.isolation.lazy import LazyPython
     from launchverify.models import distros
+    from launchverify.rule import Settled
     from launchverify.workspace.interfaces import Interfaces
 
     config = options.config
@@ -303,45 +330,85 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         selection.rules()  # a selection that names no rule is still an error
         return Report([], 0, time.perf_counter() - started, display)
     limits = Limits(seconds=options.time_limit)
-    graphs = []
-    with distros.checking(options.distro), reading.size_limit(options.max_file_size), \
-            LazyPython(index=index, workspace=workspace, jobs=options.jobs or default_jobs(),
-                       limits=limits, distro=options.distro, environment=options.environment,
-                       arguments=options.arguments, readable=readable) as python:
-        loader = FileCache(index, workspace, python)
-        python.prefetch(canonical(f) for f in files if launch_format(f) == "python")
-        loader.read_ahead(canonical(f) for f in files)
-        rules = selection.rules()  # the rules load while the workers start
-        for done, file in enumerate(files):
-            graphs.append(evaluate(canonical(file), index=index, workspace=workspace,
-                                   pinned=options.arguments, environment=options.environment,
-                                   loader=loader))
-            if options.progress is not None:
-                options.progress(done + 1, len(files))
-        python_files, protections = python.evaluated, python.protections
-    if ahead:  # started for files that were all excluded, say
-        from launchverify.isolation.zygote import discard_ahead
+    roots = [canonical(f) for f in files]
+    rules = selection.rules()
+    kept = incremental.start(roots, rules)
+    graphs: dict[Path, LaunchGraph] = {}
+    included: dict[Path, bool] = {}
+    evaluations = 0
+    protections = None
 
-        discard_ahead()
-    included = {inc.target for g in graphs for inc in g.includes if inc.target is not None}
-    includers = includers_of()
-    for graph in graphs:
-        graph.included_elsewhere = graph.root in included or includers.included(graph.root)
-    with distros.checking(options.distro):  # rules judge for it too (lifecycle labels)
-        findings = run_rules(graphs, rules,
-                             RuleContext(packages=index, interfaces=Interfaces(graphs),
-                                         options=rule_options(config, options.arguments)),
-                             jobs=options.jobs or default_jobs())
-    loaded = {path for g in graphs for path in g.files}
-    findings, suppressed = _suppress([bounded(f) for f in findings], loaded, rules)
+    def evaluate_roots(targets: list[Path]) -> None:
+        """Evaluate roots (Python files in workers), noting what each read."""
+        nonlocal evaluations, protections
+        with LazyPython(index=index, workspace=workspace, jobs=options.jobs or default_jobs(),
+                        limits=limits, distro=options.distro, environment=options.environment,
+                        arguments=options.arguments, readable=readable) as python:
+            loader = FileCache(index, workspace, python)
+            python.prefetch(root for root in targets if launch_format(root) == "python")
+            loader.read_ahead(targets)
+            for root in targets:
+                loader.asked = set()
+                graphs[root] = evaluate(root, index=index, workspace=workspace,
+                                        pinned=options.arguments,
+                                        environment=options.environment, loader=loader)
+                incremental.evaluated(graphs[root], loader.asked, python.reads)
+                if options.progress is not None:
+                    options.progress(len(graphs), len(roots))
+            evaluations += python.evaluated
+            protections = protections or python.protections
+
+    with distros.checking(options.distro), reading.size_limit(options.max_file_size):
+        evaluate_roots([root for root in roots if root not in kept])
+        includers = includers_of()
+        while True:  # roots another root's edit concerns: who includes them, their family
+            targets = {target for g in graphs.values() for inc in g.includes
+                       if (target := inc.target) is not None}
+            targets.update(target for result in kept.values() for target in result.includes)
+            included = {root: root in targets or includers.included(root) for root in roots}
+            again = incremental.concerned(graphs, kept, included)
+            if not again:
+                break
+            evaluate_roots([root for root in roots if root in again])
+        for root, graph in graphs.items():
+            graph.included_elsewhere = included[root]
+        if ahead:  # started for files that were all excluded, say
+            from launchverify.isolation.zygote import discard_ahead
+
+            discard_ahead()
+        # rules judge for the distro too (lifecycle labels)
+        interfaces = Interfaces([graphs[r] for r in roots if r in graphs],
+                                kept={r: (k.interface, k.picked) for r, k in kept.items()},
+                                order=roots)
+        ctx = RuleContext(packages=index, interfaces=interfaces,
+                          options=rule_options(config, options.arguments))
+        verdicts, instance = judge([graphs[r] for r in roots if r in graphs], rules, ctx,
+                                   jobs=options.jobs or default_jobs())
+        judged = {verdict.root: verdict for verdict in verdicts}
+        while again := incremental.unsettled(kept, judged):  # kept roots that skipped a place
+            evaluate_roots([root for root in roots if root in again])
+            for root in again:
+                graphs[root].included_elsewhere = included[root]
+            ctx.settled = {code: Settled(places) for code, places
+                           in settled_places(judged.values()).items()}
+            more, _ = judge([graphs[r] for r in roots if r in again], rules, ctx,
+                            jobs=options.jobs or default_jobs())
+            judged.update((verdict.root, verdict) for verdict in more)
+        everyone = [judged[r] if r in judged else kept[r].verdicts for r in roots]
+        findings = merge(everyone, rules, ctx, instance if not kept else lambda r: rules[r](),
+                         _isolated)
+    report = incremental.report(roots, graphs, judged, kept, rules)
+    loaded = report.loaded_files()
+    findings, suppressed = _unrecorded(_suppress, [bounded(f) for f in findings], loaded, rules)
     findings = within(_configured(findings, tree, selection), workspace)  # fixes: ours only
     baselined = 0
     if options.baseline is not None:
         findings, baselined = apply_baseline(options.baseline, findings)
-    return Report(sorted(findings, key=Finding.sort_key), len(loaded),
-                  time.perf_counter() - started, display, graphs,
-                  checked=[canonical(f) for f in files], suppressed=suppressed,
-                  baselined=baselined, python_files=python_files, protections=protections)
+    return dataclasses.replace(
+        report, findings=sorted(findings, key=Finding.sort_key), files=len(loaded),
+        seconds=time.perf_counter() - started, display=display, checked=roots,
+        suppressed=suppressed, baselined=baselined, python_files=evaluations,
+        protections=protections)
 
 
 def rule_options(config: Config, arguments: dict[str, str] | None = None
@@ -374,18 +441,26 @@ def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report
     if entry is not None and isinstance(entry.report, Report):
         return dataclasses.replace(entry.report, seconds=time.perf_counter() - started,
                                    cached=True)
+    stored = cache.peek(key)  # what an edit may leave of the last result
     cache.prepare()
     now = time.time()
     with in_use(cache):
-        report = run_check(options)
-    read = {str(path) for graph in report.graphs
-            for path in (*graph.files, *graph.param_files)}
+        report = run_check(options, stored, keep=True)
+    read = {str(path) for path in report.loaded_files()}
+    if report.kept is not None:
+        read.update(path for result in report.kept.roots.values()
+                    if (reads := getattr(result, "reads", None)) is not None for path in reads)
     folder_stamps: dict[str, FolderStamp] = {}
+    listings: dict[str, str] = {}
     stamps = stamps_of(folders, [*files, *read], now, skip=str(cache.folder),
-                       folder_stamps=folder_stamps)
+                       folder_stamps=folder_stamps, listings=listings)
     if settled(stamps, now, folder_stamps):  # else what was read may not be what is there
-        cache.store(key, Entry(report.detached(), stamps, folder_stamps))
-    return report
+        entry = Entry(report.detached(), stamps, folder_stamps, listings=listings)
+        if report.kept is not None:
+            cache.store_kept(key, report.kept)
+            entry.kept = report.kept.token
+        cache.store(key, entry)
+    return dataclasses.replace(report, kept=None)
 
 
 def _inputs(options: CheckOptions) -> tuple[list[str], list[str]]:

@@ -20,6 +20,7 @@ from launchverify.graph import StaticArgument
 from launchverify.ir import actions as a
 from launchverify.workspace.packages import PackageIndex
 from launchverify.workspace.paths import resolved
+from launchverify.workspace.reading import recording
 
 MAX_OPAQUE_RUNS = 32  # results kept per OpaqueFunction (each compared on reuse)
 _MISSING = object()  # a configuration not set (compares unequal to every value)
@@ -57,6 +58,7 @@ class FileCache:
         self._opaque_runs: dict[a.OpaqueFunction, list[_OpaqueRun]] = {}
         # the files each loaded file includes by a path known without a context
         self._includes: dict[Path, tuple[Path, ...]] = {}
+        self.asked: set[Path] = set()  # files asked for (the check empties it per root)
         self._owned = None
         if python is None:
             from launchverify.isolation.pool import IsolatedPython
@@ -71,9 +73,11 @@ class FileCache:
 
     def __call__(self, path: Path) -> LoadedFile:
         """Return the loaded file, reading it the first time."""
+        self.asked.add(path)
         loaded = self._files.get(path)
         if loaded is None:
-            loaded = load_launch_file(path, self.python)
+            with recording(None):  # what it rests on is this file: the root asking says
+                loaded = load_launch_file(path, self.python)
             self._files[path] = loaded
             if loaded.launch is not None:
                 self._includes[path] = tuple(included_files(loaded.launch.actions, self.index))
@@ -135,17 +139,21 @@ class FileCache:
 
     def param_file(self, path: Path) -> ParamFile:
         """Return a parameter file, reading it the first time."""
+        self.asked.add(path)
         loaded = self._param_files.get(path)
         if loaded is None:
-            loaded = load_param_file(path)
+            with recording(None):
+                loaded = load_param_file(path)
             self._param_files[path] = loaded
         return loaded
 
     def substitutions(self, path: Path) -> tuple[InlineSubstitution, ...]:
         """Return a parameter file's ``$(...)`` lines, parsing them the first time."""
+        self.asked.add(path)
         found = self._substitutions.get(path)
         if found is None:
-            found = self._substitutions[path] = substitutions_in(path)
+            with recording(None):
+                found = self._substitutions[path] = substitutions_in(path)
         return found
 
     def within(self, path: Path, folder: Path) -> bool:

@@ -38,7 +38,7 @@ from launchverify.own_code import package_folders
 from launchverify.workspace.packages import SKIP_DIRS
 from launchverify.workspace.paths import link_inside
 
-FORMAT = 3  # bump when what is stored changes shape (2: findings carry fixes; 3: folders)
+FORMAT = 4  # bump when what is stored changes shape (3: folders; 4: per-root results)
 RACY_SECONDS = 2.0
 CLOCK_SLACK = 0.01  # seconds a file's modification time may trail the real time (a jiffy)
 MAX_AGE_DAYS = 30  # cache files unused for longer are removed
@@ -68,12 +68,32 @@ def disabled_by_environment() -> bool:
 
 @dataclass
 class Entry:
-    """One stored result: the report and what it rested on."""
+    """One stored result: the report and what it rested on.
+
+    Each folder's listing tells an editor's save by rename from a file added or removed
+    (``incremental``).
+    """
 
     report: object
     stamps: dict[str, Stamp] = field(default_factory=dict)  # every file it may rest on
     folder_stamps: dict[str, FolderStamp] = field(default_factory=dict)  # every one walked
     format: int = FORMAT
+    listings: dict[str, str] = field(default_factory=dict)  # folder -> digest of its names
+    kept: str = ""  # the ``Kept.token`` stored with it
+
+
+@dataclass
+class Kept:
+    """What an edit may leave of a stored result (``incremental``), stored beside it.
+
+    Apart from the entry: a run answered from the cache does not read it.
+    """
+
+    roots: dict[Path, object]  # incremental.RootResult, by root
+    rules: tuple[str, ...]  # the codes of the rules that judged
+    other_reads: frozenset[str]  # what the check read besides the roots' own files
+    format: int = FORMAT
+    token: str = field(default_factory=lambda: os.urandom(8).hex())  # pairs it with its entry
 
 
 def key_of(parts: Iterable[object]) -> str:
@@ -99,8 +119,8 @@ def own_code_stamp() -> str:
 
 
 def _walk(folders: Iterable[str], skip: str | None = None,
-          folder_stamps: dict[str, FolderStamp] | None = None, *, own: bool = False
-          ) -> dict[str, Stamp]:
+          folder_stamps: dict[str, FolderStamp] | None = None, *, own: bool = False,
+          listings: dict[str, str] | None = None) -> dict[str, Stamp]:
     """Return the size and modification time of every file below the folders.
 
     ``skip``: a folder left out (the cache's own, when it lies in the workspace). Linked
@@ -112,15 +132,17 @@ def _walk(folders: Iterable[str], skip: str | None = None,
     file of the workspace.
     """
     return {path: (info.st_size, info.st_mtime_ns, None)
-            for path, info in _files(folders, skip, folder_stamps, own=own)}
+            for path, info in _files(folders, skip, folder_stamps, own=own,
+                                     listings=listings)}
 
 
 def _files(folders: Iterable[str], skip: str | None,
-           folder_stamps: dict[str, FolderStamp] | None = None, *, own: bool = False
-           ) -> Iterator[tuple[str, os.stat_result]]:
+           folder_stamps: dict[str, FolderStamp] | None = None, *, own: bool = False,
+           listings: dict[str, str] | None = None) -> Iterator[tuple[str, os.stat_result]]:
     """Yield every regular file below the folders with its status (see ``_walk``).
 
-    ``folder_stamps`` receives each folder's stamp (``FolderStamp``).
+    ``folder_stamps`` receives each folder's stamp (``FolderStamp``), ``listings`` the
+    digest of its names (``listing``).
     """
     pending = list(folders)
     roots = [os.path.realpath(folder) for folder in pending]
@@ -143,6 +165,8 @@ def _files(folders: Iterable[str], skip: str | None,
             entries = list(os.scandir(folder))
         except OSError:
             continue
+        if listings is not None:
+            listings[folder] = names_digest(entry.name for entry in entries)
         for entry in entries:
             try:
                 if not own and entry.is_symlink() and not link_inside(entry.path, roots):
@@ -159,7 +183,22 @@ def _files(folders: Iterable[str], skip: str | None,
                 yield entry.path, info
 
 
-def _stat(path: str) -> Stamp | None:
+def names_digest(names: Iterable[str]) -> str:
+    """Return a digest of a folder's names (what is there, whatever the order)."""
+    return hashlib.blake2b("\0".join(sorted(names)).encode("utf-8", "surrogateescape"),
+                           digest_size=16).hexdigest()
+
+
+def listing(folder: str) -> str | None:
+    """Return the digest of a folder's names now (``None``: it cannot be listed)."""
+    try:
+        return names_digest(os.listdir(folder))  # noqa: PTH208 (string paths)
+    except OSError:
+        return None
+
+
+def stat_of(path: str) -> Stamp | None:
+    """Return a file's stamp without its content hash (``None``: gone, or not a file)."""
     try:
         info = os.stat(path)  # noqa: PTH116 (string paths: see _walk)
     except OSError:
@@ -169,7 +208,7 @@ def _stat(path: str) -> Stamp | None:
     return (info.st_size, info.st_mtime_ns, None)
 
 
-def _hash(path: str) -> str | None:
+def content_hash(path: str) -> str | None:
     """Return a regular file's content hash; never blocks (a FIFO put in its place)."""
     try:
         fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
@@ -189,20 +228,20 @@ def _hash(path: str) -> str | None:
 
 
 def stamps_of(folders: list[str], files: Iterable[str], now: float,
-              skip: str | None = None, folder_stamps: dict[str, FolderStamp] | None = None
-              ) -> dict[str, Stamp]:
+              skip: str | None = None, folder_stamps: dict[str, FolderStamp] | None = None,
+              listings: dict[str, str] | None = None) -> dict[str, Stamp]:
     """Return the stamps a result rests on; racy files carry their content hash.
 
-    ``folder_stamps`` receives the stamp of every folder walked.
+    ``folder_stamps`` receives the stamp of every folder walked, ``listings`` its names.
     """
-    stamps = _walk(folders, skip, folder_stamps)
+    stamps = _walk(folders, skip, folder_stamps, listings=listings)
     for path in files:
-        if path not in stamps and (stamp := _stat(path)) is not None:
+        if path not in stamps and (stamp := stat_of(path)) is not None:
             stamps[path] = stamp
     racy = int((now - RACY_SECONDS) * 1e9)
     for path, (size, mtime, _) in stamps.items():
         if mtime >= racy:
-            stamps[path] = (size, mtime, _hash(path))
+            stamps[path] = (size, mtime, content_hash(path))
     return stamps
 
 
@@ -244,10 +283,10 @@ def unchanged(entry: Entry) -> bool:
         if (info.st_dev, info.st_ino, info.st_ctime_ns) != stamp:
             return False  # a file added, removed or renamed there, or another folder
     for path, (size, mtime, content) in entry.stamps.items():
-        now = _stat(path)
+        now = stat_of(path)
         if now is None or now[:2] != (size, mtime):
             return False
-        if content is not None and _hash(path) != content:
+        if content is not None and content_hash(path) != content:
             return False
     return True
 
@@ -275,6 +314,25 @@ class ResultCache:
         with contextlib.suppress(OSError):
             os.utime(path)  # recently used: kept by the pruning
         return entry
+
+    def peek(self, key: str) -> tuple[Entry, Kept] | None:
+        """Return the stored entry for a key, valid or not, with what an edit may leave."""
+        try:
+            with self._file(key).open("rb") as handle:
+                entry = pickle.load(handle)
+            with self._file(key + ".roots").open("rb") as handle:
+                kept = pickle.load(handle)
+        except Exception:  # missing, unreadable, or from another version
+            return None
+        if not (isinstance(entry, Entry) and isinstance(kept, Kept)
+                and entry.format == kept.format == FORMAT and entry.kept == kept.token):
+            return None
+        return entry, kept
+
+    def store_kept(self, key: str, kept: Kept) -> None:
+        """Write what an edit may leave of the result stored under ``key`` (before it)."""
+        self.prepare()
+        _write(self._file(key + ".roots"), kept)
 
     def prepare(self) -> None:
         """Make the folder before a check (a cache that cannot be made is no error).

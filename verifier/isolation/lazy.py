@@ -42,6 +42,10 @@ class LazyPython:
         if wanted:
             self.started().prefetch(wanted)
 
+    def reads(self, path: Path) -> frozenset[str] | None:
+        """Return the files the evaluation of ``path`` opened (``None``: unknown)."""
+        return None if self.pool is None else self.pool.reads(path)
+
     @property
     def evaluated(self) -> int:
         """Return how many files workers evaluated."""

@@ -36,6 +36,7 @@ from launchverify.workspace.reading import read_file
 
 GRACE = 2.0  # seconds past the time limit before a worker is killed
 MAX_ALIVE = 64  # idle workers kept for their OpaqueFunctions (about 8 MB each)
+MAX_READS = 10_000  # files one answer may say it read (more: unknown)
 _ENTRY_POINTS = (b"def generate_launch_description", b"def generate_test_description")
 
 
@@ -111,6 +112,7 @@ class IsolatedPython:
         self._repositories: dict[Path, Path] = {}
         self._queued: dict[Path, int] = {}  # files queued, by repository
         self.reused = 0  # files evaluated by a worker that had evaluated another
+        self._read: dict[Path, set[str] | None] = {}  # what each file's answers read
 
     # ------------------------------------------------------------------ the loader
 
@@ -327,11 +329,32 @@ class IsolatedPython:
             self._fail(request, "sent a malformed answer", kill=True)
             return
         request.reply = reply
+        self._note_reads(request.load.path if request.load is not None
+                         else request.worker.path, reply.get("read"))
+
+    def _note_reads(self, path: Path, read: object) -> None:
+        """Remember the files a worker says an answer about ``path`` read."""
+        if (isinstance(read, list) and len(read) <= MAX_READS
+                and all(isinstance(p, str) for p in read)):
+            known = self._read.setdefault(path, set())
+            if known is not None:
+                known.update(read)
+        else:
+            self._read[path] = None
+
+    def reads(self, path: Path) -> frozenset[str] | None:
+        """Return the files the evaluation of ``path`` opened so far (``None``: unknown).
+
+        A file whose worker failed before it answered, or that was not asked, is unknown.
+        """
+        read = self._read.get(path)
+        return None if read is None else frozenset(read)
 
     def _fail(self, request: _Request, why: str, *, kill: bool = False) -> None:
         worker = request.worker
         request.failure = why
         worker.ended = why
+        self._read[request.load.path if request.load is not None else worker.path] = None
         self._workers.pop(worker, None)
         if kill and self._zygote is not None:
             self._zygote.kill(worker.number)

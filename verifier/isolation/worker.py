@@ -21,7 +21,12 @@ from pathlib import Path
 from typing import Any, NoReturn
 
 from launchverify.frontends.python import PythonFrontend
-from launchverify.frontends.python.sandbox import TimeLimitExceeded, arm, time_limit
+from launchverify.frontends.python.sandbox import (
+    TimeLimitExceeded,
+    arm,
+    take_opened,
+    time_limit,
+)
 from launchverify.isolation.channel import Channel, ChannelError
 from launchverify.isolation.codec import Decoder, Encoder
 from launchverify.isolation.confine import Confinement, Limits, beneath
@@ -127,6 +132,7 @@ class _Worker:
                             else None)
             reply["reusable"] = self.kept_by is None  # (the rest is checked if it is reused)
             _clear(self.scratch)
+        reply["read"] = take_opened()  # what the answer rests on (kept results say)
         self.channel.send(reply)
 
     def load(self, request: dict[str, Any]) -> dict[str, Any]:

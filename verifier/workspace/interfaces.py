@@ -10,7 +10,7 @@ launched or included the same way, whether or not it uses each of them.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -40,13 +40,23 @@ class Interfaces:
     read tens of thousands of configurations; few roots are ever asked about).
     """
 
-    def __init__(self, graphs: Iterable[LaunchGraph] = ()) -> None:
+    def __init__(self, graphs: Iterable[LaunchGraph] = (),
+                 kept: Mapping[Path, tuple[Interface, Picked]] | None = None,
+                 order: Iterable[Path] = ()) -> None:
+        """Know the roots of a check by their graphs, or by what was kept of them.
+
+        ``kept``: roots without a graph here, by the interface and picks they had;
+        ``order``: the check's roots in its order (by default the graphs', then ``kept``).
+        """
         self._graphs = {graph.root: graph for graph in graphs}
-        self._of: dict[Path, Interface] = {}
+        self._kept = dict(kept or {})
+        self._order = [root for root in order if root in self._graphs or root in self._kept] \
+            or [*self._graphs, *self._kept]
+        self._of: dict[Path, Interface] = {root: i for root, (i, _) in self._kept.items()}
         self._by_folder: dict[Path, list[Path]] = {}
         self._by_name: dict[str, list[Path]] = {}
         self._picked: dict[tuple[str, str], Span] | None = None
-        for path in sorted(self._graphs):
+        for path in sorted([*self._graphs, *self._kept]):
             self._by_folder.setdefault(path.parent, []).append(path)
             self._by_name.setdefault(path.name, []).append(path)
 
@@ -54,11 +64,7 @@ class Interfaces:
         """Return the interface of a checked root (``None`` for another file)."""
         known = self._of.get(root)
         if known is None and (graph := self._graphs.get(root)) is not None:
-            known = self._of[root] = Interface(
-                {a.name: a.origin.span for a in graph.arguments
-                 if a.origin.span.file == graph.root},
-                frozenset(graph.read_names() | graph.mentioned_names()),
-            )
+            known = self._of[root] = interface_of(graph)
         return known
 
     def mirrored(self, file: Path, name: str) -> Span | None:
@@ -91,15 +97,36 @@ class Interfaces:
         """
         if self._picked is None:
             self._picked = {}
-            for graph in self._graphs.values():
-                for include in graph.includes:
-                    picked = _picked_name(include.action.path)
-                    if picked is None:
-                        continue
-                    for argument in include.action.arguments:
-                        if isinstance(argument.name, s.Text):
-                            self._picked.setdefault((picked, argument.name.text), argument.span)
+            for root in self._order:
+                graph = self._graphs.get(root)
+                for pick, span in (picks_of(graph) if graph is not None
+                                   else self._kept[root][1]):
+                    self._picked.setdefault(pick, span)
         return self._picked.get((file.name, name))
+
+
+# An includer's picks: (the file name it picks by an argument, an argument it passes)
+Picked = tuple[tuple[tuple[str, str], Span], ...]
+
+
+def interface_of(graph: LaunchGraph) -> Interface:
+    """Return what a root declares itself and reads anywhere."""
+    return Interface({a.name: a.origin.span for a in graph.arguments
+                      if a.origin.span.file == graph.root},
+                     frozenset(graph.read_names() | graph.mentioned_names()))
+
+
+def picks_of(graph: LaunchGraph) -> Picked:
+    """Return what a graph's includes that pick a file by an argument's value pass it."""
+    out = []
+    for include in graph.includes:
+        picked = _picked_name(include.action.path)
+        if picked is None:
+            continue
+        for argument in include.action.arguments:
+            if isinstance(argument.name, s.Text):
+                out.append(((picked, argument.name.text), argument.span))
+    return tuple(out)
 
 
 def _picked_name(location: s.Sub) -> str | None:

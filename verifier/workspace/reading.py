@@ -27,6 +27,7 @@ from launchverify.workspace.paths import SYSTEM_FOLDERS, below, forget_real_fold
 
 DEFAULT_LIMIT = 10 * 1000 * 1000
 _LIMIT: ContextVar[int] = ContextVar("launchverify_max_file_size", default=DEFAULT_LIMIT)
+_RECORD: ContextVar[set[str] | None] = ContextVar("launchverify_reads", default=None)
 _KINDS = ((stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
           (stat.S_ISBLK, "a block device"), (stat.S_ISSOCK, "a socket"),
           (stat.S_ISDIR, "a folder"))
@@ -157,12 +158,35 @@ def limit() -> int:
     return _LIMIT.get()
 
 
+@contextlib.contextmanager
+def recording(into: set[str] | None) -> Iterator[None]:
+    """Add every file read inside the block to ``into`` (``None``: record nothing).
+
+    What a check read tells which of its results an edit leaves valid. Each path is kept
+    as given (made absolute) and as its real path. Only this thread's reads count (and
+    threads it starts do not inherit it).
+    """
+    token = _RECORD.set(into)
+    try:
+        yield
+    finally:
+        _RECORD.reset(token)
+
+
+def _record(path: str | Path) -> None:
+    into = _RECORD.get()
+    if into is not None:
+        into.add(os.path.abspath(path))  # noqa: PTH100
+        into.add(os.path.realpath(path))
+
+
 def read_file(path: str | Path, *, prefix: int | None = None) -> bytes:
     """Return a regular file's bytes.
 
     ``prefix``: return at most that many bytes of a larger file instead of refusing it
     (for scans that need only the start, like a package manifest's name).
     """
+    _record(path)
     buffered = unsaved(path)
     if buffered is not None:
         most = limit() if prefix is None else prefix

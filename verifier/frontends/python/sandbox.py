@@ -30,6 +30,7 @@ from typing import Any
 
 from launchverify.models.launch_api.placeholders import environment_variable
 from launchverify.own_code import is_own_file
+from launchverify.workspace.paths import SYSTEM_FOLDERS, below
 
 try:
     import resource
@@ -74,6 +75,7 @@ _state = threading.local()
 _scratch: list[str] = []  # the private temporary folder of the current evaluation
 _hook: list[bool] = []  # installed once per process (audit hooks cannot be removed)
 _armed: list[bool] = []  # a worker: on for every thread, for good
+_opened: set[str] = set()  # files opened for reading, as given (``take_opened``)
 
 
 def _active() -> bool:
@@ -188,6 +190,8 @@ def _audit(event: str, args: tuple[Any, ...]) -> None:
             isinstance(flags, int) and flags & _WRITE_FLAGS)
         if writes:
             _refuse(f"writing {path!r} is not allowed")
+        if isinstance(path, (str, bytes, os.PathLike)):
+            _opened.add(os.path.abspath(os.fsdecode(path)))  # noqa: PTH100
 
 
 def _refuse(what: str) -> None:
@@ -215,6 +219,17 @@ def note_refusal(what: str) -> None:
 
 def _user_code(filename: str) -> bool:
     return not filename.startswith(("<", _STDLIB)) and not is_own_file(filename)
+
+
+def take_opened() -> list[str]:
+    """Return and forget the files opened since the last call, the launch file's own.
+
+    (Not Python's nor launchverify's: what a result kept between checks rests on.)
+    """
+    opened = sorted(path for path in _opened
+                    if _user_code(path) and not below(path, SYSTEM_FOLDERS))
+    _opened.clear()
+    return opened
 
 
 def take_refusals() -> list[tuple[str, tuple[str, int] | None]]:

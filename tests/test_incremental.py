@@ -1,0 +1,193 @@
+"""Re-checking after an edit: only the roots that read an edited file are checked again.
+
+Each test checks a tree with the result cache, edits it, and compares the next check with
+a check from scratch: the same findings, and only the roots that had to be evaluated
+again were (``Report.graphs`` holds the roots evaluated by that check).
+"""
+
+from __future__ import annotations
+
+import random
+import shutil
+import time
+from pathlib import Path
+
+import pytest
+
+from launchverify.engine import CheckOptions, Report, run_check, run_check_cached
+from launchverify.findings import cache
+from launchverify.findings.cache import ResultCache
+
+CORPUS = Path(__file__).resolve().parents[1] / "corpus"
+
+TOP = """<launch>
+  <include file="$(dirname)/robot.launch.xml">
+    <arg name="use_sim_time" value="true"/>
+  </include>
+</launch>
+"""
+ROBOT = """<launch>
+  <arg name="robot" default="r1"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker">
+    <param from="$(dirname)/params.yaml"/>
+    <param name="robot" value="$(var robot)"/>
+  </node>
+</launch>
+"""
+PARAMS = """talker:
+  ros__parameters:
+    rate: 10
+"""
+ALONE = """<launch>
+  <node pkg="demo_nodes_cpp" exec="listener" name="listener"/>
+</launch>
+"""
+# Two launch files of one family: the stand-in declares what the real one uses.
+REAL = """<launch>
+  <arg name="robot_model" default="a"/>
+  <arg name="sensor_model" default="b"/>
+  <arg name="vehicle_id" default="c"/>
+  <arg name="map_path" default="d"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="real_{robot_model}_{sensor_model}">
+    <param name="v" value="$(var vehicle_id)$(var map_path)$(var robot_model)$(var sensor_model)"/>
+  </node>
+</launch>
+""".replace("{robot_model}", "$(var robot_model)").replace("{sensor_model}",
+                                                             "$(var sensor_model)")
+STAND_IN = """<launch>
+  <arg name="robot_model" default="a"/>
+  <arg name="sensor_model" default="b"/>
+  <arg name="vehicle_id" default="c"/>
+  <arg name="map_path" default="d"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="dummy_$(var robot_model)"/>
+</launch>
+"""
+# A Python launch file whose node names come from a YAML file it opens itself.
+OPENER = '''import os
+import yaml
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    with open(os.path.join(os.path.dirname(__file__), "robots.yaml")) as handle:
+        names = yaml.safe_load(handle)["robots"]
+    return LaunchDescription([Node(package="demo_nodes_cpp", executable="talker", name=n)
+                              for n in names])
+'''
+
+
+@pytest.fixture
+def tree(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
+    monkeypatch.delenv("LAUNCHVERIFY_NO_CACHE", raising=False)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    monkeypatch.setattr(cache, "CLOCK_SLACK", 0.0)  # as test_cache: results kept
+    root = tmp_path / "ws"
+    root.mkdir()
+    for name, text in (("top.launch.xml", TOP), ("robot.launch.xml", ROBOT),
+                       ("params.yaml", PARAMS), ("alone.launch.xml", ALONE)):
+        (root / name).write_text(text)
+    return root
+
+
+def _options(root: Path) -> CheckOptions:
+    return CheckOptions(paths=[root], workspace=root)
+
+
+def _findings(report: Report) -> list[tuple[object, ...]]:
+    return [(f.code, str(f.span.file), f.span.line, f.span.column, f.message, f.severity)
+            for f in report.findings]
+
+
+def recheck(root: Path, store: ResultCache) -> set[str]:
+    """Check with the cache; assert it finds what a check from scratch finds.
+
+    Returns the names of the roots this check evaluated.
+    """
+    report = run_check_cached(_options(root), store)
+    time.sleep(0.02)  # what a test changes next gets a later time than the stamps
+    assert _findings(report) == _findings(run_check(_options(root)))
+    return {graph.root.name for graph in report.graphs}
+
+
+def test_an_edited_included_file_rechecks_only_its_includers(tree: Path, tmp_path: Path
+                                                             ) -> None:
+    store = ResultCache(tmp_path / "cache")
+    assert recheck(tree, store) == {"top.launch.xml", "robot.launch.xml", "alone.launch.xml"}
+    robot = tree / "robot.launch.xml"
+    robot.write_text(ROBOT.replace('default="r1"', 'default="r2"'))
+    assert recheck(tree, store) == {"top.launch.xml", "robot.launch.xml"}
+    assert run_check_cached(_options(tree), store).cached  # and then nothing at all
+
+
+def test_an_edited_parameter_file_rechecks_the_roots_that_load_it(tree: Path,
+                                                                  tmp_path: Path) -> None:
+    store = ResultCache(tmp_path / "cache")
+    recheck(tree, store)
+    (tree / "params.yaml").write_text(PARAMS.replace("talker:", "talkr:"))  # LV402 now
+    assert recheck(tree, store) == {"top.launch.xml", "robot.launch.xml"}
+    report = run_check_cached(_options(tree), store)
+    assert {f.code for f in report.findings} >= {"LV402"}
+
+
+def test_an_editor_saving_by_rename_keeps_the_other_roots(tree: Path, tmp_path: Path) -> None:
+    store = ResultCache(tmp_path / "cache")
+    recheck(tree, store)
+    saved = tree / "robot.launch.xml.new"
+    saved.write_text(ROBOT.replace('default="r1"', 'default="r3"'))
+    saved.replace(tree / "robot.launch.xml")  # the folder's time changes, not its names
+    assert recheck(tree, store) == {"top.launch.xml", "robot.launch.xml"}
+
+
+def test_a_new_file_rechecks_everything(tree: Path, tmp_path: Path) -> None:
+    store = ResultCache(tmp_path / "cache")
+    recheck(tree, store)
+    (tree / "notes.txt").write_text("what exists may decide an include\n")
+    assert recheck(tree, store) == {"top.launch.xml", "robot.launch.xml", "alone.launch.xml"}
+
+
+def test_a_file_no_root_read_rechecks_everything(tree: Path, tmp_path: Path) -> None:
+    (tree / "notes.txt").write_text("a\n")
+    store = ResultCache(tmp_path / "cache")
+    recheck(tree, store)
+    (tree / "notes.txt").write_text("b\n")  # who read it is not known: no root says so
+    assert len(recheck(tree, store)) == 3
+
+
+def test_a_file_python_code_opens_is_read_by_its_root(tree: Path, tmp_path: Path) -> None:
+    (tree / "fleet.launch.py").write_text(OPENER)
+    (tree / "robots.yaml").write_text("robots: [a, b]\n")
+    store = ResultCache(tmp_path / "cache")
+    recheck(tree, store)
+    (tree / "robots.yaml").write_text("robots: [a, a]\n")  # LV101 now
+    assert recheck(tree, store) == {"fleet.launch.py"}
+    assert "LV101" in {f.code for f in run_check_cached(_options(tree), store).findings}
+
+
+def test_an_interface_change_rechecks_the_family(tree: Path, tmp_path: Path) -> None:
+    (tree / "sensing.launch.xml").write_text(REAL)
+    (tree / "dummy_sensing.launch.xml").write_text(STAND_IN)
+    store = ResultCache(tmp_path / "cache")
+    recheck(tree, store)  # the stand-in's unused arguments are its family's: quiet
+    # the real file stops using vehicle_id: the stand-in's declaration is unused now
+    (tree / "sensing.launch.xml").write_text(REAL.replace("$(var vehicle_id)", ""))
+    again = recheck(tree, store)
+    assert {"sensing.launch.xml", "dummy_sensing.launch.xml"} <= again
+
+
+def test_random_edits_of_a_corpus_tree_give_what_a_check_from_scratch_gives(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(cache, "CLOCK_SLACK", 0.0)
+    root = tmp_path / "ws"
+    shutil.copytree(CORPUS / "python", root)
+    store = ResultCache(tmp_path / "cache")
+    recheck(root, store)
+    files = sorted(p for p in root.rglob("*") if p.suffix in (".py", ".xml", ".yaml"))
+    rng = random.Random(7)
+    for _ in range(4):
+        path = rng.choice(files)
+        lines = path.read_text().splitlines(keepends=True)
+        if lines:
+            del lines[rng.randrange(len(lines))]  # a line removed: often a finding more
+        path.write_text("".join(lines))
+        recheck(root, store)

@@ -1,0 +1,277 @@
+"""Re-checking after an edit: only the roots that read an edited file are evaluated again.
+
+A check keeps, beside its report, what each root gave (``RootResult``): its rules'
+verdicts before the merge, the files it read, and what other roots' verdicts may depend
+on (its include targets, its interface). After an edit, the roots that read no edited
+file keep their verdicts; the others are evaluated and judged again, and the merge runs
+over all of them as over a cold check's.
+
+Exactness rests on what each result says it read:
+
+- a root reads the launch and parameter files its evaluation asked for, and what the
+  Python code among them opened (the workers report it; a worker that failed reports
+  nothing, and its roots are evaluated every time);
+- every other file launchverify read during the check (package manifests, node sources
+  for the rules, a bridge's configuration) counts for every root: editing one re-checks
+  everything, as does a file added, removed or renamed anywhere (a folder's listing
+  changed: what exists decides includes and findings);
+- a root's verdicts may depend on other roots in three ways, each re-checked: whether
+  another root includes it (``included_elsewhere``), the interfaces of the launch files
+  of its family (same folder or same file name, ``Interfaces.mirrored``), and the places
+  another root settled for a rule asking every context (``Settled``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import os
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from launchverify.findings.cache import Kept
+from launchverify.findings.verdicts import Verdicts
+from launchverify.frontends import launch_format
+from launchverify.rule import Finding, Rule
+from launchverify.span import Span
+
+if TYPE_CHECKING:
+    from launchverify.engine import Report
+    from launchverify.findings.cache import Entry
+    from launchverify.graph import LaunchGraph
+    from launchverify.workspace.interfaces import Interface, Picked
+
+
+@dataclass
+class RootResult:
+    """What one root's evaluation and its rules gave, kept for the next check."""
+
+    verdicts: Verdicts
+    reads: frozenset[str] | None  # the files it rests on (None: unknown, evaluate again)
+    includes: frozenset[Path]  # the files its includes reach (others' ``included_elsewhere``)
+    included_elsewhere: bool
+    interface: Interface
+    picked: Picked  # what ``Interfaces.picked_by_name`` reads of it
+    unseen: list[tuple[str, Span]] = field(default_factory=list)
+    queries: int = 0
+
+
+@dataclass
+class Plan:
+    """What the last check left that this one may keep."""
+
+    previous: dict[Path, RootResult]  # every root of the last check
+    changed: frozenset[str]  # the files edited since
+
+    def kept(self, roots: Iterable[Path]) -> dict[Path, RootResult]:
+        """Return the results of the roots that read no edited file."""
+        out = {}
+        for root in roots:
+            result = self.previous.get(root)
+            if result is not None and result.reads is not None \
+                    and not (result.reads & self.changed):
+                out[root] = result
+        return out
+
+
+def plan(stored: tuple[Entry, Kept] | None, rules: Iterable[str]) -> Plan | None:
+    """Return what may be kept of the last check's results (``None``: nothing).
+
+    Nothing is kept when the rules differ, when a folder's listing changed, or when an
+    edited file was read by anything but the roots' evaluations.
+    """
+    if stored is None:
+        return None
+    entry, kept = stored
+    if not kept.roots or kept.rules != tuple(rules):
+        return None
+    changed = changed_files(entry)
+    if changed is None or changed & kept.other_reads:
+        return None
+    previous = {root: result for root, result in kept.roots.items()
+                if isinstance(result, RootResult)}
+    read_by_roots: set[str] = set()
+    for result in previous.values():
+        if result.reads is not None:
+            read_by_roots |= result.reads
+    if not changed <= read_by_roots:  # a file no root says it read: who did is not known
+        return None
+    return Plan(previous, frozenset(changed))
+
+
+def changed_files(entry: Entry) -> set[str] | None:
+    """Return the files modified since the entry was stored (``None``: more than that).
+
+    A folder whose change time moved is listed again: an editor that saves by renaming a
+    new file over the old one changes it, and the names are then the same.
+    """
+    from launchverify.findings.cache import UNREADABLE, content_hash, listing, stat_of
+
+    for folder, stamp in entry.folder_stamps.items():
+        try:
+            info = os.stat(folder)  # noqa: PTH116 (string paths)
+        except OSError:
+            if stamp != UNREADABLE:
+                return None
+            continue
+        if (info.st_dev, info.st_ino, info.st_ctime_ns) != stamp and \
+                listing(folder) != entry.listings.get(folder):
+            return None
+    changed = set()
+    for path, (size, mtime, content) in entry.stamps.items():
+        now = stat_of(path)
+        if now is None:
+            return None
+        if now[:2] != (size, mtime) or (content is not None and content_hash(path) != content):
+            changed.add(path)
+    return changed
+
+
+def family(root: Path, roots: Iterable[Path]) -> set[Path]:
+    """Return the roots whose interface ``root``'s rules may consult, and the reverse.
+
+    (``Interfaces.mirrored``: the same folder, or the same file name elsewhere.)
+    """
+    return {other for other in roots
+            if other != root and (other.parent == root.parent or other.name == root.name)}
+
+
+def unsettled(kept: dict[Path, RootResult], settled: dict[str, set[object]]) -> set[Path]:
+    """Return the kept roots that skipped a place no root settles any longer."""
+    return {root for root, result in kept.items()
+            if any(not relied <= settled.get(code, set())
+                   for code, (_, relied) in result.verdicts.settled.items())}
+
+
+def settled_places(verdicts: Iterable[Verdicts]) -> dict[str, set[object]]:
+    """Return, per rule, the places any of these graphs settled."""
+    out: dict[str, set[object]] = {}
+    for verdict in verdicts:
+        for code, (places, _) in verdict.settled.items():
+            out.setdefault(code, set()).update(places)
+    return out
+
+
+class Incremental:
+    """One check's part in re-checking: what it keeps of the last, and keeps for the next."""
+
+    def __init__(self, stored: tuple[Entry, Kept] | None, other_reads: set[str], *,
+                 keep: bool) -> None:
+        self.stored = stored
+        self.other_reads = other_reads  # filled as the check reads (``reading.recording``)
+        self.on = keep
+        self.plan: Plan | None = None
+        self.reads: dict[Path, frozenset[str] | None] = {}
+
+    def start(self, roots: list[Path], rules: list[type[Rule]]) -> dict[Path, RootResult]:
+        """Return the results kept for roots that read no edited file."""
+        from launchverify.parallel.fanout import graph_wise
+
+        if self.stored is None or not all(graph_wise(rule) for rule in rules):
+            return {}
+        self.plan = plan(self.stored, [rule.code for rule in rules])
+        return {} if self.plan is None else self.plan.kept(roots)
+
+    def evaluated(self, graph: LaunchGraph, asked: set[Path],
+                  python_reads: Callable[[Path], frozenset[str] | None]) -> None:
+        """Note what a root's evaluation read: files asked for, and what Python code opened."""
+        if not self.on:
+            return
+        paths = {*asked, *graph.files, *graph.param_files}
+        read: set[str] = set()
+        for path in paths:
+            if launch_format(path) == "python":
+                opened = python_reads(path)
+                if opened is None:
+                    self.reads[graph.root] = None
+                    return
+                read.update(opened)
+        read.update(str(path) for path in paths)
+        self.reads[graph.root] = frozenset(
+            {os.path.realpath(p) for p in read} | {os.path.abspath(p) for p in read})  # noqa: PTH100
+
+    def concerned(self, graphs: dict[Path, LaunchGraph], kept: dict[Path, RootResult],
+                  included: dict[Path, bool]) -> set[Path]:
+        """Take from ``kept`` the roots an evaluation of others concerns, and return them.
+
+        A root another now includes, or no longer does; a root of the family of one whose
+        interface changed, or that an includer picking by name now passes other arguments.
+        """
+        from launchverify.workspace.interfaces import interface_of, picks_of
+
+        if self.plan is None:
+            return set()
+        again = {root for root, result in kept.items()
+                 if included[root] != result.included_elsewhere}
+        previous = self.plan.previous
+        for root in set(previous) - set(included):  # no longer a root: its family
+            again |= family(root, kept)
+            again |= {other for other in kept
+                      if other.name in {pick[0][0] for pick in previous[root].picked}}
+        for root, graph in graphs.items():
+            before = previous.get(root)
+            if before is None or interface_of(graph) != before.interface:
+                again |= family(root, kept)
+            if before is None or picks_of(graph) != before.picked:
+                names = {pick[0][0] for pick in {*picks_of(graph),
+                                                 *(before.picked if before else ())}}
+                again |= {other for other in kept if other.name in names}
+        for root in again:
+            kept.pop(root, None)
+        return again
+
+    def unsettled(self, kept: dict[Path, RootResult], judged: dict[Path, Verdicts]
+                  ) -> set[Path]:
+        """Take from ``kept`` the roots that skipped a place no root settles now."""
+        settled = settled_places([*judged.values(), *(k.verdicts for k in kept.values())])
+        again = unsettled(kept, settled)
+        for root in again:
+            kept.pop(root)
+        return again
+
+    def report(self, roots: list[Path], graphs: dict[Path, LaunchGraph],
+               judged: dict[Path, Verdicts], kept: dict[Path, RootResult],
+               rules: list[type[Rule]]) -> Report:
+        """Return the check's report before its findings (and with what to keep, if asked)."""
+        from launchverify.engine import Report
+
+        report = Report([], 0, 0.0, {}, [graphs[r] for r in roots if r in graphs])
+        if not self.on:
+            return report
+        results = {root: kept[root] if root in kept else self._result(graphs[root],
+                                                                      judged[root])
+                   for root in roots}
+        unseen: list[tuple[str, Span]] = []
+        seen: set[tuple[str, Path, int]] = set()
+        for result in results.values():
+            for reason, span in result.unseen:
+                if (reason, span.file, span.line) not in seen:
+                    seen.add((reason, span.file, span.line))
+                    unseen.append((reason, span))
+        report.unseen = unseen
+        report.queries = sum(result.queries for result in results.values())
+        report.loaded = {path for result in results.values() for path in result.verdicts.files}
+        report.kept = Kept(dict(results), tuple(rule.code for rule in rules),
+                           frozenset(self.other_reads))
+        return report
+
+    def _result(self, graph: LaunchGraph, verdicts: Verdicts) -> RootResult:
+        """Return what to keep of a root judged now (findings without their path conditions)."""
+        from launchverify.smt import solver_queries
+        from launchverify.workspace.interfaces import interface_of, picks_of
+
+        def bare(finding: Finding | None) -> Finding | None:
+            return dataclasses.replace(finding, path=()) if finding and finding.path else finding
+
+        verdicts = dataclasses.replace(
+            verdicts,
+            findings={code: [f for f in map(bare, found) if f is not None]
+                      for code, found in verdicts.findings.items()},
+            answers={code: [(q, bare(f)) for q, f in answers]
+                     for code, answers in verdicts.answers.items()})
+        return RootResult(
+            verdicts, self.reads.get(graph.root),
+            frozenset(t for inc in graph.includes if (t := inc.target) is not None),
+            graph.included_elsewhere, interface_of(graph), picks_of(graph),
+            list(graph.unseen()), solver_queries([graph]))
