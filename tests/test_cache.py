@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -94,8 +95,9 @@ def test_a_file_edited_while_the_check_runs_is_checked_again(
 
     real = engine.run_check
 
-    def edited_meanwhile(options: engine.CheckOptions) -> engine.Report:
-        report = real(options)
+    def edited_meanwhile(options: engine.CheckOptions, *args: Any, **kwargs: Any
+                         ) -> engine.Report:
+        report = real(options, *args, **kwargs)
         (tree / "params.yaml").write_text(PARAMS.replace("talker:", "talkex:"))
         return report
 
@@ -117,8 +119,9 @@ def test_a_file_removed_while_the_check_runs_is_checked_again(
         '<node pkg="demo_nodes_cpp" exec="talker" name="a"/></launch>\n')
     real = engine.run_check
 
-    def removed_meanwhile(options: engine.CheckOptions) -> engine.Report:
-        report = real(options)
+    def removed_meanwhile(options: engine.CheckOptions, *args: Any, **kwargs: Any
+                          ) -> engine.Report:
+        report = real(options, *args, **kwargs)
         (tree / "extra.launch.xml").unlink()
         return report
 

@@ -195,28 +195,31 @@ class Incremental:
                   included: dict[Path, bool]) -> set[Path]:
         """Take from ``kept`` the roots an evaluation of others concerns, and return them.
 
-        A root another now includes, or no longer does; a root of the family of one whose
-        interface changed, or that an includer picking by name now passes other arguments.
+        A root another now includes, or no longer does; a root whose rules consulted the
+        interfaces of a family whose member changed its interface (or stopped being a
+        root), or an includer's picks that changed.
         """
-        from launchverify.workspace.interfaces import interface_of, picks_of
+        from launchverify.workspace.interfaces import concerns, interface_of, picks_of
 
         if self.plan is None:
             return set()
         again = {root for root, result in kept.items()
                  if included[root] != result.included_elsewhere}
         previous = self.plan.previous
-        for root in set(previous) - set(included):  # no longer a root: its family
-            again |= family(root, kept)
-            again |= {other for other in kept
-                      if other.name in {pick[0][0] for pick in previous[root].picked}}
+        changed: dict[Path, set[str]] = {}  # root -> the file names its changed picks pick
+        for root in set(previous) - set(included):  # no longer a root
+            changed[root] = {pick[0][0] for pick in previous[root].picked}
         for root, graph in graphs.items():
             before = previous.get(root)
-            if before is None or interface_of(graph) != before.interface:
-                again |= family(root, kept)
-            if before is None or picks_of(graph) != before.picked:
-                names = {pick[0][0] for pick in {*picks_of(graph),
-                                                 *(before.picked if before else ())}}
-                again |= {other for other in kept if other.name in names}
+            picks = picks_of(graph)
+            if before is None or interface_of(graph) != before.interface \
+                    or picks != before.picked:
+                old = before.picked if before is not None else ()
+                changed[root] = {pick[0][0] for pick in set(picks) ^ set(old)}
+        for other, result in kept.items():
+            if any(concerns(asked, root, picks) for asked in result.verdicts.consulted
+                   for root, picks in changed.items()):
+                again.add(other)
         for root in again:
             kept.pop(root, None)
         return again

@@ -37,6 +37,8 @@ class Verdicts:
     # rules asking every context: the places this graph settled, and those it relied on
     settled: dict[str, tuple[frozenset[object], frozenset[object]]] = field(
         default_factory=dict)
+    # what its rules asked of other roots' interfaces (``interfaces.Consulted``)
+    consulted: frozenset[tuple[str, ...]] = frozenset()
 
 
 def verdicts_of(run: RuleRun, found: PerGraph) -> list[Verdicts]:
@@ -51,6 +53,8 @@ def verdicts_of(run: RuleRun, found: PerGraph) -> list[Verdicts]:
         out[g].gathered[codes[r]] = gathered
     for (r, g), (settled, relied) in run.settled.items():
         out[g].settled[codes[r]] = (frozenset(settled), frozenset(relied))
+    for (_, g), consulted in run.consulted.items():
+        out[g].consulted |= consulted
     return out
 
 

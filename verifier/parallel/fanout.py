@@ -46,6 +46,8 @@ Answers = dict[tuple[int, int], list[tuple[Hashable, Finding | None]]]
 Gathered = dict[tuple[int, int], object]
 # (rule index, graph index) -> the places that graph settled, and those it relied on
 SettledLog = dict[tuple[int, int], tuple[set[object], set[object]]]
+# (rule index, graph index) -> what it asked of other roots' interfaces (``Consulted``)
+ConsultedLog = dict[tuple[int, int], set[tuple[str, ...]]]
 Isolate = Callable[[Rule, Callable[[], Iterable[Finding]], Path | None], Iterator[Finding]]
 Dead = Callable[[LaunchGraph, PathCondition], bool]
 
@@ -63,6 +65,7 @@ class RuleRun:
     answers: Answers = field(default_factory=dict)  # polling rules', gathered in this process
     gathered: Gathered = field(default_factory=dict)  # gathering rules', in this process
     settled: SettledLog = field(default_factory=dict)  # rules asking every context
+    consulted: ConsultedLog = field(default_factory=dict)
 
     def instance(self, index: int) -> Rule:
         """Return this process's instance of a rule (its ``check`` and ``finish`` share it)."""
@@ -97,9 +100,11 @@ class RuleRun:
                     check = partial(_gathering, rule, graph, self.ctx, self.gathered, (r, g))
                 if places is not None:
                     places.log = self.settled[(r, g)] = (set(), set())
+                self.ctx.interfaces.log = self.consulted[(r, g)] = set()
                 out[(r, g)] = [
                     finding for finding in self.isolate(rule, check, graph.root)
                     if not (finding.path and self.dead(graph, finding.path))]
+                self.ctx.interfaces.log = None
                 if places is not None:
                     places.log = None
         return out
@@ -206,7 +211,7 @@ def _drain(run: RuleRun, pieces: list[Piece], counter: NextPiece) -> PerGraph:
     return out
 
 
-Collected = tuple[PerGraph, Answers, Gathered, SettledLog, dict[int, int]]
+Collected = tuple[PerGraph, Answers, Gathered, SettledLog, ConsultedLog, dict[int, int]]
 
 
 def _child() -> Collected:
@@ -226,8 +231,9 @@ def _child() -> Collected:
     answers = {key: run.answers[key] for key in found if key in run.answers}
     gathered = {key: run.gathered[key] for key in found if key in run.gathered}
     settled = {key: run.settled[key] for key in found if key in run.settled}
-    return found, answers, gathered, settled, {g: n - before.get(g, 0) for g, n in after.items()
-                                               if n != before.get(g, 0)}
+    consulted = {key: run.consulted[key] for key in found if run.consulted.get(key)}
+    return found, answers, gathered, settled, consulted, {
+        g: n - before.get(g, 0) for g, n in after.items() if n != before.get(g, 0)}
 
 
 def _queries(graphs: list[LaunchGraph]) -> dict[int, int]:
@@ -267,11 +273,12 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
                 collected = _collected(future)
                 if collected is None:
                     continue
-                found, answers, gathered, settled, queries = collected
+                found, answers, gathered, settled, consulted, queries = collected
                 out.update(found)
                 run.answers.update(answers)
                 run.gathered.update(gathered)
                 run.settled.update(settled)
+                run.consulted.update(consulted)
                 for g, count in queries.items():
                     run.graphs[g].queries_elsewhere += count
     finally:

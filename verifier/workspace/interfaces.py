@@ -56,6 +56,8 @@ class Interfaces:
         self._by_folder: dict[Path, list[Path]] = {}
         self._by_name: dict[str, list[Path]] = {}
         self._picked: dict[tuple[str, str], Span] | None = None
+        # what a rule asked while judging one graph (set around it: ``Consulted``)
+        self.log: set[Consulted] | None = None
         for path in sorted([*self._graphs, *self._kept]):
             self._by_folder.setdefault(path.parent, []).append(path)
             self._by_name.setdefault(path.name, []).append(path)
@@ -73,6 +75,8 @@ class Interfaces:
         The family: launch files in the same folder, or of the same file name elsewhere
         (one per package), whose declared arguments ``file`` mostly shares.
         """
+        if self.log is not None:
+            self.log.add(("family", str(file.parent), file.name))
         own = self.of(file)
         if own is None:
             return None
@@ -95,6 +99,8 @@ class Interfaces:
         one file of that name among packages, and every one of them declares what the
         includer passes, whether or not it uses it.
         """
+        if self.log is not None:
+            self.log.add(("picked", file.name))
         if self._picked is None:
             self._picked = {}
             for root in self._order:
@@ -107,6 +113,19 @@ class Interfaces:
 
 # An includer's picks: (the file name it picks by an argument, an argument it passes)
 Picked = tuple[tuple[tuple[str, str], Span], ...]
+# What a rule consulted: ("family", folder, file name) of ``mirrored``, ("picked", file
+# name) of ``picked_by_name``: a root of that family, or picking that name, concerns it.
+Consulted = tuple[str, ...]
+
+
+def concerns(consulted: Consulted, root: Path, picked: set[str]) -> bool:
+    """Return whether a change of ``root`` may change what a rule consulted.
+
+    ``picked``: the file names whose picks by ``root`` changed.
+    """
+    if consulted[0] == "family":
+        return str(root.parent) == consulted[1] or root.name == consulted[2]
+    return consulted[1] in picked
 
 
 def interface_of(graph: LaunchGraph) -> Interface:
