@@ -9,13 +9,14 @@ import functools
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import NamedTuple
 
-from launchverify.frontends.param_file import ParamBlock, ParamFile
 from launchverify.graph import LaunchGraph, NodeRecord
 from launchverify.models.node_names import BUILTIN_NAMES, InnerNode, inner_nodes
 from launchverify.models.ros_names import node_key_matches
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, GatheringRule, Related, RuleContext, Severity
+from launchverify.span import Span
 from launchverify.suggest import sole_typo
 from launchverify.topology.shipped import shipped_node_names
 from launchverify.workspace.package_contents import name_literals, unnamed_node_names
@@ -90,19 +91,42 @@ class Receiver:
                 for inner in self.inner_nodes if not any(c in inner.name for c in "*{")}
 
 
+@dataclass(frozen=True)
+class _Loader:
+    """What the verdict needs of a node that loads a file (kept between checks: small)."""
+
+    fqn: str | None
+    namespaces: frozenset[str]  # where it and the nodes it creates run
+    inner_names: tuple[tuple[str, str], ...]  # its inner nodes with a literal name, and fqn
+    span: Span  # where it is started
+
+    @classmethod
+    def of(cls, receiver: Receiver) -> _Loader:
+        """Return what the verdict needs of a receiver."""
+        return cls(receiver.fqn, frozenset(receiver.namespaces()),
+                   tuple(receiver.inner_names().items()), receiver.node.origin.span)
+
+
 def _join(*parts: str) -> str:
     """Join namespace parts and a name into one absolute name."""
     return "/" + "/".join(token for part in parts for token in part.split("/") if token)
+
+
+class _Block(NamedTuple):
+    """A block of a parameter file, as the verdict needs it."""
+
+    key: str
+    span: Span
 
 
 @dataclass
 class _FileUse:
     """What the graphs of a check say about one parameter file."""
 
-    param_file: ParamFile
+    blocks: tuple[_Block, ...]  # the file's blocks, in order
     undecided: bool = False
     matched: set[int] = field(default_factory=set)
-    receivers: dict[str, Receiver] = field(default_factory=dict)
+    receivers: dict[str, _Loader] = field(default_factory=dict)  # by label
 
 
 # what one graph tells: the node names it starts, and the uses of each parameter file
@@ -163,13 +187,14 @@ class UnmatchedParamBlock(GatheringRule):
                    if (fqn := graph.base(node.fqn)) is not None}
         uses: dict[Path, _FileUse] = {}
         for path, param_file in graph.param_files.items():
-            use = uses[path] = _FileUse(param_file)
+            use = uses[path] = _FileUse(tuple(_Block(b.key, b.span) for b in param_file.blocks))
             receivers = receivers_of(graph, path, ctx.packages)
             if receivers is None:
                 use.undecided = True
                 continue
             for receiver in receivers:
-                use.receivers.setdefault(receiver.label(), receiver)
+                if receiver.label() not in use.receivers:
+                    use.receivers[receiver.label()] = _Loader.of(receiver)
                 for index, block in enumerate(param_file.blocks):
                     if receiver.matches(block.key):
                         use.matched.add(index)
@@ -184,7 +209,7 @@ class UnmatchedParamBlock(GatheringRule):
             graph_uses: dict[Path, _FileUse] = part[1]
             started |= starts
             for path, each in graph_uses.items():
-                use = uses.setdefault(path, _FileUse(each.param_file))
+                use = uses.setdefault(path, _FileUse(each.blocks))
                 use.undecided |= each.undecided
                 use.matched |= each.matched
                 for label, receiver in each.receivers.items():
@@ -195,22 +220,22 @@ class UnmatchedParamBlock(GatheringRule):
             names = {r.fqn.rpartition("/")[2]: r.fqn for r in use.receivers.values()
                      if r.fqn is not None}
             for receiver in use.receivers.values():
-                names.update(receiver.inner_names())
+                names.update(receiver.inner_names)
             # nodes this file already has a block of their own for
             blocked = {block.key.rpartition("/")[2]
-                       for index, block in enumerate(use.param_file.blocks)
+                       for index, block in enumerate(use.blocks)
                        if index in use.matched} - {"*", "**"}
             shown = sorted(use.receivers)
             listed = ", ".join(shown[:6]) + (", ..." if len(shown) > 6 else "")
-            loaded_by = Related(use.receivers[shown[0]].node.origin.span, f"loaded by {listed}")
-            for index, block in enumerate(use.param_file.blocks):
+            loaded_by = Related(use.receivers[shown[0]].span, f"loaded by {listed}")
+            for index, block in enumerate(use.blocks):
                 if index not in use.matched:
                     finding = self._unmatched(block, path, use, names, blocked, started,
                                               loaded_by)
                     if finding is not None:
                         yield finding
 
-    def _unmatched(self, block: ParamBlock, path: Path, use: _FileUse, names: dict[str, str],
+    def _unmatched(self, block: _Block, path: Path, use: _FileUse, names: dict[str, str],
                    blocked: set[str], started: set[str],
                    loaded_by: Related) -> Finding | None:
         """Report a block for no node: a warning for a likely slip, else an info or nothing.
@@ -306,12 +331,12 @@ def _loaded_names(graph: LaunchGraph, node: NodeRecord) -> list[tuple[str, str]]
             for block in loaded.blocks for name in block.parameters]
 
 
-def _foreign_namespace(key: str, receivers: Iterable[Receiver]) -> str | None:
+def _foreign_namespace(key: str, receivers: Iterable[_Loader]) -> str | None:
     """Return a key's namespace when it is literal and no receiver runs in it."""
     prefix = key.rpartition("/")[0] or "/"
     if "*" in prefix or prefix == "/":
         return None
-    known = {namespace for receiver in receivers for namespace in receiver.namespaces()}
+    known = {namespace for receiver in receivers for namespace in receiver.namespaces}
     if any(namespace == prefix or namespace.startswith(prefix + "/") for namespace in known):
         return None
     return prefix
