@@ -191,3 +191,25 @@ def test_random_edits_of_a_corpus_tree_give_what_a_check_from_scratch_gives(
             del lines[rng.randrange(len(lines))]  # a line removed: often a finding more
         path.write_text("".join(lines))
         recheck(root, store)
+
+
+def test_what_a_worker_says_it_read_is_bounded_and_confined(tmp_path: Path) -> None:
+    """The list comes from the launch file's process: outside names are never looked at."""
+    from launchverify.isolation.pool import MAX_READS, IsolatedPython
+    from launchverify.workspace import reading
+    from launchverify.workspace.packages import PackageIndex
+
+    inside = tmp_path / "ws" / "robots.yaml"
+    pool = IsolatedPython(PackageIndex(), tmp_path / "ws", readable=(str(tmp_path / "ws"),))
+    reading.confine([tmp_path / "ws"])
+    try:
+        pool._note_reads(Path("a.py"), [str(inside), "/etc/shadow", "relative.yaml"])
+        assert pool.reads(Path("a.py")) == {str(inside)}
+        pool._note_reads(Path("b.py"), ["x"] * (MAX_READS + 1))
+        pool._note_reads(Path("c.py"), {"not": "a list"})
+        assert pool.reads(Path("b.py")) is None and pool.reads(Path("c.py")) is None
+        pool._note_reads(Path("c.py"), [str(inside)])  # unknown stays unknown
+        assert pool.reads(Path("c.py")) is None
+    finally:
+        reading.confine(None)
+        pool.close()

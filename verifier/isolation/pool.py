@@ -37,6 +37,7 @@ from launchverify.workspace.reading import read_file
 GRACE = 2.0  # seconds past the time limit before a worker is killed
 MAX_ALIVE = 64  # idle workers kept for their OpaqueFunctions (about 8 MB each)
 MAX_READS = 10_000  # files one answer may say it read (more: unknown)
+MAX_PATH = 4096  # characters of one of them
 _ENTRY_POINTS = (b"def generate_launch_description", b"def generate_test_description")
 
 
@@ -333,12 +334,16 @@ class IsolatedPython:
                          else request.worker.path, reply.get("read"))
 
     def _note_reads(self, path: Path, read: object) -> None:
-        """Remember the files a worker says an answer about ``path`` read."""
+        """Remember the files a worker says an answer about ``path`` read.
+
+        Only those launchverify itself may read count (the list comes from the launch
+        file's process: a name elsewhere is not even looked at).
+        """
         if (isinstance(read, list) and len(read) <= MAX_READS
-                and all(isinstance(p, str) for p in read)):
+                and all(isinstance(p, str) and len(p) < MAX_PATH for p in read)):
             known = self._read.setdefault(path, set())
             if known is not None:
-                known.update(read)
+                known.update(p for p in read if p.startswith("/") and reading.outside(p) is None)
         else:
             self._read[path] = None
 
