@@ -213,3 +213,77 @@ def test_what_a_worker_says_it_read_is_bounded_and_confined(tmp_path: Path) -> N
     finally:
         reading.confine(None)
         pool.close()
+
+
+IMPORTER = '''import os
+import sys
+
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+sys.path.append(os.path.dirname(__file__))
+from fleet_names import NAMES  # noqa: E402
+
+
+def generate_launch_description():
+    return LaunchDescription([Node(package="demo_nodes_cpp", executable="talker", name=n)
+                              for n in NAMES])
+'''
+
+
+def test_a_module_python_code_imports_is_read_by_its_root(tree: Path, tmp_path: Path) -> None:
+    (tree / "fleet.launch.py").write_text(IMPORTER)
+    (tree / "fleet_names.py").write_text("NAMES = ['a', 'b']\n")
+    store = ResultCache(tmp_path / "cache")
+    recheck(tree, store)
+    (tree / "fleet_names.py").write_text("NAMES = ['a', 'a']\n")  # LV101 now
+    assert recheck(tree, store) == {"fleet.launch.py"}  # the others kept
+    assert "LV101" in {f.code for f in run_check_cached(_options(tree), store).findings}
+
+
+PART = """<launch>
+  <arg name="flag" default="true"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker" if="$(var flag)"/>
+</launch>
+"""
+MIDDLE = """<launch>
+  <arg name="g" default="true"/>
+  <arg name="h" default="true"/>
+  <group if="$(var g)">
+    <include file="$(dirname)/part.xml">
+      <arg name="flag" value="$(var h)"/>
+    </include>
+  </group>
+</launch>
+"""
+PASSES = """<launch>
+  <arg name="x" default="true"/>
+  <arg name="y" default="true"/>
+  <include file="$(dirname)/middle.xml">
+    <arg name="g" value="$(var x)"/>
+    <arg name="h" value="$(var {h})"/>
+  </include>
+  <node pkg="demo_nodes_cpp" exec="listener" name="listener" if="$(var y)"/>
+</launch>
+"""
+
+
+def test_a_root_that_skipped_a_place_another_no_longer_settles_is_judged_again(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """LV206 asks every context: a_ shows the condition varying, so b_ skipped it.
+
+    Where the node is reached in b_, its condition is what the group asks already; in
+    a_ it is another argument, until a_ passes the same.
+    """
+    monkeypatch.setattr(cache, "CLOCK_SLACK", 0.0)
+    root = tmp_path / "ws"
+    root.mkdir()
+    (root / "part.xml").write_text(PART)
+    (root / "middle.xml").write_text(MIDDLE)
+    (root / "a_settles.launch.xml").write_text(PASSES.format(h="y"))
+    (root / "b_kept.launch.xml").write_text(PASSES.format(h="x"))
+    store = ResultCache(tmp_path / "cache")
+    recheck(root, store)
+    (root / "a_settles.launch.xml").write_text(PASSES.format(h="x"))
+    assert recheck(root, store) == {"a_settles.launch.xml", "b_kept.launch.xml"}
+    assert "LV206" in {f.code for f in run_check_cached(_options(root), store).findings}
