@@ -98,6 +98,8 @@ class Config:
 
     def excludes(self, file: Path) -> bool:
         """Return whether a discovered file is excluded from the check."""
+        if not self.exclude:
+            return False
         relative = relative_file(file, self.root)
         return any(matches(relative, pattern) for pattern in self.exclude)
 
@@ -125,10 +127,18 @@ def find_config(start: Path) -> Path | None:
     if not folder.is_dir():
         folder = folder.parent
     for candidate in (folder, *folder.parents):
-        for name in CONFIG_NAMES:
-            path = candidate / name
-            if path.is_file() and (name != "pyproject.toml" or _has_table(path)):
-                return path
+        found = config_in(candidate)
+        if found is not None:
+            return found
+    return None
+
+
+def config_in(folder: Path) -> Path | None:
+    """Return the configuration file of a folder itself, if it has one."""
+    for name in CONFIG_NAMES:
+        path = folder / name
+        if path.is_file() and (name != "pyproject.toml" or _has_table(path)):
+            return path
     return None
 
 
@@ -419,16 +429,17 @@ class ConfigTree:
         return known
 
     def _nearest(self, folder: Path) -> Config:
+        """Return the configuration of a (real) folder: its own, else its parent's."""
         known = self._by_folder.get(folder)
         if known is None:
-            path = find_config(folder)
-            if path is None:
-                known = self.root
-            else:
+            path = config_in(folder)
+            if path is not None:
                 path = resolved(path)
                 if path not in self._by_path:
                     self._by_path[path] = load_config(path)
                 known = self._by_path[path]
+            else:
+                known = self.root if folder.parent == folder else self._nearest(folder.parent)
             self._by_folder[folder] = known
         return known
 
