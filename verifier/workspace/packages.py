@@ -183,6 +183,7 @@ class PackageIndex:
         self._packages: dict[str, Package] = {}
         self._roots: dict[Path, Package] | None = None  # share/source folder -> package
         self._located: dict[Path, Path | None] = {}
+        self._named: dict[Path, dict[str, list[Path]]] = {}  # package source -> its files
         self._installed_from: dict[Path, list[Path]] = {}
         self._files: dict[str, list[Path]] = {}  # package -> its source files (package_files)
         self._headers: dict[str, Path | None] = {}  # #include path -> its file (header)
@@ -396,7 +397,9 @@ class PackageIndex:
         candidate = package.source / relative
         if candidate.is_file():
             return candidate
-        return _by_name(package.source, relative)
+        if package.source not in self._named:
+            self._named[package.source] = _files_by_name(package.source)
+        return _by_name(self._named[package.source].get(relative.name, []), relative)
 
     def neighbours(self, path: Path) -> list[str]:
         """Return the names of the files in the folder where ``path`` would be.
@@ -504,15 +507,19 @@ def _same_bytes(first: Path, second: Path) -> bool:
         return False
 
 
-def _by_name(source: Path, relative: Path) -> Path | None:
-    """Find ``relative``'s file name below ``source``; prefer the longest matching suffix."""
-    matches: list[Path] = []
+def _files_by_name(source: Path) -> dict[str, list[Path]]:
+    """Return a package's files by name, as a walk of its source finds them."""
+    out: dict[str, list[Path]] = {}
     for current, dirs, files in os.walk(source):
         dirs[:] = [d for d in dirs if d not in SKIP_DIRS and not d.startswith(".")]
-        if relative.name in files:
-            matches.append(Path(current) / relative.name)
-        if len(matches) > 50:
-            break
+        for name in files:
+            out.setdefault(name, []).append(Path(current) / name)
+    return out
+
+
+def _by_name(found: list[Path], relative: Path) -> Path | None:
+    """Pick the file for ``relative`` among those of its name: the longest matching suffix."""
+    matches = found[:51]  # (a name found everywhere says little more past that)
     if not matches:
         return None
 
