@@ -35,6 +35,7 @@ from launchverify.findings.verdicts import Verdicts
 from launchverify.frontends import launch_format
 from launchverify.rule import Finding, Rule
 from launchverify.span import Span
+from launchverify.workspace.paths import real_path
 
 if TYPE_CHECKING:
     from launchverify.engine import Report
@@ -189,7 +190,7 @@ class Incremental:
                 read.update(opened)
         read.update(str(path) for path in paths)
         self.reads[graph.root] = frozenset(
-            {os.path.realpath(p) for p in read} | {os.path.abspath(p) for p in read})  # noqa: PTH100
+            {real_path(p) for p in read} | {os.path.abspath(p) for p in read})  # noqa: PTH100
 
     def concerned(self, graphs: dict[Path, LaunchGraph], kept: dict[Path, RootResult],
                   included: dict[Path, bool]) -> set[Path]:

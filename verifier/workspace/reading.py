@@ -177,7 +177,7 @@ def _record(path: str | Path) -> None:
     into = _RECORD.get()
     if into is not None:
         into.add(os.path.abspath(path))  # noqa: PTH100
-        into.add(os.path.realpath(path))
+        into.add(real_path(path))
 
 
 def read_file(path: str | Path, *, prefix: int | None = None) -> bytes:
