@@ -13,6 +13,7 @@ import time
 from pathlib import Path
 
 import pytest
+from test_cache import PARAMS, ROBOT, TOP
 
 from launchverify.engine import CheckOptions, Report, run_check, run_check_cached
 from launchverify.findings import cache
@@ -20,24 +21,6 @@ from launchverify.findings.cache import ResultCache
 
 CORPUS = Path(__file__).resolve().parents[1] / "corpus"
 
-TOP = """<launch>
-  <include file="$(dirname)/robot.launch.xml">
-    <arg name="use_sim_time" value="true"/>
-  </include>
-</launch>
-"""
-ROBOT = """<launch>
-  <arg name="robot" default="r1"/>
-  <node pkg="demo_nodes_cpp" exec="talker" name="talker">
-    <param from="$(dirname)/params.yaml"/>
-    <param name="robot" value="$(var robot)"/>
-  </node>
-</launch>
-"""
-PARAMS = """talker:
-  ros__parameters:
-    rate: 10
-"""
 ALONE = """<launch>
   <node pkg="demo_nodes_cpp" exec="listener" name="listener"/>
 </launch>
@@ -154,16 +137,6 @@ def test_a_file_no_root_read_rechecks_everything(tree: Path, tmp_path: Path) -> 
     assert len(recheck(tree, store)) == 3
 
 
-def test_a_file_python_code_opens_is_read_by_its_root(tree: Path, tmp_path: Path) -> None:
-    (tree / "fleet.launch.py").write_text(OPENER)
-    (tree / "robots.yaml").write_text("robots: [a, b]\n")
-    store = ResultCache(tmp_path / "cache")
-    recheck(tree, store)
-    (tree / "robots.yaml").write_text("robots: [a, a]\n")  # LV101 now
-    assert recheck(tree, store) == {"fleet.launch.py"}
-    assert "LV101" in {f.code for f in run_check_cached(_options(tree), store).findings}
-
-
 def test_an_interface_change_rechecks_the_family(tree: Path, tmp_path: Path) -> None:
     (tree / "sensing.launch.xml").write_text(REAL)
     (tree / "dummy_sensing.launch.xml").write_text(STAND_IN)
@@ -231,12 +204,17 @@ def generate_launch_description():
 '''
 
 
-def test_a_module_python_code_imports_is_read_by_its_root(tree: Path, tmp_path: Path) -> None:
-    (tree / "fleet.launch.py").write_text(IMPORTER)
-    (tree / "fleet_names.py").write_text("NAMES = ['a', 'b']\n")
+@pytest.mark.parametrize(("launch", "data", "before", "after"), [
+    (OPENER, "robots.yaml", "robots: [a, b]\n", "robots: [a, a]\n"),
+    (IMPORTER, "fleet_names.py", "NAMES = ['a', 'b']\n", "NAMES = ['a', 'a']\n"),
+], ids=["opened", "imported"])
+def test_a_file_python_code_reads_is_read_by_its_root(
+        tree: Path, tmp_path: Path, launch: str, data: str, before: str, after: str) -> None:
+    (tree / "fleet.launch.py").write_text(launch)
+    (tree / data).write_text(before)
     store = ResultCache(tmp_path / "cache")
     recheck(tree, store)
-    (tree / "fleet_names.py").write_text("NAMES = ['a', 'a']\n")  # LV101 now
+    (tree / data).write_text(after)  # LV101 now
     assert recheck(tree, store) == {"fleet.launch.py"}  # the others kept
     assert "LV101" in {f.code for f in run_check_cached(_options(tree), store).findings}
 
