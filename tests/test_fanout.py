@@ -53,7 +53,7 @@ def test_a_child_says_how_many_solver_queries_it_asked(alone: Report) -> None:
     fanout._SHARED.update(run=run, pieces=[Piece(tuple(range(len(rules))), (), ())],
                           counter=NextPiece(1))
     try:
-        *_, queries = fanout._child()
+        *_, queries, _ = fanout._child()
     finally:
         fanout._SHARED.clear()
     assert sum(queries.values()) == sum(g._reasoner.queries for g in graphs  # type: ignore[attr-defined]

@@ -265,3 +265,43 @@ def test_a_root_that_skipped_a_place_another_no_longer_settles_is_judged_again(
     (root / "a_settles.launch.xml").write_text(PASSES.format(h="x"))
     assert recheck(root, store) == {"a_settles.launch.xml", "b_kept.launch.xml"}
     assert "LV206" in {f.code for f in run_check_cached(_options(root), store).findings}
+
+
+def test_what_the_rules_read_counts_for_every_root(tmp_path: Path) -> None:
+    """Node sources the wiring rules read are no root's: an edit there checks all again."""
+    root = tmp_path / "ws"
+    shutil.copytree(CORPUS / "wiring" / "velocity_commands", root)
+    report = run_check(CheckOptions(paths=[root], workspace=root, jobs=1), keep=True)
+    assert report.kept is not None
+    sources = {str(p) for p in (root / "base_wiring" / "src").glob("*.cpp")}
+    assert sources & report.kept.other_reads
+    read_by_roots = {p for result in report.kept.roots.values() for p in result.reads or ()}
+    assert not sources & read_by_roots
+
+
+def test_a_forked_process_says_what_its_rules_read(tmp_path: Path) -> None:
+    """The rules shared out to a child read there: the child's reads reach the record."""
+    from launchverify.engine import _isolated, dead
+    from launchverify.parallel import fanout
+    from launchverify.registry import all_rules
+    from launchverify.rule import RuleContext
+    from launchverify.workspace import reading
+    from launchverify.workspace.packages import PackageIndex
+
+    root = tmp_path / "ws"
+    shutil.copytree(CORPUS / "wiring" / "velocity_commands", root)
+    # graphs no node contract rule has seen (a graph keeps the views they build)
+    graphs = run_check(CheckOptions(paths=[root], workspace=root, select=["LV101"])).graphs
+    rules = list(all_rules())
+    ctx = RuleContext(packages=PackageIndex.from_environment([root], []))
+    run = fanout.RuleRun(graphs, rules, ctx, _isolated, dead)
+    fanout._SHARED.update(run=run, pieces=fanout.pieces(run), counter=fanout.NextPiece(
+        len(fanout.pieces(run))))
+    recorded: set[str] = set()
+    try:
+        with reading.recording(recorded):
+            *_, reads = fanout._child()
+    finally:
+        fanout._SHARED.clear()
+    sources = {str(p) for p in (root / "base_wiring" / "src").glob("*.cpp")}
+    assert sources & reads and not recorded  # (the parent notes them when they come back)

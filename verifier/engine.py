@@ -353,8 +353,8 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
                                         pinned=options.arguments,
                                         environment=options.environment, loader=loader)
                 incremental.evaluated(graphs[root], loader.asked, python.reads)
-                if options.progress is not None:
-                    options.progress(len(graphs), len(roots))
+                if options.progress is not None:  # (kept roots count as done)
+                    options.progress(len(graphs) + len(kept), len(roots))
             evaluations += python.evaluated
             protections = protections or python.protections
 

@@ -30,6 +30,7 @@ from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
 from launchverify.parallel.forked import can_fork
 from launchverify.rule import Finding, GatheringRule, PollingRule, Rule, RuleContext
+from launchverify.workspace import reading
 
 if TYPE_CHECKING:
     from concurrent.futures import Future
@@ -211,7 +212,8 @@ def _drain(run: RuleRun, pieces: list[Piece], counter: NextPiece) -> PerGraph:
     return out
 
 
-Collected = tuple[PerGraph, Answers, Gathered, SettledLog, ConsultedLog, dict[int, int]]
+Collected = tuple[PerGraph, Answers, Gathered, SettledLog, ConsultedLog, dict[int, int],
+                  set[str]]
 
 
 def _child() -> Collected:
@@ -226,14 +228,16 @@ def _child() -> Collected:
     assert isinstance(run, RuleRun) and isinstance(pieces, list)
     assert isinstance(counter, NextPiece)
     before = _queries(run.graphs)  # reasoners the parent made before the fork come along
-    found = _drain(run, pieces, counter)
+    reads: set[str] = set()  # what the rules read here, for the parent's record
+    with reading.recording(reads if reading.recording_on() else None):
+        found = _drain(run, pieces, counter)
     after = _queries(run.graphs)
     answers = {key: run.answers[key] for key in found if key in run.answers}
     gathered = {key: run.gathered[key] for key in found if key in run.gathered}
     settled = {key: run.settled[key] for key in found if key in run.settled}
     consulted = {key: run.consulted[key] for key in found if run.consulted.get(key)}
     return found, answers, gathered, settled, consulted, {
-        g: n - before.get(g, 0) for g, n in after.items() if n != before.get(g, 0)}
+        g: n - before.get(g, 0) for g, n in after.items() if n != before.get(g, 0)}, reads
 
 
 def _queries(graphs: list[LaunchGraph]) -> dict[int, int]:
@@ -273,7 +277,8 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
                 collected = _collected(future)
                 if collected is None:
                     continue
-                found, answers, gathered, settled, consulted, queries = collected
+                found, answers, gathered, settled, consulted, queries, reads = collected
+                reading.note_reads(reads)
                 out.update(found)
                 run.answers.update(answers)
                 run.gathered.update(gathered)

@@ -173,6 +173,18 @@ def recording(into: set[str] | None) -> Iterator[None]:
         _RECORD.reset(token)
 
 
+def recording_on() -> bool:
+    """Return whether reads are being recorded (``recording``) here."""
+    return _RECORD.get() is not None
+
+
+def note_reads(paths: Iterable[str]) -> None:
+    """Record reads made elsewhere for this check (a forked process's)."""
+    into = _RECORD.get()
+    if into is not None:
+        into.update(paths)
+
+
 def _record(path: str | Path) -> None:
     into = _RECORD.get()
     if into is not None:
