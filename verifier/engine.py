@@ -395,8 +395,9 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
                             jobs=options.jobs or default_jobs())
             judged.update((verdict.root, verdict) for verdict in more)
         everyone = [judged[r] if r in judged else kept[r].verdicts for r in roots]
-        findings = merge(everyone, rules, ctx, instance if not kept else lambda r: rules[r](),
-                         _isolated)
+        if incremental.plan is not None:  # every rule concludes from the verdicts alone
+            instance = lambda r: rules[r]()  # noqa: E731
+        findings = merge(everyone, rules, ctx, instance, _isolated)
     report = incremental.report(roots, graphs, judged, kept, rules)
     loaded = report.loaded_files()
     findings, suppressed = _unrecorded(_suppress, [bounded(f) for f in findings], loaded, rules)
