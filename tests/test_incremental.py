@@ -7,6 +7,7 @@ again were (``Report.graphs`` holds the roots evaluated by that check).
 
 from __future__ import annotations
 
+import os
 import random
 import shutil
 import time
@@ -119,6 +120,21 @@ def test_an_editor_saving_by_rename_keeps_the_other_roots(tree: Path, tmp_path: 
     saved = tree / "robot.launch.xml.new"
     saved.write_text(ROBOT.replace('default="r1"', 'default="r3"'))
     saved.replace(tree / "robot.launch.xml")  # the folder's time changes, not its names
+    assert recheck(tree, store) == {"top.launch.xml", "robot.launch.xml"}
+
+
+def test_a_file_renamed_over_another_with_its_size_and_time_is_seen(
+        tree: Path, tmp_path: Path) -> None:
+    robot = tree / "robot.launch.xml"
+    old = time.time_ns() - 60 * 10**9  # not racy: stamped by size and time alone
+    os.utime(robot, ns=(old, old))
+    store = ResultCache(tmp_path / "cache")
+    recheck(tree, store)
+    before = robot.stat()
+    other = tree / "robot.launch.xml.new"
+    other.write_text(ROBOT.replace('default="r1"', 'default="r9"'))  # the same size
+    os.utime(other, ns=(before.st_atime_ns, before.st_mtime_ns))  # as `cp -p` keeps it
+    other.replace(robot)
     assert recheck(tree, store) == {"top.launch.xml", "robot.launch.xml"}
 
 

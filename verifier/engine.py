@@ -458,6 +458,7 @@ def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report
     if settled(stamps, now, folder_stamps):  # else what was read may not be what is there
         entry = Entry(report.detached(), stamps, folder_stamps, listings=listings)
         if report.kept is not None:
+            report.kept.started = now
             cache.store_kept(key, report.kept)
             entry.kept = report.kept.token
         cache.store(key, entry)

@@ -92,6 +92,7 @@ class Kept:
     roots: dict[Path, object]  # incremental.RootResult, by root
     rules: tuple[str, ...]  # the codes of the rules that judged
     other_reads: frozenset[str]  # what the check read besides the roots' own files
+    started: float = 0.0  # when the check began (a file changed since is edited)
     format: int = FORMAT
     token: str = field(default_factory=lambda: os.urandom(8).hex())  # pairs it with its entry
 

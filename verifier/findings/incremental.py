@@ -16,8 +16,8 @@ Exactness rests on what each result says it read:
   everything, as does a file added, removed or renamed anywhere (a folder's listing
   changed: what exists decides includes and findings);
 - a root's verdicts may depend on other roots in three ways, each re-checked: whether
-  another root includes it (``included_elsewhere``), the interfaces of the launch files
-  of its family (same folder or same file name, ``Interfaces.mirrored``), and the places
+  another root includes it (``included_elsewhere``), the interfaces of other launch
+  files its rules consulted (``Interfaces.mirrored``, ``picked_by_name``), and the places
   another root settled for a rule asking every context (``Settled``).
 """
 
@@ -87,7 +87,7 @@ def plan(stored: tuple[Entry, Kept] | None, rules: Iterable[str]) -> Plan | None
     entry, kept = stored
     if not kept.roots or kept.rules != tuple(rules):
         return None
-    changed = changed_files(entry)
+    changed = changed_files(entry, kept.started)
     if changed is None or changed & kept.other_reads:
         return None
     previous = {root: result for root, result in kept.roots.items()
@@ -101,13 +101,16 @@ def plan(stored: tuple[Entry, Kept] | None, rules: Iterable[str]) -> Plan | None
     return Plan(previous, frozenset(changed))
 
 
-def changed_files(entry: Entry) -> set[str] | None:
-    """Return the files modified since the entry was stored (``None``: more than that).
+def changed_files(entry: Entry, started: float) -> set[str] | None:
+    """Return the files modified since the entry's check started (``None``: more than that).
 
     A folder whose change time moved is listed again: an editor that saves by renaming a
-    new file over the old one changes it, and the names are then the same.
+    new file over the old one changes it, and the names are then the same. A file counts
+    as changed when its size, modification time or change time says so: a file renamed
+    over another (``mv``, ``cp -p``) may keep the old size and time, never the old change
+    time.
     """
-    from launchverify.findings.cache import UNREADABLE, content_hash, listing, stat_of
+    from launchverify.findings.cache import UNREADABLE, content_hash, listing
 
     for folder, stamp in entry.folder_stamps.items():
         try:
@@ -119,23 +122,17 @@ def changed_files(entry: Entry) -> set[str] | None:
         if (info.st_dev, info.st_ino, info.st_ctime_ns) != stamp and \
                 listing(folder) != entry.listings.get(folder):
             return None
+    since = int(started * 1e9)
     changed = set()
     for path, (size, mtime, content) in entry.stamps.items():
-        now = stat_of(path)
-        if now is None:
+        try:
+            info = os.stat(path)  # noqa: PTH116 (string paths)
+        except OSError:
             return None
-        if now[:2] != (size, mtime) or (content is not None and content_hash(path) != content):
+        if (info.st_size, info.st_mtime_ns) != (size, mtime) or info.st_ctime_ns >= since \
+                or (content is not None and content_hash(path) != content):
             changed.add(path)
     return changed
-
-
-def family(root: Path, roots: Iterable[Path]) -> set[Path]:
-    """Return the roots whose interface ``root``'s rules may consult, and the reverse.
-
-    (``Interfaces.mirrored``: the same folder, or the same file name elsewhere.)
-    """
-    return {other for other in roots
-            if other != root and (other.parent == root.parent or other.name == root.name)}
 
 
 def unsettled(kept: dict[Path, RootResult], settled: dict[str, set[object]]) -> set[Path]:
