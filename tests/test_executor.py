@@ -12,6 +12,7 @@ import shutil
 import signal
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -238,20 +239,25 @@ def test_ctrl_c_stops_everything(tmp_path: Path) -> None:
     copy.write_text(text)
     command = [str(Path(sys.executable).parent / "launchverify"), "run", str(copy),
                "--log-dir", str(tmp_path / "logs")]
-    child = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+    child = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
                              text=True)
-    deadline = time.monotonic() + 20
-    events: list[str] = []
-    while time.monotonic() < deadline:
-        runs = list((tmp_path / "logs").glob("launchverify-*/events.log"))
-        if runs:
-            events = [line.split(maxsplit=1)[1] for line in runs[0].read_text().splitlines()]
-            if sum(e.startswith("start ") for e in events) == 3:
-                break
-        time.sleep(0.05)
-    time.sleep(0.3)  # let the workers install their signal handlers
+    lines: list[str] = []
+    ready = threading.Event()  # the stubborn worker ignores signals from now on
+
+    def read() -> None:
+        assert child.stdout is not None
+        for line in child.stdout:
+            lines.append(line)
+            if line.startswith("[stubborn-1] ready"):
+                ready.set()
+
+    reader = threading.Thread(target=read, daemon=True)
+    reader.start()
+    assert ready.wait(timeout=20)
     child.send_signal(signal.SIGINT)
-    out, _ = child.communicate(timeout=20)
+    child.wait(timeout=20)
+    reader.join(timeout=20)
+    out = "".join(lines)
     events = events_of(tmp_path / "logs")
     assert "shutdown SIGINT received" in events
     assert "signal stubborn-1 SIGKILL" in events
