@@ -438,11 +438,12 @@ def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report
     _require_paths(options)
     folders, files = _inputs(options)
     key = key_of([options_text(options, skip=("progress", "jobs")), folders, files])
-    entry = cache.load(key)
-    if entry is not None and isinstance(entry.report, Report):
+    entry = cache.stored(key)
+    if entry is not None and isinstance(entry.report, Report) and cache.valid(key, entry):
         return dataclasses.replace(entry.report, seconds=time.perf_counter() - started,
                                    cached=True)
-    stored = cache.peek(key)  # what an edit may leave of the last result
+    kept = None if entry is None else cache.kept(key, entry)  # what an edit may leave
+    stored = None if entry is None or kept is None else (entry, kept)
     cache.prepare()
     now = time.time()
     with in_use(cache):

@@ -267,6 +267,15 @@ def settled(stamps: dict[str, Stamp], started: float,
             and all(before(changed) for _, _, changed in (folder_stamps or {}).values()))
 
 
+def moved(folder: str, stamp: FolderStamp) -> bool:
+    """Return whether a folder's stamp is not what it was (it could be read, or not)."""
+    try:
+        info = os.stat(folder)  # noqa: PTH116 (string paths)
+    except OSError:
+        return stamp != UNREADABLE
+    return (info.st_dev, info.st_ino, info.st_ctime_ns) != stamp
+
+
 def unchanged(entry: Entry) -> bool:
     """Return whether every file the result rests on is as it was (the first change says).
 
@@ -274,15 +283,8 @@ def unchanged(entry: Entry) -> bool:
     renamed in it, and a file's when it is written. ``settled`` kept only results whose
     times all precede their check, so any later change shows as a later time.
     """
-    for folder, stamp in entry.folder_stamps.items():
-        try:
-            info = os.stat(folder)  # noqa: PTH116 (string paths)
-        except OSError:
-            if stamp != UNREADABLE:
-                return False
-            continue
-        if (info.st_dev, info.st_ino, info.st_ctime_ns) != stamp:
-            return False  # a file added, removed or renamed there, or another folder
+    if any(moved(folder, stamp) for folder, stamp in entry.folder_stamps.items()):
+        return False  # a file added, removed or renamed there, or another folder
     for path, (size, mtime, content) in entry.stamps.items():
         now = stat_of(path)
         if now is None or now[:2] != (size, mtime):
@@ -303,32 +305,36 @@ class ResultCache:
 
     def load(self, key: str) -> Entry | None:
         """Return the stored entry for a key if it is still valid (else ``None``)."""
-        path = self._file(key)
-        try:
-            with path.open("rb") as handle:
-                entry = pickle.load(handle)
-        except Exception:  # missing, unreadable, or from another version: recompute
-            return None
-        if (not isinstance(entry, Entry) or entry.format != FORMAT
-                or not unchanged(entry)):
-            return None
-        with contextlib.suppress(OSError):
-            os.utime(path)  # recently used: kept by the pruning
-        return entry
+        entry = self.stored(key)
+        return entry if entry is not None and self.valid(key, entry) else None
 
-    def peek(self, key: str) -> tuple[Entry, Kept] | None:
-        """Return the stored entry for a key, valid or not, with what an edit may leave."""
+    def stored(self, key: str) -> Entry | None:
+        """Return the stored entry for a key, valid or not (``None``: none readable)."""
         try:
             with self._file(key).open("rb") as handle:
                 entry = pickle.load(handle)
+        except Exception:  # missing, unreadable, or from another version: recompute
+            return None
+        return entry if isinstance(entry, Entry) and entry.format == FORMAT else None
+
+    def valid(self, key: str, entry: Entry) -> bool:
+        """Return whether nothing an entry rests on changed (and mark it recently used)."""
+        if not unchanged(entry):
+            return False
+        with contextlib.suppress(OSError):
+            os.utime(self._file(key))  # recently used: kept by the pruning
+        return True
+
+    def kept(self, key: str, entry: Entry) -> Kept | None:
+        """Return what an edit may leave of the entry stored under ``key``, if anything."""
+        try:
             with self._file(key + ".roots").open("rb") as handle:
                 kept = pickle.load(handle)
         except Exception:  # missing, unreadable, or from another version
             return None
-        if not (isinstance(entry, Entry) and isinstance(kept, Kept)
-                and entry.format == kept.format == FORMAT and entry.kept == kept.token):
+        if not (isinstance(kept, Kept) and kept.format == FORMAT and entry.kept == kept.token):
             return None
-        return entry, kept
+        return kept
 
     def store_kept(self, key: str, kept: Kept) -> None:
         """Write what an edit may leave of the result stored under ``key`` (before it)."""

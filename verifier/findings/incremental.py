@@ -110,18 +110,11 @@ def changed_files(entry: Entry, started: float) -> set[str] | None:
     over another (``mv``, ``cp -p``) may keep the old size and time, never the old change
     time.
     """
-    from launchverify.findings.cache import UNREADABLE, content_hash, listing
+    from launchverify.findings.cache import content_hash, listing, moved
 
-    for folder, stamp in entry.folder_stamps.items():
-        try:
-            info = os.stat(folder)  # noqa: PTH116 (string paths)
-        except OSError:
-            if stamp != UNREADABLE:
-                return None
-            continue
-        if (info.st_dev, info.st_ino, info.st_ctime_ns) != stamp and \
-                listing(folder) != entry.listings.get(folder):
-            return None
+    if any(moved(folder, stamp) and listing(folder) != entry.listings.get(folder)
+           for folder, stamp in entry.folder_stamps.items()):
+        return None
     since = int(started * 1e9)
     changed = set()
     for path, (size, mtime, content) in entry.stamps.items():
