@@ -129,10 +129,14 @@ def concerns(consulted: Consulted, root: Path, picked: set[str]) -> bool:
 
 
 def interface_of(graph: LaunchGraph) -> Interface:
-    """Return what a root declares itself and reads anywhere."""
-    return Interface({a.name: a.origin.span for a in graph.arguments
-                      if a.origin.span.file == graph.root},
-                     frozenset(graph.read_names() | graph.mentioned_names()))
+    """Return what a root declares itself and reads anywhere (worked out once a graph)."""
+    derived = graph.derived.setdefault("interface", {})
+    known = derived.get(None)
+    if not isinstance(known, Interface):
+        known = derived[None] = Interface(
+            {a.name: a.origin.span for a in graph.arguments if a.origin.span.file == graph.root},
+            frozenset(graph.read_names() | graph.mentioned_names()))
+    return known
 
 
 def picks_of(graph: LaunchGraph) -> Picked:
