@@ -58,16 +58,16 @@ def verdicts_of(run: RuleRun, found: PerGraph) -> list[Verdicts]:
     return out
 
 
-def order(rule: type[Rule], verdicts: list[Verdicts]) -> list[int]:
-    """Return the graphs in the order a rule visits them (``RuleRun.order``'s, by verdicts).
+def order(rule: type[Rule], among: list[int], size: Callable[[int], int]) -> list[int]:
+    """Return graphs in the order a rule visits them (``size``: a graph's file count).
 
     Small graphs first for rules asking for every context: a file evaluated as its own
-    root settles most questions its includers would otherwise ask again.
+    root settles most questions its includers would otherwise ask again. The merge
+    visits verdicts in the order the rules visited their graphs.
     """
-    everything = list(range(len(verdicts)))
     if getattr(rule, "every_context", False):
-        return sorted(everything, key=lambda i: len(verdicts[i].files))
-    return everything
+        return sorted(among, key=size)
+    return among
 
 
 def merge(verdicts: list[Verdicts], rules: list[type[Rule]], ctx: RuleContext,
@@ -89,7 +89,8 @@ def merge(verdicts: list[Verdicts], rules: list[type[Rule]], ctx: RuleContext,
     first = verdicts[0].root if verdicts else None
     for r, rule_class in enumerate(rules):
         code = rule_class.code
-        visits = order(rule_class, verdicts)
+        visits = order(rule_class, list(range(len(verdicts))),
+                       lambda i: len(verdicts[i].files))
         for g in visits:
             for finding in verdicts[g].findings.get(code, ()):
                 key = finding.key()

@@ -24,8 +24,9 @@ from collections.abc import Callable, Hashable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
 from pathlib import Path
-from typing import TYPE_CHECKING, TypeGuard
+from typing import TYPE_CHECKING, TypeGuard, TypeVar
 
+from launchverify.findings.verdicts import order
 from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
 from launchverify.parallel.forked import can_fork
@@ -51,6 +52,7 @@ SettledLog = dict[tuple[int, int], tuple[set[object], set[object]]]
 ConsultedLog = dict[tuple[int, int], set[tuple[str, ...]]]
 Isolate = Callable[[Rule, Callable[[], Iterable[Finding]], Path | None], Iterator[Finding]]
 Dead = Callable[[LaunchGraph, PathCondition], bool]
+T = TypeVar("T")
 
 
 @dataclass
@@ -75,14 +77,8 @@ class RuleRun:
         return self.instances[index]
 
     def order(self, rule: type[Rule], among: list[int]) -> list[int]:
-        """Return the graphs a rule visits, in the order one process visits them.
-
-        Small graphs first for rules asking for every context: a file evaluated as its
-        own root settles most questions its includers would otherwise ask again.
-        """
-        if getattr(rule, "every_context", False):
-            return sorted(among, key=lambda i: len(self.graphs[i].files))
-        return among
+        """Return the graphs a rule visits, in the order one process visits them."""
+        return order(rule, among, lambda i: len(self.graphs[i].files))
 
     def run(self, rule_indices: list[int], graph_indices: list[int]) -> PerGraph:
         """Run some rules on some graphs, here."""
@@ -232,12 +228,14 @@ def _child() -> Collected:
     with reading.recording(reads if reading.recording_on() else None):
         found = _drain(run, pieces, counter)
     after = _queries(run.graphs)
-    answers = {key: run.answers[key] for key in found if key in run.answers}
-    gathered = {key: run.gathered[key] for key in found if key in run.gathered}
-    settled = {key: run.settled[key] for key in found if key in run.settled}
-    consulted = {key: run.consulted[key] for key in found if run.consulted.get(key)}
-    return found, answers, gathered, settled, consulted, {
-        g: n - before.get(g, 0) for g, n in after.items() if n != before.get(g, 0)}, reads
+    queries = {g: n - before.get(g, 0) for g, n in after.items() if n != before.get(g, 0)}
+    return (found, _taken(run.answers, found), _taken(run.gathered, found),
+            _taken(run.settled, found), _taken(run.consulted, found), queries, reads)
+
+
+def _taken(log: dict[tuple[int, int], T], found: PerGraph) -> dict[tuple[int, int], T]:
+    """Return what a log holds of the pieces this process took (its findings' keys)."""
+    return {key: log[key] for key in found if key in log}
 
 
 def _queries(graphs: list[LaunchGraph]) -> dict[int, int]:
