@@ -71,6 +71,11 @@ class _Request:
     def done(self) -> bool:
         return self.reply is not None or self.failure is not None
 
+    @property
+    def path(self) -> Path:
+        """Return the file the request is about (its evaluation's, or the worker's)."""
+        return self.load.path if self.load is not None else self.worker.path
+
 
 @dataclass(eq=False)
 class _Load:
@@ -330,8 +335,7 @@ class IsolatedPython:
             self._fail(request, "sent a malformed answer", kill=True)
             return
         request.reply = reply
-        self._note_reads(request.load.path if request.load is not None
-                         else request.worker.path, reply.get("read"))
+        self._note_reads(request.path, reply.get("read"))
 
     def _note_reads(self, path: Path, read: object) -> None:
         """Remember the files a worker says an answer about ``path`` read.
@@ -359,7 +363,7 @@ class IsolatedPython:
         worker = request.worker
         request.failure = why
         worker.ended = why
-        self._read[request.load.path if request.load is not None else worker.path] = None
+        self._read[request.path] = None
         self._workers.pop(worker, None)
         if kill and self._zygote is not None:
             self._zygote.kill(worker.number)

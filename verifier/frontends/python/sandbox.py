@@ -190,7 +190,7 @@ def _audit(event: str, args: tuple[Any, ...]) -> None:
             isinstance(flags, int) and flags & _WRITE_FLAGS)
         if writes:
             _refuse(f"writing {path!r} is not allowed")
-        if isinstance(path, (str, bytes, os.PathLike)):
+        if _armed and isinstance(path, (str, bytes, os.PathLike)):  # a worker reports them
             _opened.add(os.path.abspath(os.fsdecode(path)))  # noqa: PTH100
 
 
