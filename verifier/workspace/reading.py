@@ -22,10 +22,12 @@ import stat
 from collections.abc import Iterable, Iterator, Mapping
 from contextvars import ContextVar
 from pathlib import Path
+from typing import TypeVar
 
 from launchverify.workspace.paths import SYSTEM_FOLDERS, below, forget_real_folders, real_path
 
 DEFAULT_LIMIT = 10 * 1000 * 1000
+T = TypeVar("T")
 _LIMIT: ContextVar[int] = ContextVar("launchverify_max_file_size", default=DEFAULT_LIMIT)
 _RECORD: ContextVar[set[str] | None] = ContextVar("launchverify_reads", default=None)
 _KINDS = ((stat.S_ISFIFO, "a FIFO"), (stat.S_ISCHR, "a character device"),
@@ -144,13 +146,18 @@ def unsaved(path: str | Path) -> bytes | None:
 
 
 @contextlib.contextmanager
-def size_limit(limit: int) -> Iterator[None]:
-    """Read at most ``limit`` bytes of any file inside the block."""
-    token = _LIMIT.set(limit)
+def _set(variable: ContextVar[T], value: T) -> Iterator[None]:
+    """Give a context variable a value inside the block."""
+    token = variable.set(value)
     try:
         yield
     finally:
-        _LIMIT.reset(token)
+        variable.reset(token)
+
+
+def size_limit(limit: int) -> contextlib.AbstractContextManager[None]:
+    """Read at most ``limit`` bytes of any file inside the block."""
+    return _set(_LIMIT, limit)
 
 
 def limit() -> int:
@@ -158,19 +165,14 @@ def limit() -> int:
     return _LIMIT.get()
 
 
-@contextlib.contextmanager
-def recording(into: set[str] | None) -> Iterator[None]:
+def recording(into: set[str] | None) -> contextlib.AbstractContextManager[None]:
     """Add every file read inside the block to ``into`` (``None``: record nothing).
 
     What a check read tells which of its results an edit leaves valid. Each path is kept
     as given (made absolute) and as its real path. Only this thread's reads count (and
     threads it starts do not inherit it).
     """
-    token = _RECORD.set(into)
-    try:
-        yield
-    finally:
-        _RECORD.reset(token)
+    return _set(_RECORD, into)
 
 
 def recording_on() -> bool:
