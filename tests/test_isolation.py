@@ -267,7 +267,9 @@ def test_recycled_workers_give_the_same_findings(tmp_path: Path,
         return [(f.code, f.span.file.name, f.span.line, f.message) for f in report.findings]
 
     everyone = findings()
-    monkeypatch.setattr(pool, "MAX_ALIVE", 2)
+    monkeypatch.setattr(pool, "MAX_ALIVE", 2)  # (each file in a process of its own)
+    monkeypatch.setattr(pool.IsolatedPython, "_park",
+                        lambda self, worker: self._release(worker.process))
     revived = []
     revive = pool.IsolatedPython._revive
 

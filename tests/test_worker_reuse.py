@@ -7,13 +7,14 @@ as a fresh worker would (``isolation/reuse.py``).
 
 from __future__ import annotations
 
+import dataclasses
 from pathlib import Path
 
 import pytest
 
 from launchverify.engine import CheckOptions, run_check
 from launchverify.ir import actions as a
-from launchverify.isolation.pool import IsolatedPython
+from launchverify.isolation.pool import IsolatedPython, _Worker
 from launchverify.problems import ProblemSink
 from launchverify.workspace.packages import PackageIndex
 
@@ -93,6 +94,11 @@ def test_a_file_that_disturbs_its_worker_costs_only_itself(kind: str, tmp_path: 
     assert _names(loaded[3]) == ["last"] and not sinks[3].problems
 
 
+def _fresh_only(self: IsolatedPython, worker: _Worker) -> None:
+    """``IsolatedPython._park`` for a check where every file has a worker of its own."""
+    self._release(worker.process)
+
+
 def _findings(tree: Path) -> list[tuple[str, str, int, int, str]]:
     report = run_check(CheckOptions(paths=[tree], workspace=tree, jobs=2,
                                     exclude=["*endless_loop*"]))
@@ -106,7 +112,7 @@ def test_reuse_gives_the_findings_of_fresh_workers(tmp_path: Path,
     files["g"] = _plain("twin", DISTURBING["patch"])
     _package(tmp_path, files)
     reused = _findings(tmp_path)
-    monkeypatch.setattr(IsolatedPython, "_park", lambda self, worker: worker.channel.close())
+    monkeypatch.setattr(IsolatedPython, "_park", _fresh_only)
     assert _findings(tmp_path) == reused
 
 
@@ -115,5 +121,77 @@ def test_the_python_corpus_is_judged_alike_by_reused_and_fresh_workers(
     """What one evaluation leaves in a worker (the assumptions it explains) never shows."""
     tree = Path(__file__).resolve().parent.parent / "corpus" / "python"
     reused = _findings(tree)
-    monkeypatch.setattr(IsolatedPython, "_park", lambda self, worker: worker.channel.close())
+    monkeypatch.setattr(IsolatedPython, "_park", _fresh_only)
     assert _findings(tree) == reused
+
+
+OPAQUE = """\
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument, OpaqueFunction
+from launch_ros.actions import Node
+
+
+def setup(context):  # (what a later file's patch of DeclareLaunchArgument would break)
+    return [DeclareLaunchArgument('robot', default_value='r1'),
+            Node(package='demo_nodes_cpp', executable='talker', name='{name}')]
+
+
+def generate_launch_description():
+    description = LaunchDescription([OpaqueFunction(function=setup)])
+    {disturb}
+    return description
+"""
+
+
+def _run(launch: a.LaunchFile | None) -> list[str]:
+    """Run a file's OpaqueFunctions; return the node names they give."""
+    assert launch is not None
+    names = []
+    for action in launch.actions:
+        assert isinstance(action, a.OpaqueFunction)
+        result = action.run({}, launch.path)
+        assert not result.problems, result.problems
+        names += _names(dataclasses.replace(launch, actions=result.actions))
+    return names
+
+
+def test_files_with_opaque_functions_share_a_worker(tmp_path: Path) -> None:
+    paths = _package(tmp_path, {f"f{n}": OPAQUE.format(name=f"node{n}", disturb="pass")
+                                for n in range(4)})
+    with IsolatedPython(PackageIndex([tmp_path]), tmp_path, jobs=1) as python:
+        python.prefetch(paths)
+        loaded = [python.load(path, ProblemSink()) for path in paths]
+        assert python.reused == 3
+        # called after every file was taken, last file first, then again
+        assert [_run(launch) for launch in reversed(loaded)] == [
+            [f"node{n}"] for n in reversed(range(4))]
+        assert [_run(launch) for launch in loaded] == [[f"node{n}"] for n in range(4)]
+    with IsolatedPython(PackageIndex([tmp_path]), tmp_path, jobs=1) as python:
+        python.prefetch(paths)  # each call waits for the next file, started meanwhile
+        assert [_run(python.load(path, ProblemSink())) for path in paths] == [
+            [f"node{n}"] for n in range(4)]
+        assert python.reused == 3
+
+
+def test_a_file_that_disturbs_the_worker_never_runs_anothers_opaque_functions(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The earlier file's OpaqueFunctions run in a fresh worker, as if alone."""
+    paths = _package(tmp_path, {
+        "a_first": OPAQUE.format(name="first", disturb="pass"),
+        "b_patching": OPAQUE.format(name="patching", disturb=DISTURBING["patch"])})
+    revived: list[Path] = []
+    revive = IsolatedPython._revive
+
+    def counted(self: IsolatedPython, worker: _Worker) -> str | None:
+        revived.append(worker.path)
+        return revive(self, worker)
+
+    monkeypatch.setattr(IsolatedPython, "_revive", counted)
+    with IsolatedPython(PackageIndex([tmp_path]), tmp_path, jobs=1) as python:
+        python.prefetch(paths)
+        first, patching = (python.load(path, ProblemSink()) for path in paths)
+        assert python.reused == 1  # b was taken: a left the worker as it found it
+        assert _run(first) == ["first"] and revived == [paths[0]]
+        with pytest.raises(AssertionError):  # its own patch breaks its own function
+            _run(patching)
+        assert _run(first) == ["first"] and revived == [paths[0]]  # (once)

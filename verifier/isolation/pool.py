@@ -4,9 +4,10 @@
 sink)``): each Python launch file is evaluated by a worker forked from the zygote (one
 that is done may take the next file of its repository, ``reuse``),
 up to ``jobs`` at once (``prefetch`` queues files the check will need), and what comes
-back is decoded by ``codec`` with every field checked. A worker whose file has
-OpaqueFunctions stays until the check ends, so the walk can run them when it reaches
-them. Whatever goes wrong in a worker (it dies, exits early, exceeds its time, sends
+back is decoded by ``codec`` with every field checked. A worker whose files have
+OpaqueFunctions stays until the check ends (or until ``MAX_ALIVE`` others are newer), so
+the walk can run them when it reaches them; it may still take other files meanwhile.
+Whatever goes wrong in a worker (it dies, exits early, exceeds its time, sends
 garbage) becomes a problem on its file, never an exception here.
 """
 
@@ -42,18 +43,45 @@ _ENTRY_POINTS = (b"def generate_launch_description", b"def generate_test_descrip
 
 
 @dataclass(eq=False)
-class _Worker:
-    """One worker as launchverify sees it."""
+class _Process:
+    """One worker process; the files it took share it."""
 
-    path: Path
     number: int
     channel: Channel
+    busy: _Request | None = None  # the request it is answering (one at a time)
+    holders: list[_Worker] = field(default_factory=list)  # files whose callbacks it runs
+
+    @property
+    def free(self) -> bool:
+        """Return whether it may be sent a request (it answers one at a time)."""
+        return self.busy is None or self.busy.done
+
+    @property
+    def closed(self) -> bool:
+        return self.channel.fd < 0
+
+
+@dataclass(eq=False)
+class _Worker:
+    """One file's worker as launchverify sees it (its process may serve other files too)."""
+
+    path: Path
+    process: _Process
     ended: str | None = None  # why it can no longer answer
+    first: int = 0  # its callbacks' numbers in its process start here
     loaded: int = 0  # callbacks its evaluation made (those a fresh worker makes again)
-    recycled: bool = False  # ended to bound memory; a fresh one takes over when asked
+    recycled: bool = False  # its process ended (memory, another file): a fresh one takes over
     spent: float = 0.0  # seconds its file's requests took: the time limit is for all of them
     repository: Path | None = None  # the files it may take after this one (``reuse``)
     reused: bool = False  # it evaluated another file before this one
+
+    @property
+    def number(self) -> int:
+        return self.process.number
+
+    @property
+    def channel(self) -> Channel:
+        return self.process.channel
 
 
 @dataclass(eq=False)
@@ -112,7 +140,7 @@ class IsolatedPython:
         self._loads: dict[Path, _Load] = {}
         self._queue: deque[_Load] = deque()
         self._running: list[_Request] = []
-        self._workers: dict[_Worker, None] = {}  # alive for OpaqueFunctions, oldest use first
+        self._alive: dict[_Process, None] = {}  # kept for OpaqueFunctions, oldest use first
         self._helpers: dict[Path, bool] = {}
         self._idle: dict[Path, list[_Worker]] = {}  # done, and may take a file of their repository
         self._repositories: dict[Path, Path] = {}
@@ -156,11 +184,11 @@ class IsolatedPython:
             for worker in idle:
                 worker.channel.close()
         self._idle.clear()
-        for worker in self._workers:
-            worker.channel.close()
+        for process in self._alive:
+            process.channel.close()
         for request in self._running:
             request.worker.channel.close()
-        self._workers.clear()
+        self._alive.clear()
         self._running.clear()
         if self._zygote is not None:
             self._zygote.close()
@@ -192,10 +220,12 @@ class IsolatedPython:
         """
         repository = self._repository(load.path)
         idle = self._idle.get(repository) if not fresh else None
-        if idle and self._readable(load.path):
-            done = idle.pop()
-            worker = _Worker(load.path, done.number, done.channel, repository=repository,
-                             reused=True)
+        if idle:
+            idle[:] = [w for w in idle if not w.process.closed]
+        done = next((w for w in reversed(idle or ()) if w.process.free), None)
+        if done is not None and idle is not None and self._readable(load.path):
+            idle.remove(done)
+            worker = _Worker(load.path, done.process, repository=repository, reused=True)
             load.request = self._send(worker, {"op": "load", "path": str(load.path)})
             load.request.load = load
             self._running.append(load.request)
@@ -209,7 +239,7 @@ class IsolatedPython:
                 ProblemKind.EVALUATION, "the evaluation of this file failed: no process "
                 f"could be started for it ({error.strerror or error})", Span.of_file(load.path)))
             return
-        worker = _Worker(load.path, number, Channel(fd), repository=repository)
+        worker = _Worker(load.path, _Process(number, Channel(fd)), repository=repository)
         load.request = self._send(worker, None)
         load.request.load = load
         self._running.append(load.request)
@@ -243,14 +273,26 @@ class IsolatedPython:
     def _park(self, worker: _Worker) -> None:
         """Keep a worker that may take another file of its repository (a few at most)."""
         if worker.repository is None:
-            worker.channel.close()
+            self._release(worker.process)
             return
         self._idle.setdefault(worker.repository, []).append(worker)
         while sum(len(idle) for idle in self._idle.values()) > self.jobs:
             oldest = next(key for key, idle in self._idle.items() if idle)
-            self._idle[oldest].pop(0).channel.close()
+            self._release(self._idle[oldest].pop(0).process)
             if not self._idle[oldest]:
                 del self._idle[oldest]
+
+    def _release(self, process: _Process) -> None:
+        """Let a process go that takes no more files; it stays for its files' callbacks."""
+        if not process.holders:
+            process.channel.close()  # it exits; the zygote removes its folder
+
+    def _end(self, process: _Process) -> None:
+        """Close a process; the files whose callbacks it ran get a fresh one when asked."""
+        process.channel.close()
+        self._alive.pop(process, None)
+        for holder in process.holders:
+            holder.recycled = holder.ended is None
 
     def _spawn(self, path: Path, *, reuse: bool = False) -> tuple[int, int]:
         """Ask the zygote for a worker on ``path``; a new zygote if the old one is gone.
@@ -274,6 +316,7 @@ class IsolatedPython:
         now = time.monotonic()
         left = max(self.limits.seconds - worker.spent, 0.0)
         request = _Request(worker, now + left + GRACE, now)
+        worker.process.busy = request
         if message is not None:
             try:
                 worker.channel.send(message, request.deadline)
@@ -315,6 +358,8 @@ class IsolatedPython:
         for request in [r for r in self._running if r.done]:
             self._running.remove(request)
             request.worker.spent += now - request.started
+            if request.worker.process.busy is request:
+                request.worker.process.busy = None
             self._finish(request)
 
     def _receive(self, request: _Request) -> None:
@@ -364,10 +409,9 @@ class IsolatedPython:
         request.failure = why
         worker.ended = why
         self._read[request.path] = None
-        self._workers.pop(worker, None)
         if kill and self._zygote is not None:
             self._zygote.kill(worker.number)
-        worker.channel.close()
+        self._end(worker.process)
 
     def _ended(self, worker: _Worker) -> str:
         ended = self._zygote.wait(worker.number, 2.0) if self._zygote is not None else None
@@ -384,7 +428,7 @@ class IsolatedPython:
         worker = request.worker
         reply = request.reply
         if worker.reused and (reply is None or reply.get("op") != "loaded"):
-            worker.channel.close()  # what an earlier file left may be the cause: again, alone
+            self._release(worker.process)  # an earlier file may be the cause: again, alone
             self.reused -= 1
             load.request = None
             self._start(load, fresh=True)
@@ -399,13 +443,17 @@ class IsolatedPython:
                 where = self._where(load.path, reply.get("where"))
             load.problems.append(Problem(
                 ProblemKind.EVALUATION, f"the evaluation of this file failed: {why}", where))
-            worker.channel.close()
+            self._release(worker.process)
             return
         if self.protections is None:
             self.protections = str(reply.get("protections", ""))
         callbacks: list[_Callback] = []
         decoder = self._decoder(worker, callbacks)
         try:
+            first = reply.get("first", 0)
+            if not isinstance(first, int) or isinstance(first, bool) or first < 0:
+                raise CodecError("its callbacks are misnumbered")
+            worker.first = first
             decoded = decoder.decode(reply.get("data"))
             if not isinstance(decoded, tuple) or len(decoded) != 2:
                 raise CodecError("not a launch file")
@@ -416,41 +464,40 @@ class IsolatedPython:
         except TooLarge as error:  # ros2 launch may take it: unknown here, not broken
             load.problems.append(Problem(
                 ProblemKind.UNMODELED, f"not checked: {error}", Span.of_file(load.path)))
-            worker.channel.close()
+            self._end(worker.process)
             return
         except (CodecError, ValueError, TypeError) as error:
             load.problems.append(Problem(
                 ProblemKind.EVALUATION, "the evaluation of this file failed: its process sent "
                 f"an answer that is not a launch description ({error})",
                 Span.of_file(load.path)))
-            worker.channel.close()
+            self._end(worker.process)
             return
         load.launch = launch if launch is None or launch.path == load.path else None
         load.problems.extend(problems)
         _place_callbacks(launch, callbacks)
         if callbacks:
             worker.loaded = len(callbacks)
+            worker.process.holders.append(worker)
             self._keep(worker)
-        elif reply.get("reusable") is True:
+        if reply.get("reusable") is True:
             self._park(worker)
-
-
         else:
-            worker.channel.close()  # nothing more to ask: the worker exits
+            self._release(worker.process)  # without callbacks to run, it exits
 
     def _keep(self, worker: _Worker) -> None:
-        """Keep a worker alive for its file's OpaqueFunctions.
+        """Keep a worker's process alive for its files' OpaqueFunctions.
 
-        Beyond ``MAX_ALIVE``, the least recently used one ends; it is started again if
-        asked.
+        Beyond ``MAX_ALIVE``, the least recently used one that is not answering ends; its
+        files are started again if asked.
         """
-        self._workers.pop(worker, None)
-        self._workers[worker] = None
-        while len(self._workers) > MAX_ALIVE:
-            oldest = next(iter(self._workers))
-            del self._workers[oldest]
-            oldest.channel.close()  # it exits; the zygote removes its folder
-            oldest.recycled = True
+        self._alive.pop(worker.process, None)
+        self._alive[worker.process] = None
+        while len(self._alive) > MAX_ALIVE:
+            oldest = next((p for p in self._alive if p.free), None)
+            if oldest is None:
+                break
+            self._end(oldest)
 
     def _revive(self, worker: _Worker) -> str | None:
         """Start a fresh worker for a recycled one's file; return why it failed, if it did."""
@@ -458,41 +505,56 @@ class IsolatedPython:
             number, fd = self._spawn(worker.path)
         except OSError as error:
             return f"could not be started again ({error.strerror or error})"
-        fresh = _Worker(worker.path, number, Channel(fd), spent=worker.spent)
+        fresh = _Worker(worker.path, _Process(number, Channel(fd)), spent=worker.spent)
         request = self._await(self._send(fresh, None))
         worker.spent = fresh.spent
         reply = request.reply
         if reply is None or reply.get("op") != "loaded":
             return f"{request.failure or 'failed'} when it was started again"
-        if reply.get("callbacks") != worker.loaded:
+        if reply.get("callbacks") != worker.loaded or reply.get("first") != 0:
             fresh.channel.close()
             return "made other OpaqueFunctions when it was evaluated again"
-        worker.number, worker.channel, worker.recycled = fresh.number, fresh.channel, False
+        worker.process, worker.first, worker.recycled = fresh.process, 0, False
+        fresh.process.holders.append(worker)
         return None
 
     def call(self, worker: _Worker, number: int, configurations: Mapping[str, Any],
              current: Path, span: Span) -> a.OpaqueResult:
-        """Run one OpaqueFunction of ``worker``'s file."""
-        if worker.recycled:
-            why = (self._revive(worker) if number < worker.loaded else
-                   "made this OpaqueFunction in an earlier call and was recycled")
-            if why is not None:
-                worker.ended = why
-        if worker.ended is not None:
-            return _failed(span, f"not evaluated: the process evaluating this file "
-                           f"{worker.ended}", ProblemKind.UNMODELED)
-        if worker.spent >= self.limits.seconds:
-            return _failed(span, f"running this OpaqueFunction failed: the evaluation of this "
-                           f"file took its whole time limit ({self.limits.seconds:g} s, "
-                           "--time-limit) before it", ProblemKind.EVALUATION)
-        self._keep(worker)
-        arguments = Encoder(_no_register).encode((dict(configurations), str(current)))
-        request = self._await(self._send(
-            worker, {"op": "call", "callback": number, "arguments": arguments}))
-        reply = request.reply
+        """Run one OpaqueFunction of ``worker``'s file (``number``: its own, from 0)."""
+        reply, failure = None, "ended before it was asked"
+        for attempt in range(2):
+            if worker.recycled:
+                why = (self._revive(worker) if number < worker.loaded else
+                       "made this OpaqueFunction in an earlier call and was recycled")
+                if why is not None:
+                    worker.ended = why
+            if worker.ended is not None:
+                return _failed(span, f"not evaluated: the process evaluating this file "
+                               f"{worker.ended}", ProblemKind.UNMODELED)
+            if worker.spent >= self.limits.seconds:
+                return _failed(span, f"running this OpaqueFunction failed: the evaluation of "
+                               f"this file took its whole time limit ({self.limits.seconds:g} "
+                               "s, --time-limit) before it", ProblemKind.EVALUATION)
+            self._keep(worker)
+            while not worker.process.free:  # evaluating another file of its repository
+                self._pump()
+            if worker.process.closed:  # (which ended it)
+                worker.recycled = worker.ended is None
+                continue
+            arguments = Encoder(_no_register).encode((dict(configurations), str(current)))
+            request = self._await(self._send(worker, {
+                "op": "call", "callback": number + worker.first, "arguments": arguments}))
+            reply, failure = request.reply, request.failure or failure
+            if reply is not None and reply.get("again") is True and not attempt:
+                # another file its process took since left it changed: alone, afresh
+                if worker in worker.process.holders:
+                    worker.process.holders.remove(worker)
+                worker.recycled = True
+                continue
+            break
         if reply is None:
             return _failed(span, f"running this OpaqueFunction failed: the process evaluating "
-                           f"this file {request.failure}", ProblemKind.EVALUATION)
+                           f"this file {failure}", ProblemKind.EVALUATION)
         if reply.get("op") != "result":
             where = self._where(worker.path, reply.get("where")) if reply.get("where") else span
             return _failed(where, f"running this OpaqueFunction failed: "
@@ -516,7 +578,7 @@ class IsolatedPython:
     def _decoder(self, worker: _Worker, callbacks: list[_Callback]) -> Decoder:
         """Return a decoder for ``worker``'s answers, collecting the callbacks it names."""
         def callback(number: int) -> _Callback:
-            callbacks.append(_Callback(self, worker, number))
+            callbacks.append(_Callback(self, worker, number - worker.first))
             return callbacks[-1]
 
         return Decoder(callback, span=lambda found: self._own_span(worker.path, found))

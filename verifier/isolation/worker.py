@@ -4,8 +4,9 @@ Forked from the zygote for one file, it closes every descriptor but its channel,
 the zygote's session, confines itself (``confine``), arms the audit hook, then runs the
 file and sends back its IR as plain data. It stays to run the file's OpaqueFunctions when
 the parent's walk reaches them, one request at a time, each under the time limit, until
-the parent closes the channel; a worker without any may take the next file of its
-repository instead (``reuse``). It never returns: it ends with ``os._exit``, so nothing the
+the parent closes the channel. Meanwhile it may take the next file of its repository
+(``reuse``): the OpaqueFunctions of every file it took stay callable, each in the state
+its own file left (``_Worker.switch``). It never returns: it ends with ``os._exit``, so nothing the
 launch file registered (``atexit``, finalizers) runs after the last answer.
 """
 
@@ -78,11 +79,29 @@ class _Worker:
         self.protections = protections
         self.scratch = scratch
         self.callbacks: list[Callable[..., Any]] = []
+        self.owners: list[str] = []  # the file each callback belongs to
+        self.serving = ""  # the file of the request being answered, or answered last
         self.baseline: Baseline | None = None
         self.kept_by: str | None = None  # why it may take no other file
 
+    def switch(self, path: str) -> str | None:
+        """Serve ``path`` next; return why it may not be served here, if it may not.
+
+        A file's OpaqueFunctions run in the state that file left: after another file,
+        only if that one left the worker as it found it (each file may disturb only
+        itself). Checked here, with no timer running.
+        """
+        if path != self.serving:
+            if self.kept_by is None and self.baseline is not None:
+                self.kept_by = self.baseline.disturbed()
+            if self.kept_by is not None:
+                return self.kept_by
+            self.serving = path
+        return None
+
     def register(self, function: Callable[..., Any]) -> int:
         self.callbacks.append(function)
+        self.owners.append(self.serving)
         return len(self.callbacks) - 1
 
     def run(self, request: dict[str, Any]) -> None:
@@ -90,30 +109,44 @@ class _Worker:
             # recorded only when the parent may send more (touching every module copies
             # the zygote's pages: about 10 ms)
             self.baseline = Baseline.take() if request.get("reuse") else None
+            self.serving = str(request.get("path", ""))
             self.answer(self.load, request)
             while True:
                 try:
                     request = self.channel.receive()
                 except ChannelError:
-                    return  # the parent is done with this file
+                    return  # the parent is done with this worker
                 if request.get("op") == "load":
                     self.load_another(request)
                 else:
-                    self.answer(self.call, request)
+                    self.call_for(request)
 
     def load_another(self, request: dict[str, Any]) -> None:
         """Evaluate another file of the repository if the last one left the worker as it was.
 
-        Checked here, with no timer running; when it may not, the parent starts the file
-        in a fresh worker.
+        When it may not, the parent starts the file in a fresh worker.
         """
-        if self.kept_by is None and self.baseline is not None:
-            self.kept_by = self.baseline.disturbed()
-        if self.kept_by is not None:
+        refused = self.switch(str(request.get("path", "")))
+        if refused is not None:
             self.channel.send({"op": "error", "message": "this worker takes no other file: "
-                               f"{self.kept_by}", "where": None, "again": True})
+                               f"{refused}", "where": None, "again": True})
             return
         self.answer(self.load, request)
+
+    def call_for(self, request: dict[str, Any]) -> None:
+        """Run an OpaqueFunction if its file may be served here.
+
+        When it may not (another file since disturbed the worker), the parent evaluates
+        the file again in a fresh worker and asks that one.
+        """
+        number = request.get("callback")
+        if isinstance(number, int) and 0 <= number < len(self.owners):
+            refused = self.switch(self.owners[number])
+            if refused is not None:
+                self.channel.send({"op": "error", "message": "this worker no longer serves "
+                                   f"the file: {refused}", "where": None, "again": True})
+                return
+        self.answer(self.call, request)
 
     def answer(self, handler: Callable[[dict[str, Any]], dict[str, Any]],
                request: dict[str, Any]) -> None:
@@ -126,10 +159,9 @@ class _Worker:
         except BaseException as error:
             reply = {"op": "error", "message": _describe(error), "where": _user_line(error)}
         if handler == self.load:
-            self.kept_by = ("an OpaqueFunction keeps it" if self.callbacks
-                            else "its file failed" if reply.get("op") != "loaded"
+            self.kept_by = ("its file failed" if reply.get("op") != "loaded"
                             else "it was not asked to take more" if self.baseline is None
-                            else None)
+                            else self.kept_by)
             reply["reusable"] = self.kept_by is None  # (the rest is checked if it is reused)
             _clear(self.scratch)
         reply["read"] = take_opened()  # what the answer rests on (kept results say)
@@ -141,11 +173,12 @@ class _Worker:
         frontend = PythonFrontend(self.setting.index, self.setting.workspace,
                                   self.setting.arguments,
                                   absent_modules=self.setting.absent_modules)
+        first = len(self.callbacks)
         launch = frontend.load(path, sink)
         encoder = Encoder(self.register)
         data = encoder.encode((launch, tuple(sink.problems)))
         return {"op": "loaded", "protections": self.protections, "data": data,
-                "callbacks": len(self.callbacks)}
+                "callbacks": len(self.callbacks) - first, "first": first}
 
     def call(self, request: dict[str, Any]) -> dict[str, Any]:
         number = request.get("callback")
