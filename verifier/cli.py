@@ -35,6 +35,7 @@ from launchverify.config import (
     load_config,
     unknown_selector,
 )
+from launchverify.diff import command as diff_command
 from launchverify.engine import (
     DEFAULT_TIME_LIMIT,
     CheckOptions,
@@ -324,6 +325,7 @@ def build_parser() -> argparse.ArgumentParser:
     completion.add_argument("shell", choices=("bash", "zsh", "fish"),
                             help="the shell the script is for")
     topology_command.add_parser(commands)
+    diff_command.add_parser(commands)
     return parser
 
 
@@ -351,7 +353,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         return EXIT_ERROR
     handlers = {"check": _check, "report": _report, "graph": _graph, "rules": _rules,
                 "explain": _explain, "run": _run, "completion": _completion, "lsp": _lsp,
-                "interfaces": topology_command.run}
+                "interfaces": topology_command.run, "diff": diff_command.run}
     # Until the output is written (process.collector says why); not for the commands
     # that run long, a server and a launch, whose garbage must go as they run.
     long_running = args.command in LONG_RUNNING

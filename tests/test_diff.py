@@ -1,0 +1,247 @@
+"""``launchverify diff``: what a change does to the launched system, on git repositories.
+
+Each test builds a repository with a base commit, changes it (a commit, or the working
+tree) and asserts the JSON: one kind of change each, as a reviewer would want it told.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+from pathlib import Path
+
+import pytest
+
+from launchverify.cli import main
+
+PACKAGE = ("<package format='3'><name>demo</name><version>0.0.0</version><description>d"
+           "</description><maintainer email='a@b.c'>a</maintainer><license>MIT</license>"
+           "</package>\n")
+PARAMS = """\
+/**:
+  ros__parameters:
+    rate: 10
+    frame: base_link
+"""
+BRINGUP = """\
+<launch>
+  <arg name="use_sim" default="false"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker" if="$(var use_sim)">
+    <param from="$(find-pkg-share demo)/config/params.yaml"/>
+  </node>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker" unless="$(var use_sim)">
+    <param from="$(find-pkg-share demo)/config/params.yaml"/>
+    <remap from="chatter" to="/chat"/>
+  </node>
+  <node pkg="demo_nodes_cpp" exec="listener" name="listener">
+    <remap from="chatter" to="/chat"/>
+  </node>
+</launch>
+"""
+SIM = """\
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.conditions import IfCondition
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        DeclareLaunchArgument('use_sim', default_value='false'),
+        Node(package='demo_nodes_cpp', executable='talker', name='sim_talker'),
+        # SIMULATED
+    ])
+"""
+SIMULATED = ("Node(package='demo_nodes_cpp', executable='listener', name='sim_listener', "
+             "condition=IfCondition(LaunchConfiguration('use_sim'))),")
+
+
+class Repository:
+    """A git repository in a folder, with a package and helpers to change it."""
+
+    def __init__(self, root: Path) -> None:
+        self.root = root
+        self.git("init", "-q", "-b", "main")
+        self.write("demo/package.xml", PACKAGE)
+        self.write("demo/config/params.yaml", PARAMS)
+        self.write("demo/launch/bringup.launch.xml", BRINGUP)
+        self.write("demo/launch/sim.launch.py", SIM)
+        self.commit("base")
+
+    def git(self, *arguments: str) -> str:
+        return subprocess.run(["git", "-C", str(self.root), *arguments], check=True,
+                              capture_output=True, text=True,
+                              env={**os.environ, "GIT_AUTHOR_NAME": "a",
+                                   "GIT_AUTHOR_EMAIL": "a@b", "GIT_COMMITTER_NAME": "a",
+                                   "GIT_COMMITTER_EMAIL": "a@b"}).stdout
+
+    def write(self, name: str, text: str) -> None:
+        path = self.root / name
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+
+    def edit(self, name: str, old: str, new: str) -> None:
+        text = (self.root / name).read_text()
+        assert old in text, old
+        self.write(name, text.replace(old, new))
+
+    def commit(self, message: str) -> str:
+        self.git("add", "-A")
+        self.git("commit", "-q", "-m", message)
+        return self.git("rev-parse", "HEAD").strip()
+
+
+@pytest.fixture
+def repo(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Repository:
+    monkeypatch.chdir(tmp_path)
+    return Repository(tmp_path)
+
+
+def diff(capsys: pytest.CaptureFixture[str], *arguments: str,
+         status: int = 0) -> dict[str, object]:
+    assert main(["diff", *arguments, "--format", "json", "-j", "1"]) == status
+    return json.loads(capsys.readouterr().out)
+
+
+def launch(found: dict[str, object], file: str) -> dict[str, object]:
+    launches = found["launches"]
+    assert isinstance(launches, list)
+    return next(item for item in launches if item["file"] == file)
+
+
+def test_a_parameter_changed_in_an_untouched_parameter_file(
+        repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/config/params.yaml", "rate: 10", "rate: 20")
+    found = diff(capsys)
+    assert found["base"] == {"label": "merge base", "commit": repo.git(
+        "rev-parse", "HEAD").strip()}
+    assert found["head"] == {"label": "working tree", "commit": None}
+    bringup = launch(found, "demo/launch/bringup.launch.xml")
+    assert bringup["parameters"] == [{
+        "node": "/talker", "name": "rate",
+        "base": {"value": 10, "from": "demo/config/params.yaml:3"},
+        "head": {"value": 20, "from": "demo/config/params.yaml:3"}}]
+    assert not any(bringup["nodes"].values())
+    assert [item["file"] for item in found["launches"]] == ["demo/launch/bringup.launch.xml"]
+    assert found["unchanged"] == 1
+
+
+def test_a_node_renamed(repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/launch/bringup.launch.xml", 'name="listener"', 'name="listener_2"')
+    nodes = launch(diff(capsys), "demo/launch/bringup.launch.xml")["nodes"]
+    assert nodes["added"] == nodes["removed"] == []
+    assert [(n["base"], n["head"]) for n in nodes["renamed"]] == [("/listener", "/listener_2")]
+
+
+def test_a_remap_removed(repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/launch/bringup.launch.xml",
+              '    <remap from="chatter" to="/chat"/>\n  </node>\n  <node pkg="demo_nodes_cpp"'
+              ' exec="listener"', '  </node>\n  <node pkg="demo_nodes_cpp" exec="listener"')
+    bringup = launch(diff(capsys), "demo/launch/bringup.launch.xml")
+    assert [(r["node"], r["added"], r["removed"]) for r in bringup["remappings"]] == [
+        ("/talker", [], ["chatter:=/chat"])]
+
+
+def test_an_argument_default_changed(repo: Repository,
+                                     capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/launch/bringup.launch.xml", 'default="false"', 'default="true"')
+    bringup = launch(diff(capsys), "demo/launch/bringup.launch.xml")
+    assert [(a["name"], a["base"], a["head"]) for a in bringup["arguments"]["changed"]] == [
+        ("use_sim", "false", "true")]
+    # under the new default the other talker starts: the same name, another remapping
+    assert [(r["node"], r["removed"]) for r in bringup["remappings"]] == [
+        ("/talker", ["chatter:=/chat"])]
+
+
+def test_a_node_added_only_under_an_argument(repo: Repository,
+                                             capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/launch/sim.launch.py", "# SIMULATED", SIMULATED)
+    sim = launch(diff(capsys), "demo/launch/sim.launch.py")
+    assert sim["nodes"]["added"] == []
+    assert sim["conditional"] == [{"node": "/sim_listener (demo_nodes_cpp/listener)",
+                                   "base": None, "head": "$(var use_sim)"}]
+    sim = launch(diff(capsys, "use_sim:=true"), "demo/launch/sim.launch.py")
+    assert [n["fqn"] for n in sim["nodes"]["added"]] == ["/sim_listener"]
+    assert sim["conditional"] == []
+
+
+def test_two_commits_and_a_renamed_launch_file(repo: Repository,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    base = repo.git("rev-parse", "HEAD").strip()
+    repo.git("mv", "demo/launch/sim.launch.py", "demo/launch/simulation.launch.py")
+    repo.edit("demo/launch/simulation.launch.py", "name='sim_talker'", "name='talker_sim'")
+    head = repo.commit("rename")
+    repo.edit("demo/config/params.yaml", "rate: 10", "rate: 99")  # not committed: unseen
+    found = diff(capsys, base, head)
+    assert found["head"] == {"label": head, "commit": head}
+    moved = launch(found, "demo/launch/simulation.launch.py")
+    assert moved["base_file"] == "demo/launch/sim.launch.py" and moved["status"] == "changed"
+    assert [(n["base"], n["head"]) for n in moved["nodes"]["renamed"]] == [
+        ("/sim_talker", "/talker_sim")]
+    assert [item["file"] for item in found["launches"]] == ["demo/launch/simulation.launch.py"]
+    assert repo.git("status", "--porcelain").strip() == "M demo/config/params.yaml"
+
+
+def test_a_new_error_fails_and_a_change_fails_when_asked(
+        repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/launch/bringup.launch.xml", 'name="listener"', 'name="talker"')
+    found = diff(capsys, status=1)
+    assert [(f["code"], f["file"]) for f in found["findings"]["introduced"]] == [
+        ("LV101", "demo/launch/bringup.launch.xml")]
+    assert found["summary"]["errors_introduced"] == 1
+    repo.edit("demo/launch/bringup.launch.xml", 'name="talker">\n    <remap',
+              'name="listener_x">\n    <remap')
+    assert diff(capsys)["summary"]["errors_introduced"] == 0
+    diff(capsys, "--fail-on-change", status=1)
+
+
+def test_nothing_changed(repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    found = diff(capsys, "--fail-on-change")
+    assert found["launches"] == [] and found["unchanged"] == 2
+    assert main(["diff", "--format", "markdown", "-j", "1"]) == 0
+    assert "No change in what the 2 launch file(s) start." in capsys.readouterr().out
+
+
+def test_two_folders(tmp_path: Path, capsys: pytest.CaptureFixture[str],
+                     monkeypatch: pytest.MonkeyPatch) -> None:
+    for side, rate in (("old", 10), ("new", 12)):
+        (tmp_path / side / "config").mkdir(parents=True)
+        (tmp_path / side / "package.xml").write_text(PACKAGE)
+        (tmp_path / side / "config" / "params.yaml").write_text(
+            PARAMS.replace("rate: 10", f"rate: {rate}"))
+        (tmp_path / side / "launch").mkdir()
+        (tmp_path / side / "launch" / "bringup.launch.xml").write_text(BRINGUP)
+    monkeypatch.chdir(tmp_path)
+    found = diff(capsys, "new", "--against", "old")
+    assert [(p["name"], p["base"]["value"], p["head"]["value"])
+            for p in launch(found, "launch/bringup.launch.xml")["parameters"]] == [
+        ("rate", 10, 12)]
+
+
+def test_what_a_pull_request_wrote_cannot_format_the_comment_or_the_terminal(
+        repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    hostile = "x`<img src=x onerror=alert(1)>`@team\x1b]52;c;ZWNobw==\x07"
+    repo.edit("demo/config/params.yaml", "frame: base_link", f"frame: {json.dumps(hostile)}")
+    assert main(["diff", "--format", "markdown", "-j", "1"]) == 0
+    markdown = capsys.readouterr().out
+    assert "\x1b" not in markdown and "\x07" not in markdown
+    line = next(text for text in markdown.splitlines() if "frame" in text)
+    assert "``" in line and "<img" in line  # inside a longer fence: shown, never rendered
+    assert main(["diff", "--color", "always", "-j", "1"]) == 0
+    text = capsys.readouterr().out
+    assert "\x1b]52" not in text and "\x07" not in text and "]52;c;" in text
+
+
+def test_a_link_out_of_the_tree_in_a_revision_is_not_written(
+        repo: Repository, capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    (repo.root / "demo" / "config" / "secret.yaml").symlink_to("/etc/hostname")
+    repo.commit("link")
+    from launchverify.diff.sides import commit_of, exported
+
+    with exported(repo.root, commit_of(repo.root, "HEAD"), "HEAD", 10_000_000) as side:
+        assert not (side.root / "demo" / "config" / "secret.yaml").exists()
+        assert (side.root / "demo" / "config" / "params.yaml").is_file()
+        folder = side.root
+    assert not folder.exists()  # removed when the diff ends

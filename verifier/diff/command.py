@@ -1,0 +1,214 @@
+"""``launchverify diff``: the command line of a diff between two trees.
+
+``launchverify diff [BASE [HEAD]] [PATH...] [name:=value ...]``: BASE defaults to the
+merge base of HEAD with the default branch, HEAD to the working tree. ``--against
+OTHER`` compares a folder (or file) with another instead. Exit status 1 when the head
+side brings new error-level findings (with ``--fail-on-change``, any change in what the
+launch files start), 0 otherwise, 2 for a usage error.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import sys
+import time
+from collections.abc import Iterator
+from contextlib import ExitStack, contextmanager
+from pathlib import Path
+from typing import Any, TextIO
+
+from launchverify.engine import UsageError, parse_arguments, parse_environment
+from launchverify.models.distros import DISTROS
+
+EXIT_OK, EXIT_CHANGED = 0, 1
+
+
+def add_parser(commands: Any) -> None:
+    """Register ``diff`` on the command line's subparsers."""
+    command = commands.add_parser(
+        "diff", help="show what a change does to the launched system",
+        description="Evaluate the launch files of two revisions (or two folders) and "
+        "show what differs in what they start: nodes added, removed or renamed, "
+        "parameter values (wherever they are set), remappings, arguments, lifecycle "
+        "bring-ups, and the findings introduced or fixed. BASE defaults to the merge base "
+        "with the default branch, HEAD to the working tree; revisions are read from git "
+        "without checking anything out.")
+    command.add_argument("targets", nargs="*", metavar="BASE|HEAD|PATH|name:=value",
+                         help="up to two revisions first, then launch files or folders "
+                         "(default: the whole repository), then launch arguments")
+    command.add_argument("--against", type=Path, metavar="FILE_OR_FOLDER",
+                         help="compare PATH (default: .) with this file or folder instead "
+                         "of git revisions")
+    command.add_argument("--format", choices=("text", "json", "markdown", "github"),
+                         default="text", help="text for people (default), json for "
+                         "programs, markdown for a pull-request comment, github for "
+                         "annotations on changed lines")
+    command.add_argument("-o", "--output", type=Path, metavar="FILE",
+                         help="write to FILE instead of standard output")
+    command.add_argument("--color", choices=("auto", "always", "never"), default="auto",
+                         help="colour the text format (default: when writing to a terminal)")
+    command.add_argument("--fail-on-change", action="store_true",
+                         help="exit 1 on any change in what the launch files start, not "
+                         "only on new errors")
+    command.add_argument("--max-items", type=int, default=50, metavar="N",
+                         help="markdown: show at most N launch files and N changes of each "
+                         "(default: 50), then say how many more")
+    command.add_argument("--select", action="append", metavar="CODES",
+                         help="comma-separated codes, slugs or prefixes to run")
+    command.add_argument("--ignore", action="append", metavar="CODES",
+                         help="comma-separated codes, slugs or prefixes to skip")
+    command.add_argument("--env", action="append", default=[], metavar="NAME=VALUE",
+                         help="an environment variable of the machine that will run the "
+                         "launch (repeatable)")
+    command.add_argument("--isolated", action="store_true", help="ignore configuration files")
+    command.add_argument("--distro", choices=DISTROS,
+                         help="the ROS 2 distribution to check for")
+    command.add_argument("-j", "--jobs", type=int, metavar="N",
+                         help="processes for each side's check (default: the number of CPUs)")
+    command.add_argument("--time-limit", type=float, default=10.0, metavar="SECONDS",
+                         help="per Python launch file (default: 10)")
+
+
+def run(args: argparse.Namespace) -> int:
+    """Run a diff; return the exit status."""
+    from launchverify.diff.compare import compare
+    from launchverify.diff.snapshot import Request, take
+
+    started = time.perf_counter()
+    tokens, arguments = parse_arguments(args.targets)
+    request = Request(paths=("",), arguments=arguments,
+                      environment=parse_environment(args.env),
+                      select=_codes(args.select), ignore=tuple(_codes(args.ignore) or ()),
+                      isolated=args.isolated, distro=args.distro, jobs=args.jobs,
+                      time_limit=args.time_limit)
+    with ExitStack() as stack:
+        if args.against is not None:
+            pairs, renamed = _folders(args.against, tokens)
+        else:
+            pairs, renamed = stack.enter_context(_revisions(tokens))
+        (base, base_paths), (head, head_paths) = pairs
+        before = take(base.root, dataclasses.replace(request, paths=base_paths))
+        after = take(head.root, dataclasses.replace(request, paths=head_paths))
+        diff = compare(before, after, renamed)
+    diff = {"base": {"label": base.label, "commit": base.commit},
+            "head": {"label": head.label, "commit": head.commit},
+            "arguments": arguments, **diff,
+            "seconds": {"base": round(before.seconds, 3), "head": round(after.seconds, 3),
+                        "total": round(time.perf_counter() - started, 3)}}
+    _write(diff, args)
+    summary = diff["summary"]
+    changed = summary["launches_changed"] or summary["findings_introduced"] \
+        or summary["findings_fixed"]
+    if summary["errors_introduced"] or (args.fail_on_change and changed):
+        return EXIT_CHANGED
+    return EXIT_OK
+
+
+def _write(diff: dict[str, Any], args: argparse.Namespace) -> None:
+    from launchverify.diff import render
+
+    with _output(args.output) as out:
+        if args.format == "json":
+            render.render_json(diff, out)
+        elif args.format == "markdown":
+            render.render_markdown(diff, out, max_items=max(1, args.max_items))
+        elif args.format == "github":
+            render.render_github(diff, out)
+        else:
+            colour = args.color == "always" or (args.color == "auto" and args.output is None
+                                                and sys.stdout.isatty())
+            render.render_text(diff, out, colour=colour)
+
+
+@contextmanager
+def _output(path: Path | None) -> Iterator[TextIO]:
+    if path is None:
+        yield sys.stdout
+        return
+    if not path.parent.is_dir():
+        raise UsageError(f"cannot write {str(path)!r}: no folder {str(path.parent)!r}")
+    with path.open("w", encoding="utf-8") as out:
+        yield out
+
+
+Pairs = tuple[tuple[Any, tuple[str, ...]], tuple[Any, tuple[str, ...]]]
+
+
+def _folders(other: Path, tokens: list[str]) -> tuple[Pairs, dict[str, str]]:
+    """Return the two sides of ``--against``: two folders, or two files."""
+    from launchverify.diff.sides import Side
+
+    if len(tokens) > 1:
+        raise UsageError("--against compares one file or folder with one other")
+    here = Path(tokens[0] if tokens else ".")
+    for path in (other, here):
+        if not path.exists():
+            raise UsageError(f"no such file or folder: {str(path)!r}")
+    if other.is_dir() != here.is_dir():
+        raise UsageError("--against compares two folders or two files")
+    if other.is_dir():
+        return ((Side(str(other), other.resolve()), ("",)),
+                (Side(str(here), here.resolve()), ("",))), {}
+    base = Side(str(other), other.resolve().parent)
+    head = Side(str(here), here.resolve().parent)
+    return ((base, (other.name,)), (head, (here.name,))), {other.name: here.name}
+
+
+@contextmanager
+def _revisions(tokens: list[str]) -> Iterator[tuple[Pairs, dict[str, str]]]:
+    """Yield the two sides of a diff between revisions (the working tree by default)."""
+    from launchverify.diff.sides import (
+        Side,
+        commit_of,
+        default_base,
+        exported,
+        renamed,
+        repository_of,
+    )
+    from launchverify.workspace import reading
+
+    repository = repository_of(Path.cwd())
+    revisions: list[str] = []
+    while tokens and len(revisions) < 2 and not Path(tokens[0]).exists() \
+            and _is_revision(repository, tokens[0]):
+        revisions.append(tokens.pop(0))
+    paths = tuple(_inside(repository, Path(token)) for token in tokens) or ("",)
+    base_label = revisions[0] if revisions else "merge base"
+    base_commit = commit_of(repository, revisions[0] if revisions else
+                            default_base(repository))
+    limit = reading.DEFAULT_LIMIT
+    with ExitStack() as stack:
+        base = stack.enter_context(exported(repository, base_commit, base_label, limit))
+        if len(revisions) == 2:
+            head_commit: str | None = commit_of(repository, revisions[1])
+            assert head_commit is not None
+            head = stack.enter_context(exported(repository, head_commit, revisions[1], limit))
+        else:
+            head_commit = None
+            head = Side("working tree", repository)
+        yield ((base, paths), (head, paths)), renamed(repository, base_commit, head_commit)
+
+
+def _is_revision(repository: Path, token: str) -> bool:
+    from launchverify.diff.sides import commit_of
+
+    try:
+        return bool(commit_of(repository, token))
+    except UsageError:
+        return False
+
+
+def _inside(repository: Path, path: Path) -> str:
+    """Return a path given on the command line relative to the repository's top."""
+    try:
+        return path.resolve().relative_to(repository.resolve()).as_posix()
+    except ValueError:
+        raise UsageError(f"{str(path)!r} is not inside the repository "
+                         f"{str(repository)!r}") from None
+
+
+def _codes(given: list[str] | None) -> list[str] | None:
+    if given is None:
+        return None
+    return [code.strip() for entry in given for code in entry.split(",") if code.strip()]

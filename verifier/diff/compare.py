@@ -1,0 +1,189 @@
+"""Two snapshots compared launch by launch: what a change does to the launched system.
+
+Launch files pair by path (following the renames git saw). Within a pair, nodes pair by
+fully qualified name; a node gone and a node new with the same package and executable
+are one node renamed (or moved to another namespace). Paired nodes compare the value
+each parameter ends up with (and where it is given), their remappings, what they run.
+Arguments compare by name, lifecycle managers by the nodes they bring up, findings by
+fingerprint. The result is plain data, documented in docs/output.md.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from launchverify.diff.snapshot import Launch, Snapshot
+
+Data = dict[str, Any]
+
+
+def compare(base: Snapshot, head: Snapshot, renamed: dict[str, str]) -> Data:
+    """Return what differs between the two sides (``renamed``: base path -> head path)."""
+    back = {new: old for old, new in renamed.items()}
+    launches: list[Data] = []
+    unchanged = 0
+    paired_base: set[str] = set()
+    for file in sorted(head.launches):
+        before_file = back.get(file, file)
+        before = base.launches.get(before_file)
+        if before is None and file in base.launches:
+            before, before_file = base.launches[file], file
+        if before is not None:
+            paired_base.add(before_file)
+        found = compare_launch(before, head.launches[file])
+        if found is None:
+            unchanged += 1
+            continue
+        launches.append({"file": file, "base_file": before_file if before else None,
+                         **found})
+    for file in sorted(set(base.launches) - paired_base):
+        found = compare_launch(base.launches[file], None)
+        if found is not None:
+            launches.append({"file": file, "base_file": file, **found})
+    introduced, fixed = _findings(base.findings, head.findings, renamed)
+    return {"launches": launches, "unchanged": unchanged,
+            "findings": {"introduced": introduced, "fixed": fixed},
+            "summary": _summary(launches, introduced, fixed)}
+
+
+def _findings(base: dict[str, Data], head: dict[str, Data], renamed: dict[str, str]
+              ) -> tuple[list[Data], list[Data]]:
+    """Return the findings only the head side has, and those only the base side has.
+
+    Fingerprints pair most (they hold no line number). A finding whose line was edited
+    has another fingerprint; it still pairs with one of the same rule, file (renamed
+    files followed) and message, so an edited line that keeps its mistake is neither.
+    """
+    only_head = {f: head[f] for f in head if f not in base}
+    only_base = {f: base[f] for f in base if f not in head}
+    unpaired: dict[tuple[str, str, str], list[str]] = {}
+    for print_, finding in only_base.items():
+        key = (finding["code"], renamed.get(finding["file"]) or finding["file"],
+               finding["message"])
+        unpaired.setdefault(key, []).append(print_)
+    introduced = []
+    for print_, finding in only_head.items():
+        twins = unpaired.get((finding["code"], finding["file"], finding["message"]))
+        if twins:
+            del only_base[twins.pop(0)]
+            continue
+        introduced.append(finding | {"fingerprint": print_})
+    return introduced, [finding | {"fingerprint": f} for f, finding in only_base.items()]
+
+
+def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
+    """Return how one launch file's system changed (``None``: it did not)."""
+    status = "added" if before is None else "removed" if after is None else "changed"
+    old = before or Launch("")
+    new = after or Launch("")
+    nodes, pairs = _nodes(old.nodes, new.nodes)
+    parameters, remappings, executables = [], [], []
+    for was, now in pairs:
+        parameters += _parameters(was, now)
+        remappings += _remappings(was, now)
+        if (was["package"], was["executable"]) != (now["package"], now["executable"]):
+            executables.append({"node": now["fqn"],
+                                "base": f"{was['package']}/{was['executable']}",
+                                "head": f"{now['package']}/{now['executable']}",
+                                "file": now["file"], "line": now["line"]})
+    arguments = _arguments(old.arguments, new.arguments)
+    lifecycle = [{"manager": name, "base": old.managers.get(name),
+                  "head": new.managers.get(name)}
+                 for name in sorted(set(old.managers) | set(new.managers))
+                 if old.managers.get(name) != new.managers.get(name)]
+    dormant = [{"node": key, "base": old.dormant.get(key), "head": new.dormant.get(key)}
+               for key in sorted(set(old.dormant) | set(new.dormant))
+               if old.dormant.get(key) != new.dormant.get(key)]
+    found: Data = {"status": status, "nodes": nodes, "conditional": dormant,
+                   "parameters": parameters,
+                   "remappings": remappings, "executables": executables,
+                   "arguments": arguments, "lifecycle": lifecycle,
+                   "stops": {"base": old.stopped, "head": new.stopped}}
+    if status == "changed" and not (any(nodes.values()) or dormant or parameters or remappings
+                                    or executables or any(arguments.values()) or lifecycle
+                                    or old.stopped != new.stopped):
+        return None
+    return found
+
+
+def _nodes(old: dict[str, Data], new: dict[str, Data]
+           ) -> tuple[Data, list[tuple[Data, Data]]]:
+    """Return nodes added, removed and renamed, and every pair of one node's two sides."""
+    pairs = [(old[name], new[name]) for name in new if name in old]
+    gone = [old[name] for name in old if name not in new]
+    came = [new[name] for name in new if name not in old]
+    renamed = []
+    for node in list(came):
+        twin = next((g for g in gone if (g["package"], g["executable"])
+                     == (node["package"], node["executable"])), None)
+        if twin is not None:
+            gone.remove(twin)
+            came.remove(node)
+            pairs.append((twin, node))
+            renamed.append({"base": twin["fqn"], "head": node["fqn"],
+                            "package": node["package"], "executable": node["executable"],
+                            "file": node["file"], "line": node["line"]})
+    return ({"added": [_brief(n) for n in came], "removed": [_brief(n) for n in gone],
+             "renamed": renamed}, pairs)
+
+
+def _brief(node: Data) -> Data:
+    return {key: node[key] for key in ("fqn", "package", "executable", "condition", "file",
+                                       "line")}
+
+
+def _parameters(was: Data, now: Data) -> list[Data]:
+    """Return the parameters whose value (or presence) differs between a node's sides."""
+    out = []
+    for name in sorted(set(was["parameters"]) | set(now["parameters"])):
+        before, after = was["parameters"].get(name), now["parameters"].get(name)
+        if before is not None and after is not None and _same(before, after):
+            continue
+        out.append({"node": now["fqn"], "name": name, "base": before, "head": after})
+    return out
+
+
+def _same(before: Data, after: Data) -> bool:
+    """Return whether a parameter gets the same value (an unknown one by the same expression)."""
+    if before["value"] is None or after["value"] is None:
+        return (before["value"], before.get("expression")) == (after["value"],
+                                                               after.get("expression"))
+    return bool(before["value"] == after["value"]
+                and type(before["value"]) is type(after["value"]))
+
+
+def _remappings(was: Data, now: Data) -> list[Data]:
+    added = [r for r in now["remappings"] if r not in was["remappings"]]
+    removed = [r for r in was["remappings"] if r not in now["remappings"]]
+    if not added and not removed:
+        return []
+    return [{"node": now["fqn"], "added": added, "removed": removed, "file": now["file"],
+             "line": now["line"]}]
+
+
+def _arguments(old: dict[str, Data], new: dict[str, Data]) -> Data:
+    return {
+        "added": [{"name": n, **new[n]} for n in new if n not in old],
+        "removed": [{"name": n, **old[n]} for n in old if n not in new],
+        "changed": [{"name": n, "base": old[n]["default"], "head": new[n]["default"],
+                     "file": new[n]["file"], "line": new[n]["line"]}
+                    for n in new if n in old and old[n]["default"] != new[n]["default"]],
+    }
+
+
+def _summary(launches: list[Data], introduced: list[Data], fixed: list[Data]) -> Data:
+    def count(key: str, part: str | None = None) -> int:
+        return sum(len(launch[key][part] if part else launch[key]) for launch in launches)
+
+    return {
+        "launches_changed": len(launches),
+        "nodes_added": count("nodes", "added"), "nodes_removed": count("nodes", "removed"),
+        "nodes_renamed": count("nodes", "renamed"), "conditional_changed": count("conditional"),
+        "parameters_changed": count("parameters"), "remappings_changed": count("remappings"),
+        "executables_changed": count("executables"),
+        "arguments_changed": sum(len(launch["arguments"][part]) for launch in launches
+                                 for part in ("added", "removed", "changed")),
+        "lifecycle_changed": count("lifecycle"),
+        "findings_introduced": len(introduced), "findings_fixed": len(fixed),
+        "errors_introduced": sum(f["severity"] == "error" for f in introduced),
+    }

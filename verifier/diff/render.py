@@ -1,0 +1,253 @@
+"""A diff written out: text for a terminal, JSON, Markdown for a pull request, annotations.
+
+Names and values come from the files a pull request wrote. In text they are made inert
+(``render.inert``); in Markdown each sits in a code span that it cannot leave (its
+backticks fenced by longer runs, line breaks and table bars neutralised, its length
+bounded), so a value cannot add links, images, mentions or HTML to a comment; in the
+GitHub format they are escaped as the runner unescapes them.
+"""
+
+from __future__ import annotations
+
+import html
+import json
+import re
+from collections.abc import Iterator
+from typing import Any, TextIO
+
+from launchverify.render.github import escape_data, escape_property
+from launchverify.render.inert import inert
+
+Data = dict[str, Any]
+MAX_VALUE = 120  # characters of one value shown in text and Markdown
+_COLOURS = {"+": "\x1b[32m", "-": "\x1b[31m", "~": "\x1b[33m", "!": "\x1b[1;31m"}
+_RESET = "\x1b[0m"
+_MARKS = {"+": "\N{HEAVY PLUS SIGN}", "-": "\N{HEAVY MINUS SIGN}",
+          "~": "\N{PENCIL}\N{VARIATION SELECTOR-16}", "!": "\N{NO ENTRY}"}
+
+
+def render_json(diff: Data, out: TextIO) -> None:
+    """Write the diff as JSON (docs/output.md)."""
+    json.dump(diff, out, indent=2, sort_keys=False)
+    out.write("\n")
+
+
+# ------------------------------------------------------------------ one change per line
+
+
+def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
+    """Yield a launch's changes: (mark, sentence, file, line); marks are + - ~."""
+    nodes = launch["nodes"]
+    for node in nodes["added"]:
+        yield "+", f"node {_v(node['fqn'])} ({_v(node['package'])}/{_v(node['executable'])})" \
+            + _when(node), node["file"], node["line"]
+    for node in nodes["removed"]:
+        yield "-", f"node {_v(node['fqn'])} ({_v(node['package'])}/{_v(node['executable'])})" \
+            + _when(node), node["file"], node["line"]
+    for node in nodes["renamed"]:
+        yield "~", f"node {_v(node['base'])} is now {_v(node['head'])} " \
+            f"({_v(node['package'])}/{_v(node['executable'])})", node["file"], node["line"]
+    for change in launch["conditional"]:
+        before, after = change["base"], change["head"]
+        if before is None:
+            yield "+", f"node {_v(change['node'])} starts when {_v(after)}", None, None
+        elif after is None:
+            yield "-", f"node {_v(change['node'])} no longer starts when {_v(before)}", \
+                None, None
+        else:
+            yield "~", f"node {_v(change['node'])} starts when {_v(after)} (was when " \
+                f"{_v(before)})", None, None
+    for change in launch["executables"]:
+        yield "~", f"node {_v(change['node'])} runs {_v(change['head'])} (was " \
+            f"{_v(change['base'])})", change["file"], change["line"]
+    for change in launch["parameters"]:
+        before, after = change["base"], change["head"]
+        where = after or before
+        file, _, line = where["from"].rpartition(":")
+        moved = before is not None and after is not None and before["from"] != after["from"]
+        yield "~", f"{_v(change['node'])}: {_v(change['name'])} {_given(before, moved)} -> " \
+            f"{_given(after, moved)}", file or None, int(line) if line.isdigit() else None
+    for change in launch["remappings"]:
+        parts = [f"+ {_v(r)}" for r in change["added"]] + [f"- {_v(r)}" for r in
+                                                          change["removed"]]
+        yield "~", f"{_v(change['node'])} remaps {', '.join(parts)}", change["file"], \
+            change["line"]
+    arguments = launch["arguments"]
+    for argument in arguments["added"]:
+        yield "+", f"argument {_v(argument['name'])} (default {_v(argument['default'])})", \
+            argument["file"], argument["line"]
+    for argument in arguments["removed"]:
+        yield "-", f"argument {_v(argument['name'])}", argument["file"], argument["line"]
+    for argument in arguments["changed"]:
+        yield "~", f"argument {_v(argument['name'])}: default {_v(argument['base'])} -> " \
+            f"{_v(argument['head'])}", argument["file"], argument["line"]
+    for manager in launch["lifecycle"]:
+        yield "~", f"lifecycle manager {_v(manager['manager'])} brings up " \
+            f"{_list(manager['head'])} (was {_list(manager['base'])})", None, None
+    stops = launch["stops"]
+    if stops["base"] != stops["head"]:
+        yield "!" if stops["head"] else "~", \
+            "the launch now stops at an error" if stops["head"] else \
+            "the launch no longer stops at an error", None, None
+
+
+def _v(value: object) -> str:
+    text = "(unknown)" if value is None else str(value)
+    return text if len(text) <= MAX_VALUE else text[:MAX_VALUE - 1] + "…"
+
+
+def _when(node: Data) -> str:
+    return f" when {_v(node['condition'])}" if node.get("condition") else ""
+
+
+def _given(given: Data | None, where: bool = False) -> str:
+    """Return a parameter's value (and where it is set, when the two sides differ there)."""
+    if given is None:
+        return "(not set)"
+    value = given["value"]
+    shown = json.dumps(value) if value is not None else given.get("expression", "(unknown)")
+    return f"{_v(shown)} (at {given['from']})" if where else _v(shown)
+
+
+def _list(names: list[str] | None) -> str:
+    return "(none)" if names is None else "[" + ", ".join(_v(n) for n in names) + "]"
+
+
+# ------------------------------------------------------------------ text
+
+
+def render_text(diff: Data, out: TextIO, *, colour: bool = False) -> None:
+    """Write the diff for a terminal, one change per line."""
+    def paint(mark: str, text: str) -> str:
+        return f"{_COLOURS[mark]}{text}{_RESET}" if colour else text
+
+    out.write(inert(f"launchverify diff: {_side(diff['base'])} -> {_side(diff['head'])}")
+              + "\n")
+    for launch in diff["launches"]:
+        title = launch["file"]
+        if launch["status"] != "changed":
+            title += f" ({launch['status']})"
+        elif launch["base_file"] not in (None, launch["file"]):
+            title += f" (was {launch['base_file']})"
+        out.write("\n" + inert(title) + "\n")
+        for mark, sentence, file, line in changes(launch):
+            place = f"  {file}:{line}" if file and line else ""
+            out.write("  " + paint(mark, inert(f"{mark} {sentence}")) + inert(place) + "\n")
+    findings = diff["findings"]
+    if findings["introduced"] or findings["fixed"]:
+        out.write("\nfindings: " + _counted(findings) + "\n")
+        for mark, group in (("+", findings["introduced"]), ("-", findings["fixed"])):
+            for finding in group:
+                text = f"{mark} {finding['severity']} {finding['code']} {finding['file']}:" \
+                       f"{finding['line']} {finding['message']}"
+                out.write("  " + paint("!" if mark == "+" and finding["severity"] == "error"
+                                       else mark, inert(text)) + "\n")
+    summary = diff["summary"]
+    out.write(f"\n{summary['launches_changed']} launch file(s) changed, "
+              f"{diff['unchanged']} unchanged ({diff['seconds']['total']:.1f} s)\n")
+
+
+def _side(side: Data) -> str:
+    commit = side.get("commit")
+    return f"{side['label']} ({commit[:10]})" if commit and commit != side["label"] \
+        else side["label"]
+
+
+def _counted(findings: Data) -> str:
+    errors = sum(f["severity"] == "error" for f in findings["introduced"])
+    return (f"{len(findings['introduced'])} introduced"
+            + (f" ({errors} error{'s' if errors != 1 else ''})" if errors else "")
+            + f", {len(findings['fixed'])} fixed")
+
+
+# ------------------------------------------------------------------ Markdown
+
+
+def code(text: object, *, table: bool = False) -> str:
+    """Return a value as a Markdown code span it cannot leave (``table``: in a cell)."""
+    shown = inert(_v(text))
+    if table:
+        shown = shown.replace("|", "\\|")
+    longest = max((len(run) for run in re.findall(r"`+", shown)), default=0)
+    fence = "`" * (longest + 1)
+    pad = " " if shown.startswith("`") or shown.endswith("`") or longest else ""
+    return f"{fence}{pad}{shown}{pad}{fence}"
+
+
+def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
+    """Write the diff for a pull-request comment: a summary table, details folded."""
+    summary = diff["summary"]
+    out.write(f"### launchverify diff: {code(_side(diff['base']))} → "
+              f"{code(_side(diff['head']))}\n\n")
+    if not diff["launches"] and not diff["findings"]["introduced"] \
+            and not diff["findings"]["fixed"]:
+        out.write(f"No change in what the {diff['unchanged']} launch file(s) start.\n")
+        return
+    if diff["launches"]:
+        out.write("| launch file | nodes | parameters | remappings | arguments | other |\n"
+                  "|---|---|---|---|---|---|\n")
+        for launch in diff["launches"][:max_items]:
+            nodes = launch["nodes"]
+            node_counts = " ".join(part for part in (
+                f"+{len(nodes['added'])}" if nodes["added"] else "",
+                f"\N{MINUS SIGN}{len(nodes['removed'])}" if nodes["removed"] else "",
+                f"~{len(nodes['renamed'])}" if nodes["renamed"] else "") if part)
+            arguments = sum(len(launch["arguments"][k]) for k in ("added", "removed",
+                                                                  "changed"))
+            other = ", ".join(word for word, count in (
+                ("executables", len(launch["executables"])),
+                ("lifecycle", len(launch["lifecycle"]))) if count)
+            name = code(launch["file"], table=True) + (f" ({launch['status']})"
+                                           if launch["status"] != "changed" else "")
+            out.write(f"| {name} | {node_counts} | {len(launch['parameters']) or ''} | "
+                      f"{len(launch['remappings']) or ''} | {arguments or ''} | {other} |\n")
+        if len(diff["launches"]) > max_items:
+            out.write(f"\n…and {len(diff['launches']) - max_items} more launch files.\n")
+        out.write(f"\n{summary['launches_changed']} launch file(s) changed, "
+                  f"{diff['unchanged']} unchanged.\n")
+    findings = diff["findings"]
+    if findings["introduced"] or findings["fixed"]:
+        out.write(f"\n**Findings**: {_counted(findings)}\n")
+        shown = 0
+        for mark, group in ((_MARKS["+"], findings["introduced"]),
+                            (_MARKS["-"], findings["fixed"])):
+            for finding in group:
+                if shown == max_items:
+                    break
+                shown += 1
+                out.write(f"- {mark} {finding['severity']} {code(finding['code'])} "
+                          f"{code(finding['file'] + ':' + str(finding['line']))} "
+                          f"{code(finding['message'])}\n")
+        total = len(findings["introduced"]) + len(findings["fixed"])
+        if total > shown:
+            out.write(f"- …and {total - shown} more\n")
+    for launch in diff["launches"][:max_items]:
+        found = list(changes(launch))
+        out.write(f"\n<details><summary><code>{html.escape(inert(_v(launch['file'])))}"
+                  f"</code>: {len(found)} change"
+                  f"{'s' if len(found) != 1 else ''}</summary>\n\n")
+        for mark, sentence, file, line in found[:max_items]:
+            place = f" at {code(f'{file}:{line}')}" if file and line else ""
+            out.write(f"- {_MARKS[mark]} {code(sentence)}{place}\n")
+        if len(found) > max_items:
+            out.write(f"- …and {len(found) - max_items} more\n")
+        out.write("\n</details>\n")
+
+
+# ------------------------------------------------------------------ GitHub annotations
+
+
+def render_github(diff: Data, out: TextIO) -> None:
+    """Write a workflow command per change on a line of the head side, per new finding."""
+    for launch in diff["launches"]:
+        for mark, sentence, file, line in changes(launch):
+            if file is None or line is None or mark == "-":
+                continue  # (what is gone has no line on the head side)
+            out.write(f"::notice file={escape_property(file)},line={line},"
+                      f"title={escape_property('launchverify diff')}::"
+                      f"{escape_data(sentence)}\n")
+    for finding in diff["findings"]["introduced"]:
+        command = {"error": "error", "warning": "warning"}.get(finding["severity"], "notice")
+        out.write(f"::{command} file={escape_property(finding['file'])},"
+                  f"line={finding['line']},title={escape_property(finding['code'])}::"
+                  f"{escape_data('new: ' + finding['message'])}\n")

@@ -1,0 +1,152 @@
+"""The two trees a diff compares: git revisions, the working tree, or a folder.
+
+A revision is read from git's objects (``git archive``), never checked out: the user's
+working tree, index and branches stay as they are. Its files are written into a private
+temporary folder that is removed when the diff ends; members that would land outside
+it (links out of the tree, absolute names), special files, and files larger than what
+a check reads are left out, and the whole tree is bounded.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import tarfile
+import tempfile
+from collections.abc import Iterator
+from contextlib import contextmanager, suppress
+from dataclasses import dataclass
+from pathlib import Path
+
+from launchverify.engine import UsageError
+
+MAX_TREE_BYTES = 2 << 30  # what one side's files may add up to
+GIT_SECONDS = 120.0
+# git as the repository's owner configured it, without prompts, pagers or file monitors
+_GIT = ("git", "-c", "core.fsmonitor=false", "-c", "core.pager=cat")
+
+
+@dataclass(frozen=True)
+class Side:
+    """One tree of a diff: where its files are, and what to call it."""
+
+    label: str  # as the user named it (a revision, "working tree", a folder)
+    root: Path  # the folder holding its files
+    commit: str | None = None  # the commit a revision names
+
+
+def git(repository: Path, *arguments: str) -> str:
+    """Run git in ``repository``; return its output (a failure is a usage error)."""
+    try:
+        done = subprocess.run([*_GIT, "-C", str(repository), *arguments], capture_output=True,
+                              timeout=GIT_SECONDS, check=False,
+                              env={**os.environ, "GIT_TERMINAL_PROMPT": "0"})
+    except FileNotFoundError:
+        raise UsageError("diff between revisions needs git") from None
+    except subprocess.TimeoutExpired:
+        raise UsageError(f"git {arguments[0]} took longer than {GIT_SECONDS:g} s") from None
+    if done.returncode != 0:
+        message = done.stderr.decode("utf-8", "replace").strip().splitlines()
+        raise UsageError(f"git {' '.join(arguments)}: {message[-1] if message else 'failed'}")
+    return done.stdout.decode("utf-8", "surrogateescape")
+
+
+def repository_of(folder: Path) -> Path:
+    """Return the top folder of the git repository holding ``folder``."""
+    return Path(git(folder, "rev-parse", "--show-toplevel").strip())
+
+
+def commit_of(repository: Path, revision: str) -> str:
+    """Return the commit a revision names."""
+    if revision.startswith("-"):
+        raise UsageError(f"not a revision: {revision!r}")
+    return git(repository, "rev-parse", "--verify", "--quiet", f"{revision}^{{commit}}").strip()
+
+
+def default_base(repository: Path) -> str:
+    """Return the merge base of HEAD with the default branch (what a pull request targets).
+
+    The default branch is the remote's (``origin/HEAD``), else ``main`` or ``master``,
+    local or on ``origin``.
+    """
+    candidates = []
+    with suppress(UsageError):
+        candidates.append(git(repository, "rev-parse", "--abbrev-ref", "origin/HEAD").strip())
+    candidates += ["main", "master", "origin/main", "origin/master"]
+    for branch in candidates:
+        try:
+            return git(repository, "merge-base", branch, "HEAD").strip()
+        except UsageError:
+            continue
+    raise UsageError("no default branch to compare with (main, master, origin/HEAD): "
+                     "name the base revision")
+
+
+def renamed(repository: Path, base: str, head: str | None) -> dict[str, str]:
+    """Return the files git sees renamed from ``base`` to ``head`` (None: the working tree)."""
+    output = git(repository, "diff", "--no-ext-diff", "-M", "--name-status", "-z", base,
+                 *([head] if head else []))
+    fields = output.split("\0")
+    moved: dict[str, str] = {}
+    index = 0
+    while index < len(fields) and fields[index]:
+        status = fields[index]
+        if status.startswith(("R", "C")):
+            if status.startswith("R") and index + 2 < len(fields):
+                moved[fields[index + 1]] = fields[index + 2]
+            index += 3
+        else:
+            index += 2
+    return moved
+
+
+@contextmanager
+def exported(repository: Path, commit: str, label: str,
+             max_file_size: int) -> Iterator[Side]:
+    """Yield a side holding ``commit``'s tree in a temporary folder (removed after)."""
+    folder = Path(tempfile.mkdtemp(prefix="launchverify-diff-"))
+    try:
+        _extract(repository, commit, folder, max_file_size)
+        yield Side(label, folder, commit)
+    finally:
+        shutil.rmtree(folder, ignore_errors=True)
+
+
+def _extract(repository: Path, commit: str, into: Path, max_file_size: int) -> None:
+    """Write a commit's files into ``into`` as ``git archive`` gives them, within bounds."""
+    process = subprocess.Popen([*_GIT, "-C", str(repository), "archive", "--format=tar",
+                                commit], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+                               env={**os.environ, "GIT_TERMINAL_PROMPT": "0"})
+    assert process.stdout is not None
+    total = 0
+
+    def bounded(member: tarfile.TarInfo, path: str) -> tarfile.TarInfo | None:
+        nonlocal total
+        kept = tarfile.data_filter(member, path)  # nothing outside, no devices
+        if kept is None or (kept.isfile() and kept.size > max_file_size):
+            return None
+        total += kept.size
+        if total > MAX_TREE_BYTES:
+            raise UsageError(f"the tree of {commit[:12]} is larger than "
+                             f"{MAX_TREE_BYTES >> 30} GiB")
+        return kept
+
+    read = False
+    try:
+        with tarfile.open(fileobj=process.stdout, mode="r|") as archive:
+            for member in archive:
+                try:
+                    archive.extract(member, into, filter=bounded)
+                except (tarfile.FilterError, OSError):
+                    continue  # a link out of the tree, a name the folder refuses
+        read = True
+    except tarfile.TarError as error:
+        raise UsageError(f"could not read the tree of {commit[:12]}: {error}") from None
+    finally:
+        process.stdout.close()
+        if not read:
+            process.kill()
+        status = process.wait(timeout=GIT_SECONDS)
+    if status != 0:
+        raise UsageError(f"git archive {commit[:12]} failed")

@@ -1,0 +1,175 @@
+"""One side of a diff: what each of its launch files starts, as plain data.
+
+A side is checked as ``launchverify check`` would check it (its own configuration, the
+same confinement), and each root's graph becomes a ``Launch``: its nodes by fully
+qualified name (package, executable, remappings, the value each parameter ends up with
+and the file and line that gives it), its arguments, its lifecycle managers. Places are
+relative to the side's root, so that the two sides compare by name.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from launchverify.config import Config, confined, find_config, load_config
+from launchverify.engine import CheckOptions, UsageError, run_check
+from launchverify.findings.fingerprint import fingerprints
+from launchverify.graph import LaunchGraph, NodeRecord, Origin
+from launchverify.parameters import Contribution
+from launchverify.problems import ProblemKind
+from launchverify.render.graph_out import GraphView
+from launchverify.workspace.paths import relative_file
+
+
+@dataclass
+class Launch:
+    """What one launch file starts, on one side."""
+
+    file: str  # relative to the side's root
+    nodes: dict[str, dict[str, Any]] = field(default_factory=dict)  # by full name
+    arguments: dict[str, dict[str, Any]] = field(default_factory=dict)  # by name
+    managers: dict[str, list[str]] = field(default_factory=dict)  # lifecycle: node lists
+    # nodes that start only for other argument values: "fqn (package/executable)" as
+    # written -> the condition they start under
+    dormant: dict[str, str] = field(default_factory=dict)
+    stopped: bool = False  # the launch stops at an error (what it starts is cut short)
+
+
+@dataclass
+class Snapshot:
+    """Every launch file of one side, and its findings by fingerprint."""
+
+    launches: dict[str, Launch] = field(default_factory=dict)
+    findings: dict[str, dict[str, Any]] = field(default_factory=dict)
+    seconds: float = 0.0
+
+
+@dataclass(frozen=True)
+class Request:
+    """What to check on each side (the same for both)."""
+
+    paths: tuple[str, ...]  # relative to a side's root ("" for all of it)
+    arguments: dict[str, str]
+    environment: dict[str, str]
+    select: list[str] | None = None
+    ignore: tuple[str, ...] = ()
+    isolated: bool = False  # no configuration file
+    distro: str | None = None
+    jobs: int | None = None
+    time_limit: float = 10.0
+    max_file_size: int = 10_000_000
+
+
+def take(root: Path, request: Request) -> Snapshot:
+    """Check a side and return its snapshot (nothing when it has none of the paths)."""
+    started = time.perf_counter()
+    paths = [root / p if p else root for p in request.paths]
+    paths = [p for p in paths if p.exists()]
+    snapshot = Snapshot()
+    if not paths:
+        return snapshot
+    config = _config(root, paths, request)
+    options = CheckOptions(
+        paths=paths, workspace=root, arguments={**config.arguments, **request.arguments},
+        environment={**config.environment, **request.environment}, config=config,
+        select=request.select if request.select is not None else config.select,
+        ignore=[*config.ignore, *request.ignore], command_select=request.select,
+        command_ignore=list(request.ignore), nested_configs=not request.isolated,
+        distro=request.distro or config.distro, jobs=request.jobs,
+        time_limit=request.time_limit, max_file_size=request.max_file_size)
+    try:
+        report = run_check(options)
+    except UsageError as error:
+        if "no launch files found" in str(error):
+            return snapshot
+        raise
+    for graph in report.graphs:
+        launch = _launch(graph, root)
+        snapshot.launches[launch.file] = launch
+    for finding, print_ in zip(report.findings, fingerprints(report.findings, root),
+                               strict=True):
+        snapshot.findings[print_] = {
+            "code": finding.code, "slug": finding.slug, "severity": finding.severity.value,
+            "file": relative_file(finding.span.file, root), "line": finding.span.line,
+            "message": finding.message}
+    snapshot.seconds = time.perf_counter() - started
+    return snapshot
+
+
+def _config(root: Path, paths: list[Path], request: Request) -> Config:
+    """Return the side's own configuration, as ``check`` would read it there."""
+    if request.isolated:
+        return Config()
+    found = find_config(paths[0])
+    if found is None or not found.resolve().is_relative_to(root.resolve()):
+        return Config()
+    config, _ = confined(load_config(found), paths, root, [])
+    return config
+
+
+class _SideView(GraphView):
+    """The graph's concrete view, with places relative to the side's root."""
+
+    def __init__(self, graph: LaunchGraph, root: Path) -> None:
+        super().__init__(graph, symbolic=False)
+        self.root = root
+
+    def where(self, origin: Origin) -> dict[str, Any]:
+        return {"condition": origin.condition_text(),
+                "file": relative_file(origin.span.file, self.root), "line": origin.span.line}
+
+    def contribution(self, contribution: Contribution) -> dict[str, Any]:
+        found = super().contribution(contribution)
+        found["from"] = (f"{relative_file(contribution.span.file, self.root)}:"
+                         f"{contribution.span.line}")
+        return found
+
+
+def _launch(graph: LaunchGraph, root: Path) -> Launch:
+    """Return what a root's graph starts, under the arguments given (else defaults)."""
+    view = _SideView(graph, root)
+    launch = Launch(relative_file(graph.root, root))
+    launch.stopped = any(record.problem.kind in (ProblemKind.PARSE, ProblemKind.EVALUATION)
+                         for record in graph.problems)
+    symbolic = GraphView(graph, symbolic=True)
+    for node in graph.nodes:
+        if not view.shown(node.origin):
+            key = (f"{symbolic.value(node.fqn) or symbolic.value(node.name)} "
+                   f"({symbolic.value(node.package)}/{symbolic.value(node.executable)})")
+            condition = node.origin.condition_text() or "(never)"
+            known = launch.dormant.get(key)
+            launch.dormant[key] = condition if known in (None, condition) \
+                else f"{known}, or {condition}"
+            continue
+        data = _node(view, node)
+        key = data["fqn"] or f"{data['package']}/{data['executable']} (no name)"
+        while key in launch.nodes:  # two nodes under one name: each kept
+            key += "'"
+        launch.nodes[key] = data
+    for argument in graph.arguments:
+        if view.shown(argument.origin) and argument.name not in launch.arguments:
+            launch.arguments[argument.name] = {
+                "default": view.value(argument.default), **view.where(argument.origin)}
+    lifecycle = view.lifecycle()
+    for manager in (lifecycle or {}).get("managers", []):
+        launch.managers[manager["fqn"]] = list(manager["node_names"])
+    return launch
+
+
+def _node(view: _SideView, node: NodeRecord) -> dict[str, Any]:
+    """Return a node's identity, wiring and parameters (the value each ends up with)."""
+    full = view.node(node)
+    parameters = {name: {"value": given["value"], "from": given["from"],
+                         **({"expression": given["expression"]} if "expression" in given
+                            else {})}
+                  for name, given in (full["effective_parameters"] or {}).items()}
+    return {
+        "fqn": full["fqn"], "package": full["package"], "executable": full["executable"],
+        "kind": full["kind"], "container": full["container"],
+        "remappings": [f"{src}:={dst}" for src, dst in full["remappings"]],
+        "parameters": parameters, "condition": full["condition"], "file": full["file"],
+        "line": full["line"],
+    }
