@@ -77,10 +77,11 @@ def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
     old = before or Launch("")
     new = after or Launch("")
     nodes, pairs = _nodes(old.nodes, new.nodes)
-    parameters, remappings, executables = [], [], []
+    parameters, files, remappings, executables = [], [], [], []
     for was, now in pairs:
         parameters += _parameters(was, now)
-        remappings += _remappings(was, now)
+        files += _listed(was, now, "parameter_files")
+        remappings += _listed(was, now, "remappings")
         if (was["package"], was["executable"]) != (now["package"], now["executable"]):
             executables.append({"node": now["fqn"],
                                 "base": f"{was['package']}/{was['executable']}",
@@ -94,16 +95,28 @@ def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
     dormant = [{"node": key, "base": old.dormant.get(key), "head": new.dormant.get(key)}
                for key in sorted(set(old.dormant) | set(new.dormant))
                if old.dormant.get(key) != new.dormant.get(key)]
-    found: Data = {"status": status, "nodes": nodes, "conditional": dormant,
-                   "parameters": parameters,
+    inputs = _inputs(old.inputs, new.inputs) if before and after else []
+    found: Data = {"status": status, "inputs_changed": inputs, "nodes": nodes,
+                   "conditional": dormant,
+                   "parameters": parameters, "parameter_files": files,
                    "remappings": remappings, "executables": executables,
                    "arguments": arguments, "lifecycle": lifecycle,
                    "stops": {"base": old.stopped, "head": new.stopped}}
-    if status == "changed" and not (any(nodes.values()) or dormant or parameters or remappings
+    if status == "changed" and not (any(nodes.values()) or dormant or parameters or files
+                                    or remappings
                                     or executables or any(arguments.values()) or lifecycle
                                     or old.stopped != new.stopped):
-        return None
+        if not inputs:
+            return None
+        found["status"] = "inputs"  # files it reads changed; what it starts did not, as seen
     return found
+
+
+def _inputs(old: dict[str, str] | None, new: dict[str, str] | None) -> list[str] | None:
+    """Return the files a launch reads that differ between the sides (None: not known)."""
+    if old is None or new is None:
+        return None
+    return sorted(name for name in set(old) | set(new) if old.get(name) != new.get(name))
 
 
 def _nodes(old: dict[str, Data], new: dict[str, Data]
@@ -152,9 +165,10 @@ def _same(before: Data, after: Data) -> bool:
                 and type(before["value"]) is type(after["value"]))
 
 
-def _remappings(was: Data, now: Data) -> list[Data]:
-    added = [r for r in now["remappings"] if r not in was["remappings"]]
-    removed = [r for r in was["remappings"] if r not in now["remappings"]]
+def _listed(was: Data, now: Data, key: str) -> list[Data]:
+    """Return what a node's list (remappings, parameter files) gained and lost."""
+    added = [r for r in now[key] if r not in was[key]]
+    removed = [r for r in was[key] if r not in now[key]]
     if not added and not removed:
         return []
     return [{"node": now["fqn"], "added": added, "removed": removed, "file": now["file"],
@@ -179,7 +193,9 @@ def _summary(launches: list[Data], introduced: list[Data], fixed: list[Data]) ->
         "launches_changed": len(launches),
         "nodes_added": count("nodes", "added"), "nodes_removed": count("nodes", "removed"),
         "nodes_renamed": count("nodes", "renamed"), "conditional_changed": count("conditional"),
-        "parameters_changed": count("parameters"), "remappings_changed": count("remappings"),
+        "parameters_changed": count("parameters"),
+        "parameter_files_changed": count("parameter_files"),
+        "remappings_changed": count("remappings"),
         "executables_changed": count("executables"),
         "arguments_changed": sum(len(launch["arguments"][part]) for launch in launches
                                  for part in ("added", "removed", "changed")),

@@ -20,10 +20,12 @@ from launchverify.render.inert import inert
 
 Data = dict[str, Any]
 MAX_VALUE = 120  # characters of one value shown in text and Markdown
-_COLOURS = {"+": "\x1b[32m", "-": "\x1b[31m", "~": "\x1b[33m", "!": "\x1b[1;31m"}
+_COLOURS = {"+": "\x1b[32m", "-": "\x1b[31m", "~": "\x1b[33m", "!": "\x1b[1;31m",
+            "?": "\x1b[2m"}
 _RESET = "\x1b[0m"
 _MARKS = {"+": "\N{HEAVY PLUS SIGN}", "-": "\N{HEAVY MINUS SIGN}",
-          "~": "\N{PENCIL}\N{VARIATION SELECTOR-16}", "!": "\N{NO ENTRY}"}
+          "~": "\N{PENCIL}\N{VARIATION SELECTOR-16}", "!": "\N{NO ENTRY}",
+          "?": "\N{WHITE QUESTION MARK ORNAMENT}"}
 
 
 def render_json(diff: Data, out: TextIO) -> None:
@@ -67,11 +69,12 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
         moved = before is not None and after is not None and before["from"] != after["from"]
         yield "~", f"{_v(change['node'])}: {_v(change['name'])} {_given(before, moved)} -> " \
             f"{_given(after, moved)}", file or None, int(line) if line.isdigit() else None
-    for change in launch["remappings"]:
-        parts = [f"+ {_v(r)}" for r in change["added"]] + [f"- {_v(r)}" for r in
-                                                          change["removed"]]
-        yield "~", f"{_v(change['node'])} remaps {', '.join(parts)}", change["file"], \
-            change["line"]
+    for key, verb in (("parameter_files", "parameter files"), ("remappings", "remaps")):
+        for change in launch[key]:
+            parts = [f"+ {_v(r)}" for r in change["added"]] + [f"- {_v(r)}" for r in
+                                                              change["removed"]]
+            yield "~", f"{_v(change['node'])} {verb} {', '.join(parts)}", change["file"], \
+                change["line"]
     arguments = launch["arguments"]
     for argument in arguments["added"]:
         yield "+", f"argument {_v(argument['name'])} (default {_v(argument['default'])})", \
@@ -84,6 +87,9 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
     for manager in launch["lifecycle"]:
         yield "~", f"lifecycle manager {_v(manager['manager'])} brings up " \
             f"{_list(manager['head'])} (was {_list(manager['base'])})", None, None
+    if launch["status"] == "inputs":
+        yield "?", "reads changed files, with no change seen in what it starts: " + \
+            ", ".join(_v(name) for name in launch["inputs_changed"]), None, None
     stops = launch["stops"]
     if stops["base"] != stops["head"]:
         yield "!" if stops["head"] else "~", \

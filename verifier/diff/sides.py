@@ -1,10 +1,10 @@
 """The two trees a diff compares: git revisions, the working tree, or a folder.
 
-A revision is read from git's objects (``git archive``), never checked out: the user's
-working tree, index and branches stay as they are. Its files are written into a private
-temporary folder that is removed when the diff ends; members that would land outside
-it (links out of the tree, absolute names), special files, and files larger than what
-a check reads are left out, and the whole tree is bounded.
+A revision is read from git's objects (``git ls-tree``, ``git cat-file``), never checked
+out: the user's working tree, index and branches stay as they are, and nothing is
+fetched. Its files are written into a private temporary folder that is removed when the
+diff ends; links out of the tree, submodules, objects the clone lacks and files larger
+than what a check reads are left out, and the whole tree is bounded.
 """
 
 from __future__ import annotations
@@ -12,12 +12,13 @@ from __future__ import annotations
 import os
 import shutil
 import subprocess
-import tarfile
 import tempfile
+import threading
 from collections.abc import Iterator
 from contextlib import contextmanager, suppress
 from dataclasses import dataclass
 from pathlib import Path
+from typing import IO
 
 from launchverify.engine import UsageError
 
@@ -114,39 +115,74 @@ def exported(repository: Path, commit: str, label: str,
 
 
 def _extract(repository: Path, commit: str, into: Path, max_file_size: int) -> None:
-    """Write a commit's files into ``into`` as ``git archive`` gives them, within bounds."""
-    process = subprocess.Popen([*_GIT, "-C", str(repository), "archive", "--format=tar",
-                                commit], stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-                               env={**os.environ, "GIT_TERMINAL_PROMPT": "0"})
-    assert process.stdout is not None
-    total = 0
+    """Write a commit's files into ``into`` from git's objects, within bounds.
 
-    def bounded(member: tarfile.TarInfo, path: str) -> tarfile.TarInfo | None:
-        nonlocal total
-        kept = tarfile.data_filter(member, path)  # nothing outside, no devices
-        if kept is None or (kept.isfile() and kept.size > max_file_size):
-            return None
-        total += kept.size
+    Files larger than a check reads, objects the clone lacks (a partial clone, a mirror
+    without its largest files) and submodules are left out; a link is made only when
+    it points inside the tree.
+    """
+    listing = git(repository, "ls-tree", "-r", "-z", "--long", "--full-tree", commit)
+    wanted: list[tuple[str, str, str]] = []  # (mode, object, path)
+    total = 0
+    for entry in listing.split("\0"):
+        if not entry:
+            continue
+        header, _, path = entry.partition("\t")
+        mode, kind, oid, size = header.split()
+        if kind != "blob" or not size.isdigit() or int(size) > max_file_size:
+            continue
+        total += int(size)
         if total > MAX_TREE_BYTES:
             raise UsageError(f"the tree of {commit[:12]} is larger than "
                              f"{MAX_TREE_BYTES >> 30} GiB")
-        return kept
+        wanted.append((mode, oid, path))
+    root = into.resolve()
+    for (mode, _, path), data in zip(wanted, _blobs(repository, [w[1] for w in wanted]),
+                                     strict=True):
+        target = (root / path).resolve()
+        if data is None or not target.is_relative_to(root) or target == root:
+            continue
+        target.parent.mkdir(parents=True, exist_ok=True)
+        if mode == "120000":  # a link: kept when it stays inside the tree
+            link = Path(os.fsdecode(data))
+            if not link.is_absolute() and (target.parent / link).resolve().is_relative_to(root):
+                with suppress(OSError):
+                    target.symlink_to(link)
+            continue
+        with suppress(OSError):  # (a name the file system refuses)
+            target.write_bytes(data)
+            if mode == "100755":
+                target.chmod(0o700)
 
-    read = False
+
+def _blobs(repository: Path, objects: list[str]) -> Iterator[bytes | None]:
+    """Yield each object's content (``None`` for one the repository lacks), in order."""
+    process = subprocess.Popen(
+        [*_GIT, "-C", str(repository), "cat-file", "--batch"], stdin=subprocess.PIPE,
+        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+        env={**os.environ, "GIT_TERMINAL_PROMPT": "0", "GIT_NO_LAZY_FETCH": "1"})
+    assert process.stdin is not None and process.stdout is not None
+    writer = threading.Thread(target=_ask, args=(process.stdin, objects), daemon=True)
+    writer.start()
     try:
-        with tarfile.open(fileobj=process.stdout, mode="r|") as archive:
-            for member in archive:
-                try:
-                    archive.extract(member, into, filter=bounded)
-                except (tarfile.FilterError, OSError):
-                    continue  # a link out of the tree, a name the folder refuses
-        read = True
-    except tarfile.TarError as error:
-        raise UsageError(f"could not read the tree of {commit[:12]}: {error}") from None
+        for _ in objects:
+            header = process.stdout.readline().split()
+            if len(header) != 3 or not header[2].isdigit():
+                yield None  # "<object> missing"
+                continue
+            data = process.stdout.read(int(header[2]))
+            process.stdout.read(1)  # the line feed after each object
+            yield data
     finally:
         process.stdout.close()
-        if not read:
+        if process.poll() is None:
             process.kill()
-        status = process.wait(timeout=GIT_SECONDS)
-    if status != 0:
-        raise UsageError(f"git archive {commit[:12]} failed")
+        process.wait()
+        writer.join()
+
+
+def _ask(stream: IO[bytes], objects: list[str]) -> None:
+    with suppress(OSError):
+        for oid in objects:
+            stream.write(oid.encode("ascii") + b"\n")
+        stream.close()

@@ -9,6 +9,7 @@ relative to the side's root, so that the two sides compare by name.
 
 from __future__ import annotations
 
+import hashlib
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -17,11 +18,13 @@ from typing import Any
 from launchverify.config import Config, confined, find_config, load_config
 from launchverify.engine import CheckOptions, UsageError, run_check
 from launchverify.findings.fingerprint import fingerprints
+from launchverify.findings.incremental import RootResult
 from launchverify.graph import LaunchGraph, NodeRecord, Origin
 from launchverify.parameters import Contribution
 from launchverify.problems import ProblemKind
 from launchverify.render.graph_out import GraphView
 from launchverify.workspace.paths import relative_file
+from launchverify.workspace.reading import read_file
 
 
 @dataclass
@@ -35,6 +38,9 @@ class Launch:
     # nodes that start only for other argument values: "fqn (package/executable)" as
     # written -> the condition they start under
     dormant: dict[str, str] = field(default_factory=dict)
+    # the files of the side it read (launch, parameter, other files its Python opened),
+    # by a digest of their content; None when not known
+    inputs: dict[str, str] | None = None
     stopped: bool = False  # the launch stops at an error (what it starts is cut short)
 
 
@@ -81,22 +87,67 @@ def take(root: Path, request: Request) -> Snapshot:
         distro=request.distro or config.distro, jobs=request.jobs,
         time_limit=request.time_limit, max_file_size=request.max_file_size)
     try:
-        report = run_check(options)
+        report = run_check(options, keep=True)  # (what each root read comes with it)
     except UsageError as error:
         if "no launch files found" in str(error):
             return snapshot
         raise
+    local = _Local(root)
+    read = report.kept.roots if report.kept is not None else {}
+    digests: dict[str, str] = {}
     for graph in report.graphs:
-        launch = _launch(graph, root)
+        launch = local.launch(_launch(graph, root))
+        found = read.get(graph.root)
+        if isinstance(found, RootResult) and found.reads is not None:
+            launch.inputs = {relative_file(Path(path), root): _digest(path, digests)
+                             for path in found.reads if Path(path).is_relative_to(root)}
         snapshot.launches[launch.file] = launch
     for finding, print_ in zip(report.findings, fingerprints(report.findings, root),
                                strict=True):
         snapshot.findings[print_] = {
             "code": finding.code, "slug": finding.slug, "severity": finding.severity.value,
             "file": relative_file(finding.span.file, root), "line": finding.span.line,
-            "message": finding.message}
+            "message": local.value(finding.message)}
     snapshot.seconds = time.perf_counter() - started
     return snapshot
+
+
+class _Local:
+    """Values with the side's own folder taken out, so that the two sides compare.
+
+    ``$(find-pkg-share demo)/maps/a.yaml`` is a path into each side's tree: the same
+    file, in two folders.
+    """
+
+    def __init__(self, root: Path) -> None:
+        self.prefixes = sorted({f"{root}/", f"{root.resolve()}/"}, key=len, reverse=True)
+
+    def value(self, value: Any) -> Any:
+        if isinstance(value, str):
+            for prefix in self.prefixes:
+                value = value.replace(prefix, "")
+            return value
+        if isinstance(value, list):
+            return [self.value(item) for item in value]
+        if isinstance(value, dict):
+            return {self.value(key): self.value(item) for key, item in value.items()}
+        return value
+
+    def launch(self, launch: Launch) -> Launch:
+        return Launch(launch.file, nodes=self.value(launch.nodes), inputs=launch.inputs,
+                      arguments=self.value(launch.arguments),
+                      managers=self.value(launch.managers), dormant=self.value(launch.dormant),
+                      stopped=launch.stopped)
+
+
+def _digest(path: str, known: dict[str, str]) -> str:
+    """Return a digest of a file's content (``-`` for one that cannot be read)."""
+    if path not in known:
+        try:
+            known[path] = hashlib.sha256(read_file(Path(path))).hexdigest()[:16]
+        except OSError:
+            known[path] = "-"
+    return known[path]
 
 
 def _config(root: Path, paths: list[Path], request: Request) -> Config:
@@ -170,6 +221,8 @@ def _node(view: _SideView, node: NodeRecord) -> dict[str, Any]:
         "fqn": full["fqn"], "package": full["package"], "executable": full["executable"],
         "kind": full["kind"], "container": full["container"],
         "remappings": [f"{src}:={dst}" for src, dst in full["remappings"]],
-        "parameters": parameters, "condition": full["condition"], "file": full["file"],
+        "parameters": parameters,
+        "parameter_files": [given["file"] for given in full["parameters"] if "file" in given],
+        "condition": full["condition"], "file": full["file"],
         "line": full["line"],
     }
