@@ -13,12 +13,10 @@ import os
 import shutil
 import subprocess
 import tempfile
-import threading
 from collections.abc import Iterator
 from contextlib import contextmanager, suppress
 from dataclasses import dataclass
 from pathlib import Path
-from typing import IO
 
 from launchverify.engine import UsageError
 
@@ -137,12 +135,15 @@ def _extract(repository: Path, commit: str, into: Path, max_file_size: int) -> N
                              f"{MAX_TREE_BYTES >> 30} GiB")
         wanted.append((mode, oid, path))
     root = into.resolve()
+    folders: set[Path] = set()
     for (mode, _, path), data in zip(wanted, _blobs(repository, [w[1] for w in wanted]),
                                      strict=True):
         target = (root / path).resolve()
         if data is None or not target.is_relative_to(root) or target == root:
             continue
-        target.parent.mkdir(parents=True, exist_ok=True)
+        if target.parent not in folders:
+            target.parent.mkdir(parents=True, exist_ok=True)
+            folders.add(target.parent)
         if mode == "120000":  # a link: kept when it stays inside the tree
             link = Path(os.fsdecode(data))
             if not link.is_absolute() and (target.parent / link).resolve().is_relative_to(root):
@@ -157,13 +158,14 @@ def _extract(repository: Path, commit: str, into: Path, max_file_size: int) -> N
 
 def _blobs(repository: Path, objects: list[str]) -> Iterator[bytes | None]:
     """Yield each object's content (``None`` for one the repository lacks), in order."""
-    process = subprocess.Popen(
-        [*_GIT, "-C", str(repository), "cat-file", "--batch"], stdin=subprocess.PIPE,
-        stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-        env={**os.environ, "GIT_TERMINAL_PROMPT": "0", "GIT_NO_LAZY_FETCH": "1"})
-    assert process.stdin is not None and process.stdout is not None
-    writer = threading.Thread(target=_ask, args=(process.stdin, objects), daemon=True)
-    writer.start()
+    with tempfile.TemporaryFile() as asked:  # (a file: no thread to feed a pipe)
+        asked.write(b"".join(oid.encode("ascii") + b"\n" for oid in objects))
+        asked.seek(0)
+        process = subprocess.Popen(
+            [*_GIT, "-C", str(repository), "cat-file", "--batch"], stdin=asked,
+            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
+            env={**os.environ, "GIT_TERMINAL_PROMPT": "0", "GIT_NO_LAZY_FETCH": "1"})
+    assert process.stdout is not None
     try:
         for _ in objects:
             header = process.stdout.readline().split()
@@ -178,11 +180,3 @@ def _blobs(repository: Path, objects: list[str]) -> Iterator[bytes | None]:
         if process.poll() is None:
             process.kill()
         process.wait()
-        writer.join()
-
-
-def _ask(stream: IO[bytes], objects: list[str]) -> None:
-    with suppress(OSError):
-        for oid in objects:
-            stream.write(oid.encode("ascii") + b"\n")
-        stream.close()
