@@ -245,3 +245,74 @@ def test_a_link_out_of_the_tree_in_a_revision_is_not_written(
         assert (side.root / "demo" / "config" / "params.yaml").is_file()
         folder = side.root
     assert not folder.exists()  # removed when the diff ends
+
+
+ACTION = Path(__file__).resolve().parent.parent / "action.yml"
+GH_STUB = """#!/bin/sh
+# records each call; POST and PATCH fail when READ_ONLY is set (a fork's token)
+printf '%s\\n' "$*" >> "$GH_CALLS"
+case "$*" in
+  *"-X POST"*|*"-X PATCH"*) [ -n "$READ_ONLY" ] && exit 1 ;;
+esac
+exit 0
+"""
+
+
+def _action_step(step_id: str) -> tuple[str, dict[str, str]]:
+    """Return a step of the action: its script and its environment as written."""
+    import yaml
+
+    steps = yaml.safe_load(ACTION.read_text())["runs"]["steps"]
+    step = next(s for s in steps if s.get("id") == step_id)
+    return step["run"], step.get("env", {})
+
+
+@pytest.mark.parametrize("read_only", [False, True])
+def test_the_action_comments_or_falls_back_to_the_job_summary(
+        repo: Repository, tmp_path_factory: pytest.TempPathFactory, read_only: bool) -> None:
+    """The action's diff step, run as a runner would run it, with ``gh`` stood in for."""
+    import sys
+
+    base = repo.git("rev-parse", "HEAD").strip()
+    repo.edit("demo/config/params.yaml", "rate: 10", "rate: 11")
+    repo.commit("change")
+    tools = tmp_path_factory.mktemp("tools")
+    (tools / "gh").write_text(GH_STUB)
+    (tools / "gh").chmod(0o755)
+    outputs = tmp_path_factory.mktemp("runner")
+    script, written = _action_step("diff")
+    assert "${{" not in script  # inputs reach the script through the environment only
+    env = {**os.environ, "PATH": f"{tools}:{Path(sys.executable).parent}:{os.environ['PATH']}",
+           "LV_PATHS": ".", "LV_ARGUMENTS": "", "BASE_SHA": base, "PR_NUMBER": "7",
+           "REPOSITORY": "owner/repo", "GH_TOKEN": "token",
+           "GITHUB_OUTPUT": str(outputs / "output"),
+           "GITHUB_STEP_SUMMARY": str(outputs / "summary"),
+           "GH_CALLS": str(outputs / "calls"), "READ_ONLY": "1" if read_only else ""}
+    assert set(written) <= set(env)
+    done = subprocess.run(["bash", "--noprofile", "--norc", "-eo", "pipefail", "-c", script],
+                          cwd=repo.root, env=env, capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr
+    summary = (outputs / "summary").read_text()
+    assert "launchverify diff" in summary and "rate 10 -> 11" in summary
+    calls = (outputs / "calls").read_text()
+    assert "-X POST repos/owner/repo/issues/7/comments" in calls
+    assert ("job summary" in done.stdout) is read_only
+    output = (outputs / "output").read_text()
+    assert "errors-introduced=0" in output and "status=0" in output
+
+
+def test_the_markdown_is_a_table_then_folded_details_capped(
+        repo: Repository, capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    for n in range(4):
+        repo.write(f"demo/launch/extra{n}.launch.xml", BRINGUP.replace(
+            'name="listener"', f'name="listener{n}"'))
+    repo.edit("demo/config/params.yaml", "rate: 10", "rate: 30")
+    assert main(["diff", "--format", "markdown", "--max-items", "2", "-j", "1",
+                 "--json", str(tmp_path / "diff.json")]) == 0
+    markdown = capsys.readouterr().out
+    table = markdown.index("| launch file |")
+    assert table < markdown.index("<details>")
+    assert markdown.count("<details>") == 2 and "…and 3 more launch files." in markdown
+    assert "5 launch file(s) changed, 1 unchanged." in markdown
+    written = json.loads((tmp_path / "diff.json").read_text())
+    assert written["summary"]["launches_changed"] == 5

@@ -46,6 +46,9 @@ def add_parser(commands: Any) -> None:
                          "annotations on changed lines")
     command.add_argument("-o", "--output", type=Path, metavar="FILE",
                          help="write to FILE instead of standard output")
+    command.add_argument("--json", type=Path, metavar="FILE", dest="json_file",
+                         help="also write the diff as JSON to FILE (one run for a comment "
+                         "and a program)")
     command.add_argument("--color", choices=("auto", "always", "never"), default="auto",
                          help="colour the text format (default: when writing to a terminal)")
     command.add_argument("--fail-on-change", action="store_true",
@@ -108,6 +111,9 @@ def run(args: argparse.Namespace) -> int:
 def _write(diff: dict[str, Any], args: argparse.Namespace) -> None:
     from launchverify.diff import render
 
+    if args.json_file is not None:
+        with _output(args.json_file) as out:
+            render.render_json(diff, out)
     with _output(args.output) as out:
         if args.format == "json":
             render.render_json(diff, out)
