@@ -200,9 +200,14 @@ def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
                 f"~{len(nodes['renamed'])}" if nodes["renamed"] else "") if part)
             arguments = sum(len(launch["arguments"][k]) for k in ("added", "removed",
                                                                   "changed"))
-            other = ", ".join(word for word, count in (
+            other = ", ".join(f"{count} {word}" for word, count in (
+                ("conditional", len(launch["conditional"])),
+                ("parameter files", len(launch["parameter_files"])),
                 ("executables", len(launch["executables"])),
                 ("lifecycle", len(launch["lifecycle"]))) if count)
+            if launch["status"] == "inputs":
+                other = "inputs changed"
+
             name = code(launch["file"], table=True) + (f" ({launch['status']})"
                                            if launch["status"] != "changed" else "")
             out.write(f"| {name} | {node_counts} | {len(launch['parameters']) or ''} | "
@@ -221,7 +226,9 @@ def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
                 if shown == max_items:
                     break
                 shown += 1
-                out.write(f"- {mark} {finding['severity']} {code(finding['code'])} "
+                alarm = group is findings["introduced"] and finding["severity"] == "error"
+                out.write(f"- {_MARKS['!'] if alarm else mark} {finding['severity']} "
+                          f"{code(finding['code'])} "
                           f"{code(finding['file'] + ':' + str(finding['line']))} "
                           f"{code(finding['message'])}\n")
         total = len(findings["introduced"]) + len(findings["fixed"])
