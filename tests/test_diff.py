@@ -201,7 +201,7 @@ def test_nothing_changed(repo: Repository, capsys: pytest.CaptureFixture[str]) -
     found = diff(capsys, "--fail-on-change")
     assert found["launches"] == [] and found["unchanged"] == 2
     assert main(["diff", "--format", "markdown", "-j", "1"]) == 0
-    assert "No change in what the 2 launch file(s) start." in capsys.readouterr().out
+    assert "No change in what the 2 launch file(s) start" in capsys.readouterr().out
 
 
 def test_two_folders(tmp_path: Path, capsys: pytest.CaptureFixture[str],
@@ -316,3 +316,15 @@ def test_the_markdown_is_a_table_then_folded_details_capped(
     assert "5 launch file(s) changed, 1 unchanged." in markdown
     written = json.loads((tmp_path / "diff.json").read_text())
     assert written["summary"]["launches_changed"] == 5
+
+
+def test_a_change_read_but_for_no_node_started_is_said_apart(
+        repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/config/params.yaml", "/**:", "other_node:\n  ros__parameters:\n"
+              "    gain: 2\n/**:")
+    found = diff(capsys)
+    assert found["launches"] == [] and found["unchanged"] == 1
+    assert found["inputs_only"] == [{"file": "demo/launch/bringup.launch.xml",
+                                     "inputs_changed": ["demo/config/params.yaml"]}]
+    # and the block no node loads is a finding of its own
+    assert [f["code"] for f in found["findings"]["introduced"]] == ["LV402"]

@@ -21,6 +21,7 @@ def compare(base: Snapshot, head: Snapshot, renamed: dict[str, str]) -> Data:
     """Return what differs between the two sides (``renamed``: base path -> head path)."""
     back = {new: old for old, new in renamed.items()}
     launches: list[Data] = []
+    unseen: list[Data] = []  # read changed files, and nothing seen of it changed
     unchanged = 0
     paired_base: set[str] = set()
     for file in sorted(head.launches):
@@ -33,15 +34,17 @@ def compare(base: Snapshot, head: Snapshot, renamed: dict[str, str]) -> Data:
         found = compare_launch(before, head.launches[file])
         if found is None:
             unchanged += 1
-            continue
-        launches.append({"file": file, "base_file": before_file if before else None,
-                         **found})
+        elif found["status"] == "inputs":
+            unseen.append({"file": file, "inputs_changed": found["inputs_changed"]})
+        else:
+            launches.append({"file": file, "base_file": before_file if before else None,
+                             **found})
     for file in sorted(set(base.launches) - paired_base):
         found = compare_launch(base.launches[file], None)
         if found is not None:
             launches.append({"file": file, "base_file": file, **found})
     introduced, fixed = _findings(base.findings, head.findings, renamed)
-    return {"launches": launches, "unchanged": unchanged,
+    return {"launches": launches, "unchanged": unchanged, "inputs_only": unseen,
             "findings": {"introduced": introduced, "fixed": fixed},
             "summary": _summary(launches, introduced, fixed)}
 

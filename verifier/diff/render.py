@@ -87,9 +87,6 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
     for manager in launch["lifecycle"]:
         yield "~", f"lifecycle manager {_v(manager['manager'])} brings up " \
             f"{_list(manager['head'])} (was {_list(manager['base'])})", None, None
-    if launch["status"] == "inputs":
-        yield "?", "reads changed files, with no change seen in what it starts: " + \
-            ", ".join(_v(name) for name in launch["inputs_changed"]), None, None
     stops = launch["stops"]
     if stops["base"] != stops["head"]:
         yield "!" if stops["head"] else "~", \
@@ -139,6 +136,8 @@ def render_text(diff: Data, out: TextIO, *, colour: bool = False) -> None:
         for mark, sentence, file, line in changes(launch):
             place = f"  {file}:{line}" if file and line else ""
             out.write("  " + paint(mark, inert(f"{mark} {sentence}")) + inert(place) + "\n")
+    if diff["inputs_only"]:
+        out.write("\n" + paint("?", inert(_unseen(diff["inputs_only"]))) + "\n")
     findings = diff["findings"]
     if findings["introduced"] or findings["fixed"]:
         out.write("\nfindings: " + _counted(findings) + "\n")
@@ -151,6 +150,13 @@ def render_text(diff: Data, out: TextIO, *, colour: bool = False) -> None:
     summary = diff["summary"]
     out.write(f"\n{summary['launches_changed']} launch file(s) changed, "
               f"{diff['unchanged']} unchanged ({diff['seconds']['total']:.1f} s)\n")
+
+
+def _unseen(launches: list[Data]) -> str:
+    files = sorted({name for launch in launches for name in launch["inputs_changed"]})
+    return (f"{len(launches)} launch file(s) read changed files ({', '.join(files)}) with "
+            "no change seen in what they start: "
+            + ", ".join(launch["file"] for launch in launches))
 
 
 def _side(side: Data) -> str:
@@ -187,7 +193,10 @@ def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
               f"{code(_side(diff['head']))}\n\n")
     if not diff["launches"] and not diff["findings"]["introduced"] \
             and not diff["findings"]["fixed"]:
-        out.write(f"No change in what the {diff['unchanged']} launch file(s) start.\n")
+        out.write(f"No change in what the {diff['unchanged'] + len(diff['inputs_only'])} "
+                  "launch file(s) start, as far as launchverify sees.\n")
+        if diff["inputs_only"]:
+            out.write(f"\n{_MARKS['?']} {code(_unseen(diff['inputs_only']))}\n")
         return
     if diff["launches"]:
         out.write("| launch file | nodes | parameters | remappings | arguments | other |\n"
@@ -205,8 +214,6 @@ def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
                 ("parameter files", len(launch["parameter_files"])),
                 ("executables", len(launch["executables"])),
                 ("lifecycle", len(launch["lifecycle"]))) if count)
-            if launch["status"] == "inputs":
-                other = "inputs changed"
 
             name = code(launch["file"], table=True) + (f" ({launch['status']})"
                                            if launch["status"] != "changed" else "")
@@ -216,6 +223,8 @@ def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
             out.write(f"\n…and {len(diff['launches']) - max_items} more launch files.\n")
         out.write(f"\n{summary['launches_changed']} launch file(s) changed, "
                   f"{diff['unchanged']} unchanged.\n")
+    if diff["inputs_only"]:
+        out.write(f"\n{_MARKS['?']} {code(_unseen(diff['inputs_only']))}\n")
     findings = diff["findings"]
     if findings["introduced"] or findings["fixed"]:
         out.write(f"\n**Findings**: {_counted(findings)}\n")
