@@ -328,3 +328,12 @@ def test_a_change_read_but_for_no_node_started_is_said_apart(
                                      "inputs_changed": ["demo/config/params.yaml"]}]
     # and the block no node loads is a finding of its own
     assert [f["code"] for f in found["findings"]["introduced"]] == ["LV402"]
+
+
+def test_an_include_added(repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/launch/bringup.launch.xml", "</launch>",
+              '  <include file="$(dirname)/sim.launch.py"/>\n</launch>')
+    bringup = launch(diff(capsys), "demo/launch/bringup.launch.xml")
+    assert bringup["includes"] == [{"include": "demo/launch/sim.launch.py", "base": None,
+                                    "head": "loaded"}]
+    assert [n["fqn"] for n in bringup["nodes"]["added"]] == ["/sim_talker"]

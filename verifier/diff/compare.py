@@ -86,7 +86,7 @@ def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
         files += _listed(was, now, "parameter_files")
         remappings += _listed(was, now, "remappings")
         if (was["package"], was["executable"]) != (now["package"], now["executable"]):
-            executables.append({"node": now["fqn"],
+            executables.append({"node": now["label"],
                                 "base": f"{was['package']}/{was['executable']}",
                                 "head": f"{now['package']}/{now['executable']}",
                                 "file": now["file"], "line": now["line"]})
@@ -99,13 +99,19 @@ def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
                for key in sorted(set(old.dormant) | set(new.dormant))
                if old.dormant.get(key) != new.dormant.get(key)]
     inputs = _inputs(old.inputs, new.inputs) if before and after else []
+    includes = [{"include": name, "base": old.includes.get(name),
+                 "head": new.includes.get(name)}
+                for name in sorted(set(old.includes) | set(new.includes))
+                if old.includes.get(name) != new.includes.get(name)]
     found: Data = {"status": status, "inputs_changed": inputs, "nodes": nodes,
+                   "includes": includes,
                    "conditional": dormant,
                    "parameters": parameters, "parameter_files": files,
                    "remappings": remappings, "executables": executables,
                    "arguments": arguments, "lifecycle": lifecycle,
                    "stops": {"base": old.stopped, "head": new.stopped}}
-    if status == "changed" and not (any(nodes.values()) or dormant or parameters or files
+    if status == "changed" and not (any(nodes.values()) or includes or dormant or parameters
+                                    or files
                                     or remappings
                                     or executables or any(arguments.values()) or lifecycle
                                     or old.stopped != new.stopped):
@@ -155,7 +161,7 @@ def _parameters(was: Data, now: Data) -> list[Data]:
         before, after = was["parameters"].get(name), now["parameters"].get(name)
         if before is not None and after is not None and _same(before, after):
             continue
-        out.append({"node": now["fqn"], "name": name, "base": before, "head": after})
+        out.append({"node": now["label"], "name": name, "base": before, "head": after})
     return out
 
 
@@ -174,7 +180,7 @@ def _listed(was: Data, now: Data, key: str) -> list[Data]:
     removed = [r for r in was[key] if r not in now[key]]
     if not added and not removed:
         return []
-    return [{"node": now["fqn"], "added": added, "removed": removed, "file": now["file"],
+    return [{"node": now["label"], "added": added, "removed": removed, "file": now["file"],
              "line": now["line"]}]
 
 
@@ -196,6 +202,7 @@ def _summary(launches: list[Data], introduced: list[Data], fixed: list[Data]) ->
         "launches_changed": len(launches),
         "nodes_added": count("nodes", "added"), "nodes_removed": count("nodes", "removed"),
         "nodes_renamed": count("nodes", "renamed"), "conditional_changed": count("conditional"),
+        "includes_changed": count("includes"),
         "parameters_changed": count("parameters"),
         "parameter_files_changed": count("parameter_files"),
         "remappings_changed": count("remappings"),

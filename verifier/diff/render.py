@@ -49,6 +49,15 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
     for node in nodes["renamed"]:
         yield "~", f"node {_v(node['base'])} is now {_v(node['head'])} " \
             f"({_v(node['package'])}/{_v(node['executable'])})", node["file"], node["line"]
+    for change in launch["includes"]:
+        before, after = change["base"], change["head"]
+        if before is None:
+            yield "+", f"includes {_v(change['include'])}" + (
+                f" ({after})" if after != "loaded" else ""), None, None
+        elif after is None:
+            yield "-", f"no longer includes {_v(change['include'])}", None, None
+        else:
+            yield "~", f"include {_v(change['include'])}: {before} -> {after}", None, None
     for change in launch["conditional"]:
         before, after = change["base"], change["head"]
         if before is None:
@@ -210,6 +219,7 @@ def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
             arguments = sum(len(launch["arguments"][k]) for k in ("added", "removed",
                                                                   "changed"))
             other = ", ".join(f"{count} {word}" for word, count in (
+                ("includes", len(launch["includes"])),
                 ("conditional", len(launch["conditional"])),
                 ("parameter files", len(launch["parameter_files"])),
                 ("executables", len(launch["executables"])),

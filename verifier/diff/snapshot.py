@@ -38,6 +38,7 @@ class Launch:
     # nodes that start only for other argument values: "fqn (package/executable)" as
     # written -> the condition they start under
     dormant: dict[str, str] = field(default_factory=dict)
+    includes: dict[str, str] = field(default_factory=dict)  # file or path as written -> status
     # the files of the side it read (launch, parameter, other files its Python opened),
     # by a digest of their content; None when not known
     inputs: dict[str, str] | None = None
@@ -137,6 +138,7 @@ class _Local:
         return Launch(launch.file, nodes=self.value(launch.nodes), inputs=launch.inputs,
                       arguments=self.value(launch.arguments),
                       managers=self.value(launch.managers), dormant=self.value(launch.dormant),
+                      includes=self.value(launch.includes),
                       stopped=launch.stopped)
 
 
@@ -200,6 +202,11 @@ def _launch(graph: LaunchGraph, root: Path) -> Launch:
         while key in launch.nodes:  # two nodes under one name: each kept
             key += "'"
         launch.nodes[key] = data
+    for include in graph.includes:
+        if view.shown(include.origin):
+            target = (relative_file(include.target, root) if include.target is not None
+                      else view.value(include.location) or "(unknown)")
+            launch.includes.setdefault(target, include.status)
     for argument in graph.arguments:
         if view.shown(argument.origin) and argument.name not in launch.arguments:
             launch.arguments[argument.name] = {
@@ -219,6 +226,7 @@ def _node(view: _SideView, node: NodeRecord) -> dict[str, Any]:
                   for name, given in (full["effective_parameters"] or {}).items()}
     return {
         "fqn": full["fqn"], "package": full["package"], "executable": full["executable"],
+        "label": full["fqn"] or f"{full['package']}/{full['executable']} (no name)",
         "kind": full["kind"], "container": full["container"],
         "remappings": [f"{src}:={dst}" for src, dst in full["remappings"]],
         "parameters": parameters,
