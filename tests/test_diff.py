@@ -337,3 +337,59 @@ def test_an_include_added(repo: Repository, capsys: pytest.CaptureFixture[str]) 
     assert bringup["includes"] == [{"include": "demo/launch/sim.launch.py", "base": None,
                                     "head": "loaded"}]
     assert [n["fqn"] for n in bringup["nodes"]["added"]] == ["/sim_talker"]
+
+
+CHAT_NODE = """\
+import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+class Chat(Node):
+    def __init__(self):
+        super().__init__('{name}')
+        self.end = self.{call}
+
+
+def main():
+    rclpy.init()
+    rclpy.spin(Chat())
+"""
+CHAT_LAUNCH = """\
+<launch>
+  <node pkg="chat" exec="talker" name="talker">
+    <remap from="chatter" to="/chat"/>
+  </node>
+  <node pkg="chat" exec="listener" name="listener">
+    <remap from="chatter" to="/chat"/>
+  </node>
+</launch>
+"""
+
+
+def test_a_topic_that_loses_its_last_publisher(
+        repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.write("chat/package.xml", PACKAGE.replace("<name>demo</name>", "<name>chat</name>"))
+    repo.write("chat/resource/chat", "")
+    repo.write("chat/chat/__init__.py", "")
+    repo.write("chat/chat/talker.py", CHAT_NODE.format(
+        name="talker", call="create_publisher(String, 'chatter', 10)"))
+    repo.write("chat/chat/listener.py", CHAT_NODE.format(
+        name="listener", call="create_subscription(String, 'chatter', print, 10)"))
+    repo.write("chat/setup.py", "from setuptools import setup\nsetup(name='chat', "
+               "packages=['chat'], entry_points={'console_scripts': ["
+               "'talker = chat.talker:main', 'listener = chat.listener:main']})\n")
+    repo.write("chat/launch/chat.launch.xml", CHAT_LAUNCH)
+    repo.commit("chat")
+    repo.edit("chat/launch/chat.launch.xml", '<remap from="chatter" to="/chat"/>\n  </node>\n'
+              '  <node pkg="chat" exec="listener"', '</node>\n  <node pkg="chat" '
+              'exec="listener"')
+    graph = launch(diff(capsys), "chat/launch/chat.launch.xml")["graph"]
+    assert [(g["name"], g["change"]) for g in graph] == [
+        ("topic /chat", "end lost"), ("topic /chatter", "added")]
+    lost = graph[0]
+    assert lost["base"] == {"type": "std_msgs/msg/String", "publishers": ["/talker"],
+                            "subscribers": ["/listener"]}
+    assert lost["head"]["publishers"] == []
+    assert main(["diff", "-j", "1"]) == 0
+    assert "topic /chat lost its last publisher ([/talker])" in capsys.readouterr().out

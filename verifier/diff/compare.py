@@ -103,14 +103,16 @@ def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
                  "head": new.includes.get(name)}
                 for name in sorted(set(old.includes) | set(new.includes))
                 if old.includes.get(name) != new.includes.get(name)]
+    graph = _graph(old.endpoints, new.endpoints)
     found: Data = {"status": status, "inputs_changed": inputs, "nodes": nodes,
-                   "includes": includes,
+                   "includes": includes, "graph": graph,
                    "conditional": dormant,
                    "parameters": parameters, "parameter_files": files,
                    "remappings": remappings, "executables": executables,
                    "arguments": arguments, "lifecycle": lifecycle,
                    "stops": {"base": old.stopped, "head": new.stopped}}
-    if status == "changed" and not (any(nodes.values()) or includes or dormant or parameters
+    if status == "changed" and not (any(nodes.values()) or includes or graph or dormant
+                                    or parameters
                                     or files
                                     or remappings
                                     or executables or any(arguments.values()) or lifecycle
@@ -119,6 +121,37 @@ def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
             return None
         found["status"] = "inputs"  # files it reads changed; what it starts did not, as seen
     return found
+
+
+_ENDS = {"topic": ("publishers", "subscribers"), "service": ("servers", "clients"),
+         "action": ("servers", "clients")}
+
+
+def _graph(old: dict[str, Data], new: dict[str, Data]) -> list[Data]:
+    """Return the topics, services and actions that appear, go, lose or find an end.
+
+    An end lost is a name that had nodes on both ends and now has none on one (a topic
+    whose last publisher went), an end found the reverse; a type changed is said too.
+    Which nodes are on an end otherwise is left to the nodes' own changes.
+    """
+    out = []
+    for name in sorted(set(old) | set(new)):
+        was, now = old.get(name), new.get(name)
+        if was is None or now is None:
+            out.append({"name": name, "change": "added" if was is None else "removed",
+                        "base": was, "head": now})
+            continue
+        ends = _ENDS[name.split(" ", 1)[0]]
+        if _connected(was, ends) != _connected(now, ends):
+            out.append({"name": name, "base": was, "head": now,
+                        "change": "end lost" if _connected(was, ends) else "end found"})
+        elif was["type"] != now["type"]:
+            out.append({"name": name, "change": "type", "base": was, "head": now})
+    return out
+
+
+def _connected(entry: Data, ends: tuple[str, str]) -> bool:
+    return all(entry[end] for end in ends)
 
 
 def _inputs(old: dict[str, str] | None, new: dict[str, str] | None) -> list[str] | None:
@@ -202,7 +235,7 @@ def _summary(launches: list[Data], introduced: list[Data], fixed: list[Data]) ->
         "launches_changed": len(launches),
         "nodes_added": count("nodes", "added"), "nodes_removed": count("nodes", "removed"),
         "nodes_renamed": count("nodes", "renamed"), "conditional_changed": count("conditional"),
-        "includes_changed": count("includes"),
+        "includes_changed": count("includes"), "graph_changed": count("graph"),
         "parameters_changed": count("parameters"),
         "parameter_files_changed": count("parameter_files"),
         "remappings_changed": count("remappings"),

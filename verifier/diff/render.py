@@ -58,6 +58,27 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
             yield "-", f"no longer includes {_v(change['include'])}", None, None
         else:
             yield "~", f"include {_v(change['include'])}: {before} -> {after}", None, None
+    for change in launch["graph"]:
+        kind, name = change["name"].split(" ", 1)
+        before, after = change["base"], change["head"]
+        first, second = ("publishers", "subscribers") if kind == "topic" else \
+            ("servers", "clients")
+        if change["change"] == "added":
+            yield "+", f"{kind} {_v(name)} ({_v(after['type'])}){_ends(after, first, second)}", \
+                None, None
+        elif change["change"] == "removed":
+            yield "-", f"{kind} {_v(name)}{_ends(before, first, second)}", None, None
+        elif change["change"] == "type":
+            yield "~", f"{kind} {_v(name)}: type {_v(before['type'])} -> " \
+                f"{_v(after['type'])}", None, None
+        else:
+            lost = first if not after[first] and before[first] else second
+            if change["change"] == "end lost":
+                yield "!", f"{kind} {_v(name)} lost its last {lost[:-1]} " \
+                    f"({_list(before[lost])}){_ends(after, first, second)}", None, None
+            else:
+                yield "+", f"{kind} {_v(name)} is now connected{_ends(after, first, second)}", \
+                    None, None
     for change in launch["conditional"]:
         before, after = change["base"], change["head"]
         if before is None:
@@ -101,6 +122,11 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
         yield "!" if stops["head"] else "~", \
             "the launch now stops at an error" if stops["head"] else \
             "the launch no longer stops at an error", None, None
+
+
+def _ends(ends: Data, first: str, second: str) -> str:
+    """Return who is on each end of a name, briefly."""
+    return f": {first} {_list(ends[first])}, {second} {_list(ends[second])}"
 
 
 def _v(value: object) -> str:
@@ -220,6 +246,7 @@ def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
                                                                   "changed"))
             other = ", ".join(f"{count} {word}" for word, count in (
                 ("includes", len(launch["includes"])),
+                ("graph", len(launch["graph"])),
                 ("conditional", len(launch["conditional"])),
                 ("parameter files", len(launch["parameter_files"])),
                 ("executables", len(launch["executables"])),

@@ -16,13 +16,14 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.config import Config, confined, find_config, load_config
-from launchverify.engine import CheckOptions, UsageError, run_check
+from launchverify.engine import CheckOptions, UsageError, build_index, run_check
 from launchverify.findings.fingerprint import fingerprints
 from launchverify.findings.incremental import RootResult
 from launchverify.graph import LaunchGraph, NodeRecord, Origin
 from launchverify.parameters import Contribution
 from launchverify.problems import ProblemKind
 from launchverify.render.graph_out import GraphView
+from launchverify.topology.compose import WorkspaceInterfaces
 from launchverify.workspace.paths import relative_file
 from launchverify.workspace.reading import read_file
 
@@ -39,6 +40,8 @@ class Launch:
     # written -> the condition they start under
     dormant: dict[str, str] = field(default_factory=dict)
     includes: dict[str, str] = field(default_factory=dict)  # file or path as written -> status
+    # topics, services and actions by name: their type and the nodes on each end
+    endpoints: dict[str, dict[str, Any]] = field(default_factory=dict)
     # the files of the side it read (launch, parameter, other files its Python opened),
     # by a digest of their content; None when not known
     inputs: dict[str, str] | None = None
@@ -96,8 +99,10 @@ def take(root: Path, request: Request) -> Snapshot:
     local = _Local(root)
     read = report.kept.roots if report.kept is not None else {}
     digests: dict[str, str] = {}
+    _, index = build_index(paths, root, config.package_paths)
+    interfaces = WorkspaceInterfaces(index)
     for graph in report.graphs:
-        launch = local.launch(_launch(graph, root))
+        launch = local.launch(_launch(graph, root, interfaces))
         found = read.get(graph.root)
         if isinstance(found, RootResult) and found.reads is not None:
             launch.inputs = {relative_file(Path(path), root): _digest(path, digests)
@@ -139,6 +144,7 @@ class _Local:
                       arguments=self.value(launch.arguments),
                       managers=self.value(launch.managers), dormant=self.value(launch.dormant),
                       includes=self.value(launch.includes),
+                      endpoints=self.value(launch.endpoints),
                       stopped=launch.stopped)
 
 
@@ -166,8 +172,9 @@ def _config(root: Path, paths: list[Path], request: Request) -> Config:
 class _SideView(GraphView):
     """The graph's concrete view, with places relative to the side's root."""
 
-    def __init__(self, graph: LaunchGraph, root: Path) -> None:
-        super().__init__(graph, symbolic=False)
+    def __init__(self, graph: LaunchGraph, root: Path,
+                 interfaces: WorkspaceInterfaces | None = None) -> None:
+        super().__init__(graph, symbolic=False, interfaces=interfaces)
         self.root = root
 
     def where(self, origin: Origin) -> dict[str, Any]:
@@ -181,9 +188,9 @@ class _SideView(GraphView):
         return found
 
 
-def _launch(graph: LaunchGraph, root: Path) -> Launch:
+def _launch(graph: LaunchGraph, root: Path, interfaces: WorkspaceInterfaces) -> Launch:
     """Return what a root's graph starts, under the arguments given (else defaults)."""
-    view = _SideView(graph, root)
+    view = _SideView(graph, root, interfaces)
     launch = Launch(relative_file(graph.root, root))
     launch.stopped = any(record.problem.kind in (ProblemKind.PARSE, ProblemKind.EVALUATION)
                          for record in graph.problems)
@@ -211,10 +218,30 @@ def _launch(graph: LaunchGraph, root: Path) -> Launch:
         if view.shown(argument.origin) and argument.name not in launch.arguments:
             launch.arguments[argument.name] = {
                 "default": view.value(argument.default), **view.where(argument.origin)}
+    launch.endpoints = _endpoints(view)
     lifecycle = view.lifecycle()
     for manager in (lifecycle or {}).get("managers", []):
         launch.managers[manager["fqn"]] = list(manager["node_names"])
     return launch
+
+
+def _endpoints(view: _SideView) -> dict[str, dict[str, Any]]:
+    """Return each topic, service and action the started nodes use, with who uses it."""
+    if view.interfaces is None:
+        return {}
+    from launchverify.render.graph_topics import composed_nodes, sections
+
+    composed = composed_nodes(view, view.interfaces)
+    found = sections(view, composed)
+    out: dict[str, dict[str, Any]] = {}
+    for kind, ends in (("topics", ("publishers", "subscribers")),
+                       ("services", ("servers", "clients")),
+                       ("actions", ("servers", "clients"))):
+        for entry in found.get(kind, []):
+            out[f"{kind[:-1]} {entry['name']}"] = {
+                "type": entry["type"],
+                **{end: sorted({str(e["node"]) for e in entry[end]}) for end in ends}}
+    return out
 
 
 def _node(view: _SideView, node: NodeRecord) -> dict[str, Any]:
