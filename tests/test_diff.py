@@ -393,3 +393,28 @@ def test_a_topic_that_loses_its_last_publisher(
     assert lost["head"]["publishers"] == []
     assert main(["diff", "-j", "1"]) == 0
     assert "topic /chat lost its last publisher ([/talker])" in capsys.readouterr().out
+
+
+def test_a_head_revision_checked_out_cleanly_is_read_in_place(
+        repo: Repository, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    from launchverify.diff import sides
+
+    base = repo.git("rev-parse", "HEAD").strip()
+    repo.edit("demo/config/params.yaml", "rate: 10", "rate: 12")
+    head = repo.commit("change")
+    exports: list[str] = []
+    export = sides.exported
+
+    def counted(repository: Path, commit: str, label: str, limit: int):  # type: ignore[no-untyped-def]
+        exports.append(label)
+        return export(repository, commit, label, limit)
+
+    monkeypatch.setattr(sides, "exported", counted)
+    found = diff(capsys, base, head)
+    assert exports == [base] and found["head"] == {"label": head, "commit": head}
+    assert found["summary"]["parameters_changed"] == 1
+    repo.write("demo/launch/new.launch.xml", "<launch/>\n")  # not the commit any longer
+    exports.clear()
+    diff(capsys, base, head)
+    assert exports == [base, head]

@@ -166,6 +166,7 @@ def _revisions(tokens: list[str]) -> Iterator[tuple[Pairs, dict[str, str]]]:
     """Yield the two sides of a diff between revisions (the working tree by default)."""
     from launchverify.diff.sides import (
         Side,
+        checked_out,
         commit_of,
         default_base,
         exported,
@@ -189,7 +190,11 @@ def _revisions(tokens: list[str]) -> Iterator[tuple[Pairs, dict[str, str]]]:
         if len(revisions) == 2:
             head_commit: str | None = commit_of(repository, revisions[1])
             assert head_commit is not None
-            head = stack.enter_context(exported(repository, head_commit, revisions[1], limit))
+            if checked_out(repository, head_commit):  # the working tree is that commit
+                head = Side(revisions[1], repository, head_commit)
+            else:
+                head = stack.enter_context(exported(repository, head_commit, revisions[1],
+                                                    limit))
         else:
             head_commit = None
             head = Side("working tree", repository)

@@ -63,6 +63,15 @@ def commit_of(repository: Path, revision: str) -> str:
     return git(repository, "rev-parse", "--verify", "--quiet", f"{revision}^{{commit}}").strip()
 
 
+def checked_out(repository: Path, commit: str) -> bool:
+    """Return whether the working tree holds exactly ``commit`` (no change, no new file)."""
+    try:
+        return (commit_of(repository, "HEAD") == commit
+                and not git(repository, "status", "--porcelain", "-z").strip("\0"))
+    except UsageError:
+        return False
+
+
 def default_base(repository: Path) -> str:
     """Return the merge base of HEAD with the default branch (what a pull request targets).
 
@@ -83,9 +92,15 @@ def default_base(repository: Path) -> str:
 
 
 def renamed(repository: Path, base: str, head: str | None) -> dict[str, str]:
-    """Return the files git sees renamed from ``base`` to ``head`` (None: the working tree)."""
-    output = git(repository, "diff", "--no-ext-diff", "-M", "--name-status", "-z", base,
-                 *([head] if head else []))
+    """Return the files git sees renamed from ``base`` to ``head`` (None: the working tree).
+
+    Empty when git cannot tell (a clone without some objects): files then pair by path.
+    """
+    try:
+        output = git(repository, "diff", "--no-ext-diff", "-M", "--name-status", "-z", base,
+                     *([head] if head else []))
+    except UsageError:
+        return {}
     fields = output.split("\0")
     moved: dict[str, str] = {}
     index = 0

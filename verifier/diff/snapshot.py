@@ -177,14 +177,22 @@ class _SideView(GraphView):
         super().__init__(graph, symbolic=False, interfaces=interfaces)
         self.root = root
 
+        self._relative: dict[Path, str] = {}
+
+    def relative(self, path: Path) -> str:
+        """Return a file's path relative to the side's root (each file worked out once)."""
+        known = self._relative.get(path)
+        if known is None:
+            known = self._relative[path] = relative_file(path, self.root)
+        return known
+
     def where(self, origin: Origin) -> dict[str, Any]:
         return {"condition": origin.condition_text(),
-                "file": relative_file(origin.span.file, self.root), "line": origin.span.line}
+                "file": self.relative(origin.span.file), "line": origin.span.line}
 
     def contribution(self, contribution: Contribution) -> dict[str, Any]:
         found = super().contribution(contribution)
-        found["from"] = (f"{relative_file(contribution.span.file, self.root)}:"
-                         f"{contribution.span.line}")
+        found["from"] = f"{self.relative(contribution.span.file)}:{contribution.span.line}"
         return found
 
 
@@ -229,9 +237,10 @@ def _endpoints(view: _SideView) -> dict[str, dict[str, Any]]:
     """Return each topic, service and action the started nodes use, with who uses it."""
     if view.interfaces is None:
         return {}
-    from launchverify.render.graph_topics import composed_nodes, sections
+    from launchverify.render.graph_topics import sections
+    from launchverify.topology.wiring import view_of
 
-    composed = composed_nodes(view, view.interfaces)
+    composed = view_of(view.graph, view.interfaces).nodes  # (the rules' own, when kept)
     found = sections(view, composed)
     out: dict[str, dict[str, Any]] = {}
     for kind, ends in (("topics", ("publishers", "subscribers")),
