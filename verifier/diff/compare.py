@@ -95,9 +95,19 @@ def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
                   "head": new.managers.get(name)}
                  for name in sorted(set(old.managers) | set(new.managers))
                  if old.managers.get(name) != new.managers.get(name)]
-    dormant = [{"node": key, "base": old.dormant.get(key), "head": new.dormant.get(key)}
-               for key in sorted(set(old.dormant) | set(new.dormant))
-               if old.dormant.get(key) != new.dormant.get(key)]
+    dormant: list[Data] = [
+        {"node": key, "base": old.dormant.get(key), "head": new.dormant.get(key)}
+        for key in sorted(set(old.dormant) | set(new.dormant))
+        if old.dormant.get(key) != new.dormant.get(key)]
+    for key in sorted(set(old.dormant_wiring) & set(new.dormant_wiring)):
+        was, now = old.dormant_wiring[key], new.dormant_wiring[key]
+        node, _, condition = key.partition(" when ")
+        for part in ("parameters", "remappings"):
+            added = [item for item in now[part] if item not in was[part]]
+            removed = [item for item in was[part] if item not in now[part]]
+            if added or removed:
+                dormant.append({"node": node, "when": condition, part: {
+                    "added": added, "removed": removed}})
     inputs = _inputs(old.inputs, new.inputs) if before and after else []
     includes = [{"include": name, "base": old.includes.get(name),
                  "head": new.includes.get(name)}

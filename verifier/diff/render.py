@@ -80,6 +80,13 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
                 yield "+", f"{kind} {_v(name)} is now connected{_ends(after, first, second)}", \
                     None, None
     for change in launch["conditional"]:
+        if "when" in change:  # a node that starts for other values, wired otherwise now
+            part = "parameters" if "parameters" in change else "remappings"
+            items = [f"+ {_v(i)}" for i in change[part]["added"]] + \
+                [f"- {_v(i)}" for i in change[part]["removed"]]
+            yield "~", f"node {_v(change['node'])} when {_v(change['when'])}: {part} " \
+                f"{', '.join(items)}", None, None
+            continue
         before, after = change["base"], change["head"]
         if before is None:
             yield "+", f"node {_v(change['node'])} starts when {_v(after)}", None, None

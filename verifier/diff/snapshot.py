@@ -10,6 +10,7 @@ relative to the side's root, so that the two sides compare by name.
 from __future__ import annotations
 
 import hashlib
+import json
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -39,6 +40,9 @@ class Launch:
     # nodes that start only for other argument values: "fqn (package/executable)" as
     # written -> the condition they start under
     dormant: dict[str, str] = field(default_factory=dict)
+    # each such node under its condition ("<node> when <condition>"): its parameter sources
+    # and remappings as written (values as expressions of the arguments)
+    dormant_wiring: dict[str, dict[str, list[str]]] = field(default_factory=dict)
     includes: dict[str, str] = field(default_factory=dict)  # file or path as written -> status
     # topics, services and actions by name: their type and the nodes on each end
     endpoints: dict[str, dict[str, Any]] = field(default_factory=dict)
@@ -143,6 +147,7 @@ class _Local:
         return Launch(launch.file, nodes=self.value(launch.nodes), inputs=launch.inputs,
                       arguments=self.value(launch.arguments),
                       managers=self.value(launch.managers), dormant=self.value(launch.dormant),
+                      dormant_wiring=self.value(launch.dormant_wiring),
                       includes=self.value(launch.includes),
                       endpoints=self.value(launch.endpoints),
                       stopped=launch.stopped)
@@ -211,6 +216,8 @@ def _launch(graph: LaunchGraph, root: Path, interfaces: WorkspaceInterfaces) -> 
             known = launch.dormant.get(key)
             launch.dormant[key] = condition if known in (None, condition) \
                 else f"{known}, or {condition}"
+            launch.dormant_wiring.setdefault(f"{key} when {condition}",
+                                             _written(symbolic, node))
             continue
         data = _node(view, node)
         key = data["fqn"] or f"{data['package']}/{data['executable']} (no name)"
@@ -251,6 +258,17 @@ def _endpoints(view: _SideView) -> dict[str, dict[str, Any]]:
                 "type": entry["type"],
                 **{end: sorted({str(e["node"]) for e in entry[end]}) for end in ends}}
     return out
+
+
+def _written(view: GraphView, node: NodeRecord) -> dict[str, list[str]]:
+    """Return a node's parameter sources and remappings as written (a symbolic view's)."""
+    sources = []
+    for given in (view.parameter(p) for p in node.parameters):
+        sources.append(f"file {given['file']}" if "file" in given
+                       else f"{given['name']} := {json.dumps(given['value'], default=str)}")
+    return {"parameters": sources,
+            "remappings": [f"{view.value(r.src)}:={view.value(r.dst)}"
+                           for r in node.remappings]}
 
 
 def _node(view: _SideView, node: NodeRecord) -> dict[str, Any]:
