@@ -431,3 +431,33 @@ def test_a_node_for_other_argument_values_wired_otherwise(
         "node": "/talker (demo_nodes_cpp/talker)", "when": "$(var use_sim)",
         "parameters": {"added": ["rate := 5"],
                        "removed": ["file demo/config/params.yaml"]}}]
+
+
+REWRITTEN = """\
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+from launch_ros.descriptions import ParameterFile
+from nav2_common.launch import RewrittenYaml
+
+
+def generate_launch_description():
+    params = os.path.join(os.path.dirname(__file__), '..', 'config', 'params.yaml')
+    rewritten = ParameterFile(RewrittenYaml(source_file=params, root_key='robot1',
+                                            param_rewrites={}, convert_types=True),
+                              allow_substs=True)
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='talker',
+             namespace='robot1', parameters=[rewritten])])
+"""
+
+
+def test_a_parameter_file_rewritten_before_it_is_read_counts_as_read(
+        repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.write("demo/launch/robots.launch.py", REWRITTEN)
+    repo.commit("robots")
+    repo.edit("demo/config/params.yaml", "rate: 10", "rate: 15")
+    found = diff(capsys)
+    rewritten = [item for item in found["launches"] + found["inputs_only"]
+                 if item["file"] == "demo/launch/robots.launch.py"]
+    assert rewritten and rewritten[0]["inputs_changed"] == ["demo/config/params.yaml"]

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import hashlib
 import json
+import re
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -111,6 +112,8 @@ def take(root: Path, request: Request) -> Snapshot:
         if isinstance(found, RootResult) and found.reads is not None:
             launch.inputs = {relative_file(Path(path), root): _digest(path, digests)
                              for path in found.reads if Path(path).is_relative_to(root)}
+            for name in _named_files(launch, root):  # (a file rewritten before it is read)
+                launch.inputs.setdefault(name, _digest(str(root / name), digests))
         snapshot.launches[launch.file] = launch
     for finding, print_ in zip(report.findings, fingerprints(report.findings, root),
                                strict=True):
@@ -151,6 +154,28 @@ class _Local:
                       includes=self.value(launch.includes),
                       endpoints=self.value(launch.endpoints),
                       stopped=launch.stopped)
+
+
+_FILE_NAME = re.compile(r"[\w.\-/]+\.(?:ya?ml|json)\b")
+
+
+def _named_files(launch: Launch, root: Path) -> set[str]:
+    """Return the side's files its nodes' parameter sources name, as written or rewritten.
+
+    ``RewrittenYaml(params.yaml)`` reads the file at run time: its values are not
+    followed, but the launch rests on the file all the same.
+    """
+    written = [source for node in launch.nodes.values() for source in node["parameter_files"]]
+    written += [source for wiring in launch.dormant_wiring.values()
+                for source in wiring["parameters"] if source.startswith("file ")]
+    found = set()
+    for text in written:
+        for name in _FILE_NAME.findall(str(text)):
+            path = root / name
+            if not name.startswith("/") and path.is_file() and path.resolve().is_relative_to(
+                    root.resolve()):
+                found.add(relative_file(path, root))
+    return found
 
 
 def _digest(path: str, known: dict[str, str]) -> str:
