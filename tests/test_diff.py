@@ -422,9 +422,9 @@ def test_a_head_revision_checked_out_cleanly_is_read_in_place(
 
 def test_a_node_for_other_argument_values_wired_otherwise(
         repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
-    """The talker under use_sim:=true loses a remapping: said with its condition."""
-    repo.edit("demo/launch/bringup.launch.xml",
-              'if="$(var use_sim)">\n    <param from="$(find-pkg-share demo)/config/params.yaml"/>',
+    """The talker under use_sim:=true gets another parameter: said with its condition."""
+    repo.edit("demo/launch/bringup.launch.xml", 'if="$(var use_sim)">\n    <param '
+              'from="$(find-pkg-share demo)/config/params.yaml"/>',
               'if="$(var use_sim)">\n    <param name="rate" value="5"/>')
     conditional = launch(diff(capsys), "demo/launch/bringup.launch.xml")["conditional"]
     assert conditional == [{
