@@ -96,7 +96,8 @@ def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
                  for name in sorted(set(old.managers) | set(new.managers))
                  if old.managers.get(name) != new.managers.get(name)]
     dormant: list[Data] = [
-        {"node": key, "base": old.dormant.get(key), "head": new.dormant.get(key)}
+        {"node": key, "base": old.dormant.get(key), "head": new.dormant.get(key),
+         "witness": new.witnesses.get(key) or old.witnesses.get(key)}
         for key in sorted(set(old.dormant) | set(new.dormant))
         if old.dormant.get(key) != new.dormant.get(key)]
     for key in sorted(set(old.dormant_wiring) & set(new.dormant_wiring)):

@@ -88,14 +88,16 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
                 f"{', '.join(items)}", None, None
             continue
         before, after = change["base"], change["head"]
+        example = f" (as with {_v(change['witness'])})" if change.get("witness") else ""
         if before is None:
-            yield "+", f"node {_v(change['node'])} starts when {_v(after)}", None, None
-        elif after is None:
-            yield "-", f"node {_v(change['node'])} no longer starts when {_v(before)}", \
+            yield "+", f"node {_v(change['node'])} starts when {_v(after)}{example}", \
                 None, None
+        elif after is None:
+            yield "-", f"node {_v(change['node'])} no longer starts when {_v(before)}" \
+                f"{example}", None, None
         else:
             yield "~", f"node {_v(change['node'])} starts when {_v(after)} (was when " \
-                f"{_v(before)})", None, None
+                f"{_v(before)}){example}", None, None
     for change in launch["executables"]:
         yield "~", f"node {_v(change['node'])} runs {_v(change['head'])} (was " \
             f"{_v(change['base'])})", change["file"], change["line"]

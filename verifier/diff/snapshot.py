@@ -25,6 +25,7 @@ from launchverify.graph import LaunchGraph, NodeRecord, Origin
 from launchverify.parameters import Contribution
 from launchverify.problems import ProblemKind
 from launchverify.render.graph_out import GraphView
+from launchverify.smt import reasoner_for
 from launchverify.topology.compose import WorkspaceInterfaces
 from launchverify.workspace.paths import relative_file
 from launchverify.workspace.reading import read_file
@@ -44,6 +45,8 @@ class Launch:
     # each such node under its condition ("<node> when <condition>"): its parameter sources
     # and remappings as written (values as expressions of the arguments)
     dormant_wiring: dict[str, dict[str, list[str]]] = field(default_factory=dict)
+    # for each such node, argument values under which it starts (``use_sim:=true``)
+    witnesses: dict[str, str] = field(default_factory=dict)
     includes: dict[str, str] = field(default_factory=dict)  # file or path as written -> status
     # topics, services and actions by name: their type and the nodes on each end
     endpoints: dict[str, dict[str, Any]] = field(default_factory=dict)
@@ -151,6 +154,7 @@ class _Local:
                       arguments=self.value(launch.arguments),
                       managers=self.value(launch.managers), dormant=self.value(launch.dormant),
                       dormant_wiring=self.value(launch.dormant_wiring),
+                      witnesses=self.value(launch.witnesses),
                       includes=self.value(launch.includes),
                       endpoints=self.value(launch.endpoints),
                       stopped=launch.stopped)
@@ -243,6 +247,10 @@ def _launch(graph: LaunchGraph, root: Path, interfaces: WorkspaceInterfaces) -> 
                 else f"{known}, or {condition}"
             launch.dormant_wiring.setdefault(f"{key} when {condition}",
                                              _written(symbolic, node))
+            if key not in launch.witnesses:
+                witness = reasoner_for(graph).together(node.origin.path)
+                if witness is not None and witness.values:
+                    launch.witnesses[key] = witness.describe()
             continue
         data = _node(view, node)
         key = data["fqn"] or f"{data['package']}/{data['executable']} (no name)"
