@@ -462,3 +462,19 @@ def test_a_parameter_file_rewritten_before_it_is_read_counts_as_read(
     rewritten = [item for item in found["launches"] + found["inputs_only"]
                  if item["file"] == "demo/launch/robots.launch.py"]
     assert rewritten and rewritten[0]["inputs_changed"] == ["demo/config/params.yaml"]
+
+
+def test_witness_assignments_compared_on_request(
+        repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/launch/sim.launch.py", "# SIMULATED", SIMULATED)
+    repo.edit("demo/config/params.yaml", "rate: 10", "rate: 12")
+    found = diff(capsys, "--witnesses", "2")
+    assignments = found["assignments"]
+    assert [a["arguments"] for a in assignments] == [{"use_sim": "true"}]
+    changed = {(launch["file"], change["change"]) for launch in assignments[0]["launches"]
+               for change in launch["changes"]}
+    assert ("demo/launch/sim.launch.py",
+            "node /sim_listener (demo_nodes_cpp/listener)") in changed
+    # the talker that runs under use_sim:=true reads the same file: its change shows there
+    assert ("demo/launch/bringup.launch.xml", "/talker: rate 10 -> 12") not in changed
+    assert diff(capsys)["assignments"] == []

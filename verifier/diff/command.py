@@ -57,6 +57,9 @@ def add_parser(commands: Any) -> None:
     command.add_argument("--max-items", type=int, default=50, metavar="N",
                          help="markdown: show at most N launch files and N changes of each "
                          "(default: 50), then say how many more")
+    command.add_argument("--witnesses", type=int, default=0, metavar="N",
+                         help="also compare both sides under up to N argument assignments "
+                         "that start nodes on one side only (two checks each)")
     command.add_argument("--select", action="append", metavar="CODES",
                          help="comma-separated codes, slugs or prefixes to run")
     command.add_argument("--ignore", action="append", metavar="CODES",
@@ -94,9 +97,18 @@ def run(args: argparse.Namespace) -> int:
         before = take(base.root, dataclasses.replace(request, paths=base_paths))
         after = take(head.root, dataclasses.replace(request, paths=head_paths))
         diff = compare(before, after, renamed)
+        assignments = []
+        for witness in _witnesses(diff, arguments)[:max(0, args.witnesses)]:
+            given = dataclasses.replace(request, arguments={**arguments, **witness})
+            under = compare(take(base.root, dataclasses.replace(given, paths=base_paths)),
+                            take(head.root, dataclasses.replace(given, paths=head_paths)),
+                            renamed)
+            assignments.append({"arguments": witness,
+                                "launches": _new_changes(under["launches"],
+                                                         diff["launches"])})
     diff = {"base": {"label": base.label, "commit": base.commit},
             "head": {"label": head.label, "commit": head.commit},
-            "arguments": arguments, **diff,
+            "arguments": arguments, **diff, "assignments": assignments,
             "seconds": {"base": round(before.seconds, 3), "head": round(after.seconds, 3),
                         "total": round(time.perf_counter() - started, 3)}}
     _write(diff, args)
@@ -106,6 +118,38 @@ def run(args: argparse.Namespace) -> int:
     if summary["errors_introduced"] or (args.fail_on_change and changed):
         return EXIT_CHANGED
     return EXIT_OK
+
+
+def _witnesses(diff: dict[str, Any], given: dict[str, str]) -> list[dict[str, str]]:
+    """Return the distinct argument values under which some node starts on one side only."""
+    found: list[dict[str, str]] = []
+    for launch in diff["launches"]:
+        for change in launch["conditional"]:
+            text = change.get("witness")
+            if not text:
+                continue
+            values = dict(part.split(":=", 1) for part in text.split() if ":=" in part)
+            values = {k: v for k, v in values.items() if given.get(k) != v}
+            if values and values not in found:
+                found.append(values)
+    return found
+
+
+def _new_changes(under: list[dict[str, Any]], default: list[dict[str, Any]]
+                 ) -> list[dict[str, Any]]:
+    """Return the launches' changes under other arguments that the defaults' do not show."""
+    from launchverify.diff.render import changes
+
+    shown = {(launch["file"], sentence) for launch in default
+             for _, sentence, _, _ in changes(launch)}
+    out = []
+    for launch in under:
+        new = [{"mark": mark, "change": sentence, "file": file, "line": line}
+               for mark, sentence, file, line in changes(launch)
+               if (launch["file"], sentence) not in shown]
+        if new:
+            out.append({"file": launch["file"], "changes": new})
+    return out
 
 
 def _write(diff: dict[str, Any], args: argparse.Namespace) -> None:

@@ -191,6 +191,18 @@ def render_text(diff: Data, out: TextIO, *, colour: bool = False) -> None:
                        f"{finding['line']} {finding['message']}"
                 out.write("  " + paint("!" if mark == "+" and finding["severity"] == "error"
                                        else mark, inert(text)) + "\n")
+    for assignment in diff.get("assignments", []):
+        out.write("\n" + inert(f"under {_given_values(assignment)}, besides:") + "\n")
+        if not assignment["launches"]:
+            out.write("  nothing more\n")
+        for launch in assignment["launches"]:
+            out.write("  " + inert(launch["file"]) + "\n")
+            for change in launch["changes"]:
+                place = f"  {change['file']}:{change['line']}" if change["file"] and \
+                    change["line"] else ""
+                out.write("    " + paint(change["mark"], inert(f"{change['mark']} "
+                                                           f"{change['change']}"))
+                          + inert(place) + "\n")
     summary = diff["summary"]
     out.write(f"\n{summary['launches_changed']} launch file(s) changed, "
               f"{diff['unchanged']} unchanged ({diff['seconds']['total']:.1f} s)\n")
@@ -300,6 +312,23 @@ def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
         if len(found) > max_items:
             out.write(f"- …and {len(found) - max_items} more\n")
         out.write("\n</details>\n")
+    for assignment in diff.get("assignments", []):
+        more = [(launch["file"], change) for launch in assignment["launches"]
+                for change in launch["changes"]]
+        out.write(f"\n<details><summary>under <code>"
+                  f"{html.escape(inert(_v(_given_values(assignment))))}</code>: "
+                  f"{len(more)} more change{'s' if len(more) != 1 else ''}</summary>\n\n")
+        for file, change in more[:max_items]:
+            place = f" at {code(change['file'] + ':' + str(change['line']))}" \
+                if change["file"] and change["line"] else f" in {code(file)}"
+            out.write(f"- {_MARKS[change['mark']]} {code(change['change'])}{place}\n")
+        if len(more) > max_items:
+            out.write(f"- …and {len(more) - max_items} more\n")
+        out.write("\n</details>\n")
+
+
+def _given_values(assignment: Data) -> str:
+    return " ".join(f"{k}:={v}" for k, v in sorted(assignment["arguments"].items()))
 
 
 # ------------------------------------------------------------------ GitHub annotations
