@@ -3,9 +3,12 @@
 Launch files pair by path (following the renames git saw). Within a pair, nodes pair by
 fully qualified name; a node gone and a node new with the same package and executable
 are one node renamed (or moved to another namespace). Paired nodes compare the value
-each parameter ends up with (and where it is given), their remappings, what they run.
-Arguments compare by name, lifecycle managers by the nodes they bring up, findings by
-fingerprint. The result is plain data, documented in docs/output.md.
+each parameter ends up with (and where it is given), their parameter files, remappings
+and what they run. Includes compare by target, the computation graph by name (what
+appears, goes, or loses an end), nodes that start only for other argument values by
+their condition and wiring as written, arguments by name, lifecycle managers by the
+nodes they bring up, findings by fingerprint. The result is plain data, documented in
+docs/output.md.
 """
 
 from __future__ import annotations
