@@ -478,3 +478,15 @@ def test_witness_assignments_compared_on_request(
     # the talker that runs under use_sim:=true reads the same file: its change shows there
     assert ("demo/launch/bringup.launch.xml", "/talker: rate 10 -> 12") not in changed
     assert diff(capsys)["assignments"] == []
+
+
+def test_github_annotations_on_the_head_sides_lines(
+        repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    repo.edit("demo/config/params.yaml", "rate: 10", "rate: 20")
+    repo.edit("demo/launch/bringup.launch.xml", 'name="listener"', 'name="talker"')
+    assert main(["diff", "--format", "github", "-j", "1"]) == 1  # a new error
+    lines = capsys.readouterr().out.splitlines()
+    assert ("::notice file=demo/config/params.yaml,line=3,title=launchverify diff::"
+            "/talker: rate 10 -> 20") in lines
+    assert any(line.startswith("::error file=demo/launch/bringup.launch.xml,line=")
+               and "title=LV101::new: " in line for line in lines)
