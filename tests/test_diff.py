@@ -490,3 +490,33 @@ def test_github_annotations_on_the_head_sides_lines(
             "/talker: rate 10 -> 20") in lines
     assert any(line.startswith("::error file=demo/launch/bringup.launch.xml,line=")
                and "title=LV101::new: " in line for line in lines)
+
+
+def test_the_markdown_fits_in_a_comment(monkeypatch: pytest.MonkeyPatch) -> None:
+    import io as text_io
+
+    from launchverify.diff import render
+
+    change = {"node": "/n", "name": "p", "base": {"value": 1, "from": "a.yaml:1"},
+              "head": {"value": 2, "from": "a.yaml:1"}}
+    empty = {"added": [], "removed": [], "renamed": []}
+    launches = [{"file": f"l{n}.launch.xml", "base_file": f"l{n}.launch.xml",
+                 "status": "changed", "inputs_changed": [], "nodes": empty,
+                 "includes": [], "graph": [], "conditional": [],
+                 "parameters": [dict(change, name=f"p{i}") for i in range(200)],
+                 "parameter_files": [], "remappings": [], "executables": [],
+                 "arguments": {"added": [], "removed": [], "changed": []}, "lifecycle": [],
+                 "stops": {"base": False, "head": False}} for n in range(200)]
+    diff = {"base": {"label": "a", "commit": None}, "head": {"label": "b", "commit": None},
+            "launches": launches, "unchanged": 0, "inputs_only": [], "assignments": [],
+            "findings": {"introduced": [], "fixed": []},
+            "summary": {"launches_changed": 200}}
+    out = text_io.StringIO()
+    render.render_markdown(diff, out)
+    assert len(out.getvalue()) <= render.MAX_COMMENT
+    assert "more" in out.getvalue()
+    monkeypatch.setattr(render, "MAX_COMMENT", 500)  # even one item each is too much
+    out = text_io.StringIO()
+    render.render_markdown(diff, out)
+    assert len(out.getvalue()) <= 500 and out.getvalue().endswith(
+        "the whole diff is in `--format json`.\n")

@@ -10,6 +10,7 @@ GitHub format they are escaped as the runner unescapes them.
 from __future__ import annotations
 
 import html
+import io
 import json
 import re
 from collections.abc import Iterator
@@ -242,8 +243,29 @@ def code(text: object, *, table: bool = False) -> str:
     return f"{fence}{pad}{shown}{pad}{fence}"
 
 
+MAX_COMMENT = 60_000  # characters: GitHub refuses a comment over 65,536
+
+
 def render_markdown(diff: Data, out: TextIO, *, max_items: int = 50) -> None:
-    """Write the diff for a pull-request comment: a summary table, details folded."""
+    """Write the diff for a pull-request comment: a summary table, details folded.
+
+    Sized for a comment: with fewer items shown (each list says how many more) until it
+    fits in ``MAX_COMMENT`` characters, and cut at a line as a last resort.
+    """
+    while True:
+        written = io.StringIO()
+        _markdown(diff, written, max_items)
+        text = written.getvalue()
+        if len(text) <= MAX_COMMENT or max_items == 1:
+            break
+        max_items = max(1, max_items // 2)
+    if len(text) > MAX_COMMENT:
+        text = text[:text.rfind("\n", 0, MAX_COMMENT - 200) + 1] + \
+            "\n…cut here: the whole diff is in `--format json`.\n"
+    out.write(text)
+
+
+def _markdown(diff: Data, out: TextIO, max_items: int) -> None:
     summary = diff["summary"]
     out.write(f"### launchverify diff: {code(_side(diff['base']))} → "
               f"{code(_side(diff['head']))}\n\n")
