@@ -515,8 +515,8 @@ def test_the_markdown_fits_in_a_comment(monkeypatch: pytest.MonkeyPatch) -> None
     render.render_markdown(diff, out)
     assert len(out.getvalue()) <= render.MAX_COMMENT
     assert "more" in out.getvalue()
-    monkeypatch.setattr(render, "MAX_COMMENT", 500)  # even one item each is too much
+    monkeypatch.setattr(render, "MAX_COMMENT", 300)  # even one item each is too much
     out = text_io.StringIO()
     render.render_markdown(diff, out)
-    assert len(out.getvalue()) <= 500 and out.getvalue().endswith(
+    assert len(out.getvalue()) <= 300 and out.getvalue().endswith(
         "the whole diff is in `--format json`.\n")
