@@ -520,3 +520,20 @@ def test_the_markdown_fits_in_a_comment(monkeypatch: pytest.MonkeyPatch) -> None
     render.render_markdown(diff, out)
     assert len(out.getvalue()) <= 300 and out.getvalue().endswith(
         "the whole diff is in `--format json`.\n")
+
+
+def test_files_the_working_tree_holds_alike_are_linked_not_written(
+        repo: Repository) -> None:
+    from launchverify.diff.sides import commit_of, exported
+
+    base = commit_of(repo.root, "HEAD")
+    repo.edit("demo/config/params.yaml", "rate: 10", "rate: 13")  # not committed
+    with exported(repo.root, base, "base", 10_000_000) as side:
+        launch_file = side.root / "demo" / "launch" / "bringup.launch.xml"
+        assert launch_file.stat().st_ino == (repo.root / "demo" / "launch" /
+                                             "bringup.launch.xml").stat().st_ino
+        params = side.root / "demo" / "config" / "params.yaml"
+        assert "rate: 10" in params.read_text()  # the commit's, written apart
+        assert params.stat().st_ino != (repo.root / "demo" / "config" /
+                                        "params.yaml").stat().st_ino
+    assert (repo.root / "demo" / "launch" / "bringup.launch.xml").is_file()  # still there
