@@ -38,18 +38,31 @@ def render_json(diff: Data, out: TextIO) -> None:
 # ------------------------------------------------------------------ one change per line
 
 
-def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
-    """Yield a launch's changes: (mark, sentence, file, line); marks are + - ~."""
+Change = tuple[str, str, str | None, int | None]  # mark, sentence, file, line
+
+
+def changes(launch: Data) -> Iterator[Change]:
+    """Yield a launch's changes: a mark, a sentence, and its place on the head side.
+
+    Marks: ``+`` added, ``-`` removed, ``~`` changed, ``!`` broken (a topic's last
+    publisher gone, the launch stopping at an error).
+    """
+    for part in (_nodes, _includes, _graph, _conditional, _wiring, _arguments, _others):
+        yield from part(launch)
+
+
+def _nodes(launch: Data) -> Iterator[Change]:
     nodes = launch["nodes"]
-    for node in nodes["added"]:
-        yield "+", f"node {_v(node['fqn'])} ({_v(node['package'])}/{_v(node['executable'])})" \
-            + _when(node), node["file"], node["line"]
-    for node in nodes["removed"]:
-        yield "-", f"node {_v(node['fqn'])} ({_v(node['package'])}/{_v(node['executable'])})" \
-            + _when(node), node["file"], node["line"]
+    for mark, group in (("+", nodes["added"]), ("-", nodes["removed"])):
+        for node in group:
+            yield mark, f"node {_v(node['fqn'])} ({_v(node['package'])}/" \
+                f"{_v(node['executable'])}){_when(node)}", node["file"], node["line"]
     for node in nodes["renamed"]:
         yield "~", f"node {_v(node['base'])} is now {_v(node['head'])} " \
             f"({_v(node['package'])}/{_v(node['executable'])})", node["file"], node["line"]
+
+
+def _includes(launch: Data) -> Iterator[Change]:
     for change in launch["includes"]:
         before, after = change["base"], change["head"]
         if before is None:
@@ -59,6 +72,9 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
             yield "-", f"no longer includes {_v(change['include'])}", None, None
         else:
             yield "~", f"include {_v(change['include'])}: {before} -> {after}", None, None
+
+
+def _graph(launch: Data) -> Iterator[Change]:
     for change in launch["graph"]:
         kind, name = change["name"].split(" ", 1)
         before, after = change["base"], change["head"]
@@ -72,49 +88,52 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
         elif change["change"] == "type":
             yield "~", f"{kind} {_v(name)}: type {_v(before['type'])} -> " \
                 f"{_v(after['type'])}", None, None
-        else:
+        elif change["change"] == "end lost":
             lost = first if not after[first] and before[first] else second
-            if change["change"] == "end lost":
-                yield "!", f"{kind} {_v(name)} lost its last {lost[:-1]} " \
-                    f"({_list(before[lost])}){_ends(after, first, second)}", None, None
-            else:
-                yield "+", f"{kind} {_v(name)} is now connected{_ends(after, first, second)}", \
-                    None, None
+            yield "!", f"{kind} {_v(name)} lost its last {lost[:-1]} " \
+                f"({_list(before[lost])}){_ends(after, first, second)}", None, None
+        else:
+            yield "+", f"{kind} {_v(name)} is now connected{_ends(after, first, second)}", \
+                None, None
+
+
+def _conditional(launch: Data) -> Iterator[Change]:
     for change in launch["conditional"]:
+        node = _v(change["node"])
         if "when" in change:  # a node that starts for other values, wired otherwise now
             part = "parameters" if "parameters" in change else "remappings"
-            items = [f"+ {_v(i)}" for i in change[part]["added"]] + \
-                [f"- {_v(i)}" for i in change[part]["removed"]]
-            yield "~", f"node {_v(change['node'])} when {_v(change['when'])}: {part} " \
-                f"{', '.join(items)}", None, None
+            yield "~", f"node {node} when {_v(change['when'])}: {part} " \
+                f"{_gained(change[part])}", None, None
             continue
         before, after = change["base"], change["head"]
         example = f" (as with {_v(change['witness'])})" if change.get("witness") else ""
         if before is None:
-            yield "+", f"node {_v(change['node'])} starts when {_v(after)}{example}", \
-                None, None
+            yield "+", f"node {node} starts when {_v(after)}{example}", None, None
         elif after is None:
-            yield "-", f"node {_v(change['node'])} no longer starts when {_v(before)}" \
-                f"{example}", None, None
+            yield "-", f"node {node} no longer starts when {_v(before)}{example}", None, None
         else:
-            yield "~", f"node {_v(change['node'])} starts when {_v(after)} (was when " \
-                f"{_v(before)}){example}", None, None
+            yield "~", f"node {node} starts when {_v(after)} (was when {_v(before)})" \
+                f"{example}", None, None
+
+
+def _wiring(launch: Data) -> Iterator[Change]:
+    """What paired nodes run and are given: executables, parameters, files, remappings."""
     for change in launch["executables"]:
         yield "~", f"node {_v(change['node'])} runs {_v(change['head'])} (was " \
             f"{_v(change['base'])})", change["file"], change["line"]
     for change in launch["parameters"]:
         before, after = change["base"], change["head"]
-        where = after or before
-        file, _, line = where["from"].rpartition(":")
+        file, _, line = (after or before)["from"].rpartition(":")
         moved = before is not None and after is not None and before["from"] != after["from"]
         yield "~", f"{_v(change['node'])}: {_v(change['name'])} {_given(before, moved)} -> " \
             f"{_given(after, moved)}", file or None, int(line) if line.isdigit() else None
     for key, verb in (("parameter_files", "parameter files"), ("remappings", "remaps")):
         for change in launch[key]:
-            parts = [f"+ {_v(r)}" for r in change["added"]] + [f"- {_v(r)}" for r in
-                                                              change["removed"]]
-            yield "~", f"{_v(change['node'])} {verb} {', '.join(parts)}", change["file"], \
+            yield "~", f"{_v(change['node'])} {verb} {_gained(change)}", change["file"], \
                 change["line"]
+
+
+def _arguments(launch: Data) -> Iterator[Change]:
     arguments = launch["arguments"]
     for argument in arguments["added"]:
         yield "+", f"argument {_v(argument['name'])} (default {_v(argument['default'])})", \
@@ -124,14 +143,23 @@ def changes(launch: Data) -> Iterator[tuple[str, str, str | None, int | None]]:
     for argument in arguments["changed"]:
         yield "~", f"argument {_v(argument['name'])}: default {_v(argument['base'])} -> " \
             f"{_v(argument['head'])}", argument["file"], argument["line"]
+
+
+def _others(launch: Data) -> Iterator[Change]:
+    """Lifecycle managers' node lists, and whether the launch stops at an error."""
     for manager in launch["lifecycle"]:
         yield "~", f"lifecycle manager {_v(manager['manager'])} brings up " \
             f"{_list(manager['head'])} (was {_list(manager['base'])})", None, None
     stops = launch["stops"]
     if stops["base"] != stops["head"]:
-        yield "!" if stops["head"] else "~", \
-            "the launch now stops at an error" if stops["head"] else \
-            "the launch no longer stops at an error", None, None
+        yield ("!", "the launch now stops at an error", None, None) if stops["head"] else \
+            ("~", "the launch no longer stops at an error", None, None)
+
+
+def _gained(change: Data) -> str:
+    """Return what a list gained and lost: ``+ a, - b``."""
+    return ", ".join([f"+ {_v(item)}" for item in change["added"]]
+                     + [f"- {_v(item)}" for item in change["removed"]])
 
 
 def _ends(ends: Data, first: str, second: str) -> str:
