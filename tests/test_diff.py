@@ -162,7 +162,7 @@ def test_a_node_added_only_under_an_argument(repo: Repository,
     assert sim["nodes"]["added"] == []
     assert sim["conditional"] == [{"node": "/sim_listener (demo_nodes_cpp/listener)",
                                    "base": None, "head": "$(var use_sim)",
-                                   "witness": "use_sim:=true"}]
+                                   "witness": {"use_sim": "true"}}]
     sim = launch(diff(capsys, "use_sim:=true"), "demo/launch/sim.launch.py")
     assert [n["fqn"] for n in sim["nodes"]["added"]] == ["/sim_listener"]
     assert sim["conditional"] == []

@@ -125,11 +125,8 @@ def _witnesses(diff: dict[str, Any], given: dict[str, str]) -> list[dict[str, st
     found: list[dict[str, str]] = []
     for launch in diff["launches"]:
         for change in launch["conditional"]:
-            text = change.get("witness")
-            if not text:
-                continue
-            values = dict(part.split(":=", 1) for part in text.split() if ":=" in part)
-            values = {k: v for k, v in values.items() if given.get(k) != v}
+            values = {k: v for k, v in (change.get("witness") or {}).items()
+                      if given.get(k) != v}
             if values and values not in found:
                 found.append(values)
     return found

@@ -106,7 +106,8 @@ def _conditional(launch: Data) -> Iterator[Change]:
                 f"{_gained(change[part])}", None, None
             continue
         before, after = change["base"], change["head"]
-        example = f" (as with {_v(change['witness'])})" if change.get("witness") else ""
+        example = f" (as with {_v(_assigned(change['witness']))})" \
+            if change.get("witness") else ""
         if before is None:
             yield "+", f"node {node} starts when {_v(after)}{example}", None, None
         elif after is None:
@@ -378,7 +379,12 @@ def _markdown(diff: Data, out: TextIO, max_items: int) -> None:
 
 
 def _given_values(assignment: Data) -> str:
-    return " ".join(f"{k}:={v}" for k, v in sorted(assignment["arguments"].items()))
+    return _assigned(assignment["arguments"])
+
+
+def _assigned(values: dict[str, str]) -> str:
+    """Return argument values as given on a command line: ``a:=1 b:=2``."""
+    return " ".join(f"{k}:={v}" for k, v in sorted(values.items()))
 
 
 # ------------------------------------------------------------------ GitHub annotations

@@ -45,8 +45,8 @@ class Launch:
     # each such node under its condition ("<node> when <condition>"): its parameter sources
     # and remappings as written (values as expressions of the arguments)
     dormant_wiring: dict[str, dict[str, list[str]]] = field(default_factory=dict)
-    # for each such node, argument values under which it starts (``use_sim:=true``)
-    witnesses: dict[str, str] = field(default_factory=dict)
+    # for each such node, argument values under which it starts ({"use_sim": "true"})
+    witnesses: dict[str, dict[str, str]] = field(default_factory=dict)
     includes: dict[str, str] = field(default_factory=dict)  # file or path as written -> status
     # topics, services and actions by name: their type and the nodes on each end
     endpoints: dict[str, dict[str, Any]] = field(default_factory=dict)
@@ -250,7 +250,7 @@ def _launch(graph: LaunchGraph, root: Path, interfaces: WorkspaceInterfaces) -> 
             if key not in launch.witnesses:
                 witness = reasoner_for(graph).together(node.origin.path)
                 if witness is not None and witness.values:
-                    launch.witnesses[key] = witness.describe()
+                    launch.witnesses[key] = dict(witness.values)
             continue
         data = _node(view, node)
         key = data["fqn"] or f"{data['package']}/{data['executable']} (no name)"
