@@ -430,7 +430,7 @@ def test_a_node_for_other_argument_values_wired_otherwise(
     conditional = launch(diff(capsys), "demo/launch/bringup.launch.xml")["conditional"]
     assert conditional == [{
         "node": "/talker (demo_nodes_cpp/talker)", "when": "$(var use_sim)",
-        "parameters": {"added": ["rate := 5"],
+        "witness": {"use_sim": "true"}, "parameters": {"added": ["rate := 5"],
                        "removed": ["file demo/config/params.yaml"]}}]
 
 

@@ -110,8 +110,9 @@ def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
             added = [item for item in now[part] if item not in was[part]]
             removed = [item for item in was[part] if item not in now[part]]
             if added or removed:
-                dormant.append({"node": node, "when": condition, part: {
-                    "added": added, "removed": removed}})
+                dormant.append({"node": node, "when": condition,
+                                "witness": new.witnesses.get(node), part: {
+                                    "added": added, "removed": removed}})
     inputs = _inputs(old.inputs, new.inputs) if before and after else []
     includes = [{"include": name, "base": old.includes.get(name),
                  "head": new.includes.get(name)}

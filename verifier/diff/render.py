@@ -102,8 +102,9 @@ def _conditional(launch: Data) -> Iterator[Change]:
         node = _v(change["node"])
         if "when" in change:  # a node that starts for other values, wired otherwise now
             part = "parameters" if "parameters" in change else "remappings"
-            yield "~", f"node {node} when {_v(change['when'])}: {part} " \
-                f"{_gained(change[part])}", None, None
+            when = f"as with {_assigned(change['witness'])}" if change.get("witness") \
+                else f"when {change['when']}"
+            yield "~", f"node {node} ({_v(when)}): {part} {_gained(change[part])}", None, None
             continue
         before, after = change["base"], change["head"]
         example = f" (as with {_v(_assigned(change['witness']))})" \
