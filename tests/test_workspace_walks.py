@@ -171,3 +171,30 @@ def test_real_path_is_realpath(tmp_path: Path) -> None:
                      "a/b/", "lb/../../x"]:
         path = f"{tmp_path}/{relative}"
         assert real_path(path) == os.path.realpath(path), relative
+
+
+LAUNCH_MODULE = ("from launch import LaunchDescription\n\n"
+                 "def generate_launch_description():\n    return LaunchDescription([])\n")
+
+
+@pytest.mark.parametrize("given", [".", "./", "..", "../../launch", "launch_only"])
+def test_a_folder_is_judged_by_its_real_name_whatever_the_path_given(
+        given: str, tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """``check .`` inside a ``launch`` folder finds what ``check launch`` finds above it."""
+    folder = tmp_path / "pkg" / "launch"
+    (folder / "launch_only").mkdir(parents=True)
+    (folder / "bringup.py").write_text(LAUNCH_MODULE)  # counts only in a launch folder
+    (folder / "launch_only" / "x.py").write_text(LAUNCH_MODULE)
+    (tmp_path / "pkg" / "helper.py").write_text(LAUNCH_MODULE)  # not in one: never counts
+    monkeypatch.chdir(folder / "launch_only" if given.startswith("..") else folder)
+    if given == "launch_only":
+        monkeypatch.chdir(folder)
+    names = sorted(path.resolve().relative_to(tmp_path).as_posix()
+                   for path in discover([Path(given)]))
+    expected = ["pkg/launch/launch_only/x.py"]
+    if given != "launch_only":
+        expected = ["pkg/launch/bringup.py", *expected]
+    assert names == expected
+    above = sorted(path.relative_to(tmp_path).as_posix()
+                   for path in discover([tmp_path / "pkg"]))
+    assert set(names) <= set(above)

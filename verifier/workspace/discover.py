@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from launchverify.workspace.packages import listing
@@ -90,6 +90,18 @@ def _files(top: str) -> Iterator[str]:
         pending.extend(reversed(folders))
 
 
+def _real_names(top: str) -> Callable[[str], str]:
+    """Return how to name a file walked from ``top`` by its folders' real names.
+
+    A folder is judged by its name (``launch/x.py``): walking ``.`` from inside a
+    ``launch`` folder must judge its files as walking ``launch`` from above does.
+    """
+    if Path(top).is_absolute():
+        return lambda file: file
+    real = os.path.normpath(Path(top).absolute())  # (names as given: no link followed)
+    return lambda file: real + os.sep + file[len(top):].lstrip(os.sep)
+
+
 def discover(paths: list[Path], *, filter_files: bool = False) -> list[Path]:
     """Return the launch files named by ``paths``: files as given, folders searched.
 
@@ -99,7 +111,9 @@ def discover(paths: list[Path], *, filter_files: bool = False) -> list[Path]:
     found: list[Path] = []
     for path in paths:
         if path.is_dir():
-            found.extend(Path(file) for file in _files(str(path)) if _looks_like_launch(file))
+            top = str(path)
+            named = _real_names(top)
+            found.extend(Path(file) for file in _files(top) if _looks_like_launch(named(file)))
         elif not filter_files or is_launch_file(path):
             found.append(path)
     unique: dict[Path, Path] = {}
