@@ -41,8 +41,7 @@ def git(repository: Path, *arguments: str) -> str:
     """Run git in ``repository``; return its output (a failure is a usage error)."""
     try:
         done = subprocess.run([*_GIT, "-C", str(repository), *arguments], capture_output=True,
-                              timeout=GIT_SECONDS, check=False,
-                              env={**os.environ, **_QUIET})
+                              timeout=GIT_SECONDS, check=False, env={**os.environ, **_QUIET})
     except FileNotFoundError:
         raise UsageError("diff between revisions needs git") from None
     except subprocess.TimeoutExpired:
@@ -151,20 +150,17 @@ def _extract(repository: Path, commit: str, into: Path, max_file_size: int) -> N
             raise UsageError(f"the tree of {commit[:12]} is larger than "
                              f"{MAX_TREE_BYTES >> 30} GiB")
         wanted.append((mode, oid, path))
-    root = into.resolve()
-    folders: set[Path] = set()
-    wanted = _linked(repository, wanted, root, folders)
+    place = _Places(into.resolve())
+    wanted = _linked(repository, wanted, place)
     for (mode, _, path), data in zip(wanted, _blobs(repository, [w[1] for w in wanted]),
                                      strict=True):
-        target = (root / path).resolve()
-        if data is None or not target.is_relative_to(root) or target == root:
+        target = place(path) if data is not None else None
+        if data is None or target is None:
             continue
-        if target.parent not in folders:
-            target.parent.mkdir(parents=True, exist_ok=True)
-            folders.add(target.parent)
         if mode == "120000":  # a link: kept when it stays inside the tree
             link = Path(os.fsdecode(data))
-            if not link.is_absolute() and (target.parent / link).resolve().is_relative_to(root):
+            if not link.is_absolute() and (target.parent / link).resolve().is_relative_to(
+                    place.root):
                 with suppress(OSError):
                     target.symlink_to(link)
             continue
@@ -174,8 +170,26 @@ def _extract(repository: Path, commit: str, into: Path, max_file_size: int) -> N
                 target.chmod(0o700)
 
 
-def _linked(repository: Path, wanted: list[tuple[str, str, str]], root: Path,
-            folders: set[Path]) -> list[tuple[str, str, str]]:
+class _Places:
+    """Where a tree's files go below ``root``: each inside it, each folder made once."""
+
+    def __init__(self, root: Path) -> None:
+        self.root = root
+        self.folders: set[Path] = set()
+
+    def __call__(self, path: str) -> Path | None:
+        """Return where ``path`` goes, its folder made (``None``: it would leave the root)."""
+        target = (self.root / path).resolve()
+        if not target.is_relative_to(self.root) or target == self.root:
+            return None
+        if target.parent not in self.folders:
+            target.parent.mkdir(parents=True, exist_ok=True)
+            self.folders.add(target.parent)
+        return target
+
+
+def _linked(repository: Path, wanted: list[tuple[str, str, str]], place: _Places
+            ) -> list[tuple[str, str, str]]:
     """Link the files the working tree holds alike into ``root``; return the others.
 
     A file counts as alike when the index has the commit's object for it and the working
@@ -197,16 +211,15 @@ def _linked(repository: Path, wanted: list[tuple[str, str, str]], root: Path,
     top = repository.resolve()
     rest = []
     for mode, oid, path in wanted:
-        source, target = top / path, (root / path).resolve()
-        if (mode == "120000" or index.get(path) != oid or not target.is_relative_to(root)
-                or source.is_symlink() or not source.resolve().is_relative_to(top)):
+        source = top / path
+        if (mode == "120000" or index.get(path) != oid or source.is_symlink()
+                or not source.resolve().is_relative_to(top)):
             rest.append((mode, oid, path))
             continue
         try:
-            if target.parent not in folders:
-                target.parent.mkdir(parents=True, exist_ok=True)
-                folders.add(target.parent)
-            os.link(source, target, follow_symlinks=False)
+            target = place(path)
+            if target is not None:
+                os.link(source, target, follow_symlinks=False)
         except OSError:  # (another file system, a file that went)
             rest.append((mode, oid, path))
     return rest
