@@ -55,6 +55,10 @@ class UsageError(Exception):
     """Bad input from the user (exit status 2)."""
 
 
+class NoLaunchFiles(UsageError):
+    """The paths given hold no launch file (``diff``: a side without any, not an error)."""
+
+
 @dataclass
 class CheckOptions:
     """What ``launchverify check`` was asked to do (the configuration file already merged)."""
@@ -103,6 +107,7 @@ class Report:
     loaded: set[Path] | None = None
     cached: bool = False  # read from the cache between runs, not checked again
     kept: Kept | None = None  # what the next check may keep of this one (not stored with it)
+    packages: PackageIndex | None = None  # the index the check built (not stored with it)
 
     def display_path(self, path: Path) -> str:
         """Return a path as the user gave it, else relative to the working directory."""
@@ -131,7 +136,7 @@ class Report:
         findings = [dataclasses.replace(f, path=()) if f.path else f for f in self.findings]
         return dataclasses.replace(self, findings=findings, graphs=[],
                                    unseen=self.not_judged(), queries=self.solver_queries(),
-                                   loaded=self.loaded_files(), kept=None)
+                                   loaded=self.loaded_files(), kept=None, packages=None)
 
     def not_judged(self) -> list[tuple[str, Span]]:
         """Return where evaluations were incomplete (reason, place), each once, as met.
@@ -317,7 +322,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     readable = confine_reads(index, workspace, options.paths)
     if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
         given = ", ".join(str(p) for p in options.paths)
-        raise UsageError(f"no launch files found in {given}")
+        raise NoLaunchFiles(f"no launch files found in {given}")
     files = [f for f in found
              if not tree.nearest(f).excludes(f) and not _excluded(f, options.exclude)]
     selection = Selection(options, tree)
@@ -409,7 +414,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         report, findings=sorted(findings, key=Finding.sort_key), files=len(loaded),
         seconds=time.perf_counter() - started, display=display, checked=roots,
         suppressed=suppressed, baselined=baselined, python_files=evaluations,
-        protections=protections)
+        protections=protections, packages=index)
 
 
 def rule_options(config: Config, arguments: dict[str, str] | None = None

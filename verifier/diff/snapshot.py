@@ -9,6 +9,7 @@ relative to the side's root, so that the two sides compare by name.
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import json
 import re
@@ -18,7 +19,7 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.config import Config, confined, find_config, load_config
-from launchverify.engine import CheckOptions, UsageError, build_index, run_check
+from launchverify.engine import CheckOptions, NoLaunchFiles, build_index, run_check
 from launchverify.findings.fingerprint import fingerprints
 from launchverify.findings.incremental import RootResult
 from launchverify.graph import LaunchGraph, NodeRecord, Origin
@@ -100,15 +101,13 @@ def take(root: Path, request: Request) -> Snapshot:
         time_limit=request.time_limit, max_file_size=request.max_file_size)
     try:
         report = run_check(options, keep=True)  # (what each root read comes with it)
-    except UsageError as error:
-        if "no launch files found" in str(error):
-            return snapshot
-        raise
+    except NoLaunchFiles:
+        return snapshot
     local = _Local(root)
     read = report.kept.roots if report.kept is not None else {}
     digests: dict[str, str] = {}
-    _, index = build_index(paths, root, config.package_paths)
-    interfaces = WorkspaceInterfaces(index)
+    interfaces = WorkspaceInterfaces(report.packages or build_index(
+        paths, root, config.package_paths)[1])
     for graph in report.graphs:
         launch = local.launch(_launch(graph, root, interfaces))
         found = read.get(graph.root)
@@ -150,14 +149,9 @@ class _Local:
         return value
 
     def launch(self, launch: Launch) -> Launch:
-        return Launch(launch.file, nodes=self.value(launch.nodes), inputs=launch.inputs,
-                      arguments=self.value(launch.arguments),
-                      managers=self.value(launch.managers), dormant=self.value(launch.dormant),
-                      dormant_wiring=self.value(launch.dormant_wiring),
-                      witnesses=self.value(launch.witnesses),
-                      includes=self.value(launch.includes),
-                      endpoints=self.value(launch.endpoints),
-                      stopped=launch.stopped)
+        """Return a launch with every value of it local (its fields' own, whatever they are)."""
+        return dataclasses.replace(launch, **{
+            f.name: self.value(getattr(launch, f.name)) for f in dataclasses.fields(launch)})
 
 
 _FILE_NAME = re.compile(r"[\w.\-/]+\.(?:ya?ml|json)\b")
@@ -173,12 +167,12 @@ def _named_files(launch: Launch, root: Path) -> set[str]:
     written += [source for wiring in launch.dormant_wiring.values()
                 for source in wiring["parameters"] if source.startswith("file ")]
     found = set()
+    top = root.resolve()
     for text in written:
         for name in _FILE_NAME.findall(str(text)):
-            path = root / name
-            if not name.startswith("/") and path.is_file() and path.resolve().is_relative_to(
-                    root.resolve()):
-                found.add(relative_file(path, root))
+            path = (root / name).resolve()
+            if not name.startswith("/") and path.is_relative_to(top) and path.is_file():
+                found.add(path.relative_to(top).as_posix())
     return found
 
 
@@ -210,7 +204,6 @@ class _SideView(GraphView):
                  interfaces: WorkspaceInterfaces | None = None) -> None:
         super().__init__(graph, symbolic=False, interfaces=interfaces)
         self.root = root
-
         self._relative: dict[Path, str] = {}
 
     def relative(self, path: Path) -> str:
@@ -253,7 +246,7 @@ def _launch(graph: LaunchGraph, root: Path, interfaces: WorkspaceInterfaces) -> 
                     launch.witnesses[key] = dict(witness.values)
             continue
         data = _node(view, node)
-        key = data["fqn"] or f"{data['package']}/{data['executable']} (no name)"
+        key = data["label"]
         while key in launch.nodes:  # two nodes under one name: each kept
             key += "'"
         launch.nodes[key] = data
