@@ -75,7 +75,7 @@ EXIT_READER_GONE = 128 + 13  # as a shell shows a tool stopped by SIGPIPE (`cmd 
 FORMATS = ("text", "concise", "json", "sarif", "junit", "github")
 
 
-def _codes(given: list[str] | None) -> list[str] | None:
+def option_codes(given: list[str] | None) -> list[str] | None:
     """Return the selectors of a repeatable comma-separated option (all of them)."""
     if given is None:
         return None
@@ -429,7 +429,7 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
     if not paths and args.affected:
         raise UsageError("--affected needs the changed files")
     paths = paths or ["."]  # as ruff: the working folder
-    _refuse_unknown_selectors(args)
+    refuse_unknown_selectors(args)
     config = Config()
     if not args.isolated:
         found = args.config or find_config(Path(paths[0]))
@@ -442,10 +442,10 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         paths=[Path(p) for p in paths],
         arguments={**config.arguments, **arguments},
         workspace=args.workspace or config.workspace,
-        select=_codes(args.select) if args.select is not None else config.select,
-        ignore=[*config.ignore, *(_codes(args.ignore) or [])],
-        command_select=_codes(args.select),
-        command_ignore=_codes(args.ignore) or [],
+        select=option_codes(args.select) if args.select is not None else config.select,
+        ignore=[*config.ignore, *(option_codes(args.ignore) or [])],
+        command_select=option_codes(args.select),
+        command_ignore=option_codes(args.ignore) or [],
         nested_configs=not args.isolated and args.config is None,
         affected=args.affected,
         environment={**config.environment, **parse_environment(args.env)},
@@ -462,10 +462,10 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
     return options, config
 
 
-def _refuse_unknown_selectors(args: argparse.Namespace) -> None:
+def refuse_unknown_selectors(args: argparse.Namespace) -> None:
     """Refuse a ``--select``/``--ignore`` that names no rule, before any work."""
     for option, given in (("--select", args.select), ("--ignore", args.ignore)):
-        for selector in _codes(given) or []:
+        for selector in option_codes(given) or []:
             problem = unknown_selector(selector)
             if problem is not None:
                 raise UsageError(f"{option}: {problem}")
@@ -516,7 +516,7 @@ def _read_stdin(args: argparse.Namespace) -> bool:
     return True
 
 
-def _writable(*paths: Path | None) -> None:
+def writable(*paths: Path | None) -> None:
     """Refuse, before any work, to write into a folder that does not exist."""
     for path in paths:
         if path is None:
@@ -529,7 +529,7 @@ def _writable(*paths: Path | None) -> None:
 
 
 def _check(args: argparse.Namespace) -> int:
-    _writable(args.output, args.write_baseline, args.xunit_file)
+    writable(args.output, args.write_baseline, args.xunit_file)
     _fix_usage(args)
     buffered = _read_stdin(args)
     options, config = check_options(args, progress=not args.quiet and sys.stderr.isatty())
@@ -709,7 +709,7 @@ def _report(args: argparse.Namespace) -> int:
     from launchverify.render.html_report import render_html
     from launchverify.topology.compose import WorkspaceInterfaces
 
-    _writable(args.output)
+    writable(args.output)
     options, config = check_options(args, progress=sys.stderr.isatty())
     report = run_check(options)
     _say_protections(report, args.verbose)

@@ -78,14 +78,18 @@ def add_parser(commands: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run a diff; return the exit status."""
+    from launchverify.cli import option_codes, refuse_unknown_selectors, writable
     from launchverify.diff.compare import compare
     from launchverify.diff.snapshot import Request, take
 
     started = time.perf_counter()
+    refuse_unknown_selectors(args)  # (both before any work, as for check)
+    writable(args.output, args.json_file)
     tokens, arguments = parse_arguments(args.targets)
     request = Request(paths=("",), arguments=arguments,
                       environment=parse_environment(args.env),
-                      select=_codes(args.select), ignore=tuple(_codes(args.ignore) or ()),
+                      select=option_codes(args.select),
+                      ignore=tuple(option_codes(args.ignore) or ()),
                       isolated=args.isolated, distro=args.distro, jobs=args.jobs,
                       time_limit=args.time_limit)
     with ExitStack() as stack:
@@ -173,8 +177,6 @@ def _output(path: Path | None) -> Iterator[TextIO]:
     if path is None:
         yield sys.stdout
         return
-    if not path.parent.is_dir():
-        raise UsageError(f"cannot write {str(path)!r}: no folder {str(path.parent)!r}")
     with path.open("w", encoding="utf-8") as out:
         yield out
 
@@ -258,9 +260,3 @@ def _inside(repository: Path, path: Path) -> str:
     except ValueError:
         raise UsageError(f"{str(path)!r} is not inside the repository "
                          f"{str(repository)!r}") from None
-
-
-def _codes(given: list[str] | None) -> list[str] | None:
-    if given is None:
-        return None
-    return [code.strip() for entry in given for code in entry.split(",") if code.strip()]
