@@ -624,6 +624,33 @@ def test_without_landlock_nothing_is_written_either(outcome: Outcome,
             f.message for f in report.findings if f.span.file.name == name]
 
 
+@pytest.mark.parametrize("landlock", [True, False])
+def test_a_file_that_disarms_the_sandbox_costs_only_itself(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, landlock: bool) -> None:
+    """The next file in its worker is evaluated as in a fresh one (``isolation/reuse``).
+
+    One worker takes both files in turn; the next would otherwise make its own scratch
+    folder, which seccomp alone refuses.
+    """
+    from launchverify.engine import CheckOptions, run_check
+
+    if not landlock:
+        monkeypatch.setenv("LAUNCHVERIFY_WITHOUT_LANDLOCK", "1")
+    canary = tmp_path / "canary"
+    canary.mkdir()
+    workspace = tmp_path / "ws"
+    workspace.mkdir()
+    _, attack = ATTACKS["sandbox-reset"]
+    (workspace / "a_reset.launch.py").write_text(
+        PY_HEADER.format(canary=str(canary), port=0) + attack + PY_END)
+    (workspace / "b_sentinel.launch.py").write_text(SENTINEL_PY)
+    report = run_check(CheckOptions(paths=[workspace], workspace=workspace, jobs=1,
+                                    time_limit=TIME_LIMIT))
+    assert [f.code for f in report.findings if f.span.file.name == "b_sentinel.launch.py"
+            ] == ["LV101"], [f.message for f in report.findings]
+    assert not list(canary.iterdir())
+
+
 # --------------------------------------------------------------------------- the terminal
 
 # Names and source lines that would act on a reviewer's terminal if printed raw: erase and

@@ -1,8 +1,9 @@
 """One worker evaluates several Python files of a repository, and no file pays for another.
 
-A file that crashes its worker, patches the launch API models, leaves a thread or a timer
-running, or changes a signal handler costs only itself: the files after it are evaluated
-as a fresh worker would (``isolation/reuse.py``).
+A file that crashes its worker, patches the launch API models, changes a table of
+launchverify's or of a library in place, leaves a thread or a timer running, or changes a
+signal handler costs only itself: the files after it are evaluated as a fresh worker
+would (``isolation/reuse.py``). Each file has its own environment variables.
 """
 
 from __future__ import annotations
@@ -40,6 +41,12 @@ DISTURBING = {
     "thread": "threading.Thread(target=time.sleep, args=(30,), daemon=True).start()",
     "timer": "signal.setitimer(signal.ITIMER_VIRTUAL, 30)",
     "handler": "signal.signal(signal.SIGUSR1, lambda *a: None)",
+    # changed in place, no name rebound: a YAML tag for the file's own loading, the
+    # sandbox's state (what a hostile file would clear), a module taken away
+    "yaml-tag": "import yaml.constructor as c; c.SafeConstructor.add_constructor('!x', min)",
+    "sandbox-state": "import sys; "
+                     "sys.modules['launchverify.frontends.python.sandbox']._armed.clear()",
+    "unload": "import sys; del sys.modules['json']",
 }
 # files after b that reuse a worker: c takes a fresh one after a disturbance; a crash
 # also costs b's retry in a fresh worker, and the sandbox refuses threads (nothing is left)
@@ -195,3 +202,42 @@ def test_a_file_that_disturbs_the_worker_never_runs_anothers_opaque_functions(
         with pytest.raises(AssertionError):  # its own patch breaks its own function
             _run(patching)
         assert _run(first) == ["first"] and revived == [paths[0]]  # (once)
+
+
+ENVIRONMENT = """\
+import os
+from launch import LaunchDescription
+from launch.actions import OpaqueFunction
+from launch_ros.actions import Node
+
+BEFORE = sorted(os.environ.copy())  # the variables set so far: none, whatever came before
+os.environ['ROBOT_{name}'] = '{name}'
+
+
+def setup(context):
+    return [Node(package='demo_nodes_cpp', executable='talker',
+                 name='_'.join(['now', *sorted(os.environ.copy())]))]
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='_'.join(['seen', *BEFORE])),
+        OpaqueFunction(function=setup)])
+"""
+
+
+def test_each_file_has_its_own_environment_variables(tmp_path: Path) -> None:
+    """As each file is its own ``ros2 launch``: what one sets, the next never reads."""
+    paths = _package(tmp_path, {f"f{n}": ENVIRONMENT.format(name=n) for n in range(3)})
+    with IsolatedPython(PackageIndex([tmp_path]), tmp_path, jobs=1) as python:
+        python.prefetch(paths)
+        loaded = [python.load(path, ProblemSink()) for path in paths]
+        assert python.reused == 2
+        assert [_names(launch) for launch in loaded] == [["seen"]] * 3
+        called = []
+        for launch in reversed(loaded):  # after every file was taken
+            assert launch is not None
+            [function] = [x for x in launch.actions if isinstance(x, a.OpaqueFunction)]
+            result = function.run({}, launch.path)
+            called.append(_names(dataclasses.replace(launch, actions=result.actions)))
+    assert called == [[f"now_ROBOT_{n}"] for n in reversed(range(3))]

@@ -23,6 +23,7 @@ from typing import Any, NoReturn
 
 from launchverify.frontends.python import PythonFrontend
 from launchverify.frontends.python.sandbox import (
+    SymbolicEnviron,
     TimeLimitExceeded,
     arm,
     take_opened,
@@ -80,6 +81,7 @@ class _Worker:
         self.scratch = scratch
         self.callbacks: list[Callable[..., Any]] = []
         self.owners: list[str] = []  # the file each callback belongs to
+        self.variables: dict[str, dict[str, str]] = {}  # each file's os.environ, as it left it
         self.serving = ""  # the file of the request being answered, or answered last
         self.baseline: Baseline | None = None
         self.kept_by: str | None = None  # why it may take no other file
@@ -89,15 +91,22 @@ class _Worker:
 
         A file's OpaqueFunctions run in the state that file left: after another file,
         only if that one left the worker as it found it (each file may disturb only
-        itself). Checked here, with no timer running.
+        itself), and with the environment variables that file set (each file is its own
+        ``ros2 launch``). Checked here, with no timer running.
         """
         if path != self.serving:
             if self.kept_by is None and self.baseline is not None:
                 self.kept_by = self.baseline.disturbed()
             if self.kept_by is not None:
                 return self.kept_by
-            self.serving = path
+            self._serve(path)
         return None
+
+    def _serve(self, path: str) -> None:
+        self.serving = path
+        environ: object = os.environ
+        if type(environ) is SymbolicEnviron:  # (else: the file's own doing, its loss)
+            environ.use(self.variables.setdefault(path, dict(self.setting.environment)))
 
     def register(self, function: Callable[..., Any]) -> int:
         self.callbacks.append(function)
@@ -109,7 +118,7 @@ class _Worker:
             # recorded only when the parent may send more (touching every module copies
             # the zygote's pages: about 10 ms)
             self.baseline = Baseline.take() if request.get("reuse") else None
-            self.serving = str(request.get("path", ""))
+            self._serve(str(request.get("path", "")))
             self.answer(self.load, request)
             while True:
                 try:

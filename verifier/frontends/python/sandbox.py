@@ -257,6 +257,10 @@ class SymbolicEnviron(MutableMapping[str, str]):
     def __init__(self, given: dict[str, str] | None = None) -> None:
         self._set: dict[str, str] = dict(given or {})
 
+    def use(self, variables: dict[str, str]) -> None:
+        """Read and write ``variables`` from now on (a worker's files each have their own)."""
+        self._set = variables
+
     def __getitem__(self, key: str) -> str:
         if key in self._set:
             return self._set[key]
