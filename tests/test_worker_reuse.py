@@ -47,6 +47,7 @@ DISTURBING = {
     "sandbox-state": "import sys; "
                      "sys.modules['launchverify.frontends.python.sandbox']._armed.clear()",
     "unload": "import sys; del sys.modules['json']",
+    "setting": "import sys; sys.setswitchinterval(0.5)",
 }
 # files after b that reuse a worker: c takes a fresh one after a disturbance; a crash
 # also costs b's retry in a fresh worker, and the sandbox refuses threads (nothing is left)

@@ -11,7 +11,8 @@ rebound anything in a loaded module, changed a list, dict or set held by launchv
 by what it reads with (``builtins``, ``os``, ``sys``, ``yaml``...: their classes too),
 kept a library imported that was not before or took one away, left a thread (a
 ``threading.Timer``) or a timer signal behind, or changed a signal handler, the import
-system or the working folder ends the worker's reuse. What a file imported from the
+system, the working folder or an interpreter setting (``sys.set_int_max_str_digits``...)
+ends the worker's reuse. What a file imported from the
 workspace is forgotten after each evaluation anyway (``frontends.python.importer``), and
 each file has its own ``os.environ`` (``worker``).
 """
@@ -140,13 +141,14 @@ class Baseline:
     handlers: tuple[object, ...]
     hooks: tuple[object, ...]
     cwd: str
+    settings: tuple[float, ...]
 
     @classmethod
     def take(cls) -> Baseline:
         """Record the worker's state now."""
         with collector_paused():
             return cls(_all_bindings(_modules()), threading.active_count(), _handlers(),
-                       _hooks(), _cwd())
+                       _hooks(), _cwd(), _settings())
 
     def disturbed(self) -> str | None:
         """Return what a file left changed (``None``: the worker may take another file)."""
@@ -160,6 +162,8 @@ class Baseline:
             return "the import system changed"
         if _cwd() != self.cwd:
             return "the working folder changed"
+        if _settings() != self.settings:
+            return "an interpreter setting changed"
         with collector_paused():
             modules = _modules()
             added = modules.keys() - self.modules.keys()
@@ -181,6 +185,12 @@ def _handlers() -> tuple[object, ...]:
 def _hooks() -> tuple[object, ...]:
     return (*sys.meta_path, *sys.path_hooks, sys.excepthook, sys.gettrace(), sys.getprofile(),
             builtins.__import__)
+
+
+def _settings() -> tuple[float, ...]:
+    """The interpreter's settings a file may change with no binding changed."""
+    digits = getattr(sys, "get_int_max_str_digits", lambda: 0)()  # (Python 3.11)
+    return sys.getrecursionlimit(), digits, sys.getswitchinterval()
 
 
 def _cwd() -> str:
