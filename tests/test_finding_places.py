@@ -78,3 +78,17 @@ def test_an_installed_copy_that_differs_is_its_own_file(tmp_path: Path) -> None:
         source / "launch" / "robot.launch.xml")
     assert index.canonical(installed / "launch" / "stale.launch.xml") == (
         installed / "launch" / "stale.launch.xml")
+
+
+def test_a_node_started_twice_by_one_file_included_twice_names_the_first_include() -> None:
+    """Both copies are one line: what tells them apart is the include of each."""
+    tree = Path(__file__).resolve().parent.parent / "corpus" / "naming" / \
+        "duplicate_across_includes"
+    report = run_check(CheckOptions(paths=[tree], workspace=tree))
+    [finding] = [f for f in report.findings if f.code == "LV101"]
+    assert (finding.span.file.name, finding.span.line) == ("camera.launch.xml", 2)
+    assert finding.message.endswith(
+        "at camera.launch.xml:2 (this same node, started first through the include at "
+        "bringup.launch.xml:8)")
+    [related] = finding.related
+    assert (related.span.file.name, related.span.line) == ("bringup.launch.xml", 8)

@@ -30,7 +30,8 @@ class DuplicateNodeName(Rule):
     finding names the argument values that make the collision happen. Nodes under
     conditions that exclude each other (`if`/`unless` of one argument, different
     `LaunchConfigurationEquals` values) are not duplicates. A node launched without a
-    namespace is in `/`.
+    namespace is in `/`. A file included twice into one namespace starts each of its
+    nodes twice: the finding then names the include that started the first copy.
 
     Arguments that are not switches (a `namespace` or `robot_name` argument) are not
     varied: they name one robot per launch, and letting them take any value would make
@@ -101,12 +102,13 @@ class DuplicateNodeName(Rule):
             found = first_collision(graph, node, candidates)
             if found is not None:
                 other, fqn, witness = found
+                other_at, related = _first_start(other, node)
                 finding = self.finding(
                     node.origin,
-                    related=(Related(other.origin.span, "first started here"),),
+                    related=(related,),
                     witness=witness.values or None,
                     fqn=fqn,
-                    other=other.origin.span.short(),
+                    other=other_at,
                 )
                 if meet(graph, other, node) is None:  # only if the caller's domain is 0
                     finding = dataclasses.replace(
@@ -120,6 +122,20 @@ class DuplicateNodeName(Rule):
                 fixed_by_text[fixed].append(node)
             else:
                 variable_by_name[key].append(node)
+
+
+def _first_start(first: NodeRecord, second: NodeRecord) -> tuple[str, Related]:
+    """Say where the first node started: its line, or the include that started it.
+
+    The include is what tells them apart when both are one line of a file included twice.
+    """
+    at = first.origin.span.short()
+    if first.origin.span != second.origin.span or not first.origin.chain \
+            or first.origin.chain == second.origin.chain:
+        return at, Related(first.origin.span, "first started here")
+    include = first.origin.chain[-1]
+    return (f"{at} (this same node, started first through the include at {include.short()})",
+            Related(include, "this same node started first through this include"))
 
 
 def first_collision(graph: LaunchGraph, node: NodeRecord,
