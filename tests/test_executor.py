@@ -185,6 +185,52 @@ def test_node_command_lines_are_built_as_launch_ros_builds_them(
     assert params.read_text().startswith("/**:\n  ros__parameters:\n    rate: 10")
 
 
+REWRITTEN = """\
+import os
+from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
+from launch.substitutions import LaunchConfiguration
+from launch_ros.actions import Node
+from nav2_common.launch import RewrittenYaml
+
+
+def generate_launch_description():
+    params = RewrittenYaml(
+        source_file=os.path.join(os.path.dirname(__file__), 'params.yaml'),
+        root_key=LaunchConfiguration('namespace'),
+        param_rewrites={'use_sim_time': LaunchConfiguration('use_sim_time'),
+                        'talker.ros__parameters.rate': '20'},
+        convert_types=True)
+    return LaunchDescription([
+        DeclareLaunchArgument('namespace', default_value='robot1'),
+        DeclareLaunchArgument('use_sim_time', default_value='true'),
+        Node(package='fake_robot', executable='worker', name='talker', namespace='robot1',
+             arguments=['talker', '--finish-after', '0.2'], parameters=[params],
+             output='screen'),
+    ])
+"""
+
+
+def test_a_rewritten_parameter_file_is_written_as_nav2_writes_it(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """RewrittenYaml: the node gets the file with the launch's values, under its root key."""
+    monkeypatch.setenv("AMENT_PREFIX_PATH", str(install_prefix(tmp_path)))
+    launch = tmp_path / "nav.launch.py"
+    launch.write_text(REWRITTEN)
+    (tmp_path / "params.yaml").write_text(
+        "talker:\n  ros__parameters:\n    use_sim_time: false\n    rate: 10\n")
+    assert main(["run", str(launch), "--dry-run", "--log-dir", str(tmp_path / "logs")]) == 0
+    expected = "robot1:\n  talker:\n    ros__parameters:\n      use_sim_time: true\n" \
+        "      rate: 20\n"
+    plan = "\n".join(line.strip() for line in capsys.readouterr().out.splitlines())
+    assert "\n".join(line.strip() for line in expected.splitlines()) in plan, plan
+    code, _, out = run(capsys, tmp_path / "logs", launch)
+    assert code == 0
+    line = next(x for x in out.splitlines() if x.startswith("[worker-1] ready talker"))
+    assert Path(line.split("--params-file ")[1].split()[0]).read_text() == expected
+
+
 def test_lifecycle_without_ros2_says_so(capsys: pytest.CaptureFixture[str],
                                         tmp_path: Path) -> None:
     launch = tmp_path / "lc.launch.py"

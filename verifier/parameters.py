@@ -15,10 +15,21 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from launchverify.frontends.param_file import ParamBlock
 from launchverify.graph import LaunchGraph, NodeRecord, ParamRecord
-from launchverify.ir.subst import Sub, walk
+from launchverify.ir.subst import Rewritten, Sub, walk
 from launchverify.ir.symbolic import Arg
 from launchverify.models.parameter_values import typed_parameter
+from launchverify.models.rewritten_yaml import (
+    HELPER,
+    added,
+    converted,
+    inside_a_leaf,
+    paths_of,
+    replaces_a_mapping,
+    rewrite_for,
+    rooted,
+)
 from launchverify.models.ros_names import node_key_matches
 from launchverify.span import Span
 
@@ -152,12 +163,59 @@ def _add_file(graph: LaunchGraph, param: ParamRecord,
     if loaded is None or not loaded.readable:
         result.complete = False
         return
+    rewrite = param.file if isinstance(param.file, Rewritten) \
+        and param.file.description == HELPER else None
+    if rewrite is not None:
+        _add_rewritten(graph, param, rewrite, loaded.blocks, table, result)
+        return
     for block in loaded.blocks:
         entries = table.setdefault(block.key, [])
         for name, parameter in block.parameters.items():
             entries.append((name, Contribution(parameter.value, parameter.kind,
                                                parameter.span, "file", key=block.key,
                                                value_span=parameter.value_span)))
+
+
+def _add_rewritten(graph: LaunchGraph, param: ParamRecord, rewrite: Rewritten,
+                   blocks: list[ParamBlock], table: dict[str, list[tuple[str, Contribution]]],
+                   result: EffectiveParameters) -> None:
+    """Add a file as ``RewrittenYaml`` gives it (``models/rewritten_yaml.py``).
+
+    A rewritten value is set where the launch gives the file (``param``'s place).
+    """
+    root = graph.base(rewrite.root_key) if rewrite.root_key is not None else None
+    if not rewrite.exact or (rewrite.root_key is not None and root is None):
+        result.complete = False  # what the file becomes is not known here
+        return
+    rewrites = dict(rewrite.params)
+    present = {path for block in blocks for name in block.parameters
+               for path in paths_of(block.key, name)}
+    if inside_a_leaf(rewrites, present) or replaces_a_mapping(
+            rewrites, (block.key for block in blocks),
+            (name for block in blocks for name in block.parameters)):
+        result.complete = False  # a list's item, or a whole mapping: not followed
+        return
+    for block in blocks:
+        key = rooted(block.key, root)
+        entries = table.setdefault(key, [])
+        for name, parameter in block.parameters.items():
+            by = rewrite_for(block.key, name, rewrites)
+            entries.append((name, Contribution(
+                parameter.value, parameter.kind, parameter.span, "file", key=key,
+                value_span=parameter.value_span) if by is None else
+                _rewritten_value(graph, rewrites[by], rewrite.convert, param, key)))
+    for path, block_key, name in added(rewrites, present):
+        key = rooted(block_key, root)
+        table.setdefault(key, []).append(
+            (name, _rewritten_value(graph, rewrites[path], rewrite.convert, param, key)))
+
+
+def _rewritten_value(graph: LaunchGraph, value: Sub, convert: bool, param: ParamRecord,
+                     key: str) -> Contribution:
+    text = None if _includer_decides(graph, value) else graph.base(value)
+    known = None if text is None else converted(text, convert)
+    return Contribution(known, kind_of(known) if known is not None else "unknown",
+                        param.origin.span, "file", None if text is not None else value, key)
 
 
 def _inline_value(graph: LaunchGraph, param: ParamRecord) -> object:

@@ -1,8 +1,9 @@
 """Models of helper libraries real launch files use: nav2_common, xacro.
 
 ``RewrittenYaml`` and ``ReplaceString`` write a temporary file at launch time; statically
-they stand for their source file, and what they substitute counts as read. ``xacro``
-documents become an opaque robot description.
+they are named by their source file, and what they substitute counts as read; what
+``RewrittenYaml`` does to parameters is kept for the file's readers
+(``models/rewritten_yaml.py``). ``xacro`` documents become an opaque robot description.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.ir import subst as s
-from launchverify.models import distros
+from launchverify.models import distros, rewritten_yaml
 from launchverify.models.launch_api.base import Converter, Substitution
 from launchverify.models.launch_api.placeholders import has_placeholder, placeholder
 from launchverify.models.launch_api.runtime import active
@@ -35,13 +36,20 @@ class RewrittenYaml(Substitution):
                  out_dir: Any = None) -> None:
         super().__init__()
         self.source_file = source_file
-        self.inputs = [*_values(param_rewrites), *_values(key_rewrites),
-                       *_values(value_rewrites)]
+        rewrites = dict(param_rewrites or {})
+        self.params = [(key, value) for key, value in rewrites.items() if isinstance(key, str)]
+        self.inputs = [*(item for key, value in rewrites.items() if not isinstance(key, str)
+                         for item in (key, value)),
+                       *_values(key_rewrites), *_values(value_rewrites)]
+        self.exact = not self.inputs  # what else it rewrites is not followed
         self.root_key = root_key
+        self.convert = convert_types is True
 
     def to_sub(self, cv: Converter) -> s.Sub:
         return s.Rewritten(cv.sub(self.source_file), tuple(cv.sub(x) for x in self.inputs),
-                           "RewrittenYaml", cv.opt_sub(self.root_key))
+                           rewritten_yaml.HELPER, cv.opt_sub(self.root_key),
+                           tuple((key, cv.sub(value)) for key, value in self.params),
+                           self.exact, self.convert)
 
 
 class ReplaceString(Substitution):

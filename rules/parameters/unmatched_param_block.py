@@ -12,6 +12,7 @@ from pathlib import Path
 from typing import NamedTuple
 
 from launchverify.graph import LaunchGraph, NodeRecord
+from launchverify.ir.subst import Rewritten
 from launchverify.models.node_names import BUILTIN_NAMES, InnerNode, inner_nodes
 from launchverify.models.ros_names import node_key_matches
 from launchverify.parameters import file_readers
@@ -159,7 +160,9 @@ class UnmatchedParamBlock(GatheringRule):
     a block in a namespace where none of the loading nodes runs (more likely for an inner
     node launchverify does not know than a slip). No rename is ever suggested onto a node
     that already has its block. Files that reach something launchverify cannot see into
-    (an include outside the workspace, a node whose name is unknown) are not judged.
+    (an include outside the workspace, a node whose name is unknown) are not judged, nor
+    files a node reads through nav2's `RewrittenYaml` with a `root_key` (every block moves
+    under it).
 
     ## Why it matters
     ROS ignores the block without a word: the node starts with its default parameters,
@@ -284,6 +287,8 @@ def receivers_of(graph: LaunchGraph, path: Path,
     spellings: set[str] = {str(path)}
     seen: set[int] = set()
     for node, param in file_readers(graph).get(path, []):
+        if isinstance(param.file, Rewritten) and param.file.root_key is not None:
+            return None  # its keys move under a root key (RewrittenYaml): not this file's
         if param.file is not None and (text := graph.base(param.file)) is not None:
             spellings.add(text)
         if id(node) in seen:

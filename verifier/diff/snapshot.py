@@ -160,8 +160,8 @@ _FILE_NAME = re.compile(r"[\w.\-/]+\.(?:ya?ml|json)\b")
 def _named_files(launch: Launch, root: Path) -> set[str]:
     """Return the side's files its nodes' parameter sources name, as written or rewritten.
 
-    ``RewrittenYaml(params.yaml)`` reads the file at run time: its values are not
-    followed, but the launch rests on the file all the same.
+    ``RewrittenYaml(params.yaml)`` reads the file at run time: where what it rewrites is
+    not followed (``key_rewrites``...), the launch rests on the file all the same.
     """
     written = [source for node in launch.nodes.values() for source in node["parameter_files"]]
     written += [source for wiring in launch.dormant_wiring.values()

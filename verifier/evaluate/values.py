@@ -36,6 +36,7 @@ from launchverify.models.python_expression import (
     Unsupported,
     evaluate_expression,
 )
+from launchverify.models.rewritten_yaml import HELPER as REWRITTEN_YAML
 from launchverify.models.ros_names import make_absolute, prefix_namespace
 from launchverify.span import Span
 
@@ -43,7 +44,13 @@ _SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 
 
 def text_of(sub: s.Sub | None) -> str | None:
-    """Return the text of a concrete value, or ``None`` when it is symbolic."""
+    """Return the text of a concrete value, or ``None`` when it is symbolic.
+
+    A YAML file rewritten at launch time (``RewrittenYaml``) is named by its source's
+    path: what is rewritten in it, its readers follow (``parameters.py``).
+    """
+    if isinstance(sub, s.Rewritten) and sub.description == REWRITTEN_YAML:
+        sub = sub.source
     return sub.text if isinstance(sub, s.Text) else None
 
 
@@ -444,21 +451,34 @@ class Reducer:
         return s.Text(joined)
 
     def _rewritten(self, sub: s.Sub) -> s.Sub:
-        """A rewritten file stands for its source, unless its keys move under a root key.
+        """A rewritten file stands for its source, with what ``RewrittenYaml`` rewrites.
 
-        With a ``root_key`` that is not empty, the file nodes receive differs from the
-        source: it stays an expression (its path and content are not known statically).
+        The parameters it rewrites, the root key its content moves under (an empty one
+        moves nothing) and whether it rewrites more stay with it: the file's readers
+        apply them (``parameters.py``). A file rewritten twice keeps both rewrites, later
+        ones winning; under a root key first, the second is not followed.
         """
         assert isinstance(sub, s.Rewritten)
         inputs = [self.reduce(item) for item in sub.inputs]
         if sub.description == "HasNodeParams" and len(inputs) == 2:
             return self._has_node_params(sub, inputs[0], text_of(inputs[1]))
         source = self.reduce(sub.source)
-        if sub.root_key is not None:
-            root = self.reduce(sub.root_key)
-            if text_of(root) != "":
-                return s.Rewritten(source, (), sub.description, root)
-        return source
+        if sub.description != REWRITTEN_YAML:
+            return source
+        root = None if sub.root_key is None else self.reduce(sub.root_key)
+        if root is not None and text_of(root) == "":
+            root = None
+        params = tuple((key, self.reduce(value)) for key, value in sub.params)
+        exact = sub.exact
+        if isinstance(source, s.Rewritten) and source.description == REWRITTEN_YAML:
+            # a rewritten file, rewritten again
+            exact = exact and source.exact and source.root_key is None \
+                and source.convert == sub.convert
+            params = source.params + params
+            source = source.source
+        if root is None and not params and exact:
+            return source
+        return s.Rewritten(source, (), REWRITTEN_YAML, root, params, exact, sub.convert)
 
     def _has_node_params(self, sub: s.Rewritten, path: s.Sub, node: str | None) -> s.Sub:
         """nav2's HasNodeParams: 'True' when the YAML file has a top-level key ``node``."""

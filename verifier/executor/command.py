@@ -20,8 +20,9 @@ from pathlib import Path
 import yaml
 
 from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, ParamRecord
-from launchverify.ir.subst import Concat, Sub, Text
+from launchverify.ir.subst import Concat, Rewritten, Sub, Text
 from launchverify.ir.symbolic import CommandOutput
+from launchverify.models import rewritten_yaml
 from launchverify.models.parameter_values import typed_parameter
 
 
@@ -187,18 +188,14 @@ class CommandBuilder:
         def flush() -> None:
             if not inline:
                 return
-            self.counter += 1
-            path = self.params_dir / f"params_{self.counter}.yaml"
             document = {"/**": {"ros__parameters": _nest(inline)}}
-            self.pending_files[path] = yaml.safe_dump(document, sort_keys=False)
-            out.extend(["--params-file", str(path)])
+            out.extend(["--params-file", self.written(document)])
             inline.clear()
 
         for param in parameters:
             if param.file is not None:
                 flush()
-                out.extend(["--params-file",
-                            str(Path(self.text(param.file, "a parameter file")).absolute())])
+                out.extend(["--params-file", self.parameter_file(param.file)])
             elif param.name is not None:
                 name = self.text(param.name, "a parameter name")
                 value = self.value(param.value, param.value_type)
@@ -209,6 +206,32 @@ class CommandBuilder:
                     inline[name] = value
         flush()
         return out
+
+    def written(self, document: object) -> str:
+        """Return where a parameter file the launch makes is written (before the start)."""
+        self.counter += 1
+        path = self.params_dir / f"params_{self.counter}.yaml"
+        self.pending_files[path] = yaml.safe_dump(document, sort_keys=False)
+        return str(path)
+
+    def parameter_file(self, file: Sub) -> str:
+        """Return the path of a parameter file; one ``RewrittenYaml`` makes, written."""
+        path = str(Path(self.text(file, "a parameter file")).absolute())
+        if not isinstance(file, Rewritten) or file.description != rewritten_yaml.HELPER:
+            return path
+        if not file.exact:
+            raise CommandError(f"{file.describe()} rewrites keys or values launchverify "
+                               "does not follow")
+        rewrites = {key: self.text(value, f"the value RewrittenYaml gives {key}")
+                    for key, value in file.params}
+        root = None if file.root_key is None else self.text(file.root_key, "a root key")
+        try:
+            document = yaml.safe_load(Path(path).read_text(encoding="utf-8"))
+            rewritten = rewritten_yaml.rewrite_document(document, rewrites, root, file.convert)
+        except (OSError, ValueError, TypeError, AttributeError, IndexError, KeyError,
+                yaml.YAMLError) as error:
+            raise CommandError(f"{file.describe()} cannot be rewritten: {error}") from error
+        return self.written(rewritten)
 
     def value(self, value: object, value_type: str | None) -> object:
         """Return a parameter value as the node receives it."""

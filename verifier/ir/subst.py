@@ -442,21 +442,28 @@ class LocalSub(Sub):
 class Rewritten(Sub):
     """A file a helper rewrites at launch time (nav2's ``RewrittenYaml``, ``ReplaceString``).
 
-    Statically it stands for its ``source`` file; ``inputs`` are the values the rewrite
-    reads (so their configurations count as used).
+    Its path stands for its ``source`` file's; ``inputs`` are the values the rewrite reads
+    (so their configurations count as used). For ``RewrittenYaml``, ``params`` are its
+    ``param_rewrites`` (a key, or a dotted path, and the value it gets), ``root_key``
+    the key its content moves under, ``convert`` its ``convert_types``; ``exact`` is false
+    when it also rewrites what launchverify does not follow (``key_rewrites``,
+    ``value_rewrites``, a key that is not text).
     """
 
     source: Sub
     inputs: tuple[Sub, ...]
     description: str
-    root_key: Sub | None = None  # RewrittenYaml's root_key: the keys move under it
+    root_key: Sub | None = None
+    params: tuple[tuple[str, Sub], ...] = ()
+    exact: bool = True
+    convert: bool = False
 
     def describe(self) -> str:
         return f"{self.description}({self.source.describe()})"
 
     def children(self) -> tuple[Sub, ...]:
         root = () if self.root_key is None else (self.root_key,)
-        return (self.source, *self.inputs, *root)
+        return (self.source, *self.inputs, *(value for _, value in self.params), *root)
 
 
 @dataclass(frozen=True, slots=True)
