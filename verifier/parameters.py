@@ -196,6 +196,9 @@ def _add_rewritten(graph: LaunchGraph, param: ParamRecord, rewrite: Rewritten,
         result.complete = False  # a list's item, or a whole mapping: not followed
         return
     for block in blocks:
+        if root and "*" in block.key:
+            result.complete = False  # how rcl reads a pattern under a node key: not known
+            continue
         key = rooted(block.key, root)
         entries = table.setdefault(key, [])
         for name, parameter in block.parameters.items():
