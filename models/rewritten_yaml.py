@@ -14,6 +14,8 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Mapping
 from typing import Any
 
+import yaml
+
 PARAMETERS = "ros__parameters"
 HELPER = "RewrittenYaml"  # how the IR names it (``Rewritten.description``)
 
@@ -113,15 +115,18 @@ def replaces_a_mapping(rewrites: Mapping[str, Any], keys: Iterable[str],
     return any(key in mappings for key in rewrites if "." not in key)
 
 
-def rewrite_document(data: Any, rewrites: Mapping[str, str], root: str | None,
-                     convert: bool) -> Any:
-    """Return a loaded YAML document as ``RewrittenYaml`` writes it (``param_rewrites``).
+def rewrite_document(data: Any, rewrites: Mapping[str, str], replaced: Mapping[str, str],
+                     root: str | None, convert: bool) -> Any:
+    """Return a loaded YAML document as ``RewrittenYaml`` writes it.
+
+    ``rewrites``: its ``param_rewrites``; ``replaced``: its ``value_rewrites``.
 
     Examples:
-        >>> rewrite_document({"amcl": {"ros__parameters": {"use_sim_time": False}}},
+        >>> rewrite_document({"amcl": {"ros__parameters": {"use_sim_time": False,
+        ...                                                 "on": ["ZONE", 1]}}},
         ...                  {"use_sim_time": "True", "amcl.ros__parameters.a": "1"},
-        ...                  "robot1", True)
-        {'robot1': {'amcl': {'ros__parameters': {'use_sim_time': True, 'a': 1}}}}
+        ...                  {"ZONE": "false"}, "robot1", True)
+        {'robot1': {'amcl': {'ros__parameters': {'use_sim_time': True, 'on': [False, 1], 'a': 1}}}}
     """
     values = {key: converted(text, convert) for key, text in rewrites.items()}
     if isinstance(data, dict):
@@ -136,7 +141,17 @@ def rewrite_document(data: Any, rewrites: Mapping[str, str], root: str | None,
         for path, value in values.items():
             if path not in present and PARAMETERS in path.split("."):
                 _set(data, path.split("."), value)
+        data = _replaced(data, {key: converted(text, convert) for key, text in replaced.items()})
     return {root: data} if root else data
+
+
+def _replaced(value: Any, replaced: Mapping[str, object]) -> Any:
+    """Return a value with every value whose text ``replaced`` names replaced."""
+    if isinstance(value, dict):
+        return {key: _replaced(item, replaced) for key, item in value.items()}
+    if isinstance(value, list):
+        return [_replaced(item, replaced) for item in value]
+    return replaced.get(str(value), value)
 
 
 def _keys(mapping: dict[Any, Any]) -> Iterator[tuple[dict[Any, Any], Any]]:
@@ -173,3 +188,19 @@ def _set(data: Any, keys: list[str], value: object) -> None:
         node[int(keys[-1])] = value
     else:
         node[keys[-1]] = value
+
+
+def reads_as_text(value: str) -> bool:
+    """Return whether a ``value_rewrites`` key is text as YAML reads it.
+
+    Only then does launchverify's typed view of a file tell which values it replaces
+    (``str(value)`` of what PyYAML loaded).
+
+    Examples:
+        >>> reads_as_text("KEEPOUT_ZONE_ENABLED"), reads_as_text("5"), reads_as_text("yes")
+        (True, False, False)
+    """
+    try:
+        return isinstance(yaml.safe_load(value), str)
+    except yaml.YAMLError:
+        return False

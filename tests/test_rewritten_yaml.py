@@ -107,3 +107,11 @@ def test_what_is_not_followed_leaves_the_values_unknown(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     found = _parameters(tmp_path, capsys, extra="key_rewrites={'scan': 'base_scan'}, ")
     assert found == {"/amcl": {}, "/planner_server": {}}  # not the source's values
+
+
+def test_value_rewrites_replace_values_by_their_text(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """nav2 marks values to replace (``enabled: KEEPOUT_ZONE_ENABLED``)."""
+    found = _parameters(tmp_path, capsys, extra="value_rewrites={'scan': 'base_scan'}, ")
+    assert found["/amcl"]["scan_topic"] == ("base_scan", "nav.launch.py:13")
+    assert found["/amcl"]["alpha1"] == (0.7, "nav.launch.py:13")

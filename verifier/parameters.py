@@ -26,6 +26,7 @@ from launchverify.models.rewritten_yaml import (
     converted,
     inside_a_leaf,
     paths_of,
+    reads_as_text,
     replaces_a_mapping,
     rewrite_for,
     rooted,
@@ -187,14 +188,15 @@ def _add_rewritten(graph: LaunchGraph, param: ParamRecord, rewrite: Rewritten,
     if not rewrite.exact or (rewrite.root_key is not None and root is None):
         result.complete = False  # what the file becomes is not known here
         return
-    rewrites = dict(rewrite.params)
+    rewrites, values = dict(rewrite.params), dict(rewrite.values)
     present = {path for block in blocks for name in block.parameters
                for path in paths_of(block.key, name)}
-    if inside_a_leaf(rewrites, present) or replaces_a_mapping(
-            rewrites, (block.key for block in blocks),
-            (name for block in blocks for name in block.parameters)):
-        result.complete = False  # a list's item, or a whole mapping: not followed
+    if inside_a_leaf(rewrites, present) or not all(map(reads_as_text, values)) or \
+            replaces_a_mapping(rewrites, (block.key for block in blocks),
+                               (name for block in blocks for name in block.parameters)):
+        result.complete = False  # a list's item, a whole mapping, a number: not followed
         return
+    given = _Given(graph, param, rewrite.convert, values)
     for block in blocks:
         if root and "*" in block.key:
             result.complete = False  # how rcl reads a pattern under a node key: not known
@@ -203,22 +205,51 @@ def _add_rewritten(graph: LaunchGraph, param: ParamRecord, rewrite: Rewritten,
         entries = table.setdefault(key, [])
         for name, parameter in block.parameters.items():
             by = rewrite_for(block.key, name, rewrites)
-            entries.append((name, Contribution(
-                parameter.value, parameter.kind, parameter.span, "file", key=key,
-                value_span=parameter.value_span) if by is None else
-                _rewritten_value(graph, rewrites[by], rewrite.convert, param, key)))
+            entries.append((name, given.value(rewrites[by], key) if by is not None else
+                            given.replaced(parameter.value, key) or Contribution(
+                                parameter.value, parameter.kind, parameter.span, "file",
+                                key=key, value_span=parameter.value_span)))
     for path, block_key, name in added(rewrites, present):
         key = rooted(block_key, root)
-        table.setdefault(key, []).append(
-            (name, _rewritten_value(graph, rewrites[path], rewrite.convert, param, key)))
+        table.setdefault(key, []).append((name, given.value(rewrites[path], key)))
 
 
-def _rewritten_value(graph: LaunchGraph, value: Sub, convert: bool, param: ParamRecord,
-                     key: str) -> Contribution:
-    text = None if _includer_decides(graph, value) else graph.base(value)
-    known = None if text is None else converted(text, convert)
-    return Contribution(known, kind_of(known) if known is not None else "unknown",
-                        param.origin.span, "file", None if text is not None else value, key)
+@dataclass(frozen=True)
+class _Given:
+    """The values a ``RewrittenYaml`` gives, set where the launch gives the file."""
+
+    graph: LaunchGraph
+    param: ParamRecord
+    convert: bool
+    values: dict[str, Sub]  # value_rewrites: applied last, to every value
+
+    def value(self, value: Sub, key: str) -> Contribution:
+        """Return what a rewrite gives (then replaced if a value rewrite names it)."""
+        known = self._known(value)
+        if known is None:
+            return self._contribution(None, key, value)
+        return self.replaced(known, key) or self._contribution(known, key)
+
+    def replaced(self, value: object, key: str) -> Contribution | None:
+        """Return a value as ``value_rewrites`` replace it or its items (``None``: as is)."""
+        if not isinstance(value, list):
+            named = self.values.get(str(value))
+            return None if named is None else self._contribution(self._known(named), key,
+                                                                  named)
+        if not any(str(item) in self.values for item in value):
+            return None
+        items = [self._known(self.values[str(item)]) if str(item) in self.values else item
+                 for item in value]
+        return self._contribution(None if None in items else items, key)
+
+    def _known(self, value: Sub) -> object:
+        text = None if _includer_decides(self.graph, value) else self.graph.base(value)
+        return None if text is None else converted(text, self.convert)
+
+    def _contribution(self, known: object, key: str, written: Sub | None = None) -> Contribution:
+        return Contribution(known, kind_of(known) if known is not None else "unknown",
+                            self.param.origin.span, "file",
+                            written if known is None else None, key)
 
 
 def _inline_value(graph: LaunchGraph, param: ParamRecord) -> object:

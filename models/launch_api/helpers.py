@@ -27,6 +27,16 @@ def _values(mapping: Mapping[Any, Any] | None) -> list[Any]:
     return [item for pair in mapping.items() for item in pair]
 
 
+def _text_keys(mapping: Mapping[Any, Any] | None) -> list[tuple[str, Any]]:
+    return [(key, value) for key, value in (mapping or {}).items() if isinstance(key, str)]
+
+
+def _other_keys(mapping: Mapping[Any, Any] | None) -> list[Any]:
+    """Return the entries whose key is not text, flattened (read, not followed)."""
+    return [item for key, value in (mapping or {}).items() if not isinstance(key, str)
+            for item in (key, value)]
+
+
 class RewrittenYaml(Substitution):
     """``nav2_common.launch.RewrittenYaml(source_file, param_rewrites, root_key=None, ...)``."""
 
@@ -36,11 +46,10 @@ class RewrittenYaml(Substitution):
                  out_dir: Any = None) -> None:
         super().__init__()
         self.source_file = source_file
-        rewrites = dict(param_rewrites or {})
-        self.params = [(key, value) for key, value in rewrites.items() if isinstance(key, str)]
-        self.inputs = [*(item for key, value in rewrites.items() if not isinstance(key, str)
-                         for item in (key, value)),
-                       *_values(key_rewrites), *_values(value_rewrites)]
+        self.params = _text_keys(param_rewrites)
+        self.values = _text_keys(value_rewrites)
+        self.inputs = [*_other_keys(param_rewrites), *_other_keys(value_rewrites),
+                       *_values(key_rewrites)]
         self.exact = not self.inputs  # what else it rewrites is not followed
         self.root_key = root_key
         self.convert = convert_types is True
@@ -49,6 +58,7 @@ class RewrittenYaml(Substitution):
         return s.Rewritten(cv.sub(self.source_file), tuple(cv.sub(x) for x in self.inputs),
                            rewritten_yaml.HELPER, cv.opt_sub(self.root_key),
                            tuple((key, cv.sub(value)) for key, value in self.params),
+                           tuple((key, cv.sub(value)) for key, value in self.values),
                            self.exact, self.convert)
 
 

@@ -469,16 +469,18 @@ class Reducer:
         if root is not None and text_of(root) == "":
             root = None
         params = tuple((key, self.reduce(value)) for key, value in sub.params)
+        values = tuple((key, self.reduce(value)) for key, value in sub.values)
         exact = sub.exact
         if isinstance(source, s.Rewritten) and source.description == REWRITTEN_YAML:
             # a rewritten file, rewritten again
             exact = exact and source.exact and source.root_key is None \
                 and source.convert == sub.convert
-            params = source.params + params
+            params, values = source.params + params, source.values + values
             source = source.source
-        if root is None and not params and exact:
+        if root is None and not params and not values and exact:
             return source
-        return s.Rewritten(source, (), REWRITTEN_YAML, root, params, exact, sub.convert)
+        return s.Rewritten(source, (), REWRITTEN_YAML, root, params, values, exact,
+                           sub.convert)
 
     def _has_node_params(self, sub: s.Rewritten, path: s.Sub, node: str | None) -> s.Sub:
         """nav2's HasNodeParams: 'True' when the YAML file has a top-level key ``node``."""

@@ -222,14 +222,17 @@ class CommandBuilder:
         if not file.exact:
             if not self.strict:
                 return path  # (a dry run shows the source)
-            raise CommandError(f"{file.describe()} rewrites keys or values launchverify "
+            raise CommandError(f"{file.describe()} rewrites keys, which launchverify "
                                "does not follow")
         rewrites = {key: self.text(value, f"the value RewrittenYaml gives {key}")
                     for key, value in file.params}
+        replaced = {key: self.text(value, f"the value RewrittenYaml gives for {key}")
+                    for key, value in file.values}
         root = None if file.root_key is None else self.text(file.root_key, "a root key")
         try:
             document = yaml.safe_load(Path(path).read_text(encoding="utf-8"))
-            rewritten = rewritten_yaml.rewrite_document(document, rewrites, root, file.convert)
+            rewritten = rewritten_yaml.rewrite_document(document, rewrites, replaced, root,
+                                                        file.convert)
         except (OSError, ValueError, TypeError, AttributeError, IndexError, KeyError,
                 yaml.YAMLError) as error:
             raise CommandError(f"{file.describe()} cannot be rewritten: {error}") from error

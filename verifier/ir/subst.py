@@ -445,9 +445,10 @@ class Rewritten(Sub):
     Its path stands for its ``source`` file's; ``inputs`` are the values the rewrite reads
     (so their configurations count as used). For ``RewrittenYaml``, ``params`` are its
     ``param_rewrites`` (a key, or a dotted path, and the value it gets), ``root_key``
-    the key its content moves under, ``convert`` its ``convert_types``; ``exact`` is false
-    when it also rewrites what launchverify does not follow (``key_rewrites``,
-    ``value_rewrites``, a key that is not text).
+    the key its content moves under, ``values`` its ``value_rewrites`` (a value as text,
+    and what replaces it), ``convert`` its ``convert_types``; ``exact`` is false when it
+    also rewrites what launchverify does not follow (``key_rewrites``, a key that is not
+    text).
     """
 
     source: Sub
@@ -455,6 +456,7 @@ class Rewritten(Sub):
     description: str
     root_key: Sub | None = None
     params: tuple[tuple[str, Sub], ...] = ()
+    values: tuple[tuple[str, Sub], ...] = ()
     exact: bool = True
     convert: bool = False
 
@@ -463,7 +465,8 @@ class Rewritten(Sub):
 
     def children(self) -> tuple[Sub, ...]:
         root = () if self.root_key is None else (self.root_key,)
-        return (self.source, *self.inputs, *(value for _, value in self.params), *root)
+        rewrites = (value for _, value in (*self.params, *self.values))
+        return (self.source, *self.inputs, *rewrites, *root)
 
 
 @dataclass(frozen=True, slots=True)
