@@ -222,8 +222,8 @@ class CommandBuilder:
         if not file.exact:
             if not self.strict:
                 return path  # (a dry run shows the source)
-            raise CommandError(f"{file.describe()} rewrites keys, which launchverify "
-                               "does not follow")
+            raise CommandError(f"{file.describe()}: launchverify does not follow what it "
+                               "rewrites (key_rewrites, or a key that is not text)")
         rewrites = {key: self.text(value, f"the value RewrittenYaml gives {key}")
                     for key, value in file.params}
         replaced = {key: self.text(value, f"the value RewrittenYaml gives for {key}")
