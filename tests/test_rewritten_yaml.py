@@ -47,7 +47,7 @@ def generate_launch_description():
         param_rewrites={{'use_sim_time': LaunchConfiguration('use_sim_time'),
                          'amcl.ros__parameters.alpha1': '0.7',
                          'planner_server.ros__parameters.expected_planner_frequency': '20'}},
-        {extra}convert_types=True)
+        {extra}convert_types={convert})
     return LaunchDescription([
         DeclareLaunchArgument('namespace', default_value=''),
         DeclareLaunchArgument('use_sim_time', default_value='true'),
@@ -63,10 +63,11 @@ SOURCE = "os.path.join(HERE, 'params.yaml')"
 
 
 def _parameters(tmp_path: Path, capsys: pytest.CaptureFixture[str], *arguments: str,
-                source: str = SOURCE, extra: str = "") -> dict[str, dict[str, object]]:
+                source: str = SOURCE, extra: str = "", convert: str = "True"
+                ) -> dict[str, dict[str, object]]:
     (tmp_path / "params.yaml").write_text(PARAMS)
     launch = tmp_path / "nav.launch.py"
-    launch.write_text(LAUNCH.format(source=source, extra=extra))
+    launch.write_text(LAUNCH.format(source=source, extra=extra, convert=convert))
     assert main(["graph", str(launch), "--workspace", str(tmp_path), *arguments]) == 0
     nodes = json.loads(capsys.readouterr().out)["nodes"]
     return {node["fqn"]: {name: (entry["value"], Path(entry["from"]).name)
@@ -107,6 +108,8 @@ def test_what_is_not_followed_leaves_the_values_unknown(
         tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
     found = _parameters(tmp_path, capsys, extra="key_rewrites={'scan': 'base_scan'}, ")
     assert found == {"/amcl": {}, "/planner_server": {}}  # not the source's values
+    unknown = _parameters(tmp_path, capsys, convert="LaunchConfiguration('convert')")
+    assert unknown == {"/amcl": {}, "/planner_server": {}}  # the values' types
 
 
 def test_value_rewrites_replace_values_by_their_text(

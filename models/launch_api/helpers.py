@@ -50,7 +50,8 @@ class RewrittenYaml(Substitution):
         self.values = _text_keys(value_rewrites)
         self.inputs = [*_other_keys(param_rewrites), *_other_keys(value_rewrites),
                        *_values(key_rewrites)]
-        self.exact = not self.inputs  # what else it rewrites is not followed
+        # what else it rewrites is not followed, nor values of types not known here
+        self.exact = not self.inputs and isinstance(convert_types, bool)
         self.root_key = root_key
         self.convert = convert_types is True
 
