@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 
 from launchverify.cli import main
+from launchverify.engine import CheckOptions, run_check
 
 PARAMS = """\
 amcl:
@@ -118,3 +119,35 @@ def test_value_rewrites_replace_values_by_their_text(
     found = _parameters(tmp_path, capsys, extra="value_rewrites={'scan': 'base_scan'}, ")
     assert found["/amcl"]["scan_topic"] == ("base_scan", "nav.launch.py:13")
     assert found["/amcl"]["alpha1"] == (0.7, "nav.launch.py:13")
+
+
+SPAWNED = """\
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+from nav2_common.launch import RewrittenYaml
+
+
+def generate_launch_description():
+    types = RewrittenYaml(source_file=os.path.join(os.path.dirname(__file__), 'types.yaml'),
+                          root_key='{root}', param_rewrites={{}})
+    return LaunchDescription([
+        Node(package='controller_manager', executable='ros2_control_node', namespace='robot1'),
+        Node(package='controller_manager', executable='spawner', namespace='robot1',
+             arguments=['arm_controller', '-c', '/robot1/controller_manager'],
+             parameters=[types]),
+    ])
+"""
+
+
+@pytest.mark.parametrize(("root", "codes"), [("robot1", []), ("robot2", ["LV507"])])
+def test_a_spawners_file_under_a_root_key_gives_types_there(
+        tmp_path: Path, root: str, codes: list[str]) -> None:
+    """The spawner reads the type under the controller's own name, namespace included."""
+    (tmp_path / "types.yaml").write_text(
+        "arm_controller:\n  ros__parameters:\n"
+        "    type: joint_trajectory_controller/JointTrajectoryController\n")
+    (tmp_path / "arm.launch.py").write_text(SPAWNED.format(root=root))
+    report = run_check(CheckOptions(paths=[tmp_path], workspace=tmp_path))
+    assert [f.code for f in report.findings if f.code.startswith("LV5")] == codes, [
+        f.message for f in report.findings]

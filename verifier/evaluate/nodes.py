@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 
 from launchverify.evaluate.reducers import Ctx, ScopeReducer
 from launchverify.evaluate.scope import GLOBAL_PARAMS, ROS_NAMESPACE, ROS_REMAPS
-from launchverify.evaluate.values import machine_dependent, ns_prefix, text_of
+from launchverify.evaluate.values import file_source, machine_dependent, ns_prefix, text_of
 from launchverify.graph import (
     FileRef,
     LaunchRecord,
@@ -173,12 +173,12 @@ class NodeBuilder:
             reducer = self.walker.reducer.at(ctx, entry.span)
             if isinstance(entry, a.ParamFile):
                 location = reducer.reduce(entry.path)
-                self.check_file(location, ctx.origin(entry.span), "parameter file", ctx,
-                                entry.path)
+                self.check_file(file_source(location), ctx.origin(entry.span),
+                                "parameter file", ctx, entry.path)
                 out.append(ParamRecord(ctx.origin(entry.span), file=location,
                                        source=self.read_param_file(location)))
                 if self.allows_substitutions(entry, ctx):
-                    self.substitute_param_file(location, entry.span, ctx)
+                    self.substitute_param_file(file_source(location), entry.span, ctx)
                 continue
             for item in entry.items:
                 value = item.value.value
@@ -221,7 +221,11 @@ class NodeBuilder:
             self.walker.reducer.at(ctx, line.where).reduce(line.expression)
 
     def read_param_file(self, location: s.Sub) -> Path | None:
-        """Read a parameter file of the workspace into the graph; return where it is."""
+        """Read a parameter file of the workspace into the graph; return where it is.
+
+        A file ``RewrittenYaml`` rewrites is read as its source (its readers apply it).
+        """
+        location = file_source(location)
         text = text_of(location) or self.walker.graph.base(location)
         if not text or not Path(text).is_absolute():
             return None

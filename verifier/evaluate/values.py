@@ -46,12 +46,25 @@ _SAFE_LOADER = getattr(yaml, "CSafeLoader", yaml.SafeLoader)
 def text_of(sub: s.Sub | None) -> str | None:
     """Return the text of a concrete value, or ``None`` when it is symbolic.
 
-    A YAML file rewritten at launch time (``RewrittenYaml``) is named by its source's
-    path: what is rewritten in it, its readers follow (``parameters.py``).
+    A YAML file ``RewrittenYaml`` rewrites without moving its keys under a root key is
+    named by its source's path, as it stands for it (its readers follow what it rewrites:
+    ``parameters.py``); one with a root key is named only where a file is expected
+    (``file_source``).
     """
-    if isinstance(sub, s.Rewritten) and sub.description == REWRITTEN_YAML:
+    if isinstance(sub, s.Rewritten) and sub.description == REWRITTEN_YAML \
+            and sub.root_key is None:
         sub = sub.source
     return sub.text if isinstance(sub, s.Text) else None
+
+
+def file_source(sub: s.Sub) -> s.Sub:
+    """Return the file a parameter file value reads: a ``RewrittenYaml``'s source.
+
+    What the rewrite does, the file's readers apply (``parameters.py``).
+    """
+    if isinstance(sub, s.Rewritten) and sub.description == REWRITTEN_YAML:
+        return sub.source
+    return sub
 
 
 def is_unset(sub: s.Sub) -> bool:

@@ -34,6 +34,7 @@ from launchverify.evaluate.scope import (
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
 from launchverify.evaluate.values import (
     argument_names,
+    file_source,
     is_literal,
     is_unset,
     machine_dependent,
@@ -773,8 +774,8 @@ class Walker:
     def do_SetParametersFromFile(self, action: a.SetParametersFromFile, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
         location = reducer.reduce(action.filename)
-        self.nodes.check_file(location, ctx.origin(action.at("filename")), "parameter file", ctx,
-                              action.filename)
+        self.nodes.check_file(file_source(location), ctx.origin(action.at("filename")),
+                              "parameter file", ctx, action.filename)
         self.scopes.append_shared(GLOBAL_PARAMS, ScopedParam(
             ctx.origin(action.span), ctx.path, file=location,
             source=self.nodes.read_param_file(location)))

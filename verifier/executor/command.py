@@ -19,6 +19,7 @@ from pathlib import Path
 
 import yaml
 
+from launchverify.evaluate.values import file_source
 from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, ParamRecord
 from launchverify.ir.subst import Concat, Rewritten, Sub, Text
 from launchverify.ir.symbolic import CommandOutput
@@ -216,7 +217,7 @@ class CommandBuilder:
 
     def parameter_file(self, file: Sub) -> str:
         """Return the path of a parameter file; one ``RewrittenYaml`` makes, written."""
-        path = str(Path(self.text(file, "a parameter file")).absolute())
+        path = str(Path(self.text(file_source(file), "a parameter file")).absolute())
         if not isinstance(file, Rewritten) or file.description != rewritten_yaml.HELPER:
             return path
         if not file.exact:

@@ -15,7 +15,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from launchverify.graph import NodeRecord, ParamRecord
-from launchverify.ir.subst import Sub, Text
+from launchverify.ir.subst import Rewritten, Sub, Text
+from launchverify.models.rewritten_yaml import rooted
 from launchverify.models.ros2_control import CONTROL_NODE, MANAGER_NAME, SPAWNER
 from launchverify.models.ros_names import node_fqn, node_key_matches
 from launchverify.parameters import effective_parameters
@@ -229,12 +230,19 @@ class Spawners:
         value that could be a controller's type, or a file not read, leaves it unknown.
         """
         found: list[ParamFile] = []
+        graph = self.composer.graph
         for param in spawner.parameters:
             if param.file is not None:
-                loaded = (None if param.source is None
-                          else self.composer.graph.param_files.get(param.source))
+                loaded = None if param.source is None else graph.param_files.get(param.source)
                 if loaded is None or not loaded.readable:
                     return found, "a parameter file of the spawner could not be read"
+                if isinstance(param.file, Rewritten) and param.file.root_key is not None:
+                    root = graph.base(param.file.root_key)  # (RewrittenYaml's)
+                    if root is None:
+                        return found, "a parameter file of the spawner moves under a key " \
+                            "not known before launch"
+                    loaded = replace(loaded, blocks=[replace(block, key=rooted(block.key, root))
+                                                     for block in loaded.blocks])
                 found.append(loaded)
             elif param.name is None or (self.composer.text(param.name) or "type") \
                     .rpartition(".")[2] == "type":
