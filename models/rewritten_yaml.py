@@ -16,8 +16,21 @@ from typing import Any
 
 import yaml
 
+from launchverify.ir.subst import Rewritten
+
 PARAMETERS = "ros__parameters"
 HELPER = "RewrittenYaml"  # how the IR names it (``Rewritten.description``)
+
+
+def rewrite_of(value: object) -> Rewritten | None:
+    """Return the ``RewrittenYaml`` a (reduced) file value is, if it is one."""
+    return value if isinstance(value, Rewritten) and value.description == HELPER else None
+
+
+def under_root(value: object) -> bool:
+    """Return whether a file value is rewritten with its keys moved under a root key."""
+    rewrite = rewrite_of(value)
+    return rewrite is not None and rewrite.root_key is not None
 
 
 def converted(text: str, convert: bool) -> object:

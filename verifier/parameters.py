@@ -21,7 +21,6 @@ from launchverify.ir.subst import Rewritten, Sub, walk
 from launchverify.ir.symbolic import Arg
 from launchverify.models.parameter_values import typed_parameter
 from launchverify.models.rewritten_yaml import (
-    HELPER,
     added,
     converted,
     inside_a_leaf,
@@ -29,6 +28,7 @@ from launchverify.models.rewritten_yaml import (
     reads_as_text,
     replaces_a_mapping,
     rewrite_for,
+    rewrite_of,
     rooted,
 )
 from launchverify.models.ros_names import node_key_matches
@@ -164,8 +164,7 @@ def _add_file(graph: LaunchGraph, param: ParamRecord,
     if loaded is None or not loaded.readable:
         result.complete = False
         return
-    rewrite = param.file if isinstance(param.file, Rewritten) \
-        and param.file.description == HELPER else None
+    rewrite = rewrite_of(param.file)
     if rewrite is not None:
         _add_rewritten(graph, param, rewrite, loaded.blocks, table, result)
         return

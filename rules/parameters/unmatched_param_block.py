@@ -12,8 +12,8 @@ from pathlib import Path
 from typing import NamedTuple
 
 from launchverify.graph import LaunchGraph, NodeRecord
-from launchverify.ir.subst import Rewritten
 from launchverify.models.node_names import BUILTIN_NAMES, InnerNode, inner_nodes
+from launchverify.models.rewritten_yaml import under_root
 from launchverify.models.ros_names import node_key_matches
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, GatheringRule, Related, RuleContext, Severity
@@ -287,7 +287,7 @@ def receivers_of(graph: LaunchGraph, path: Path,
     spellings: set[str] = {str(path)}
     seen: set[int] = set()
     for node, param in file_readers(graph).get(path, []):
-        if isinstance(param.file, Rewritten) and param.file.root_key is not None:
+        if under_root(param.file):
             return None  # its keys move under a root key (RewrittenYaml): not this file's
         if param.file is not None and (text := graph.base(param.file)) is not None:
             spellings.add(text)

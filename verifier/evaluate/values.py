@@ -37,6 +37,7 @@ from launchverify.models.python_expression import (
     evaluate_expression,
 )
 from launchverify.models.rewritten_yaml import HELPER as REWRITTEN_YAML
+from launchverify.models.rewritten_yaml import rewrite_of
 from launchverify.models.ros_names import make_absolute, prefix_namespace
 from launchverify.span import Span
 
@@ -51,9 +52,11 @@ def text_of(sub: s.Sub | None) -> str | None:
     ``parameters.py``); one with a root key is named only where a file is expected
     (``file_source``).
     """
-    if isinstance(sub, s.Rewritten) and sub.description == REWRITTEN_YAML \
-            and sub.root_key is None:
-        sub = sub.source
+    if type(sub) is s.Text:
+        return sub.text
+    rewrite = rewrite_of(sub)
+    if rewrite is not None and rewrite.root_key is None:
+        return text_of(rewrite.source)
     return sub.text if isinstance(sub, s.Text) else None
 
 
@@ -62,9 +65,8 @@ def file_source(sub: s.Sub) -> s.Sub:
 
     What the rewrite does, the file's readers apply (``parameters.py``).
     """
-    if isinstance(sub, s.Rewritten) and sub.description == REWRITTEN_YAML:
-        return sub.source
-    return sub
+    rewrite = rewrite_of(sub)
+    return sub if rewrite is None else rewrite.source
 
 
 def is_unset(sub: s.Sub) -> bool:
@@ -484,12 +486,12 @@ class Reducer:
         params = tuple((key, self.reduce(value)) for key, value in sub.params)
         values = tuple((key, self.reduce(value)) for key, value in sub.values)
         exact = sub.exact
-        if isinstance(source, s.Rewritten) and source.description == REWRITTEN_YAML:
-            # a rewritten file, rewritten again
-            exact = exact and source.exact and source.root_key is None \
-                and source.convert == sub.convert
-            params, values = source.params + params, source.values + values
-            source = source.source
+        inner = rewrite_of(source)
+        if inner is not None:  # a rewritten file, rewritten again
+            exact = exact and inner.exact and inner.root_key is None \
+                and inner.convert == sub.convert
+            params, values = inner.params + params, inner.values + values
+            source = inner.source
         if root is None and not params and not values and exact:
             return source
         return s.Rewritten(source, (), REWRITTEN_YAML, root, params, values, exact,

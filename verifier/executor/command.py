@@ -21,7 +21,7 @@ import yaml
 
 from launchverify.evaluate.values import file_source
 from launchverify.graph import LaunchGraph, LaunchRecord, NodeRecord, ParamRecord
-from launchverify.ir.subst import Concat, Rewritten, Sub, Text
+from launchverify.ir.subst import Concat, Sub, Text
 from launchverify.ir.symbolic import CommandOutput
 from launchverify.models import rewritten_yaml
 from launchverify.models.parameter_values import typed_parameter
@@ -218,25 +218,26 @@ class CommandBuilder:
     def parameter_file(self, file: Sub) -> str:
         """Return the path of a parameter file; one ``RewrittenYaml`` makes, written."""
         path = str(Path(self.text(file_source(file), "a parameter file")).absolute())
-        if not isinstance(file, Rewritten) or file.description != rewritten_yaml.HELPER:
+        rewrite = rewritten_yaml.rewrite_of(file)
+        if rewrite is None:
             return path
-        if not file.exact:
+        if not rewrite.exact:
             if not self.strict:
                 return path  # (a dry run shows the source)
-            raise CommandError(f"{file.describe()}: launchverify does not follow what it "
+            raise CommandError(f"{rewrite.describe()}: launchverify does not follow what it "
                                "rewrites (key_rewrites, or a key that is not text)")
         rewrites = {key: self.text(value, f"the value RewrittenYaml gives {key}")
-                    for key, value in file.params}
+                    for key, value in rewrite.params}
         replaced = {key: self.text(value, f"the value RewrittenYaml gives for {key}")
-                    for key, value in file.values}
-        root = None if file.root_key is None else self.text(file.root_key, "a root key")
+                    for key, value in rewrite.values}
+        root = None if rewrite.root_key is None else self.text(rewrite.root_key, "a root key")
         try:
             document = yaml.safe_load(Path(path).read_text(encoding="utf-8"))
             rewritten = rewritten_yaml.rewrite_document(document, rewrites, replaced, root,
-                                                        file.convert)
+                                                        rewrite.convert)
         except (OSError, ValueError, TypeError, AttributeError, IndexError, KeyError,
                 yaml.YAMLError) as error:
-            raise CommandError(f"{file.describe()} cannot be rewritten: {error}") from error
+            raise CommandError(f"{rewrite.describe()} cannot be rewritten: {error}") from error
         return self.written(rewritten)
 
     def value(self, value: object, value_type: str | None) -> object:

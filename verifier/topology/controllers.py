@@ -15,8 +15,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING
 
 from launchverify.graph import NodeRecord, ParamRecord
-from launchverify.ir.subst import Rewritten, Sub, Text
-from launchverify.models.rewritten_yaml import rooted
+from launchverify.ir.subst import Sub, Text
+from launchverify.models.rewritten_yaml import rewrite_of, rooted
 from launchverify.models.ros2_control import CONTROL_NODE, MANAGER_NAME, SPAWNER
 from launchverify.models.ros_names import node_fqn, node_key_matches
 from launchverify.parameters import effective_parameters
@@ -236,8 +236,9 @@ class Spawners:
                 loaded = None if param.source is None else graph.param_files.get(param.source)
                 if loaded is None or not loaded.readable:
                     return found, "a parameter file of the spawner could not be read"
-                if isinstance(param.file, Rewritten) and param.file.root_key is not None:
-                    root = graph.base(param.file.root_key)  # (RewrittenYaml's)
+                rewrite = rewrite_of(param.file)
+                if rewrite is not None and rewrite.root_key is not None:
+                    root = graph.base(rewrite.root_key)
                     if root is None:
                         return found, "a parameter file of the spawner moves under a key " \
                             "not known before launch"
