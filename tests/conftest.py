@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import tempfile
 from collections.abc import Iterator
 
 import pytest
@@ -15,6 +16,9 @@ def pytest_configure() -> None:
     folder of its own; subprocesses inherit this too.
     """
     os.environ["LAUNCHVERIFY_NO_CACHE"] = "1"
+    # the results cache's secret (``findings/sealed.py``) is made in a folder of the
+    # session's, never in the home of whoever runs the tests
+    os.environ.setdefault("XDG_STATE_HOME", tempfile.mkdtemp(prefix="launchverify-state-"))
 
 
 @pytest.fixture(autouse=True)

@@ -8,6 +8,8 @@ from pathlib import Path
 from typing import Any
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from launchverify.cli import main
 from launchverify.findings import cache
@@ -66,7 +68,7 @@ def test_unchanged_tree_is_read_from_the_cache(tree: Path,
     assert first == {"LV204:top.launch.xml:3"} and not cached
     second, cached = check(capsys, tree)
     assert second == first and cached
-    assert list((tree.parent / "cache" / "launchverify").glob("*.pickle"))
+    assert list((tree.parent / "cache" / "launchverify").glob("*.json"))
 
 
 def test_an_edited_included_file_is_checked_again(tree: Path,
@@ -238,8 +240,8 @@ def test_no_cache_neither_reads_nor_writes(tree: Path,
 def test_a_damaged_cache_is_recomputed(tree: Path, capsys: pytest.CaptureFixture[str]) -> None:
     elsewhere = tree.parent / "elsewhere"
     check(capsys, tree, "--cache-dir", str(elsewhere))
-    for stored in elsewhere.glob("*.pickle"):
-        stored.write_bytes(b"not a pickle")
+    for stored in elsewhere.glob("*.json"):
+        stored.write_bytes(b"not a result")
     findings, cached = check(capsys, tree, "--cache-dir", str(elsewhere))
     assert findings == {"LV204:top.launch.xml:3"} and not cached
     assert check(capsys, tree, "--cache-dir", str(elsewhere))[1]
@@ -294,14 +296,14 @@ def test_extracted_interfaces_are_kept_between_runs(tmp_path: Path) -> None:
         first = files.file_interfaces(source)
         store = blobs("interfaces")
     assert blobs("interfaces") is None  # outside the block: no store
-    assert store is not None and len(list(store.folder.glob("*.pickle"))) == 1
+    assert store is not None and len(list(store.folder.glob("*.json"))) == 1
     assert [e.name for e in first.endpoints] == ["chatter"]
     files.clear_cache()  # another process
     with in_use(cache):
         again = files.file_interfaces(tmp_path / "talker.cpp")
     assert files.cache_stats() == {"parsed": 0, "reused": 1}
     assert again == first
-    for stored in store.folder.glob("*.pickle"):
+    for stored in store.folder.glob("*.json"):
         stored.write_bytes(b"damaged")
     files.clear_cache()
     with in_use(cache):
@@ -324,3 +326,67 @@ def test_links_are_followed_inside_only_but_in_our_own_code(tmp_path: Path) -> N
     (tmp_path / "ws").mkdir()
     (tmp_path / "ws" / "everything").symlink_to("/")
     assert _walk([str(tmp_path / "ws")]) == {}
+
+
+# --------------------------------------------------------------------------- plain data
+
+
+def test_a_check_s_results_come_back_as_they_were_stored() -> None:
+    """The report and each root's kept results of a real check, through plain data."""
+    from launchverify.engine import CheckOptions, run_check
+    from launchverify.findings import plain
+
+    corpus = Path(__file__).parent.parent / "corpus"
+    report = run_check(CheckOptions(paths=[corpus / "naming", corpus / "parameters"]),
+                       None, keep=True)
+    assert report.findings and report.kept is not None and report.kept.roots
+    detached = report.detached()
+    assert plain.loads(plain.dumps(detached)) == detached
+    kept = plain.loads(plain.dumps(report.kept))
+    assert isinstance(kept, cache.Kept)
+    assert kept.roots == report.kept.roots and kept.token == report.kept.token
+
+
+def test_only_launchverify_s_own_records_are_rebuilt() -> None:
+    """A class of another module, a class whose fields changed, a field of the wrong type,
+    a reference to nothing, or data nested past the bound: each is malformed."""
+    from launchverify.findings import plain
+
+    span = ["launchverify.span", "Span", ["file", "line", "column", "end_line", "end_column"]]
+    good = [[span], ["/a"], [0, ["p", 0], 3, 1, None, None]]
+    assert plain.loads(json.dumps(good).encode()) == cache_span("/a", 3)
+    for bad in (
+        [[["os", "system", []]], [], [0]],
+        [[["launchverify.span", "Span", ["file", "line"]]], ["/a"], [0, ["p", 0], 3]],
+        [[span], ["/a"], [0, ["p", 0], "three", 1, None, None]],
+        [[span], [], [0, ["p", 0], 3, 1, None, None]],
+        [[["launchverify.findings.plain", "Malformed", []]], [], [0]],
+        [[], [], ["r", 0]],
+        [[], [], ["x", 1]],
+        [[], [], json.loads("[" * 300 + '"l"' + "]" * 300)],
+    ):
+        with pytest.raises(plain.Malformed):
+            plain.loads(json.dumps(bad).encode())
+    for cut in (b"", b"[", b"\xff\xfe", b"[[],[],", b"[" * 100_000):
+        with pytest.raises(plain.Malformed):
+            plain.loads(cut)
+    with pytest.raises(plain.Malformed):  # nothing but launchverify's own is written
+        plain.dumps([object()])
+
+
+def cache_span(file: str, line: int) -> object:
+    from launchverify.span import Span
+
+    return Span(Path(file), line)
+
+
+@given(st.recursive(
+    st.none() | st.booleans() | st.integers() | st.text()
+    | st.floats(allow_nan=False) | st.builds(Path, st.text(min_size=1)),
+    lambda inner: st.lists(inner) | st.tuples(inner, inner)
+    | st.frozensets(st.text() | st.integers()) | st.dictionaries(st.text() | st.integers(), inner),
+    max_leaves=30))
+def test_plain_values_come_back_equal(value: object) -> None:
+    from launchverify.findings import plain
+
+    assert plain.loads(plain.dumps(value)) == value

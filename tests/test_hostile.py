@@ -911,3 +911,170 @@ def test_a_description_too_large_is_not_checked_and_the_rest_is(tmp_path: Path) 
     assert ("LV101", "sentinel.launch.xml") in found
     [big] = [f for f in report.findings if f.span.file.name == "big.launch.py"]
     assert big.code == "LV003" and "250,000 parts" in big.message
+
+
+# ---- issue 42: the results cache ----
+# A pull request can commit the folder a CI job keeps its results cache in. What is read
+# back from it is plain data, sealed with a secret outside the tree: it runs nothing and
+# decides nothing it was not given by this installation.
+
+
+def _cached_check(workspace: Path, cwd: Path, *extra: str,
+                  environment: dict[str, str] | None = None) -> subprocess.CompletedProcess[str]:
+    env = {key: value for key, value in os.environ.items() if key != "LAUNCHVERIFY_NO_CACHE"}
+    env.update(environment or {})
+    return subprocess.run([sys.executable, "-m", "launchverify", "check", str(workspace),
+                           "--format", "json", *extra], capture_output=True, text=True,
+                          cwd=cwd, timeout=120, check=False, env=env)
+
+
+def _codes(done: subprocess.CompletedProcess[str]) -> list[tuple[str, str, int]]:
+    document = json.loads(done.stdout)
+    return sorted((f["code"], Path(f["file"]).name, f["line"]) for f in document["findings"])
+
+
+def _cache_tree(tmp_path: Path) -> tuple[Path, Path, Path]:
+    """Return a workspace with the sentinel, a canary folder, and a state folder."""
+    workspace = tmp_path / "ws"
+    workspace.mkdir()
+    (workspace / ".git").mkdir()
+    (workspace / "sentinel.launch.xml").write_text(SENTINEL_XML)
+    canary = tmp_path / "canary"
+    canary.mkdir()
+    return workspace, canary, tmp_path / "state"
+
+
+def _stored_name(workspace: Path, state: Path, cache_dir: Path) -> str:
+    """Return the name this installation stores the check of ``workspace`` under: what an
+    attacker who could guess it would plant a file as (the worst case)."""
+    cache_dir.mkdir(parents=True, exist_ok=True)
+    time.sleep(0.05)  # (a folder made during a check unsettles its result)
+    done = _cached_check(workspace, workspace.parent, "--cache-dir", str(cache_dir),
+                         environment={"XDG_STATE_HOME": str(state)})
+    assert done.returncode == 1, done.stderr[-2000:]
+    [stored] = [p.name for p in cache_dir.glob("*.json") if not p.name.endswith(".roots.json")]
+    for path in cache_dir.glob("*.json"):
+        path.unlink()
+    return stored
+
+
+def test_a_planted_cache_runs_nothing_and_decides_nothing(tmp_path: Path) -> None:
+    """A pickle that calls os.system, and forged plain data, under the very name this
+    installation reads: nothing runs, and the verdict is the check's own."""
+    import pickle
+
+    workspace, canary, state = _cache_tree(tmp_path)
+    cache_dir = workspace / ".cache" / "launchverify"
+    name = _stored_name(workspace, state, cache_dir)
+
+    class Payload:
+        def __reduce__(self) -> tuple[object, ...]:
+            return (os.system, (f"touch {canary}/pickle",))
+
+    fresh = _cached_check(workspace, tmp_path, "--no-cache")
+    forged = json.dumps([[["launchverify.engine", "Report", ["findings"]]], [], [0, ["l"]]])
+    code = json.dumps([[["os", "system", []]], [], [0]])
+    for planted in (pickle.dumps(Payload()), forged.encode(), code.encode(),
+                    b"launchverify sealed 1\n" + b"0" * 64 + b"\n" + forged.encode()):
+        cache_dir.mkdir(parents=True, exist_ok=True)
+        (cache_dir / name).write_bytes(planted)
+        (cache_dir / name.replace(".json", ".pickle")).write_bytes(pickle.dumps(Payload()))
+        done = _cached_check(workspace, tmp_path, "--cache-dir", str(cache_dir),
+                             environment={"XDG_STATE_HOME": str(state)})
+        assert done.returncode == 1, done.stderr[-2000:]
+        assert _codes(done) == _codes(fresh)
+        assert not json.loads(done.stdout)["summary"].get("cached")
+        assert not list(canary.iterdir())
+        for path in cache_dir.glob("*.json"):
+            path.unlink()
+
+
+def test_a_result_sealed_by_another_installation_is_not_taken(tmp_path: Path) -> None:
+    """The same cache folder read with another secret: a miss, never a verdict; and an
+    entry whose content was changed after sealing is a miss too."""
+    workspace, _, state = _cache_tree(tmp_path)
+    cache_dir = tmp_path / "cache"
+    env = {"XDG_STATE_HOME": str(state)}
+    first = _cached_check(workspace, tmp_path, "--cache-dir", str(cache_dir), environment=env)
+    again = _cached_check(workspace, tmp_path, "--cache-dir", str(cache_dir), environment=env)
+    assert json.loads(again.stdout)["summary"].get("cached")
+    other = _cached_check(workspace, tmp_path, "--cache-dir", str(cache_dir),
+                          environment={"XDG_STATE_HOME": str(tmp_path / "other")})
+    assert not json.loads(other.stdout)["summary"].get("cached")
+    assert _codes(other) == _codes(first)
+    # the result stored last, with its verdict changed in place: the seal no longer fits
+    for path in cache_dir.glob("*.json"):
+        data = path.read_bytes()
+        path.write_bytes(data.replace(b'"LV101"', b'"LV999"').replace(b'"twin"', b'"nope"'))
+    tampered = _cached_check(workspace, tmp_path, "--cache-dir", str(cache_dir),
+                             environment=env)
+    assert not json.loads(tampered.stdout)["summary"].get("cached")
+    assert _codes(tampered) == _codes(first)
+
+
+def test_a_default_cache_folder_inside_the_checked_tree_is_not_used(tmp_path: Path) -> None:
+    """XDG_CACHE_HOME in the checkout (actions/cache): not used unless named, with a note."""
+    workspace, _, state = _cache_tree(tmp_path)
+    env = {"XDG_STATE_HOME": str(state), "XDG_CACHE_HOME": str(workspace / ".cache")}
+    done = _cached_check(workspace, workspace, environment=env)
+    assert done.returncode == 1
+    assert "inside the checked tree" in done.stderr and "--cache-dir" in done.stderr
+    assert not (workspace / ".cache").exists()
+    (workspace / ".cache" / "launchverify").mkdir(parents=True)
+    time.sleep(0.05)  # (a folder made during a check unsettles its result)
+    named = _cached_check(workspace, workspace, "--cache-dir", ".cache/launchverify",
+                          environment=env)
+    assert "inside the checked tree" not in named.stderr
+    assert list((workspace / ".cache" / "launchverify").glob("*.json"))
+    # the secret never lies in a checked tree
+    inside = _cached_check(workspace, workspace, "--cache-dir", str(tmp_path / "c"),
+                           environment={"XDG_STATE_HOME": str(workspace / "state")})
+    assert "state folder" in inside.stderr and not (workspace / "state").exists()
+
+
+def test_links_in_the_cache_folder_lead_nowhere(tmp_path: Path) -> None:
+    """A cache tag, a stored result and an old file that are links out of the folder:
+    nothing is written, read or removed through them."""
+    workspace, canary, state = _cache_tree(tmp_path)
+    cache_dir = tmp_path / "cache"
+    cache_dir.mkdir()
+    (cache_dir / "CACHEDIR.TAG").symlink_to(canary / "tag")  # dangling
+    old = canary / "old.json"
+    old.write_text("keep me")
+    os.utime(old, (0, 0))
+    (cache_dir / "old.json").symlink_to(old)
+    env = {"XDG_STATE_HOME": str(state)}
+    _cached_check(workspace, tmp_path, "--cache-dir", str(cache_dir), environment=env)
+    name = next(p.name for p in cache_dir.glob("*.json")
+                if not p.is_symlink() and not p.name.endswith(".roots.json"))
+    (cache_dir / name).unlink()
+    (cache_dir / name).symlink_to(canary / "result")
+    done = _cached_check(workspace, tmp_path, "--cache-dir", str(cache_dir), environment=env)
+    assert done.returncode == 1
+    assert sorted(p.name for p in canary.iterdir()) == ["old.json"]
+    assert old.read_text() == "keep me"
+
+
+def test_a_result_from_the_cache_reads_no_more_than_its_check(tmp_path: Path) -> None:
+    """A check answered from the cache shows no code frame of a linked file outside the
+    workspace: its reads are confined as the check's were."""
+    vault = tmp_path / "vault"
+    vault.mkdir()
+    (vault / "secret.launch.xml").write_text(f"<{SECRET}>\n")  # its first line, framed
+    workspace = tmp_path / "ws"
+    workspace.mkdir()
+    (workspace / "sentinel.launch.xml").write_text(SENTINEL_XML)
+    (workspace / "linked.launch.xml").symlink_to(vault / "secret.launch.xml")
+    time.sleep(0.05)
+    env = {key: value for key, value in os.environ.items() if key != "LAUNCHVERIFY_NO_CACHE"}
+    env.update({"XDG_STATE_HOME": str(tmp_path / "state"),
+                "XDG_CACHE_HOME": str(tmp_path / "cache")})
+    outputs = []
+    for _ in range(2):
+        done = subprocess.run([sys.executable, "-m", "launchverify", "check", str(workspace),
+                               "--format", "text", "--color", "never"], capture_output=True,
+                              text=True, cwd=tmp_path, timeout=120, check=False, env=env)
+        outputs.append(done.stdout + done.stderr)
+    assert "cached" in outputs[1]
+    for shown in outputs:
+        assert "not read" in shown and SECRET not in shown, shown[-3000:]

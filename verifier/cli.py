@@ -533,7 +533,10 @@ def _check(args: argparse.Namespace) -> int:
     _fix_usage(args)
     buffered = _read_stdin(args)
     options, config = check_options(args, progress=not args.quiet and sys.stderr.isatty())
-    report = run_check_cached(options, None if buffered else _result_cache(args))
+    cache = None if buffered else _result_cache(args)
+    report = run_check_cached(options, cache)
+    if cache is not None and cache.refused is not None and not args.quiet:
+        print(f"launchverify: note: {inert(cache.refused)}", file=sys.stderr)
     if args.diff:
         return _diff(args, options, report)
     report_out = sys.stdout
@@ -650,7 +653,7 @@ def _result_cache(args: argparse.Namespace) -> ResultCache | None:
     """Return the cache of results a check uses, or ``None`` when asked for none."""
     if args.no_cache or disabled_by_environment():
         return None
-    return ResultCache(args.cache_dir or default_cache_dir())
+    return ResultCache(args.cache_dir or default_cache_dir(), named=args.cache_dir is not None)
 
 
 def _say_protections(report: Report, verbose: bool) -> None:

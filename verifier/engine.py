@@ -24,7 +24,6 @@ from launchverify.findings.cache import (
     Kept,
     ResultCache,
     in_use,
-    key_of,
     options_text,
     settled,
     stamps_of,
@@ -105,6 +104,9 @@ class Report:
     unseen: list[tuple[str, Span]] | None = None
     queries: int | None = None
     loaded: set[Path] | None = None
+    # the folders the check read below, to read code frames below again when the report
+    # comes from the cache (``reading.confine``)
+    readable: tuple[str, ...] | None = None
     cached: bool = False  # read from the cache between runs, not checked again
     kept: Kept | None = None  # what the next check may keep of this one (not stored with it)
     packages: PackageIndex | None = None  # the index the check built (not stored with it)
@@ -136,7 +138,8 @@ class Report:
         findings = [dataclasses.replace(f, path=()) if f.path else f for f in self.findings]
         return dataclasses.replace(self, findings=findings, graphs=[],
                                    unseen=self.not_judged(), queries=self.solver_queries(),
-                                   loaded=self.loaded_files(), kept=None, packages=None)
+                                   loaded=self.loaded_files(), kept=None, packages=None,
+                                   readable=reading.confined_to())
 
     def not_judged(self) -> list[tuple[str, Span]]:
         """Return where evaluations were incomplete (reason, place), each once, as met.
@@ -436,16 +439,26 @@ def rule_options(config: Config, arguments: dict[str, str] | None = None
 
 
 def run_check_cached(options: CheckOptions, cache: ResultCache | None) -> Report:
-    """Check, or return the stored report when nothing it rests on has changed."""
+    """Check, or return the stored report when nothing it rests on has changed.
+
+    A report from the cache is read under the confinement its check had: the reporters
+    read code frames after it, and a link out of the workspace must stay unread.
+    """
     if cache is None:
         return run_check(options)
     started = time.perf_counter()
     _require_paths(options)
     folders, files = _inputs(options)
-    key = key_of([options_text(options, skip=("progress", "jobs")), folders, files])
+    key = cache.key([options_text(options, skip=("progress", "jobs")), folders, files]) \
+        if cache.usable(folders) else None
+    if key is None:
+        return run_check(options)
     entry = cache.stored(key)
-    if entry is not None and isinstance(entry.report, Report) and cache.valid(key, entry):
-        return dataclasses.replace(entry.report, seconds=time.perf_counter() - started,
+    if entry is not None and cache.valid(key, entry):
+        report = entry.report
+        assert isinstance(report, Report)  # (``stored`` returns no other)
+        reading.confine(report.readable if report.readable is not None else folders)
+        return dataclasses.replace(report, seconds=time.perf_counter() - started,
                                    cached=True)
     kept = None if entry is None else cache.kept(key, entry)  # what an edit may leave
     stored = None if entry is None or kept is None else (entry, kept)

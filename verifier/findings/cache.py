@@ -25,20 +25,30 @@ from __future__ import annotations
 import contextlib
 import hashlib
 import os
-import pickle
 import stat
 import sys
 import time
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field, fields
 from pathlib import Path
+from typing import TypeVar
 
 import launchverify
+from launchverify.findings import plain
+from launchverify.findings.sealed import Folder, Seal, default_state_dir, installation_seal
 from launchverify.own_code import package_folders
 from launchverify.workspace.packages import SKIP_DIRS
 from launchverify.workspace.paths import link_inside
 
-FORMAT = 4  # bump when what is stored changes shape (3: folders; 4: per-root results)
+# bump when what is stored changes shape (3: folders; 4: per-root results; 5: plain
+# data, sealed)
+FORMAT = 5
+SUFFIX = ".json"
+MAX_STORED = 1 << 30  # bytes of one stored file; a larger one is no result of ours
+TAG = "CACHEDIR.TAG"  # backup tools skip a folder holding it, as ruff and pip mark theirs
+TAG_TEXT = (b"Signature: 8a477f597d28d172789f06886806bc55\n"
+            b"# This file is a cache directory tag created by launchverify.\n")
+T = TypeVar("T")
 RACY_SECONDS = 2.0
 CLOCK_SLACK = 0.01  # seconds a file's modification time may trail the real time (a jiffy)
 MAX_AGE_DAYS = 30  # cache files unused for longer are removed
@@ -97,15 +107,14 @@ class Kept:
     token: str = field(default_factory=lambda: os.urandom(8).hex())  # pairs it with its entry
 
 
-def key_of(parts: Iterable[object]) -> str:
-    """Return a digest of everything a check was asked (its options, as text)."""
-    digest = hashlib.blake2b(digest_size=20)
-    for part in (FORMAT, launchverify.__version__, own_code_stamp(), sys.version,
-                 str(Path.cwd()), os.environ.get("AMENT_PREFIX_PATH", ""),
-                 os.environ.get("PYTHONPATH", ""), *parts):
-        digest.update(repr(part).encode("utf-8", "replace"))
-        digest.update(b"\0")
-    return digest.hexdigest()
+def key_parts() -> tuple[object, ...]:
+    """Return what every stored result's key holds besides the check's own options.
+
+    The format, launchverify's code, the Python version, the working directory
+    (messages hold paths relative to it) and the environment that finds packages.
+    """
+    return (FORMAT, launchverify.__version__, own_code_stamp(), sys.version, str(Path.cwd()),
+            os.environ.get("AMENT_PREFIX_PATH", ""), os.environ.get("PYTHONPATH", ""))
 
 
 def own_code_stamp() -> str:
@@ -295,51 +304,101 @@ def unchanged(entry: Entry) -> bool:
 
 
 class ResultCache:
-    """A folder of stored results, one file per key."""
+    """A folder of stored results, one file per key, each sealed (``sealed``).
 
-    def __init__(self, folder: Path) -> None:
+    ``named``: the user named the folder (``--cache-dir``); a folder taken by default is
+    not used inside a checked tree (``usable``).
+    """
+
+    def __init__(self, folder: Path, *, named: bool = False, state: Path | None = None
+                 ) -> None:
         self.folder = Path(os.path.realpath(folder))
+        self.named = named
+        self._state = state
+        self._seal: Seal | bool | None = False  # made when first needed
+        self.refused: str | None = None  # why this check uses no cache, to say
 
-    def _file(self, key: str) -> Path:
-        return self.folder / f"{key}.pickle"
+    def usable(self, checked: Iterable[str]) -> bool:
+        """Return whether this check may use the folder; else say why (``refused``).
+
+        A folder below a checked tree is the pull request's to fill: taken by default
+        (``XDG_CACHE_HOME`` in a checkout) it is not used; named, it is, since a planted
+        file has no valid seal. The installation's secret never lies in a checked tree.
+        """
+        state = Path(os.path.realpath(self._state or default_state_dir()))
+        for folder in checked:
+            tree = Path(os.path.realpath(folder))
+            if state.is_relative_to(tree):
+                self.refused = (f"the state folder {state} is inside the checked tree "
+                                f"{tree}: results are not cached (set XDG_STATE_HOME "
+                                "elsewhere)")
+                return False
+            if not self.named and self.folder.is_relative_to(tree):
+                self.refused = (f"the cache folder {self.folder} is inside the checked tree "
+                                f"{tree}: not used (name it with --cache-dir to use it)")
+                return False
+        return True
+
+    def seal(self) -> Seal | None:
+        """Return the installation's seal (``None``: no secret, so no cache)."""
+        if self._seal is False:
+            self._seal = installation_seal(self._state)
+        return self._seal if isinstance(self._seal, Seal) else None
+
+    def key(self, parts: Iterable[object]) -> str | None:
+        """Return the stored name of what a check was asked, if it can have one."""
+        seal = self.seal()
+        return None if seal is None else seal.name([*key_parts(), *parts])
+
+    def _file(self, key: str) -> str:
+        return f"{key}{SUFFIX}"
 
     def load(self, key: str) -> Entry | None:
         """Return the stored entry for a key if it is still valid (else ``None``)."""
         entry = self.stored(key)
         return entry if entry is not None and self.valid(key, entry) else None
 
+    def _read(self, name: str, kind: type[T]) -> T | None:
+        """Return the value of a sealed file of the folder, if it holds a ``kind``."""
+        seal = self.seal()
+        if seal is None:
+            return None
+        with self._opened() as folder:
+            data = None if folder is None else folder.read(name, MAX_STORED)
+        payload = None if data is None else seal.unwrap(name, data)
+        if payload is None:
+            return None
+        try:
+            value = plain.loads(payload)
+        except plain.Malformed:
+            return None
+        return value if isinstance(value, kind) and getattr(value, "format", None) == FORMAT \
+            else None
+
     def stored(self, key: str) -> Entry | None:
         """Return the stored entry for a key, valid or not (``None``: none readable)."""
-        try:
-            with self._file(key).open("rb") as handle:
-                entry = pickle.load(handle)
-        except Exception:  # missing, unreadable, or from another version: recompute
-            return None
-        return entry if isinstance(entry, Entry) and entry.format == FORMAT else None
+        from launchverify.engine import Report
+
+        entry = self._read(self._file(key), Entry)
+        return entry if entry is not None and isinstance(entry.report, Report) else None
 
     def valid(self, key: str, entry: Entry) -> bool:
         """Return whether nothing an entry rests on changed (and mark it recently used)."""
         if not unchanged(entry):
             return False
-        with contextlib.suppress(OSError):
-            os.utime(self._file(key))  # recently used: kept by the pruning
+        with self._opened() as folder:
+            if folder is not None:
+                folder.touch(self._file(key))  # recently used: kept by the pruning
         return True
 
     def kept(self, key: str, entry: Entry) -> Kept | None:
         """Return what an edit may leave of the entry stored under ``key``, if anything."""
-        try:
-            with self._file(key + ".roots").open("rb") as handle:
-                kept = pickle.load(handle)
-        except Exception:  # missing, unreadable, or from another version
-            return None
-        if not (isinstance(kept, Kept) and kept.format == FORMAT and entry.kept == kept.token):
-            return None
-        return kept
+        kept = self._read(self._file(key + ".roots"), Kept)
+        return kept if kept is not None and entry.kept == kept.token else None
 
     def store_kept(self, key: str, kept: Kept) -> None:
         """Write what an edit may leave of the result stored under ``key`` (before it)."""
-        self.prepare()
-        _write(self._file(key + ".roots"), kept)
+        self._write(self._file(key + ".roots"), kept)
 
     def prepare(self) -> None:
         """Make the folder before a check (a cache that cannot be made is no error).
@@ -347,28 +406,60 @@ class ResultCache:
         Made during the check inside the workspace, it would change a folder the result
         rests on, and that result would not be kept.
         """
-        with contextlib.suppress(OSError):
-            self.folder.mkdir(parents=True, exist_ok=True)
-            _write_tag(self.folder)
+        with self._opened(create=True) as folder:
+            if folder is not None and not folder.exists(TAG):
+                folder.create(TAG, TAG_TEXT, mode=0o644)
 
     def store(self, key: str, entry: Entry) -> None:
         """Write an entry atomically; a cache that cannot be written is no error."""
-        self.prepare()
-        if _write(self._file(key), entry):
+        if self._write(self._file(key), entry):
             self.prune()
+
+    def _write(self, name: str, value: object) -> bool:
+        seal = self.seal()
+        if seal is None:
+            return False
+        try:
+            payload = plain.dumps(value)
+        except plain.Malformed:  # a plugin's result that is not plain data: not kept
+            return False
+        with self._opened(create=True) as folder:
+            return folder is not None and folder.write(name, seal.wrap(name, payload))
+
+    @contextlib.contextmanager
+    def _opened(self, *, create: bool = False) -> Iterator[Folder | None]:
+        folder = Folder.open(self.folder, create=create)
+        try:
+            yield folder
+        finally:
+            if folder is not None:
+                folder.close()
 
     def prune(self) -> None:
         """Remove results (and stored values, ``blobs``) not used for ``MAX_AGE_DAYS`` days."""
         limit = time.time() - MAX_AGE_DAYS * 86400
-        for path in self._stored():
-            with contextlib.suppress(OSError):
-                if path.stat().st_mtime < limit:
-                    path.unlink()
+        with self._opened() as folder:
+            if folder is not None:
+                _prune(folder, limit, depth=2)
 
-    def _stored(self) -> Iterator[Path]:
-        with contextlib.suppress(OSError):
-            yield from self.folder.glob("*.pickle")
-            yield from self.folder.glob("*/*/*.pickle")
+
+def _prune(folder: Folder, limit: float, depth: int) -> None:
+    """Remove stored files older than ``limit`` here and ``depth`` folders below."""
+    for entry in folder.entries():
+        try:
+            if entry.is_symlink():
+                continue
+            if entry.is_dir(follow_symlinks=False):
+                below = folder.sub(entry.name) if depth else None
+                if below is not None:
+                    with below:
+                        _prune(below, limit, depth - 1)
+                continue
+            if entry.name.endswith(SUFFIX) and \
+                    entry.stat(follow_symlinks=False).st_mtime < limit:
+                folder.remove(entry.name)
+        except OSError:
+            continue
 
 
 class BlobStore:
@@ -376,49 +467,66 @@ class BlobStore:
 
     For work that depends only on a file's content (the interfaces extracted from a
     source file): a check that misses the result cache still reuses it. Each value is
-    one file, written atomically; the folder is per launchverify code, so another
+    one sealed file, written atomically; the folder is per launchverify code, so another
     version never reads it. A store that cannot be read or written is no error.
     """
 
-    def __init__(self, folder: Path) -> None:
-        self.folder = folder
+    def __init__(self, cache: ResultCache, kind: str, version: str) -> None:
+        self.cache = cache
+        self.parts = (kind, version)
+
+    @property
+    def folder(self) -> Path:
+        """Return where the values are kept."""
+        return self.cache.folder.joinpath(*self.parts)
+
+    @contextlib.contextmanager
+    def _opened(self, *, create: bool = False) -> Iterator[Folder | None]:
+        with self.cache._opened(create=create) as top:
+            kind = None if top is None else top.sub(self.parts[0], create=create)
+            version = None if kind is None else kind.sub(self.parts[1], create=create)
+            try:
+                yield version
+            finally:
+                for folder in (version, kind):
+                    if folder is not None:
+                        folder.close()
+
+    def _sealed_name(self, key: str) -> tuple[str, str]:
+        name = f"{key}{SUFFIX}"
+        return name, "/".join((*self.parts, name))
 
     def load(self, key: str) -> object | None:
         """Return the value stored under ``key``, or ``None``."""
-        path = self.folder / f"{key}.pickle"
-        try:
-            with path.open("rb") as handle:
-                value: object = pickle.load(handle)
-        except Exception:  # missing, unreadable, or cut short: compute it again
+        seal = self.cache.seal()
+        if seal is None:
             return None
-        with contextlib.suppress(OSError):
-            os.utime(path)  # recently used: kept by the pruning
+        name, sealed_as = self._sealed_name(key)
+        with self._opened() as folder:
+            data = None if folder is None else folder.read(name, MAX_STORED)
+            payload = None if data is None else seal.unwrap(sealed_as, data)
+            if folder is None or payload is None:
+                return None
+            try:
+                value = plain.loads(payload)
+            except plain.Malformed:  # cut short, or from another version: compute again
+                return None
+            folder.touch(name)  # recently used: kept by the pruning
         return value
 
     def store(self, key: str, value: object) -> None:
         """Write a value atomically (best effort)."""
-        with contextlib.suppress(OSError):
-            self.folder.mkdir(parents=True, exist_ok=True)
-        _write(self.folder / f"{key}.pickle", value)
-
-
-def _write(path: Path, value: object) -> bool:
-    """Pickle a value to ``path`` atomically (a reader never sees half a file)."""
-    import tempfile  # a run answered from the cache writes nothing (4 ms of its imports)
-
-    try:
-        handle, temporary = tempfile.mkstemp(dir=path.parent, suffix=".tmp")
-    except OSError:
-        return False
-    try:
-        with os.fdopen(handle, "wb") as out:
-            pickle.dump(value, out, protocol=pickle.HIGHEST_PROTOCOL)
-        Path(temporary).replace(path)
-    except Exception:
-        with contextlib.suppress(OSError):
-            Path(temporary).unlink()
-        return False
-    return True
+        seal = self.cache.seal()
+        if seal is None:
+            return
+        try:
+            payload = plain.dumps(value)
+        except plain.Malformed:
+            return
+        name, sealed_as = self._sealed_name(key)
+        with self._opened(create=True) as folder:
+            if folder is not None:
+                folder.write(name, seal.wrap(sealed_as, payload))
 
 
 _IN_USE: list[ResultCache] = []  # the cache of the running check, innermost last
@@ -443,15 +551,7 @@ def blobs(kind: str) -> BlobStore | None:
         return None
     if not _CODE_STAMP:
         _CODE_STAMP.append(own_code_stamp())
-    return BlobStore(_IN_USE[-1].folder / kind / _CODE_STAMP[0])
-
-
-def _write_tag(folder: Path) -> None:
-    """Mark the folder as a cache (backup tools skip it), as ruff and pip do."""
-    tag = folder / "CACHEDIR.TAG"
-    if not tag.exists():
-        tag.write_text("Signature: 8a477f597d28d172789f06886806bc55\n"
-                       "# This file is a cache directory tag created by launchverify.\n")
+    return BlobStore(_IN_USE[-1], kind, _CODE_STAMP[0])
 
 
 def options_text(options: object, skip: Iterable[str] = ()) -> str:

@@ -251,7 +251,10 @@ class Incremental:
         return report
 
     def _result(self, graph: LaunchGraph, verdicts: Verdicts) -> RootResult:
-        """Return what to keep of a root judged now (findings without their path conditions)."""
+        """Return what to keep of a root judged now (findings without their path conditions).
+
+        What a rule said nothing of is left out: the merge reads each by ``get``.
+        """
         from launchverify.smt import solver_queries
         from launchverify.workspace.interfaces import interface_of, picks_of
 
@@ -261,9 +264,10 @@ class Incremental:
         verdicts = dataclasses.replace(
             verdicts,
             findings={code: [f for f in map(bare, found) if f is not None]
-                      for code, found in verdicts.findings.items()},
+                      for code, found in verdicts.findings.items() if found},
             answers={code: [(q, bare(f)) for q, f in answers]
-                     for code, answers in verdicts.answers.items()})
+                     for code, answers in verdicts.answers.items() if answers},
+            settled={code: both for code, both in verdicts.settled.items() if any(both)})
         return RootResult(
             verdicts, self.reads.get(graph.root),
             frozenset(t for inc in graph.includes if (t := inc.target) is not None),
