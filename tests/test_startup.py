@@ -56,6 +56,27 @@ def test_a_broken_or_foreign_file_is_ignored(tmp_path: Path) -> None:
         assert code_cache.CodeCache(path).known == {}
 
 
+def test_compiled_code_this_installation_did_not_seal_is_never_run(tmp_path: Path) -> None:
+    """A code file planted beside launchverify's modules (a virtual environment inside a
+    checkout): the text dataclasses asks for maps to code that writes a file; it is not run."""
+    import marshal
+
+    from launchverify.findings.sealed import installation_seal
+
+    assert installation_seal(create=True) is not None  # this installation has its secret
+    marker = tmp_path / "ran"
+    text = "def __create_fn__():\n    pass\n"
+    planted = {text: compile(f"open({str(marker)!r}, 'w').close()", "<x>", "exec")}
+    path = tmp_path / "code.bin"
+    for content in (code_cache._HEADER + b"\n" + marshal.dumps(planted),
+                    b"launchverify sealed 1\n" + b"0" * 64 + b"\n" + marshal.dumps(planted)):
+        path.write_bytes(content)
+        cache = code_cache.CodeCache(path)
+        assert cache.known == {}
+        cache.exec(text, {}, {})
+        assert not marker.exists()
+
+
 def test_nothing_is_written_where_bytecode_is_not(tmp_path: Path,
                                                   monkeypatch: pytest.MonkeyPatch) -> None:
     target = code_cache.CodeCache(tmp_path / "code.bin")

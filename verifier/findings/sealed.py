@@ -74,18 +74,20 @@ class Seal:
         return payload
 
 
-def installation_seal(state: Path | None = None) -> Seal | None:
-    """Return the seal of this installation, making its secret the first time.
+def installation_seal(state: Path | None = None, *, create: bool = True) -> Seal | None:
+    """Return the seal of this installation, making its secret the first time (``create``).
 
-    ``None`` when the secret can neither be read nor made (a read-only home): then
-    nothing is stored, and nothing stored is trusted.
+    ``None`` when the secret can neither be read nor made (a read-only home), or is not
+    there yet and not to be made: then nothing is stored, and nothing stored is trusted.
     """
-    folder = Folder.open(state or default_state_dir(), create=True)
+    folder = Folder.open(state or default_state_dir(), create=create)
     if folder is None:
         return None
     with folder:
         secret = folder.read(_NAME, SECRET_BYTES + 1)
         if secret is None or len(secret) != SECRET_BYTES:
+            if not create:
+                return None
             made = os.urandom(SECRET_BYTES)
             if not folder.create(_NAME, made, mode=0o600):
                 # another check made it meanwhile, or a malformed one lies there

@@ -8,7 +8,10 @@ find it in a file beside launchverify's own modules, written as Python writes by
 there (in ``__pycache__``, only when the folder is writable and bytecode writing is not
 turned off), and never inside a checked workspace's files. The file holds code compiled
 from texts ``dataclasses`` itself produced; a file of another Python, or that does not
-read back, is ignored.
+read back, is ignored. Code is run from it, so it is sealed as the results cache is
+(``findings/sealed.py``: a secret outside any checked tree): a file planted there (a
+virtual environment inside a checkout, whose ``__pycache__`` a pull request can fill) is
+never run.
 """
 
 from __future__ import annotations
@@ -21,7 +24,10 @@ import os
 import sys
 from pathlib import Path
 from types import CodeType
-from typing import Any
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from launchverify.findings.sealed import Seal
 
 MOST_ENTRIES = 4000  # beyond, only what the last run used is kept
 _HEADER = f"launchverify dataclass code {sys.version}".encode()
@@ -30,9 +36,10 @@ _HEADER = f"launchverify dataclass code {sys.version}".encode()
 class CodeCache:
     """Compiled method texts by their source, loaded from and saved to one file."""
 
-    def __init__(self, path: Path) -> None:
+    def __init__(self, path: Path, state: Path | None = None) -> None:
         self.path = path
-        self.known: dict[str, CodeType] = _load(path)
+        self.state = state  # where the installation's secret is (None: the user's)
+        self.known: dict[str, CodeType] = _load(path, _seal(state, create=False))
         self.used: dict[str, CodeType] = {}
         self.added = 0
 
@@ -55,15 +62,18 @@ class CodeCache:
             return
         import tempfile  # only to write (its imports are a tenth of this module's purpose)
 
+        seal = _seal(self.state, create=True)
+        if seal is None:
+            return
         kept = self.known if len(self.known) <= MOST_ENTRIES else self.used
+        body = marshal.dumps(kept)
         temporary: Path | None = None
         try:
             self.path.parent.mkdir(exist_ok=True)
             handle, name = tempfile.mkstemp(dir=self.path.parent, prefix=".dataclass-")
             temporary = Path(name)
             with os.fdopen(handle, "wb") as out:
-                out.write(_HEADER + b"\n")
-                marshal.dump(kept, out)
+                out.write(seal.wrap(_HEADER.decode(), body))
             temporary.chmod(0o644)  # as Python leaves bytecode (mkstemp makes it private)
             temporary.replace(self.path)
         except (OSError, ValueError):
@@ -92,14 +102,23 @@ def uninstall() -> None:
     dataclasses.__dict__.pop("exec", None)
 
 
-def _load(path: Path) -> dict[str, CodeType]:
-    """Return the compiled texts a file holds, none when it is absent, stale or broken."""
+def _seal(state: Path | None, *, create: bool) -> Seal | None:
+    from launchverify.findings.sealed import installation_seal
+
+    return installation_seal(state, create=create)
+
+
+def _load(path: Path, seal: Seal | None) -> dict[str, CodeType]:
+    """Return the compiled texts a file holds, none when it is absent, stale, broken or
+    not sealed by this installation."""
+    if seal is None:
+        return {}
     try:
         data = path.read_bytes()
     except OSError:
         return {}
-    header, _, body = data.partition(b"\n")
-    if header != _HEADER:
+    body = seal.unwrap(_HEADER.decode(), data)
+    if body is None:
         return {}
     try:
         loaded = marshal.loads(body)
