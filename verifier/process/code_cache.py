@@ -109,8 +109,10 @@ def _seal(state: Path | None, *, create: bool) -> Seal | None:
 
 
 def _load(path: Path, seal: Seal | None) -> dict[str, CodeType]:
-    """Return the compiled texts a file holds, none when it is absent, stale, broken or
-    not sealed by this installation."""
+    """Return the compiled texts a file holds (none: absent, stale, broken, not ours).
+
+    Ours: sealed by this installation (a file planted beside our modules is not).
+    """
     if seal is None:
         return {}
     try:
