@@ -173,6 +173,46 @@ def test_real_path_is_realpath(tmp_path: Path) -> None:
         assert real_path(path) == os.path.realpath(path), relative
 
 
+LINK_TARGETS = ["..", "../..", "d1", "../d2/..", "x", "../../d0/d3", "l0/..", "l1/../..",
+                "../../../d1/d2", "d1/../..", "."]
+
+
+@pytest.mark.skipif(not Path("/proc/self/fd").is_dir(), reason="needs /proc (Linux)")
+@settings(max_examples=40, deadline=None)
+@given(st.lists(st.tuples(st.integers(0, 7), st.integers(0, 7), st.sampled_from(LINK_TARGETS),
+                          st.booleans()), min_size=1, max_size=10))
+def test_real_path_is_the_kernel_s_on_trees_of_climbing_links(
+        links: list[tuple[int, int, str, bool]]) -> None:
+    """Links that climb (an install folder's ``../../../src/...``), chains, loops: where
+    the kernel reaches a file, ``real_path`` names the file it reaches."""
+    import tempfile
+
+    from launchverify.workspace.paths import forget_real_folders, real_path
+
+    root = Path(tempfile.mkdtemp())
+    folders = [root]
+    for i in range(8):
+        folders.append(folders[i // 2] / f"d{i}")
+        folders[-1].mkdir()
+    names = list(folders)
+    for n, (where, towards, target, absolute) in enumerate(links):
+        link = folders[where] / f"l{n}"
+        text = str(names[towards % len(names)]) if absolute else target
+        link.symlink_to(text)
+        names.append(link)
+    forget_real_folders()
+    for name in names:
+        for suffix in ("", "/..", "/../d1", "/x"):
+            path = f"{name}{suffix}"
+            try:
+                fd = os.open(path, getattr(os, "O_PATH", os.O_RDONLY))
+            except OSError:
+                continue  # a loop, or nothing there: the kernel names no file
+            kernel = str(Path(f"/proc/self/fd/{fd}").readlink())
+            os.close(fd)
+            assert real_path(path) == kernel, path
+
+
 LAUNCH_MODULE = ("from launch import LaunchDescription\n\n"
                  "def generate_launch_description():\n    return LaunchDescription([])\n")
 

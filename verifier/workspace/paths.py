@@ -39,12 +39,7 @@ def real_path(path: str | os.PathLike[str]) -> str:
     text = os.fspath(path)
     if not text.startswith("/"):
         text = os.getcwd() + "/" + text  # noqa: PTH109
-    candidate = "/"
-    for part in text.split("/"):
-        if part == "..":
-            candidate = os.path.dirname(_real_folder_text(candidate))  # noqa: PTH120
-        elif part not in ("", "."):
-            candidate = os.path.join(candidate, part)  # noqa: PTH118
+    candidate = _climbed(text)
     for _ in range(40):  # as the kernel, give up on a chain of links this long
         head, tail = os.path.split(candidate)
         candidate = os.path.join(_real_folder_text(head), tail)  # noqa: PTH118
@@ -52,10 +47,43 @@ def real_path(path: str | os.PathLike[str]) -> str:
             target = os.readlink(candidate)  # noqa: PTH115
         except OSError:  # not a link (or nothing there): the path is real
             return candidate
-        if ".." in target.split("/"):
-            return os.path.realpath(os.path.join(os.path.dirname(candidate), target))  # noqa: PTH118,PTH120
-        candidate = os.path.normpath(os.path.join(os.path.dirname(candidate), target))  # noqa: PTH118,PTH120
+        candidate = _target(os.path.dirname(candidate), target)  # noqa: PTH120
     return os.path.realpath(candidate)
+
+
+def _target(folder: str, target: str) -> str:
+    """Return where a link in the real ``folder`` points, its ``..`` climbed physically.
+
+    An install folder's links climb first (``../../../src/pkg/launch/x.py``): from a real
+    folder, each leading ``..`` is its parent; what follows is looked at part by part
+    only if it climbs again.
+    """
+    if target.startswith("/"):
+        return _climbed(target)
+    parts = target.split("/")
+    start = 0
+    while start < len(parts) and parts[start] in ("..", ".", ""):
+        if parts[start] == "..":
+            folder = os.path.dirname(folder)  # noqa: PTH120
+        start += 1
+    rest = "/".join(parts[start:])
+    if not rest:
+        return folder
+    joined = folder.rstrip("/") + "/" + rest
+    return _climbed(joined) if ".." in parts[start:] else os.path.normpath(joined)
+
+
+def _climbed(text: str) -> str:
+    """Return an absolute path with each ``..`` climbed from the real folder before it."""
+    if ".." not in text.split("/") and not text.startswith("//"):
+        return os.path.normpath(text)
+    candidate = "/"
+    for part in text.split("/"):
+        if part == "..":
+            candidate = os.path.dirname(_real_folder_text(candidate))  # noqa: PTH120
+        elif part not in ("", "."):
+            candidate = os.path.join(candidate, part)  # noqa: PTH118
+    return candidate
 
 
 @lru_cache(maxsize=4096)
