@@ -911,3 +911,235 @@ def test_a_description_too_large_is_not_checked_and_the_rest_is(tmp_path: Path) 
     assert ("LV101", "sentinel.launch.xml") in found
     [big] = [f for f in report.findings if f.span.file.name == "big.launch.py"]
     assert big.code == "LV003" and "250,000 parts" in big.message
+
+
+# ---- issue 42: run, pre-commit, action ----
+# `run --dry-run` starts nothing, whatever the engine; a name after `--` is a path (the
+# pre-commit hook's entry ends with `--`); the action updates its own comment only.
+
+ROOT_OF_TREE = Path(__file__).resolve().parent.parent
+TWINS_XML = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="twin"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="twin"/>
+</launch>
+"""
+TWINS_YAML = """launch:
+- node: {pkg: demo_nodes_cpp, exec: talker, name: twin}
+- node: {pkg: demo_nodes_cpp, exec: listener, name: twin}
+"""
+
+
+def _run_engines() -> list[str]:
+    """Return every engine `run --engine` offers (one added later is tested too)."""
+    import argparse
+
+    from launchverify.cli import build_parser
+
+    commands = next(action for action in build_parser()._actions
+                    if isinstance(action, argparse._SubParsersAction))
+    engine = next(action for action in commands.choices["run"]._actions
+                  if "--engine" in action.option_strings)
+    assert engine.choices is not None
+    return sorted(engine.choices)
+
+
+def _marker_program(folder: Path, name: str, marker: Path) -> Path:
+    """Write a program that leaves a line in ``marker`` each time it runs."""
+    program = folder / name
+    program.write_text(f"#!/bin/sh\necho \"$0 $*\" >> '{marker}'\n")
+    program.chmod(0o755)
+    return program
+
+
+def _dry_run_tree(root: Path) -> tuple[Path, Path, Path]:
+    """Return a launch file every engine would start something of, the folder holding a
+    ``ros2`` that leaves a marker, and the marker: a process, a node, a ``$(command)``."""
+    tools = root / "bin"
+    tools.mkdir()
+    marker = root / "started"
+    _marker_program(tools, "ros2", marker)
+    program = _marker_program(tools, "program", marker)
+    launch = root / "start.launch.xml"
+    launch.write_text(f"""<launch>
+  <executable cmd="{program} process" name="process"/>
+  <node exec="{program}" name="node" args="node">
+    <param name="description" value="$(command '{program} command')"/>
+  </node>
+</launch>
+""")
+    return launch, tools, marker
+
+
+def _forbid_engines(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Make every way a run starts something fail the test: processes, the supervisor,
+    ``$(command)``."""
+    import asyncio
+
+    from launchverify.executor import command, supervisor
+
+    def reached(*args: object, **kwargs: object) -> None:
+        raise AssertionError(f"a dry run reached an engine: {args!r}")
+
+    for owner, name in ((subprocess, "Popen"), (subprocess, "call"), (subprocess, "run"),
+                        (os, "system"), (os, "posix_spawn"), (os, "posix_spawnp"),
+                        (asyncio, "create_subprocess_exec"),
+                        (asyncio, "create_subprocess_shell"),
+                        (supervisor.Supervisor, "__init__"), (supervisor.Supervisor, "run"),
+                        (command, "run_command")):
+        monkeypatch.setattr(owner, name, reached)
+
+
+@pytest.mark.parametrize("engine", _run_engines())
+def test_a_dry_run_reaches_no_engine(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                     capsys: pytest.CaptureFixture[str], engine: str) -> None:
+    """It prints what the run would start, and starts nothing: no ros2, no process."""
+    from launchverify.cli import main
+
+    launch, tools, marker = _dry_run_tree(tmp_path)
+    monkeypatch.setenv("PATH", f"{tools}{os.pathsep}{os.environ['PATH']}")
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    _forbid_engines(monkeypatch)
+    logs = tmp_path / "logs"
+    status = main(["run", str(launch), "--dry-run", "--engine", engine, "--log-dir", str(logs)])
+    out = capsys.readouterr().out
+    assert status == 0, out
+    assert not marker.exists() and not logs.exists()
+    assert f"{tools / 'program'} process" in out and "<output of $(command" in out
+    if engine == "ros2":
+        assert f"run {tools / 'ros2'} launch {launch}" in out
+
+
+@pytest.mark.parametrize("engine", _run_engines())
+def test_a_dry_run_from_the_command_line_starts_nothing(tmp_path: Path, engine: str) -> None:
+    """The attack as a user meets it: `run FILE --dry-run --engine ros2` with ros2 there."""
+    launch, tools, marker = _dry_run_tree(tmp_path)
+    env = {**os.environ, "PATH": f"{tools}{os.pathsep}{os.environ['PATH']}"}
+    env.pop("AMENT_PREFIX_PATH", None)
+    done = subprocess.run([sys.executable, "-m", "launchverify", "run", str(launch),
+                           "--dry-run", "--engine", engine, "--log-dir", str(tmp_path / "l")],
+                          capture_output=True, text=True, env=env, timeout=120, check=False)
+    assert done.returncode == 0, done.stderr
+    assert not marker.exists(), marker.read_text()
+    assert "start program" in done.stdout
+
+
+def _hook() -> dict[str, str]:
+    import yaml
+
+    [hook] = yaml.safe_load((ROOT_OF_TREE / ".pre-commit-hooks.yaml").read_text())
+    return dict(hook)
+
+
+HOSTILE_NAMES = {"--exclude=*launch.xml": TWINS_XML, "--output=x.launch.yaml": TWINS_YAML,
+                 "robot:=x.launch.xml": TWINS_XML}
+
+
+def test_the_hooks_entry_gives_committed_names_as_paths(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """Run as pre-commit runs it (the entry, then the names it matched): each file is
+    checked, none is read as an option or a launch argument, nothing is written."""
+    import shlex
+
+    from launchverify.cli import main
+
+    hook = _hook()
+    for name, text in HOSTILE_NAMES.items():
+        (tmp_path / name).write_text(text)
+        assert re.search(hook["files"], name)  # pre-commit passes it to the hook
+    monkeypatch.chdir(tmp_path)
+    program, subcommand, *options = shlex.split(hook["entry"])
+    assert (program, subcommand) == ("launchverify", "check")
+    status = main([subcommand, "--no-cache", "--format", "json", *options, *HOSTILE_NAMES])
+    out = capsys.readouterr().out
+    assert status == 1
+    flagged = {Path(f["file"]).name for f in json.loads(out)["findings"] if f["code"] == "LV101"}
+    assert flagged == set(HOSTILE_NAMES)
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(HOSTILE_NAMES)
+
+
+INTERFACE_SOURCE = """import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+class Talker(Node):
+    def __init__(self):
+        super().__init__('talker')
+        self.create_publisher(String, '{topic}', 10)
+"""
+
+# command line -> exit status, a text the output must hold. Each puts a path before `--`
+# or one named `name:=value` after it: argparse alone reads an option there, or a launch
+# argument.
+AFTER_THE_END_OF_OPTIONS = [
+    (["check", "plain.launch.xml", "-q", "--", "--output=x.launch.yaml", "robot:=x.launch.xml"],
+     1, "robot:=x.launch.xml:3:3: error LV101"),
+    (["check", "-q", "--", "-"], 1, "-:3:3: error LV101"),  # a file named '-', not stdin
+    (["report", "-o", "report.html", "--", "robot:=x.launch.xml"], 1,
+     "(1 findings in 1 files)"),
+    (["graph", "--format", "text", "--", "robot:=x.launch.xml"], 0, "twin"),
+    (["run", "--dry-run", "--force", "--", "robot:=x.launch.xml"], 0, "start talker"),
+    (["diff", "--against", "plain.launch.xml", "--format", "json", "--",
+      "robot:=x.launch.xml"], 1, '"errors_introduced": 1'),
+    (["interfaces", "talker.py", "--format", "json", "--", "-v.py"], 0, "from_option_name"),
+]
+
+
+@pytest.mark.parametrize(("argv", "status", "shown"), AFTER_THE_END_OF_OPTIONS,
+                         ids=[argv[0] + str(n) for n, (argv, _, _) in
+                              enumerate(AFTER_THE_END_OF_OPTIONS)])
+def test_every_token_after_the_end_of_options_is_a_path(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str],
+        argv: list[str], status: int, shown: str) -> None:
+    from launchverify.cli import main
+
+    for name, text in HOSTILE_NAMES.items():
+        (tmp_path / name).write_text(text)
+    (tmp_path / "-").write_text(TWINS_YAML)
+    (tmp_path / "plain.launch.xml").write_text(
+        '<launch><node pkg="demo_nodes_cpp" exec="talker" name="plain"/></launch>\n')
+    (tmp_path / "talker.py").write_text(INTERFACE_SOURCE.format(topic="chatter"))
+    (tmp_path / "-v.py").write_text(INTERFACE_SOURCE.format(topic="from_option_name"))
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    monkeypatch.setenv("LAUNCHVERIFY_NO_CACHE", "1")
+    before = sorted(p.name for p in tmp_path.iterdir())
+    code = main(argv)
+    captured = capsys.readouterr()
+    assert code == status, captured.err
+    assert shown in captured.out + captured.err
+    written = set(sorted(p.name for p in tmp_path.iterdir())) - set(before)
+    assert written <= {"report.html"}  # what -o names, and nothing an option would write
+
+
+def test_a_diff_takes_no_revision_after_the_end_of_options(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """`diff -- main` compares the path main (a folder since deleted), not the branch main."""
+    from launchverify.cli import main
+
+    def git(*argv: str) -> None:
+        subprocess.run(["git", *argv], cwd=tmp_path, check=True, capture_output=True,
+                       timeout=60, env={**os.environ, "GIT_AUTHOR_NAME": "t",
+                                        "GIT_AUTHOR_EMAIL": "t@x", "GIT_COMMITTER_NAME": "t",
+                                        "GIT_COMMITTER_EMAIL": "t@x"})
+
+    plain = '<launch><node pkg="demo_nodes_cpp" exec="talker" name="plain"/></launch>\n'
+    (tmp_path / "main").mkdir()
+    (tmp_path / "main" / "old.launch.xml").write_text(plain)
+    (tmp_path / "other.launch.xml").write_text(plain)
+    git("init", "-q", "-b", "main")
+    git("add", ".")
+    git("commit", "-q", "-m", "base")
+    (tmp_path / "main" / "old.launch.xml").unlink()
+    (tmp_path / "main").rmdir()
+    (tmp_path / "other.launch.xml").write_text(TWINS_XML)  # an error, outside the path
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    assert main(["diff", "--format", "json", "--", "main"]) == 0
+    diff = json.loads(capsys.readouterr().out)
+    assert diff["base"]["label"] == "merge base"
+    assert [launch["file"] for launch in diff["launches"]] == ["main/old.launch.xml"]
+    assert diff["summary"]["errors_introduced"] == 0
+
