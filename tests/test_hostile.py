@@ -1143,3 +1143,94 @@ def test_a_diff_takes_no_revision_after_the_end_of_options(
     assert [launch["file"] for launch in diff["launches"]] == ["main/old.launch.xml"]
     assert diff["summary"]["errors_introduced"] == 0
 
+
+# A `gh` that records its calls and answers `api graphql` (the token's account, GH_VIEWER;
+# none: an error) and the comment list (GH_COMMENTS) through the real jq, as gh's --jq does.
+FAKE_GH = """#!{python}
+import json, os, subprocess, sys
+arguments = sys.argv[1:]
+with open(os.environ["GH_CALLS"], "a") as calls:
+    calls.write(json.dumps(arguments) + "\\n")
+if "-X" in arguments:
+    sys.exit(0)
+if arguments[:2] == ["api", "graphql"]:
+    if not os.environ["GH_VIEWER"]:
+        sys.exit(1)
+    answer = {{"data": {{"viewer": {{"login": os.environ["GH_VIEWER"]}}}}}}
+else:
+    answer = json.loads(os.environ["GH_COMMENTS"])
+query = arguments[arguments.index("--jq") + 1] if "--jq" in arguments else "."
+done = subprocess.run(["jq", "-r", query], input=json.dumps(answer), text=True)
+sys.exit(done.returncode)
+"""
+MARKER = "<!-- launchverify-diff -->"
+
+
+def _comment(number: int, login: str, body: str = MARKER + "\nold diff") -> dict[str, object]:
+    return {"id": number, "body": body,
+            "user": {"login": login, "type": "Bot" if login.endswith("[bot]") else "User"}}
+
+
+IMPOSTOR = _comment(101, "mallory")  # the pull request's author, first, with the marker
+BOT = "github-actions[bot]"
+
+
+@pytest.mark.parametrize(("viewer", "comments", "patched"), [
+    (BOT, [IMPOSTOR, _comment(150, BOT, "unrelated"), _comment(202, BOT)], 202),
+    ("", [IMPOSTOR, _comment(202, BOT)], 202),  # GraphQL refused: the default token's bot
+    ("carol", [IMPOSTOR, _comment(202, BOT), _comment(303, "carol")], 303),  # a user's token
+    (BOT, [IMPOSTOR], None),  # none of ours yet: a new one
+], ids=["default-token", "no-viewer", "user-token", "first-run"])
+def test_the_action_updates_its_own_comment_only(
+        tmp_path: Path, viewer: str, comments: list[dict[str, object]],
+        patched: int | None) -> None:
+    """The action's diff step, run as a runner runs it, against a `gh` serving a comment
+    list whose first marked comment is an impostor's."""
+    import shutil
+
+    import yaml
+
+    if shutil.which("jq") is None:
+        pytest.skip("jq stands in for gh's --jq")
+    steps = yaml.safe_load((ROOT_OF_TREE / "action.yml").read_text())["runs"]["steps"]
+    step = next(s for s in steps if s.get("id") == "diff")
+    repository = tmp_path / "repository"
+    repository.mkdir()
+    env_git = {**os.environ, "GIT_AUTHOR_NAME": "t", "GIT_AUTHOR_EMAIL": "t@x",
+               "GIT_COMMITTER_NAME": "t", "GIT_COMMITTER_EMAIL": "t@x"}
+    (repository / "a.launch.xml").write_text(
+        '<launch><node pkg="demo_nodes_cpp" exec="talker" name="a"/></launch>\n')
+    for argv in (["init", "-q"], ["add", "."], ["commit", "-q", "-m", "base"]):
+        subprocess.run(["git", *argv], cwd=repository, env=env_git, check=True,
+                       capture_output=True, timeout=60)
+    base = subprocess.run(["git", "rev-parse", "HEAD"], cwd=repository, capture_output=True,
+                          text=True, check=True, timeout=60).stdout.strip()
+    (repository / "a.launch.xml").write_text(
+        '<launch><node pkg="demo_nodes_cpp" exec="talker" name="b"/></launch>\n')
+    tools = tmp_path / "tools"
+    tools.mkdir()
+    (tools / "gh").write_text(FAKE_GH.format(python=sys.executable))
+    (tools / "gh").chmod(0o755)
+    runner = tmp_path / "runner"
+    runner.mkdir()
+    env = {**os.environ, "PATH": f"{tools}:{Path(sys.executable).parent}:{os.environ['PATH']}",
+           "LV_PATHS": ".", "LV_ARGUMENTS": "", "BASE_SHA": base, "PR_NUMBER": "7",
+           "REPOSITORY": "owner/repo", "GH_TOKEN": "token",
+           "GITHUB_OUTPUT": str(runner / "output"),
+           "GITHUB_STEP_SUMMARY": str(runner / "summary"), "GH_CALLS": str(runner / "calls"),
+           "GH_VIEWER": viewer, "GH_COMMENTS": json.dumps(comments)}
+    env.pop("AMENT_PREFIX_PATH", None)
+    assert set(step["env"]) <= set(env)  # the inputs reach the script through these only
+    done = subprocess.run(["bash", "--noprofile", "--norc", "-eo", "pipefail", "-c",
+                           step["run"]], cwd=repository, env=env, capture_output=True,
+                          text=True, timeout=300, check=False)
+    assert done.returncode == 0, done.stderr
+    writes = [call for call in map(json.loads, (runner / "calls").read_text().splitlines())
+              if "-X" in call]
+    assert len(writes) == 1, writes
+    if patched is None:
+        assert writes[0][:4] == ["api", "-X", "POST", "repos/owner/repo/issues/7/comments"]
+    else:
+        assert writes[0][:4] == ["api", "-X", "PATCH", f"repos/owner/repo/issues/comments/"
+                                 f"{patched}"]
+    assert writes[0][-1].startswith("body=" + MARKER) and "node /a is now /b" in writes[0][-1]
