@@ -155,14 +155,13 @@ class Ros2Launch:
     paths: list[Path]
 
     def describe(self) -> list[str]:
+        handover = f"run {shlex.join(self.argv)}"
         try:
             plan = build_plan(self.root, install_prefixes(self.workspace),
                               Path("<parameter files of ros2 launch>"), strict=False)
         except PlanError as error:
-            lines = [f"note: what starts is known only when ros2 launch runs: {error}"]
-        else:
-            lines = describe(plan, _locate(self.paths, self.workspace))
-        return [f"run {shlex.join(self.argv)}", *lines,
+            return [handover, f"note: what it starts is known only when it runs: {error}"]
+        return [handover, *describe(plan, _locate(self.paths, self.workspace)),
                 "note: ros2 launch evaluates the file itself (its Python unconfined) and "
                 "builds its own commands: those above are the check's evaluation of them"]
 
