@@ -1234,3 +1234,27 @@ def test_the_action_updates_its_own_comment_only(
         assert writes[0][:4] == ["api", "-X", "PATCH", f"repos/owner/repo/issues/comments/"
                                  f"{patched}"]
     assert writes[0][-1].startswith("body=" + MARKER) and "node /a is now /b" in writes[0][-1]
+
+
+def test_the_actions_paths_are_never_options(tmp_path: Path) -> None:
+    """A pattern in the `paths` input matches a file named like an option: still a path."""
+    import yaml
+
+    steps = yaml.safe_load((ROOT_OF_TREE / "action.yml").read_text())["runs"]["steps"]
+    step = next(s for s in steps if s.get("id") == "check")
+    (tmp_path / "--ignore=LV1").write_text(TWINS_YAML)
+    (tmp_path / "twins.launch.yaml").write_text(TWINS_YAML)
+    env = {**os.environ, "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}",
+           "LV_PATHS": "*", "LV_ARGUMENTS": "", "LV_FAIL_ON": "error",
+           "GITHUB_OUTPUT": str(tmp_path.parent / f"{tmp_path.name}.output"),
+           "LAUNCHVERIFY_NO_CACHE": "1"}
+    env.pop("AMENT_PREFIX_PATH", None)
+    assert set(step["env"]) <= set(env)
+    done = subprocess.run(["bash", "--noprofile", "--norc", "-eo", "pipefail", "-c",
+                           step["run"]], cwd=tmp_path, env=env, capture_output=True,
+                          text=True, timeout=300, check=False)
+    assert done.returncode == 0, done.stderr
+    assert "status=1" in Path(env["GITHUB_OUTPUT"]).read_text()
+    assert "twins.launch.yaml,line=3" in done.stdout  # the annotation
+    sarif = json.loads((tmp_path / "launchverify.sarif").read_text())
+    assert "LV101" in {r["ruleId"] for r in sarif["runs"][0]["results"]}
