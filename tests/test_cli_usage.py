@@ -168,3 +168,16 @@ def test_output_format_is_ruffs_spelling_of_format(capsys: pytest.CaptureFixture
     assert with_format == with_output_format
     check = next(c for c in commands_of(build_parser()) if c.name == "check")
     assert check.choices["--output-format"] == check.choices["--format"]  # completes too
+
+
+@pytest.mark.parametrize(("argv", "status", "shown"), [
+    (["explain", "--", "LV101"], 0, "# LV101 duplicate-node-name"),  # no paths: argparse's --
+    (["check", "-q", str(DUPLICATE), "--", "--select=LV999"], 2,
+     "no such file or folder"),  # after --, a path however it is spelt
+    (["graph", "--"], 2, "graph takes exactly one launch file"),
+])
+def test_the_end_of_options(argv: list[str], status: int, shown: str,
+                            capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(argv) == status
+    captured = capsys.readouterr()
+    assert shown in captured.out + captured.err

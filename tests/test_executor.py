@@ -569,3 +569,47 @@ def generate_launch_description():
     assert "1 error(s) hold only for other argument values" in capsys.readouterr().err
     assert main(["run", str(launch), "--dry-run", "use_mock_hardware:=true"]) == 1
     assert "not started" in capsys.readouterr().err
+
+
+def test_a_dry_run_of_ros2_launch_shows_the_handover_and_runs_nothing(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path, ros2_calls: Path) -> None:
+    launch = tmp_path / "ok.launch.xml"
+    launch.write_text(f'<launch><arg name="robot" default="r1"/>'
+                      f'<executable cmd="python3 {WORKER} $(var robot)"/></launch>')
+    assert main(["run", str(launch), "robot:=r2", "--dry-run", "--engine", "ros2"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert not ros2_calls.exists()
+    assert out[0] == f"run {tmp_path / 'bin' / 'ros2'} launch {launch} robot:=r2"
+    assert any(line.endswith(f"{WORKER} r2") for line in out)  # as the check evaluated it
+    assert out[-1].startswith("note: ros2 launch evaluates the file itself")
+
+
+def test_a_dry_run_of_ros2_launch_decides_as_the_run_does(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """Without ros2 it is refused as the run is; a condition known only at run time is
+    ros2 launch's to decide, so it is said, not refused."""
+    launch = tmp_path / "later.launch.xml"
+    launch.write_text(f'<launch><executable cmd="python3 {WORKER} a" '
+                      'if="$(env LV_TEST_FLAG_UNSET)"/></launch>')
+    monkeypatch.delenv("LV_TEST_FLAG_UNSET", raising=False)
+    assert main(["run", str(launch), "--dry-run", "--engine", "ros2"]) == 2
+    assert "--engine ros2 needs the ROS 2 command line" in capsys.readouterr().err
+    monkeypatch.setattr(shutil, "which", lambda name, *a, **k: "/opt/ros/bin/ros2"
+                        if name == "ros2" else _real_which(name))
+    assert main(["run", str(launch), "--dry-run", "--engine", "ros2"]) == 0
+    out = capsys.readouterr().out.splitlines()
+    assert out[0] == f"run /opt/ros/bin/ros2 launch {launch}"
+    assert out[1].startswith("note: what it starts is known only when it runs: conditions "
+                             "not known before run time")
+    assert main(["run", str(launch), "--dry-run"]) == 2  # the embedded engine decides now
+
+
+def test_ros2_launch_gets_the_file_by_a_path_it_cannot_read_as_an_option(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path, ros2_calls: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    (tmp_path / "--help.launch.xml").write_text(
+        f'<launch><executable cmd="python3 {WORKER} a"/></launch>')
+    monkeypatch.chdir(tmp_path)
+    assert main(["run", "--engine", "ros2", "--", "--help.launch.xml"]) == 0
+    assert ros2_calls.read_text() == f"launch {tmp_path / '--help.launch.xml'}\n"

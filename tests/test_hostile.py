@@ -1078,3 +1078,349 @@ def test_a_result_from_the_cache_reads_no_more_than_its_check(tmp_path: Path) ->
     assert "cached" in outputs[1]
     for shown in outputs:
         assert "not read" in shown and SECRET not in shown, shown[-3000:]
+
+# ---- issue 42: run, pre-commit, action ----
+# `run --dry-run` starts nothing, whatever the engine; a name after `--` is a path (the
+# pre-commit hook's entry ends with `--`); the action updates its own comment only.
+
+ROOT_OF_TREE = Path(__file__).resolve().parent.parent
+TWINS_XML = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="twin"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="twin"/>
+</launch>
+"""
+TWINS_YAML = """launch:
+- node: {pkg: demo_nodes_cpp, exec: talker, name: twin}
+- node: {pkg: demo_nodes_cpp, exec: listener, name: twin}
+"""
+
+
+def _run_engines() -> list[str]:
+    """Return every engine `run --engine` offers (one added later is tested too)."""
+    import argparse
+
+    from launchverify.cli import build_parser
+
+    commands = next(action for action in build_parser()._actions
+                    if isinstance(action, argparse._SubParsersAction))
+    engine = next(action for action in commands.choices["run"]._actions
+                  if "--engine" in action.option_strings)
+    assert engine.choices is not None
+    return sorted(engine.choices)
+
+
+def _marker_program(folder: Path, name: str, marker: Path) -> Path:
+    """Write a program that leaves a line in ``marker`` each time it runs."""
+    program = folder / name
+    program.write_text(f"#!/bin/sh\necho \"$0 $*\" >> '{marker}'\n")
+    program.chmod(0o755)
+    return program
+
+
+def _dry_run_tree(root: Path) -> tuple[Path, Path, Path]:
+    """Return a launch file every engine would start something of, the folder holding a
+    ``ros2`` that leaves a marker, and the marker: a process, a node, a ``$(command)``."""
+    tools = root / "bin"
+    tools.mkdir()
+    marker = root / "started"
+    _marker_program(tools, "ros2", marker)
+    program = _marker_program(tools, "program", marker)
+    launch = root / "start.launch.xml"
+    launch.write_text(f"""<launch>
+  <executable cmd="{program} process" name="process"/>
+  <node exec="{program}" name="node" args="node">
+    <param name="description" value="$(command '{program} command')"/>
+  </node>
+</launch>
+""")
+    return launch, tools, marker
+
+
+def _forbid_engines(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Make every way a run starts something fail the test: processes, the supervisor,
+    ``$(command)``."""
+    import asyncio
+
+    from launchverify.executor import command, supervisor
+
+    def reached(*args: object, **kwargs: object) -> None:
+        raise AssertionError(f"a dry run reached an engine: {args!r}")
+
+    for owner, name in ((subprocess, "Popen"), (subprocess, "call"), (subprocess, "run"),
+                        (os, "system"), (os, "posix_spawn"), (os, "posix_spawnp"),
+                        (asyncio, "create_subprocess_exec"),
+                        (asyncio, "create_subprocess_shell"),
+                        (supervisor.Supervisor, "__init__"), (supervisor.Supervisor, "run"),
+                        (command, "run_command")):
+        monkeypatch.setattr(owner, name, reached)
+
+
+@pytest.mark.parametrize("engine", _run_engines())
+def test_a_dry_run_reaches_no_engine(tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                     capsys: pytest.CaptureFixture[str], engine: str) -> None:
+    """It prints what the run would start, and starts nothing: no ros2, no process."""
+    from launchverify.cli import main
+
+    launch, tools, marker = _dry_run_tree(tmp_path)
+    monkeypatch.setenv("PATH", f"{tools}{os.pathsep}{os.environ['PATH']}")
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    _forbid_engines(monkeypatch)
+    logs = tmp_path / "logs"
+    status = main(["run", str(launch), "--dry-run", "--engine", engine, "--log-dir", str(logs)])
+    out = capsys.readouterr().out
+    assert status == 0, out
+    assert not marker.exists() and not logs.exists()
+    assert f"{tools / 'program'} process" in out and "<output of $(command" in out
+    if engine == "ros2":
+        assert f"run {tools / 'ros2'} launch {launch}" in out
+
+
+@pytest.mark.parametrize("engine", _run_engines())
+def test_a_dry_run_from_the_command_line_starts_nothing(tmp_path: Path, engine: str) -> None:
+    """The attack as a user meets it: `run FILE --dry-run --engine ros2` with ros2 there."""
+    launch, tools, marker = _dry_run_tree(tmp_path)
+    env = {**os.environ, "PATH": f"{tools}{os.pathsep}{os.environ['PATH']}"}
+    env.pop("AMENT_PREFIX_PATH", None)
+    done = subprocess.run([sys.executable, "-m", "launchverify", "run", str(launch),
+                           "--dry-run", "--engine", engine, "--log-dir", str(tmp_path / "l")],
+                          capture_output=True, text=True, env=env, timeout=120, check=False)
+    assert done.returncode == 0, done.stderr
+    assert not marker.exists(), marker.read_text()
+    assert "start program" in done.stdout
+
+
+def _hook() -> dict[str, str]:
+    import yaml
+
+    [hook] = yaml.safe_load((ROOT_OF_TREE / ".pre-commit-hooks.yaml").read_text())
+    return dict(hook)
+
+
+HOSTILE_NAMES = {"--exclude=*launch.xml": TWINS_XML, "--output=x.launch.yaml": TWINS_YAML,
+                 "robot:=x.launch.xml": TWINS_XML}
+
+
+def test_the_hooks_entry_gives_committed_names_as_paths(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """Run as pre-commit runs it (the entry, then the names it matched): each file is
+    checked, none is read as an option or a launch argument, nothing is written."""
+    import shlex
+
+    from launchverify.cli import main
+
+    hook = _hook()
+    for name, text in HOSTILE_NAMES.items():
+        (tmp_path / name).write_text(text)
+        assert re.search(hook["files"], name)  # pre-commit passes it to the hook
+    monkeypatch.chdir(tmp_path)
+    program, subcommand, *options = shlex.split(hook["entry"])
+    assert (program, subcommand) == ("launchverify", "check")
+    status = main([subcommand, "--no-cache", "--format", "json", *options, *HOSTILE_NAMES])
+    out = capsys.readouterr().out
+    assert status == 1
+    flagged = {Path(f["file"]).name for f in json.loads(out)["findings"] if f["code"] == "LV101"}
+    assert flagged == set(HOSTILE_NAMES)
+    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(HOSTILE_NAMES)
+
+
+INTERFACE_SOURCE = """import rclpy
+from rclpy.node import Node
+from std_msgs.msg import String
+
+
+class Talker(Node):
+    def __init__(self):
+        super().__init__('talker')
+        self.create_publisher(String, '{topic}', 10)
+"""
+
+# command line -> exit status, a text the output must hold. Each puts a path before `--`
+# or one named `name:=value` after it: argparse alone reads an option there, or a launch
+# argument.
+AFTER_THE_END_OF_OPTIONS = [
+    (["check", "plain.launch.xml", "-q", "--", "--output=x.launch.yaml", "robot:=x.launch.xml"],
+     1, "robot:=x.launch.xml:3:3: error LV101"),
+    (["check", "-q", "--", "-"], 1, "-:3:3: error LV101"),  # a file named '-', not stdin
+    (["report", "-o", "report.html", "--", "robot:=x.launch.xml"], 1,
+     "(1 findings in 1 files)"),
+    (["graph", "--format", "text", "--", "robot:=x.launch.xml"], 0, "twin"),
+    (["run", "--dry-run", "--force", "--", "robot:=x.launch.xml"], 0, "start talker"),
+    (["diff", "--against", "plain.launch.xml", "--format", "json", "--",
+      "robot:=x.launch.xml"], 1, '"errors_introduced": 1'),
+    (["interfaces", "talker.py", "--format", "json", "--", "-v.py"], 0, "from_option_name"),
+]
+
+
+@pytest.mark.parametrize(("argv", "status", "shown"), AFTER_THE_END_OF_OPTIONS,
+                         ids=[argv[0] + str(n) for n, (argv, _, _) in
+                              enumerate(AFTER_THE_END_OF_OPTIONS)])
+def test_every_token_after_the_end_of_options_is_a_path(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, capsys: pytest.CaptureFixture[str],
+        argv: list[str], status: int, shown: str) -> None:
+    from launchverify.cli import main
+
+    for name, text in HOSTILE_NAMES.items():
+        (tmp_path / name).write_text(text)
+    (tmp_path / "-").write_text(TWINS_YAML)
+    (tmp_path / "plain.launch.xml").write_text(
+        '<launch><node pkg="demo_nodes_cpp" exec="talker" name="plain"/></launch>\n')
+    (tmp_path / "talker.py").write_text(INTERFACE_SOURCE.format(topic="chatter"))
+    (tmp_path / "-v.py").write_text(INTERFACE_SOURCE.format(topic="from_option_name"))
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    monkeypatch.setenv("LAUNCHVERIFY_NO_CACHE", "1")
+    before = sorted(p.name for p in tmp_path.iterdir())
+    code = main(argv)
+    captured = capsys.readouterr()
+    assert code == status, captured.err
+    assert shown in captured.out + captured.err
+    written = set(sorted(p.name for p in tmp_path.iterdir())) - set(before)
+    assert written <= {"report.html"}  # what -o names, and nothing an option would write
+
+
+def test_a_diff_takes_no_revision_after_the_end_of_options(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    """`diff -- main` compares the path main (a folder since deleted), not the branch main."""
+    from launchverify.cli import main
+
+    def git(*argv: str) -> None:
+        subprocess.run(["git", *argv], cwd=tmp_path, check=True, capture_output=True,
+                       timeout=60, env={**os.environ, "GIT_AUTHOR_NAME": "t",
+                                        "GIT_AUTHOR_EMAIL": "t@x", "GIT_COMMITTER_NAME": "t",
+                                        "GIT_COMMITTER_EMAIL": "t@x"})
+
+    plain = '<launch><node pkg="demo_nodes_cpp" exec="talker" name="plain"/></launch>\n'
+    (tmp_path / "main").mkdir()
+    (tmp_path / "main" / "old.launch.xml").write_text(plain)
+    (tmp_path / "other.launch.xml").write_text(plain)
+    git("init", "-q", "-b", "main")
+    git("add", ".")
+    git("commit", "-q", "-m", "base")
+    (tmp_path / "main" / "old.launch.xml").unlink()
+    (tmp_path / "main").rmdir()
+    (tmp_path / "other.launch.xml").write_text(TWINS_XML)  # an error, outside the path
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    assert main(["diff", "--format", "json", "--", "main"]) == 0
+    diff = json.loads(capsys.readouterr().out)
+    assert diff["base"]["label"] == "merge base"
+    assert [launch["file"] for launch in diff["launches"]] == ["main/old.launch.xml"]
+    assert diff["summary"]["errors_introduced"] == 0
+
+
+# A `gh` that records its calls and answers `api graphql` (the token's account, GH_VIEWER;
+# none: an error) and the comment list (GH_COMMENTS) through the real jq, as gh's --jq does.
+FAKE_GH = """#!{python}
+import json, os, subprocess, sys
+arguments = sys.argv[1:]
+with open(os.environ["GH_CALLS"], "a") as calls:
+    calls.write(json.dumps(arguments) + "\\n")
+if "-X" in arguments:
+    sys.exit(0)
+if arguments[:2] == ["api", "graphql"]:
+    if not os.environ["GH_VIEWER"]:
+        sys.exit(1)
+    answer = {{"data": {{"viewer": {{"login": os.environ["GH_VIEWER"]}}}}}}
+else:
+    answer = json.loads(os.environ["GH_COMMENTS"])
+query = arguments[arguments.index("--jq") + 1] if "--jq" in arguments else "."
+done = subprocess.run(["jq", "-r", query], input=json.dumps(answer), text=True)
+sys.exit(done.returncode)
+"""
+MARKER = "<!-- launchverify-diff -->"
+
+
+def _comment(number: int, login: str, body: str = MARKER + "\nold diff") -> dict[str, object]:
+    return {"id": number, "body": body,
+            "user": {"login": login, "type": "Bot" if login.endswith("[bot]") else "User"}}
+
+
+IMPOSTOR = _comment(101, "mallory")  # the pull request's author, first, with the marker
+BOT = "github-actions[bot]"
+
+
+@pytest.mark.parametrize(("viewer", "comments", "patched"), [
+    (BOT, [IMPOSTOR, _comment(150, BOT, "unrelated"), _comment(202, BOT)], 202),
+    ("", [IMPOSTOR, _comment(202, BOT)], 202),  # GraphQL refused: the default token's bot
+    ("carol", [IMPOSTOR, _comment(202, BOT), _comment(303, "carol")], 303),  # a user's token
+    (BOT, [IMPOSTOR], None),  # none of ours yet: a new one
+], ids=["default-token", "no-viewer", "user-token", "first-run"])
+def test_the_action_updates_its_own_comment_only(
+        tmp_path: Path, viewer: str, comments: list[dict[str, object]],
+        patched: int | None) -> None:
+    """The action's diff step, run as a runner runs it, against a `gh` serving a comment
+    list whose first marked comment is an impostor's."""
+    import shutil
+
+    import yaml
+
+    if shutil.which("jq") is None:
+        pytest.skip("jq stands in for gh's --jq")
+    steps = yaml.safe_load((ROOT_OF_TREE / "action.yml").read_text())["runs"]["steps"]
+    step = next(s for s in steps if s.get("id") == "diff")
+    repository = tmp_path / "repository"
+    repository.mkdir()
+    env_git = {**os.environ, "GIT_AUTHOR_NAME": "t", "GIT_AUTHOR_EMAIL": "t@x",
+               "GIT_COMMITTER_NAME": "t", "GIT_COMMITTER_EMAIL": "t@x"}
+    (repository / "a.launch.xml").write_text(
+        '<launch><node pkg="demo_nodes_cpp" exec="talker" name="a"/></launch>\n')
+    for argv in (["init", "-q"], ["add", "."], ["commit", "-q", "-m", "base"]):
+        subprocess.run(["git", *argv], cwd=repository, env=env_git, check=True,
+                       capture_output=True, timeout=60)
+    base = subprocess.run(["git", "rev-parse", "HEAD"], cwd=repository, capture_output=True,
+                          text=True, check=True, timeout=60).stdout.strip()
+    (repository / "a.launch.xml").write_text(
+        '<launch><node pkg="demo_nodes_cpp" exec="talker" name="b"/></launch>\n')
+    tools = tmp_path / "tools"
+    tools.mkdir()
+    (tools / "gh").write_text(FAKE_GH.format(python=sys.executable))
+    (tools / "gh").chmod(0o755)
+    runner = tmp_path / "runner"
+    runner.mkdir()
+    env = {**os.environ, "PATH": f"{tools}:{Path(sys.executable).parent}:{os.environ['PATH']}",
+           "LV_PATHS": ".", "LV_ARGUMENTS": "", "BASE_SHA": base, "PR_NUMBER": "7",
+           "REPOSITORY": "owner/repo", "GH_TOKEN": "token",
+           "GITHUB_OUTPUT": str(runner / "output"),
+           "GITHUB_STEP_SUMMARY": str(runner / "summary"), "GH_CALLS": str(runner / "calls"),
+           "GH_VIEWER": viewer, "GH_COMMENTS": json.dumps(comments)}
+    env.pop("AMENT_PREFIX_PATH", None)
+    assert set(step["env"]) <= set(env)  # the inputs reach the script through these only
+    done = subprocess.run(["bash", "--noprofile", "--norc", "-eo", "pipefail", "-c",
+                           step["run"]], cwd=repository, env=env, capture_output=True,
+                          text=True, timeout=300, check=False)
+    assert done.returncode == 0, done.stderr
+    writes = [call for call in map(json.loads, (runner / "calls").read_text().splitlines())
+              if "-X" in call]
+    assert len(writes) == 1, writes
+    if patched is None:
+        assert writes[0][:4] == ["api", "-X", "POST", "repos/owner/repo/issues/7/comments"]
+    else:
+        assert writes[0][:4] == ["api", "-X", "PATCH", f"repos/owner/repo/issues/comments/"
+                                 f"{patched}"]
+    assert writes[0][-1].startswith("body=" + MARKER) and "node /a is now /b" in writes[0][-1]
+
+
+def test_the_actions_paths_are_never_options(tmp_path: Path) -> None:
+    """A pattern in the `paths` input matches a file named like an option: still a path."""
+    import yaml
+
+    steps = yaml.safe_load((ROOT_OF_TREE / "action.yml").read_text())["runs"]["steps"]
+    step = next(s for s in steps if s.get("id") == "check")
+    (tmp_path / "--ignore=LV1").write_text(TWINS_YAML)
+    (tmp_path / "twins.launch.yaml").write_text(TWINS_YAML)
+    env = {**os.environ, "PATH": f"{Path(sys.executable).parent}:{os.environ['PATH']}",
+           "LV_PATHS": "*", "LV_ARGUMENTS": "", "LV_FAIL_ON": "error",
+           "GITHUB_OUTPUT": str(tmp_path.parent / f"{tmp_path.name}.output"),
+           "LAUNCHVERIFY_NO_CACHE": "1"}
+    env.pop("AMENT_PREFIX_PATH", None)
+    assert set(step["env"]) <= set(env)
+    done = subprocess.run(["bash", "--noprofile", "--norc", "-eo", "pipefail", "-c",
+                           step["run"]], cwd=tmp_path, env=env, capture_output=True,
+                          text=True, timeout=300, check=False)
+    assert done.returncode == 0, done.stderr
+    assert "status=1" in Path(env["GITHUB_OUTPUT"]).read_text()
+    assert "twins.launch.yaml,line=3" in done.stdout  # the annotation
+    sarif = json.loads((tmp_path / "launchverify.sarif").read_text())
+    assert "LV101" in {r["ruleId"] for r in sarif["runs"][0]["results"]}

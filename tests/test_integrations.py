@@ -117,11 +117,16 @@ def _git(cwd: Path, *argv: str) -> None:
                         "GIT_COMMITTER_NAME": "t", "GIT_COMMITTER_EMAIL": "t@x"})
 
 
-def test_pre_commit_hook_end_to_end(tmp_path: Path) -> None:
-    """``pre-commit try-repo`` installs launchverify from this tree and runs the hook."""
+@pytest.fixture(scope="module")
+def hook_repository(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, str, dict[str, str]]:
+    """Return a repository of this tree's hook, pre-commit, and the environment to run it in.
+
+    pre-commit installs launchverify from it once (its cache is shared by the tests).
+    """
     pre_commit = shutil.which("pre-commit", path=str(Path(sys.executable).parent))
     if pre_commit is None:
         pytest.skip("pre-commit is not installed (pip install -e '.[test]')")
+    tmp_path = tmp_path_factory.mktemp("pre-commit")
     hooks = tmp_path / "hooks"
     for name in ("pyproject.toml", "README.md", "LICENSE", ".pre-commit-hooks.yaml"):
         if (ROOT / name).exists():
@@ -133,6 +138,16 @@ def test_pre_commit_hook_end_to_end(tmp_path: Path) -> None:
     _git(hooks, "init", "-q")
     _git(hooks, "add", ".")
     _git(hooks, "commit", "-q", "-m", "hooks")
+    env = {**os.environ, "PRE_COMMIT_HOME": str(tmp_path / "cache"),
+           "PIP_DISABLE_PIP_VERSION_CHECK": "1"}
+    env.pop("AMENT_PREFIX_PATH", None)
+    return hooks, pre_commit, env
+
+
+def test_pre_commit_hook_end_to_end(
+        tmp_path: Path, hook_repository: tuple[Path, str, dict[str, str]]) -> None:
+    """``pre-commit try-repo`` installs launchverify from this tree and runs the hook."""
+    hooks, pre_commit, env = hook_repository
     work = tmp_path / "work"
     (work / "launch").mkdir(parents=True)
     (work / "launch" / "bad.launch.xml").write_text(DUPLICATE)
@@ -140,9 +155,6 @@ def test_pre_commit_hook_end_to_end(tmp_path: Path) -> None:
     (work / "notes.xml").write_text("<notes/>")
     _git(work, "init", "-q")
     _git(work, "add", ".")
-    env = {**os.environ, "PRE_COMMIT_HOME": str(tmp_path / "cache"),
-           "PIP_DISABLE_PIP_VERSION_CHECK": "1"}
-    env.pop("AMENT_PREFIX_PATH", None)
     done = subprocess.run([pre_commit, "try-repo", str(hooks), "launchverify", "--all-files"],
                           cwd=work, capture_output=True, text=True, timeout=600, env=env,
                           check=False)
@@ -172,6 +184,37 @@ def test_pre_commit_hook_end_to_end(tmp_path: Path) -> None:
     output = done.stdout + done.stderr
     assert done.returncode == 1, output
     assert "top.launch.xml:2:3: error LV208" in output, output
+
+
+DUPLICATE_YAML = """launch:
+- node: {pkg: demo_nodes_cpp, exec: talker, name: talker}
+- node: {pkg: demo_nodes_cpp, exec: listener, name: talker}
+"""
+
+
+def test_pre_commit_passes_committed_names_as_paths_never_as_options(
+        tmp_path: Path, hook_repository: tuple[Path, str, dict[str, str]]) -> None:
+    """Files named like options reach the hook as files: the hook fails on their mistakes
+    and writes nothing (without the entry's ``--``, it passed on 0 files and wrote one)."""
+    hooks, pre_commit, env = hook_repository
+    work = tmp_path / "work"
+    work.mkdir()
+    (work / "--exclude=*launch.xml").write_text(DUPLICATE)
+    (work / "--output=x.launch.yaml").write_text(DUPLICATE_YAML)
+    (work / "robot:=x.launch.xml").write_text(DUPLICATE)  # a path, not a launch argument
+    _git(work, "init", "-q")
+    _git(work, "add", "--", ".")
+    done = subprocess.run([pre_commit, "try-repo", str(hooks), "launchverify", "--all-files"],
+                          cwd=work, capture_output=True, text=True, timeout=600, env=env,
+                          check=False)
+    output = done.stdout + done.stderr
+    assert done.returncode == 1, output
+    for name in ("--exclude=*launch.xml:3:3", "--output=x.launch.yaml:3:3",
+                 "robot:=x.launch.xml:3:3"):
+        assert f"{name}: error LV101 [duplicate-node-name]" in output, output
+    assert not (work / "x.launch.yaml").exists()
+    assert {p.name for p in work.iterdir()} == {
+        ".git", "--exclude=*launch.xml", "--output=x.launch.yaml", "robot:=x.launch.xml"}
 
 
 def test_affected_launch_files_are_what_a_change_may_break(tmp_path: Path) -> None:

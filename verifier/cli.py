@@ -38,9 +38,11 @@ from launchverify.config import (
 from launchverify.diff import command as diff_command
 from launchverify.engine import (
     DEFAULT_TIME_LIMIT,
+    END_OF_OPTIONS,
     CheckOptions,
     Report,
     UsageError,
+    after_end_of_options,
     build_index,
     canonical,
     confine_reads,
@@ -340,14 +342,7 @@ def _subcommand(parser: argparse.ArgumentParser, name: str | None) -> Parser:
 def main(argv: Sequence[str] | None = None) -> int:
     """Run the command line; return the exit status."""
     parser = build_parser()
-    args, extra = parser.parse_known_args(argv)
-    # Paths and name:=value may follow options (`check a --select LV1 b x:=1`); argparse
-    # leaves those as unknown tokens.
-    unknown = [token for token in extra if token.startswith("-") and token != "-"]
-    if unknown or (extra and not hasattr(args, "targets")):
-        _subcommand(parser, args.command).unknown_options(unknown or extra)
-    if extra:
-        args.targets = [*args.targets, *extra]
+    args = parse_command_line(parser, list(sys.argv[1:] if argv is None else argv))
     if args.command is None:
         parser.print_help()
         return EXIT_ERROR
@@ -372,6 +367,54 @@ def main(argv: Sequence[str] | None = None) -> int:
         print(inert(f"launchverify: internal error: {type(error).__name__}: {error}") + "\n"
               "Please report this with the launch file that caused it.", file=sys.stderr)
         return EXIT_ERROR
+
+
+def parse_command_line(parser: argparse.ArgumentParser, argv: list[str]) -> argparse.Namespace:
+    """Parse the command line: of a command taking paths, every token after ``--`` is one.
+
+    argparse alone reads an option after ``--`` once a path came before it, and drops the
+    ``--`` that tells a file named ``x:=1`` from a launch argument; pre-commit appends file
+    names, which a pull request chooses. So what follows ``--`` is kept out of argparse's
+    sight, then put among the paths behind ``--`` (which ``engine.parse_arguments`` reads).
+    """
+    before, after = after_end_of_options(argv)
+    positional = _paths_positional(parser, before) if END_OF_OPTIONS in argv else None
+    if positional is None:  # argparse's own reading (`explain -- LV101`)
+        return _parse_known(parser, argv)
+    default = positional.default
+    positional.required, positional.default = False, None  # the paths after -- count too
+    args = _parse_known(parser, before)
+    given = getattr(args, positional.dest) or []
+    if positional.dest == "targets":  # paths and name:=value: the -- keeps them apart
+        args.targets = [*given, END_OF_OPTIONS, *after]
+    else:
+        convert = positional.type if callable(positional.type) else str
+        setattr(args, positional.dest, [*given, *map(convert, after)] or default)
+    return args
+
+
+def _paths_positional(parser: argparse.ArgumentParser, tokens: list[str]
+                      ) -> argparse.Action | None:
+    """Return the positional argument of the command's paths, when the command takes paths."""
+    command = next((token for token in tokens if not token.startswith("-")), None)
+    if command is None:
+        return None
+    return next((action for action in _subcommand(parser, command)._actions
+                 if not action.option_strings and action.dest in ("targets", "paths")), None)
+
+
+def _parse_known(parser: argparse.ArgumentParser, argv: list[str]) -> argparse.Namespace:
+    """Parse options, then the paths and name:=value that follow them, argparse's leftovers.
+
+    They may come after options (`check a --select LV1 b x:=1`).
+    """
+    args, extra = parser.parse_known_args(argv)
+    unknown = [token for token in extra if token.startswith("-") and token != "-"]
+    if unknown or (extra and not hasattr(args, "targets")):
+        _subcommand(parser, args.command).unknown_options(unknown or extra)
+    if extra:
+        args.targets = [*args.targets, *extra]
+    return args
 
 
 def _until_reader_leaves(handler: Callable[[argparse.Namespace], int],
@@ -500,7 +543,8 @@ def _read_stdin(args: argparse.Namespace) -> bool:
     The content stands for PATH's for every reader (Python workers included), so findings
     point into the buffer; nothing is written, and the cache is left alone.
     """
-    if "-" not in args.targets:
+    given, _ = after_end_of_options(args.targets)  # after `--`, '-' is a file named so
+    if "-" not in given:
         if args.stdin_filename is not None:
             raise UsageError("--stdin-filename goes with the path '-' (standard input)")
         return False
@@ -512,7 +556,8 @@ def _read_stdin(args: argparse.Namespace) -> bool:
     from launchverify.workspace.reading import set_unsaved
 
     set_unsaved(args.stdin_filename, sys.stdin.buffer.read())
-    args.targets = [str(args.stdin_filename) if t == "-" else t for t in args.targets]
+    args.targets = [str(args.stdin_filename) if t == "-" else t for t in given] + \
+        args.targets[len(given):]
     return True
 
 

@@ -158,11 +158,31 @@ class Report:
         return out
 
 
+END_OF_OPTIONS = "--"
+
+
+def after_end_of_options(tokens: list[str]) -> tuple[list[str], list[str]]:
+    """Return the tokens before the first ``--`` and those after it (paths, whatever they say).
+
+    The command line keeps the ``--`` it was given among the paths (argparse drops it), so
+    that a file named ``x:=1`` or ``--output=f`` after it stays a file: pre-commit appends
+    the names of committed files, which a pull request chooses.
+    """
+    if END_OF_OPTIONS not in tokens:
+        return list(tokens), []
+    end = tokens.index(END_OF_OPTIONS)
+    return list(tokens[:end]), list(tokens[end + 1:])
+
+
 def parse_arguments(tokens: list[str]) -> tuple[list[str], dict[str, str]]:
-    """Split command-line tokens into paths and ``name:=value`` launch arguments."""
+    """Split command-line tokens into paths and ``name:=value`` launch arguments.
+
+    Every token after ``--`` is a path.
+    """
+    given, literal = after_end_of_options(tokens)
     paths: list[str] = []
     arguments: dict[str, str] = {}
-    for token in tokens:
+    for token in given:
         if ":=" not in token:
             paths.append(token)
             continue
@@ -172,7 +192,7 @@ def parse_arguments(tokens: list[str]) -> tuple[list[str], dict[str, str]]:
                 f"malformed launch argument {token!r}, expected format '<name>:=<value>'"
             )
         arguments[name] = value
-    return paths, arguments
+    return [*paths, *literal], arguments
 
 
 def parse_environment(pairs: list[str]) -> dict[str, str]:

@@ -18,7 +18,12 @@ from contextlib import ExitStack, contextmanager
 from pathlib import Path
 from typing import Any, TextIO
 
-from launchverify.engine import UsageError, parse_arguments, parse_environment
+from launchverify.engine import (
+    UsageError,
+    after_end_of_options,
+    parse_arguments,
+    parse_environment,
+)
 from launchverify.models.distros import DISTROS
 
 EXIT_OK, EXIT_CHANGED = 0, 1
@@ -86,6 +91,7 @@ def run(args: argparse.Namespace) -> int:
     refuse_unknown_selectors(args)  # (both before any work, as for check)
     writable(args.output, args.json_file)
     tokens, arguments = parse_arguments(args.targets)
+    literal = len(after_end_of_options(args.targets)[1])  # after --: paths, not revisions
     request = Request(paths=("",), arguments=arguments,
                       environment=parse_environment(args.env),
                       select=option_codes(args.select),
@@ -96,7 +102,7 @@ def run(args: argparse.Namespace) -> int:
         if args.against is not None:
             pairs, renamed = _folders(args.against, tokens)
         else:
-            pairs, renamed = stack.enter_context(_revisions(tokens))
+            pairs, renamed = stack.enter_context(_revisions(tokens, literal))
         (base, base_paths), (head, head_paths) = pairs
         before = take(base.root, dataclasses.replace(request, paths=base_paths))
         after = take(head.root, dataclasses.replace(request, paths=head_paths))
@@ -205,8 +211,12 @@ def _folders(other: Path, tokens: list[str]) -> tuple[Pairs, dict[str, str]]:
 
 
 @contextmanager
-def _revisions(tokens: list[str]) -> Iterator[tuple[Pairs, dict[str, str]]]:
-    """Yield the two sides of a diff between revisions (the working tree by default)."""
+def _revisions(tokens: list[str], literal: int = 0
+               ) -> Iterator[tuple[Pairs, dict[str, str]]]:
+    """Yield the two sides of a diff between revisions (the working tree by default).
+
+    The last ``literal`` tokens came after ``--``: paths, whatever revision they may name.
+    """
     from launchverify.diff.sides import (
         Side,
         checked_out,
@@ -220,7 +230,7 @@ def _revisions(tokens: list[str]) -> Iterator[tuple[Pairs, dict[str, str]]]:
 
     repository = repository_of(Path.cwd())
     revisions: list[str] = []
-    while tokens and len(revisions) < 2 and not Path(tokens[0]).exists() \
+    while len(tokens) > literal and len(revisions) < 2 and not Path(tokens[0]).exists() \
             and _is_revision(repository, tokens[0]):
         revisions.append(tokens.pop(0))
     paths = tuple(_inside(repository, Path(token)) for token in tokens) or ("",)

@@ -11,18 +11,19 @@ from __future__ import annotations
 import asyncio
 import dataclasses
 import os
+import shlex
 import shutil
 import subprocess
 import time
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, TextIO
+from typing import TYPE_CHECKING, Protocol, TextIO
 
 from launchverify.engine import CheckOptions, Report, UsageError, build_index, run_check
 from launchverify.executor.command import install_prefixes
-from launchverify.executor.dry_run import describe
-from launchverify.executor.plan import PlanError, build_plan
+from launchverify.executor.dry_run import Locate, describe
+from launchverify.executor.plan import Plan, PlanError, build_plan
 from launchverify.executor.supervisor import Supervisor
 from launchverify.rule import Finding, Severity
 
@@ -69,7 +70,8 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
     """Verify the launch file; unless refused, run it. Return the exit code and the check.
 
     The check sees the real environment (plus ``--env``): ``$(env ...)`` takes the values
-    the processes will see, as ros2 launch does.
+    the processes will see, as ros2 launch does. Every decision is made before anything
+    starts (``Start``); a dry run prints it and stops there, whatever the engine.
     """
     options.check.environment = {**os.environ, **options.check.environment}
     report = run_check(options.check)
@@ -80,28 +82,92 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
         return 1, report
     if not report.graphs:
         raise UsageError("nothing to run")
+    start = prepare(options, report)  # starts nothing
+    if options.dry_run:
+        from launchverify.render.inert import inert
+
+        for line in start.describe():  # names and values from the checked files
+            out.write(inert(line) + "\n")
+        return 0, report
+    return start.start(out, err), report
+
+
+class Start(Protocol):
+    """What a run will start, decided in full; ``start`` is the only way to a process."""
+
+    def describe(self) -> list[str]:
+        """Return what ``start`` would do, as ``--dry-run`` prints it."""
+
+    def start(self, out: TextIO, err: TextIO) -> int:
+        """Start it; return the launch's exit status."""
+
+
+def prepare(options: RunOptions, report: Report) -> Start:
+    """Return what the run starts under its engine, starting nothing (a refusal raises).
+
+    Only a real run's plan evaluates ``$(command ...)`` (as launch does when it runs).
+    """
     root = report.graphs[0]
+    workspace = options.check.workspace or _workspace_of(report)
     if options.engine == "ros2":
-        return _ros2_launch(options, err), report
+        return Ros2Launch(_ros2_argv(options), root, workspace, options.check.paths)
     stamp = time.strftime("%Y-%m-%d-%H-%M-%S")
     run_dir = (options.log_dir or log_root()) / f"launchverify-{stamp}-{os.getpid()}"
-    workspace = options.check.workspace or _workspace_of(report)
     try:
         plan = build_plan(root, install_prefixes(workspace), run_dir / "params",
                           strict=not options.dry_run)
     except PlanError as error:
         raise UsageError(str(error)) from error
-    if options.dry_run:
-        from launchverify.render.inert import inert
+    return Embedded(plan, run_dir, workspace, options.check.paths)
 
-        _, index = build_index(options.check.paths, workspace)
-        for line in describe(plan, index.locate):  # names and values from the checked files
-            out.write(inert(line) + "\n")
-        return 0, report
-    run_dir.mkdir(parents=True, exist_ok=True)
-    err.write(f"launchverify: logging to {run_dir}\n")
-    supervisor = Supervisor(plan, run_dir, out, ros2=shutil.which("ros2"))
-    return asyncio.run(supervisor.run()), report
+
+@dataclass
+class Embedded:
+    """A run of the plan by launchverify's own engine (``supervisor.py``)."""
+
+    plan: Plan
+    run_dir: Path
+    workspace: Path | None
+    paths: list[Path]
+
+    def describe(self) -> list[str]:
+        return describe(self.plan, _locate(self.paths, self.workspace))
+
+    def start(self, out: TextIO, err: TextIO) -> int:
+        self.run_dir.mkdir(parents=True, exist_ok=True)
+        err.write(f"launchverify: logging to {self.run_dir}\n")
+        supervisor = Supervisor(self.plan, self.run_dir, out, ros2=shutil.which("ros2"))
+        return asyncio.run(supervisor.run())
+
+
+@dataclass
+class Ros2Launch:
+    """The verified file handed to the real ``ros2 launch``.
+
+    ros2 launch evaluates the file itself, its Python in ros2 launch's own process: a dry
+    run cannot ask it what it would start (``ros2 launch --print`` runs that Python too).
+    It shows the commands as the check evaluated them instead, then the handover.
+    """
+
+    argv: list[str]
+    root: LaunchGraph
+    workspace: Path | None
+    paths: list[Path]
+
+    def describe(self) -> list[str]:
+        handover = f"run {shlex.join(self.argv)}"
+        try:
+            plan = build_plan(self.root, install_prefixes(self.workspace),
+                              Path("<parameter files of ros2 launch>"), strict=False)
+        except PlanError as error:
+            return [handover, f"note: what it starts is known only when it runs: {error}"]
+        return [handover, *describe(plan, _locate(self.paths, self.workspace)),
+                "note: ros2 launch evaluates the file itself (its Python unconfined) and "
+                "builds its own commands: those above are the check's evaluation of them"]
+
+    def start(self, out: TextIO, err: TextIO) -> int:
+        err.write("launchverify: " + " ".join(self.argv) + "\n")
+        return subprocess.call(self.argv)
 
 
 def judge(check: CheckOptions, report: Report, *, force: bool = False) -> Verdict:
@@ -162,13 +228,20 @@ def _workspace_of(report: Report) -> Path | None:
     return find_workspace(report.graphs[0].root) if report.graphs else None
 
 
-def _ros2_launch(options: RunOptions, err: TextIO) -> int:
-    """Hand the verified file and its arguments to ``ros2 launch``."""
+def _ros2_argv(options: RunOptions) -> list[str]:
+    """Return the ``ros2 launch`` command of the verified file and its arguments.
+
+    The file is named by an absolute path: one starting with ``-`` is not an option.
+    """
     ros2 = shutil.which("ros2")
     if ros2 is None:
         raise UsageError("--engine ros2 needs the ROS 2 command line (ros2); source your ROS 2 "
                          "installation, or use the embedded engine")
-    path = options.check.paths[0]
-    argv = [ros2, "launch", str(path), *(f"{k}:={v}" for k, v in options.arguments.items())]
-    err.write("launchverify: " + " ".join(argv) + "\n")
-    return subprocess.call(argv)
+    path = Path(options.check.paths[0]).absolute()
+    return [ros2, "launch", str(path), *(f"{k}:={v}" for k, v in options.arguments.items())]
+
+
+def _locate(paths: list[Path], workspace: Path | None) -> Locate:
+    """Return where a file named through a package is in its sources (``describe``)."""
+    _, index = build_index(paths, workspace)
+    return index.locate
