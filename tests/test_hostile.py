@@ -1079,6 +1079,7 @@ def test_a_result_from_the_cache_reads_no_more_than_its_check(tmp_path: Path) ->
     for shown in outputs:
         assert "not read" in shown and SECRET not in shown, shown[-3000:]
 
+
 # ---- issue 42: run, pre-commit, action ----
 # `run --dry-run` starts nothing, whatever the engine; a name after `--` is a path (the
 # pre-commit hook's entry ends with `--`); the action updates its own comment only.
