@@ -1109,3 +1109,82 @@ def test_the_standard_streams_show_what_their_encoding_cannot_hold(tmp_path: Pat
             else:
                 assert ("caf\\xe9" if ascii_stream else "caf\u00e9") in out
             assert ODD_SHOWN in out and LONE_SHOWN in out
+
+
+CONFIG_TREE_XML = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="twin"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="twin"/>
+</launch>
+"""
+DEEP = 100_000
+DEEP_TOML = {
+    "arrays": "jobs = " + "[" * DEEP + "]" * DEEP + "\n",
+    "inline-tables": "arguments = " + "{a = " * DEEP + "1" + "}" * DEEP + "\n",
+    "dotted-key": "arguments." + ".".join(["a"] * DEEP) + " = '1'\n",
+    "table-header": "[arguments." + ".".join(["a"] * DEEP) + "]\n",
+}
+
+
+def _config_tree(root: Path) -> Path:
+    workspace = root / "ws"
+    workspace.mkdir()
+    (workspace / ".git").mkdir()
+    (workspace / "twin.launch.xml").write_text(CONFIG_TREE_XML)
+    return workspace
+
+
+def _check_tree(workspace: Path, *extra: str) -> subprocess.CompletedProcess[str]:
+    """Check a tree; a configuration that stalls it fails the test (the timeout)."""
+    return subprocess.run([sys.executable, "-m", "launchverify", "check", str(workspace),
+                           "--no-cache", *extra], capture_output=True, text=True,
+                          cwd=workspace.parent, timeout=60, check=False)
+
+
+@pytest.mark.parametrize("where", ["launchverify.toml", "pyproject.toml"])
+@pytest.mark.parametrize("shape", sorted(DEEP_TOML))
+def test_a_configuration_nested_100000_deep_is_a_clear_error(tmp_path: Path, shape: str,
+                                                             where: str) -> None:
+    workspace = _config_tree(tmp_path)
+    text = DEEP_TOML[shape]
+    if where == "pyproject.toml":
+        text = "[tool.launchverify]\n" + text.replace("[arguments.", "[tool.launchverify.a.")
+    (workspace / where).write_text(text)
+    done = _check_tree(workspace)
+    assert done.returncode == 2, done.stderr[-2000:]
+    [line] = done.stderr.splitlines()
+    assert line.startswith(f"launchverify: error: {workspace / where}:")
+    assert "nested more than 100 deep" in line
+
+
+@pytest.mark.parametrize("where", ["launchverify.toml", "pyproject.toml"])
+@pytest.mark.parametrize("what", ["/dev/zero", "fifo", "too-large"])
+def test_a_configuration_that_is_no_file_is_refused_at_once(tmp_path: Path, what: str,
+                                                            where: str) -> None:
+    """Linked to ``/dev/zero``, a FIFO, or larger than the size limit: exit 2 at once,
+    naming the file (not read until memory runs out, not passed over)."""
+    workspace = _config_tree(tmp_path)
+    path = workspace / where
+    if what == "/dev/zero":
+        path.symlink_to("/dev/zero")
+    elif what == "fifo":
+        os.mkfifo(path)
+    else:
+        path.write_text("[tool.launchverify]\n" + "#" * 11_000_000 + "\n")
+    done = _check_tree(workspace)
+    assert done.returncode == 2, done.stderr[-2000:]
+    [line] = done.stderr.splitlines()
+    assert str(path) in line and ("not read" in line or "larger than 10 MB" in line), line
+
+
+def test_a_configuration_error_names_an_odd_folder_visibly(tmp_path: Path) -> None:
+    """An error message on stderr shows a folder's undecodable bytes escaped."""
+    workspace = _config_tree(tmp_path)
+    folder = workspace / os.fsdecode(b"cfg" + ODD)
+    folder.mkdir()
+    (folder / "twin.launch.xml").write_text(CONFIG_TREE_XML)
+    (folder / "launchverify.toml").write_text("bogus = 1\n")
+    done = subprocess.run([sys.executable, "-c", STRICT_MAIN, "check", str(folder)],
+                          capture_output=True, cwd=workspace, timeout=60, check=False)
+    err = done.stderr.decode("utf-8")
+    assert done.returncode == 2 and "internal error" not in err, err
+    assert f"cfg{ODD_SHOWN}/launchverify.toml:1: unknown key 'bogus'" in err
