@@ -1188,3 +1188,87 @@ def test_a_configuration_error_names_an_odd_folder_visibly(tmp_path: Path) -> No
     err = done.stderr.decode("utf-8")
     assert done.returncode == 2 and "internal error" not in err, err
     assert f"cfg{ODD_SHOWN}/launchverify.toml:1: unknown key 'bogus'" in err
+
+
+PARALLEL_PY = """\
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    name = 'p{number}'
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker', name=name),
+                              Node(package='demo_nodes_cpp', executable='listener',
+                                   name=name)])
+"""
+
+
+def _jobs_reaching_the_pool(monkeypatch: pytest.MonkeyPatch, argv: list[str]) -> list[int]:
+    """Run ``main(argv)`` in-process; return the ``jobs`` each worker pool was given."""
+    from launchverify.cli import main
+    from launchverify.isolation.lazy import LazyPython
+
+    given: list[int] = []
+    start = LazyPython.__init__
+
+    def recorded(self: LazyPython, **options: object) -> None:
+        given.append(int(str(options["jobs"])))
+        start(self, **options)
+
+    monkeypatch.setattr(LazyPython, "__init__", recorded)
+    assert main(argv) == 1
+    return given
+
+
+def test_jobs_from_the_checked_tree_is_capped_at_the_cores(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    workspace = _config_tree(tmp_path)
+    (workspace / "p.launch.py").write_text(PARALLEL_PY.format(number=0))
+    (workspace / "launchverify.toml").write_text("jobs = 10000\n")
+    cores = os.cpu_count() or 1
+    assert set(_jobs_reaching_the_pool(monkeypatch, ["check", str(workspace)])) == {cores}
+    assert f"jobs = 10000: lowered to {cores}" in capsys.readouterr().err
+    # the user's own: -j on the command line, a configuration outside the tree
+    assert set(_jobs_reaching_the_pool(
+        monkeypatch, ["check", str(workspace), "-j", "10000"])) == {10000}
+    capsys.readouterr()
+    mine = tmp_path / "mine.toml"
+    (workspace / "launchverify.toml").rename(mine)
+    assert set(_jobs_reaching_the_pool(
+        monkeypatch, ["check", str(workspace), "--config", str(mine)])) == {10000}
+    assert "lowered" not in capsys.readouterr().err
+
+
+MEMORY_PY = """\
+import resource
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+try:
+    block = bytes(3 * 1024 ** 3)  # calloc: no page is touched where nothing limits it
+    held = 'no'
+    del block
+except MemoryError:
+    held = 'yes'
+
+def generate_launch_description():
+    limit = 'none' if soft == resource.RLIM_INFINITY else 'set'
+    name = f'm{number}_limit_{{limit}}_held_{{held}}'
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker', name=name),
+                              Node(package='demo_nodes_cpp', executable='listener',
+                                   name=name)])
+"""
+
+
+def test_every_worker_has_the_memory_limit(tmp_path: Path) -> None:
+    """Six files evaluated by up to six workers at once: in each, the address space is
+    limited and 3 GB cannot be had."""
+    workspace = _config_tree(tmp_path)
+    for number in range(6):
+        (workspace / f"m{number}.launch.py").write_text(MEMORY_PY.format(number=number))
+    done = _check_tree(workspace, "-j", "6", "--format", "json")
+    names = {finding["file"].rsplit("/", 1)[-1]: finding["message"].split()[2]
+             for finding in json.loads(done.stdout)["findings"]
+             if finding["code"] == "LV101" and finding["file"].endswith(".launch.py")}
+    assert names == {f"m{n}.launch.py": f"/m{n}_limit_set_held_yes" for n in range(6)}

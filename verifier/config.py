@@ -28,8 +28,8 @@ check (the configuration of the check, not the one nearest each file).
 
 A configuration file inside the checked tree comes with the pull request being checked:
 the folders it names outside the workspace (``package-paths``, ``workspace``) are read
-only when the user confirms them (``--package-path``, ``LAUNCHVERIFY_PACKAGE_PATH``);
-see ``confined``. Any configuration
+only when the user confirms them (``--package-path``, ``LAUNCHVERIFY_PACKAGE_PATH``),
+and its ``jobs`` is at most the machine's cores; see ``confined``. Any configuration
 file is read as launch files are (``reading.read_file``): a regular file of at most the
 size limit, never a FIFO, a device or a system file (a ``launchverify.toml`` linked to
 ``/dev/zero`` is an error at once), and TOML nested too deeply for the parser is an
@@ -520,13 +520,15 @@ def confirmed_package_paths(given: Sequence[Path] = ()) -> list[Path]:
 
 def confined(config: Config, checked: Sequence[Path], workspace: Path,
              confirmed: Sequence[Path]) -> tuple[Config, list[str]]:
-    """Return ``config`` without the folders it may not add, and a note for each.
+    """Return ``config`` without what it may not ask for, and a note for each.
 
     A configuration file inside the workspace or a checked path is the checked tree's
     own: a pull request wrote it. Folders it names outside the workspace would widen what
     Python launch files may read (and so what findings may show), so they count only
-    when inside a folder the user confirmed. A file elsewhere (``--config ~/lv.toml``, a
-    file above the repository) is the user's, and trusted.
+    when inside a folder the user confirmed. Its ``jobs`` is at most the machine's cores:
+    each worker may hold its memory limit (``isolation.confine.Limits``), so 10,000 of
+    them would take the machine. A file elsewhere (``--config ~/lv.toml``, a file above
+    the repository) is the user's, and trusted, as ``-j`` is.
     """
     if config.path is None:
         return config, []
@@ -547,6 +549,18 @@ def confined(config: Config, checked: Sequence[Path], workspace: Path,
                                    else [])]
              if not kept(folder)]
     workspace_key = config.workspace if config.workspace and kept(config.workspace) else None
+    jobs, lowered = _jobs_within_cores(config.jobs)
+    if lowered:
+        notes.append(f"{config.path.name} sets jobs = {config.jobs}: lowered to {jobs}, the "
+                     "machine's cores (a -j on the command line is not)")
     return dataclasses.replace(
         config, package_paths=[p for p in config.package_paths if kept(p)],
-        workspace=workspace_key), notes
+        workspace=workspace_key, jobs=jobs), notes
+
+
+def _jobs_within_cores(jobs: int | None) -> tuple[int | None, bool]:
+    """Return ``jobs`` capped at the machine's cores, and whether it was lowered."""
+    cores = os.cpu_count() or 1
+    if jobs is not None and jobs > cores:
+        return cores, True
+    return jobs, False
