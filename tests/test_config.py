@@ -362,3 +362,52 @@ def test_an_argument_says_where_it_was_given(tmp_path: Path,
         "argument 'use_sim_tme:=true' is not declared by robot.launch.xml (given in "
         "launchverify.toml) (did you mean 'use_sim_time'?)": "error",
     }
+
+
+# ---- a configuration file is untrusted input (issue 42) ----
+
+
+def test_dots_and_brackets_in_strings_and_comments_are_no_depth(tmp_path: Path) -> None:
+    """Only what nests counts towards the depth bound: not a string's or a comment's dots."""
+    dots = "." * 300
+    path = tmp_path / "launchverify.toml"
+    path.write_text(f"# {dots} [[[[ {{{{\n"
+                    f"arguments = {{a = '{dots}', b = \"{dots}[\", c = '''\n{dots}\n'''}}\n"
+                    f"environment = {{D = \"\"\"{dots}\n{dots}\"\"\"}}\n"
+                    + "".join(f"per-file-ignores.'x{n}{dots}y' = ['LV101']\n"
+                              for n in range(200)))
+    config = load_config(path)
+    assert config.arguments["a"] == dots and config.arguments["c"] == dots + "\n"
+    assert len(config.per_file_ignores) == 200
+
+
+def test_tomllib_recursion_is_an_error_past_the_depth_bound(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The net under the bound: tomllib's RecursionError is a configuration error."""
+    from launchverify import config
+
+    monkeypatch.setattr(config, "MAX_DEPTH", 10 ** 9)
+    path = tmp_path / "launchverify.toml"
+    path.write_text("jobs = " + "[" * 100_000 + "]" * 100_000 + "\n")
+    with pytest.raises(config.ConfigError, match="nested too deeply"):
+        load_config(path)
+
+
+def test_a_configuration_of_the_user_is_read_outside_the_confined_folders(
+        tmp_path: Path) -> None:
+    """A check confines reads to its tree; a configuration above it is still the user's."""
+    from launchverify.workspace import reading
+
+    (tmp_path / "ws").mkdir()
+    (tmp_path / "launchverify.toml").write_text("jobs = 3\n")
+    reading.confine([tmp_path / "ws"])
+    assert load_config(tmp_path / "launchverify.toml").jobs == 3
+
+
+def test_a_configuration_that_is_not_utf8_names_its_line(tmp_path: Path) -> None:
+    from launchverify.config import ConfigError
+
+    path = tmp_path / "launchverify.toml"
+    path.write_bytes(b"select = ['LV1']\n# caf\xe9\n")
+    with pytest.raises(ConfigError, match=r"launchverify.toml:2: invalid TOML: not UTF-8"):
+        load_config(path)

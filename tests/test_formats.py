@@ -368,3 +368,36 @@ def test_github_escaping(tmp_path: Path) -> None:
     assert warning.endswith("::50%25 done%0D%0Anext: a,b (when: x:=1)")
     assert escape_property("a:b,c%\n") == "a%3Ab%2Cc%25%0A"
     assert escape_data("a:b,c%\r") == "a:b,c%25%0D"
+
+
+# ---- text that has no UTF-8 form (issue 42) ----
+
+
+def test_lone_surrogates_are_shown_and_other_characters_kept() -> None:
+    from launchverify.render.encodable import escape_surrogates, json_text
+    from launchverify.render.inert import inert
+
+    name = "caf\u00e9 \U0001f600 dup\udcff\udcfe x\ud800"
+    shown = "caf\u00e9 \U0001f600 dup\\xff\\xfe x\\ud800"
+    assert escape_surrogates(name) == shown
+    assert inert(name) == shown
+    assert json.loads(json_text({name: [name]})) == {shown: [shown]}
+    exact = "caf\u00e9 \U0001f600"  # a character beyond U+FFFF is written as a pair: kept
+    assert json.loads(json_text({"name": exact})) == {"name": exact}
+
+
+def test_a_uri_names_a_file_by_its_bytes() -> None:
+    from launchverify.render.sarif import file_uri
+
+    assert file_uri(Path("/ws/dup\udcff\udcfe.launch.xml")) == \
+        "file:///ws/dup%FF%FE.launch.xml"
+    assert file_uri(Path("/ws/x\ud800 y.launch.py")) == "file:///ws/x%5Cud800%20y.launch.py"
+    assert file_uri(Path("/ws/a b")) == Path("/ws/a b").as_uri()
+
+
+def test_fingerprints_hash_a_file_name_by_its_bytes() -> None:
+    """Baselines written before stay valid: an undecodable byte is hashed as itself."""
+    from launchverify.findings.fingerprint import _field_bytes
+
+    assert _field_bytes("dup\udcff.launch.xml") == b"dup\xff.launch.xml"
+    assert _field_bytes("x\ud800") == "x\ud800".encode("utf-8", "surrogatepass")

@@ -1425,3 +1425,364 @@ def test_the_actions_paths_are_never_options(tmp_path: Path) -> None:
     assert "twins.launch.yaml,line=3" in done.stdout  # the annotation
     sarif = json.loads((tmp_path / "launchverify.sarif").read_text())
     assert "LV101" in {r["ruleId"] for r in sarif["runs"][0]["results"]}
+
+
+# ---- issue 42: unicode and configuration ----
+#
+# A file name with bytes that are not UTF-8 (Python sees ``\xff`` as U+DCFF) and a node
+# name with a lone surrogate (a Python launch file builds '\ud800') end no output: every
+# format shows them escaped and is as complete as with plain names. The renderers do it
+# by construction (a driver calls ``cli.main`` with strict UTF-8 streams, under no net);
+# the standard streams of ``python -m launchverify`` show what their encoding cannot hold
+# besides. A configuration file is read as untrusted input; ``jobs`` from the checked tree
+# is capped; every worker gets the memory limit.
+
+ODD = b"\xff\xfe"  # not UTF-8: a file name holding them is shown as \xff\xfe
+ODD_SHOWN = "\\xff\\xfe"
+LONE_SHOWN = "\\ud800"
+STRICT_MAIN = """\
+import io, sys
+from launchverify.cli import main
+sys.stdout = io.TextIOWrapper(open(1, "wb", closefd=False), encoding="utf-8")
+sys.stderr = io.TextIOWrapper(open(2, "wb", closefd=False), encoding="utf-8")
+status = main(sys.argv[1:])
+sys.stdout.flush()
+sys.stderr.flush()
+raise SystemExit(status)
+"""
+ODD_PACKAGE_XML = """<?xml version="1.0"?>
+<package format="3"><name>pk</name><version>0.0.1</version><description>d</description>
+<maintainer email="a@b.c">a</maintainer><license>MIT</license>
+<buildtool_depend>ament_cmake</buildtool_depend>
+<export><build_type>ament_cmake</build_type></export></package>
+"""
+ODD_CMAKE = """cmake_minimum_required(VERSION 3.8)
+project(pk)
+find_package(ament_cmake REQUIRED)
+add_executable(talker src/talker.cpp)
+install(TARGETS talker DESTINATION lib/${PROJECT_NAME})
+ament_package()
+"""
+ODD_CPP = ('#include "rclcpp/rclcpp.hpp"\n'
+           'class T : public rclcpp::Node {\n public:\n  T() : Node("t") {\n'
+           '    pub_ = create_publisher<std_msgs::msg::String>("chatter", 10);\n  }\n};\n')
+ODD_XML = """<launch>
+  <node pkg="pk" exec="talker" name="twin"/>
+  <node pkg="pk" exec="talker" name="twin"/>
+</launch>
+"""
+# {name}: a Python expression for the node name (a lone surrogate, or a plain character
+# that is as invalid in a node name)
+ODD_PY = """\
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    name = 'x' + {name}
+    return LaunchDescription([
+        Node(package='pk', executable='talker', name=name, parameters=[{{'p': name}}]),
+        Node(package='pk', executable='talker', name=name),
+    ])
+"""
+
+
+@dataclass
+class OddTree:
+    root: Path
+    xml: Path  # a launch file named with undecodable bytes (plain: "ff")
+    python: Path  # a Python launch file so named, whose node name has a lone surrogate
+    cpp: Path  # a node source so named
+
+
+def _odd_tree(root: Path, *, odd: bool) -> OddTree:
+    """Return a workspace with findings on odd names (``odd=False``: plain ones)."""
+    tail = ODD if odd else b"ff"
+    workspace = root / ("odd" if odd else "plain")
+    package = workspace / "src" / "pk"
+    (package / "launch").mkdir(parents=True)
+    (package / "src").mkdir()
+    (workspace / ".git").mkdir()
+    (package / "package.xml").write_text(ODD_PACKAGE_XML)
+    (package / "CMakeLists.txt").write_text(ODD_CMAKE)
+    (package / "src" / "talker.cpp").write_text(ODD_CPP)
+    cpp = package / "src" / os.fsdecode(b"other" + tail + b".cpp")
+    cpp.write_text(ODD_CPP)
+    xml = package / "launch" / os.fsdecode(b"dup" + tail + b".launch.xml")
+    xml.write_text(ODD_XML)
+    python = package / "launch" / os.fsdecode(b"lone" + tail + b".launch.py")
+    python.write_text(ODD_PY.format(name="'\\ud800'" if odd else "'-'"))
+    return OddTree(workspace, xml, python, cpp)
+
+
+@dataclass
+class Shown:
+    status: int
+    out: str  # standard output, or the output file when one was written
+    err: str
+
+
+def _strict_run(tree: OddTree, case: str, tmp: Path) -> Shown:
+    """Run one output of launchverify over ``tree`` with strict UTF-8 streams.
+
+    Raises ``UnicodeDecodeError`` when an output holds bytes that are not UTF-8 (a raw
+    file-name byte).
+    """
+    output = tmp / f"{tree.root.name}-{case}.out"
+    places = {"{out}": str(output), "{python}": str(tree.python), "{cpp}": str(tree.cpp)}
+    args = [places.get(part, part) for part in _ODD_CASES[case]]
+    done = subprocess.run([sys.executable, "-c", STRICT_MAIN, *args], capture_output=True,
+                          cwd=tree.root, timeout=180, check=False)
+    out = output.read_bytes() if "{out}" in _ODD_CASES[case] else done.stdout
+    return Shown(done.returncode, out.decode("utf-8"), done.stderr.decode("utf-8"))
+
+
+_ODD_CASES: dict[str, tuple[str, ...]] = {
+    "text": ("check", "."),
+    "text-file": ("check", ".", "-o", "{out}"),
+    "explain": ("check", ".", "--explain"),
+    "concise": ("check", ".", "--format", "concise"),
+    "concise-file": ("check", ".", "--format", "concise", "-o", "{out}"),
+    "github": ("check", ".", "--format", "github"),
+    "github-file": ("check", ".", "--format", "github", "-o", "{out}"),
+    "sarif": ("check", ".", "--format", "sarif"),
+    "sarif-file": ("check", ".", "--format", "sarif", "-o", "{out}"),
+    "junit": ("check", ".", "--format", "junit"),
+    "junit-file": ("check", ".", "--xunit-file", "{out}"),
+    "json": ("check", ".", "--format", "json"),
+    "json-file": ("check", ".", "--format", "json", "-o", "{out}"),
+    "html": ("report", ".", "-o", "{out}"),
+    "graph-text": ("graph", "{python}", "--format", "text"),
+    "graph-json": ("graph", "{python}", "--format", "json"),
+    "interfaces": ("interfaces", ".", "{cpp}"),
+    "interfaces-json": ("interfaces", ".", "{cpp}", "--format", "json"),
+    "run-dry": ("run", "{python}", "--dry-run", "--force"),
+}
+# what each output names: the files (their bytes), the node (its surrogate), or both
+_ODD_NAMES = {"graph-text": (ODD_SHOWN, LONE_SHOWN), "graph-json": (ODD_SHOWN, LONE_SHOWN),
+              "interfaces": (ODD_SHOWN,), "interfaces-json": (ODD_SHOWN,),
+              "run-dry": (LONE_SHOWN,)}
+
+
+def _strings(value: object) -> Iterator[str]:
+    if isinstance(value, str):
+        yield value
+    elif isinstance(value, dict):
+        for key, item in value.items():
+            yield from _strings(key)
+            yield from _strings(item)
+    elif isinstance(value, list):
+        for item in value:
+            yield from _strings(item)
+
+
+def _surrogates(text: str) -> list[str]:
+    return [c for c in text if 0xD800 <= ord(c) <= 0xDFFF]
+
+
+@pytest.mark.parametrize("case", sorted(_ODD_CASES))
+def test_odd_names_lose_no_output(tmp_path: Path, case: str) -> None:
+    odd = _strict_run(_odd_tree(tmp_path, odd=True), case, tmp_path)
+    plain = _strict_run(_odd_tree(tmp_path, odd=False), case, tmp_path)
+    assert plain.status in (0, 1), plain.err[-2000:]
+    assert odd.status == plain.status, odd.err[-2000:]
+    assert "internal error" not in odd.err and "Traceback" not in odd.err
+    text = odd.out + odd.err
+    if "json" in case or "sarif" in case:  # valid JSON, every string encodable
+        document, twin = json.loads(odd.out), json.loads(plain.out)
+        assert not [s for s in _strings(document) if _surrogates(s)]
+        assert len(list(_strings(document))) == len(list(_strings(twin)))
+        text = "\n".join(_strings(document))
+    for shown in _ODD_NAMES.get(case, (ODD_SHOWN, LONE_SHOWN)):
+        assert shown in text, (shown, text[-2000:])
+    if case == "html":
+        assert odd.out.endswith("</html>\n") and len(odd.out) > 0.9 * len(plain.out)
+    elif "json" not in case and "sarif" not in case:  # as many lines: nothing cut short
+        assert len(odd.out.splitlines()) == len(plain.out.splitlines()) > 0, odd.out
+    if case.startswith("sarif"):  # a URI names the file by its bytes
+        assert "%FF%FE.launch.xml" in odd.out
+
+
+def test_the_standard_streams_show_what_their_encoding_cannot_hold(tmp_path: Path) -> None:
+    """``python -m launchverify`` on an ASCII stream and in the C locale: nothing lost."""
+    tree = _odd_tree(tmp_path, odd=True)
+    (tree.root / "cafe.launch.py").write_text(ODD_PY.format(name="'caf\\u00e9'"))
+    for variables in ({"PYTHONIOENCODING": "ascii"}, {"LC_ALL": "C", "LANG": "C"},
+                      {"LC_ALL": "C.UTF-8"}):
+        for output in ("text", "github", "json"):
+            done = subprocess.run(
+                [sys.executable, "-m", "launchverify", "check", ".", "--format", output],
+                capture_output=True, cwd=tree.root, timeout=180, check=False,
+                env={**os.environ, **variables})
+            out = done.stdout.decode("utf-8")  # nothing raw: no byte that is not UTF-8
+            assert done.returncode == 1, (variables, done.stderr[-2000:])
+            ascii_stream = variables.get("PYTHONIOENCODING") == "ascii"
+            assert out.isascii() or not ascii_stream
+            if output == "json":
+                out = "\n".join(_strings(json.loads(out)))
+                assert "caf\u00e9" in out
+            else:
+                assert ("caf\\xe9" if ascii_stream else "caf\u00e9") in out
+            assert ODD_SHOWN in out and LONE_SHOWN in out
+
+
+CONFIG_TREE_XML = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="twin"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="twin"/>
+</launch>
+"""
+DEEP = 100_000
+DEEP_TOML = {
+    "arrays": "jobs = " + "[" * DEEP + "]" * DEEP + "\n",
+    "inline-tables": "arguments = " + "{a = " * DEEP + "1" + "}" * DEEP + "\n",
+    "dotted-key": "arguments." + ".".join(["a"] * DEEP) + " = '1'\n",
+    "table-header": "[arguments." + ".".join(["a"] * DEEP) + "]\n",
+}
+
+
+def _config_tree(root: Path) -> Path:
+    workspace = root / "ws"
+    workspace.mkdir()
+    (workspace / ".git").mkdir()
+    (workspace / "twin.launch.xml").write_text(CONFIG_TREE_XML)
+    return workspace
+
+
+def _check_tree(workspace: Path, *extra: str) -> subprocess.CompletedProcess[str]:
+    """Check a tree; a configuration that stalls it fails the test (the timeout)."""
+    return subprocess.run([sys.executable, "-m", "launchverify", "check", str(workspace),
+                           "--no-cache", *extra], capture_output=True, text=True,
+                          cwd=workspace.parent, timeout=60, check=False)
+
+
+@pytest.mark.parametrize("where", ["launchverify.toml", "pyproject.toml"])
+@pytest.mark.parametrize("shape", sorted(DEEP_TOML))
+def test_a_configuration_nested_100000_deep_is_a_clear_error(tmp_path: Path, shape: str,
+                                                             where: str) -> None:
+    workspace = _config_tree(tmp_path)
+    text = DEEP_TOML[shape]
+    if where == "pyproject.toml":
+        text = "[tool.launchverify]\n" + text.replace("[arguments.", "[tool.launchverify.a.")
+    (workspace / where).write_text(text)
+    done = _check_tree(workspace)
+    assert done.returncode == 2, done.stderr[-2000:]
+    [line] = done.stderr.splitlines()
+    assert line.startswith(f"launchverify: error: {workspace / where}:")
+    assert "nested more than 100 deep" in line
+
+
+@pytest.mark.parametrize("where", ["launchverify.toml", "pyproject.toml"])
+@pytest.mark.parametrize("what", ["/dev/zero", "fifo", "too-large"])
+def test_a_configuration_that_is_no_file_is_refused_at_once(tmp_path: Path, what: str,
+                                                            where: str) -> None:
+    """Linked to ``/dev/zero``, a FIFO, or larger than the size limit: exit 2 at once,
+    naming the file (not read until memory runs out, not passed over)."""
+    workspace = _config_tree(tmp_path)
+    path = workspace / where
+    if what == "/dev/zero":
+        path.symlink_to("/dev/zero")
+    elif what == "fifo":
+        os.mkfifo(path)
+    else:
+        path.write_text("[tool.launchverify]\n" + "#" * 11_000_000 + "\n")
+    done = _check_tree(workspace)
+    assert done.returncode == 2, done.stderr[-2000:]
+    [line] = done.stderr.splitlines()
+    assert str(path) in line and ("not read" in line or "larger than 10 MB" in line), line
+
+
+def test_a_configuration_error_names_an_odd_folder_visibly(tmp_path: Path) -> None:
+    """An error message on stderr shows a folder's undecodable bytes escaped."""
+    workspace = _config_tree(tmp_path)
+    folder = workspace / os.fsdecode(b"cfg" + ODD)
+    folder.mkdir()
+    (folder / "twin.launch.xml").write_text(CONFIG_TREE_XML)
+    (folder / "launchverify.toml").write_text("bogus = 1\n")
+    done = subprocess.run([sys.executable, "-c", STRICT_MAIN, "check", str(folder)],
+                          capture_output=True, cwd=workspace, timeout=60, check=False)
+    err = done.stderr.decode("utf-8")
+    assert done.returncode == 2 and "internal error" not in err, err
+    assert f"cfg{ODD_SHOWN}/launchverify.toml:1: unknown key 'bogus'" in err
+
+
+PARALLEL_PY = """\
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+def generate_launch_description():
+    name = 'p{number}'
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker', name=name),
+                              Node(package='demo_nodes_cpp', executable='listener',
+                                   name=name)])
+"""
+
+
+def _jobs_reaching_the_pool(monkeypatch: pytest.MonkeyPatch, argv: list[str]) -> list[int]:
+    """Run ``main(argv)`` in-process; return the ``jobs`` each worker pool was given."""
+    from launchverify.cli import main
+    from launchverify.isolation.lazy import LazyPython
+
+    given: list[int] = []
+    start = LazyPython.__init__
+
+    def recorded(self: LazyPython, **options: object) -> None:
+        given.append(int(str(options["jobs"])))
+        start(self, **options)
+
+    monkeypatch.setattr(LazyPython, "__init__", recorded)
+    assert main(argv) == 1
+    return given
+
+
+def test_jobs_from_the_checked_tree_is_capped_at_the_cores(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+        capsys: pytest.CaptureFixture[str]) -> None:
+    workspace = _config_tree(tmp_path)
+    (workspace / "p.launch.py").write_text(PARALLEL_PY.format(number=0))
+    (workspace / "launchverify.toml").write_text("jobs = 10000\n")
+    cores = os.cpu_count() or 1
+    assert set(_jobs_reaching_the_pool(monkeypatch, ["check", str(workspace)])) == {cores}
+    assert f"jobs = 10000: lowered to {cores}" in capsys.readouterr().err
+    # the user's own: -j on the command line, a configuration outside the tree
+    assert set(_jobs_reaching_the_pool(
+        monkeypatch, ["check", str(workspace), "-j", "10000"])) == {10000}
+    capsys.readouterr()
+    mine = tmp_path / "mine.toml"
+    (workspace / "launchverify.toml").rename(mine)
+    assert set(_jobs_reaching_the_pool(
+        monkeypatch, ["check", str(workspace), "--config", str(mine)])) == {10000}
+    assert "lowered" not in capsys.readouterr().err
+
+
+MEMORY_PY = """\
+import resource
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+try:
+    block = bytes(3 * 1024 ** 3)  # calloc: no page is touched where nothing limits it
+    held = 'no'
+    del block
+except MemoryError:
+    held = 'yes'
+
+def generate_launch_description():
+    limit = 'none' if soft == resource.RLIM_INFINITY else 'set'
+    name = f'm{number}_limit_{{limit}}_held_{{held}}'
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker', name=name),
+                              Node(package='demo_nodes_cpp', executable='listener',
+                                   name=name)])
+"""
+
+
+def test_every_worker_has_the_memory_limit(tmp_path: Path) -> None:
+    """Six files evaluated by up to six workers at once: in each, the address space is
+    limited and 3 GB cannot be had."""
+    workspace = _config_tree(tmp_path)
+    for number in range(6):
+        (workspace / f"m{number}.launch.py").write_text(MEMORY_PY.format(number=number))
+    done = _check_tree(workspace, "-j", "6", "--format", "json")
+    names = {finding["file"].rsplit("/", 1)[-1]: finding["message"].split()[2]
+             for finding in json.loads(done.stdout)["findings"]
+             if finding["code"] == "LV101" and finding["file"].endswith(".launch.py")}
+    assert names == {f"m{n}.launch.py": f"/m{n}_limit_set_held_yes" for n in range(6)}

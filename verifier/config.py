@@ -28,8 +28,12 @@ check (the configuration of the check, not the one nearest each file).
 
 A configuration file inside the checked tree comes with the pull request being checked:
 the folders it names outside the workspace (``package-paths``, ``workspace``) are read
-only when the user confirms them (``--package-path``, ``LAUNCHVERIFY_PACKAGE_PATH``);
-see ``confined``.
+only when the user confirms them (``--package-path``, ``LAUNCHVERIFY_PACKAGE_PATH``),
+and its ``jobs`` is at most the machine's cores; see ``confined``. Any configuration
+file is read as launch files are (``reading.read_file``): a regular file of at most the
+size limit, never a FIFO, a device or a system file (a ``launchverify.toml`` linked to
+``/dev/zero`` is an error at once), and TOML nested too deeply for the parser is an
+error, not a crash.
 """
 
 from __future__ import annotations
@@ -46,6 +50,7 @@ from typing import Any
 
 from launchverify.models.distros import DISTROS
 from launchverify.suggest import did_you_mean, did_you_mean_any
+from launchverify.workspace import reading
 from launchverify.workspace.paths import relative_file, resolved
 
 CONFIG_NAMES = ("launchverify.toml", "pyproject.toml")
@@ -134,10 +139,15 @@ def find_config(start: Path) -> Path | None:
 
 
 def config_in(folder: Path) -> Path | None:
-    """Return the configuration file of a folder itself, if it has one."""
+    """Return the configuration file of a folder itself, if it has one.
+
+    A name that is there but no file (a FIFO, a link to a device) is not passed over:
+    reading it says why it is refused (``ConfigError``).
+    """
     for name in CONFIG_NAMES:
         path = folder / name
-        if path.is_file() and (name != "pyproject.toml" or _has_table(path)):
+        if path.exists() and not path.is_dir() and (name != "pyproject.toml"
+                                                    or _has_table(path)):
             return path
     return None
 
@@ -147,48 +157,104 @@ def _has_table(pyproject: Path) -> bool:
 
     One that is not valid TOML is someone else's problem, unless it has a
     ``[tool.launchverify]`` table: then its error is ours to report (file and line), not a
-    reason to check with the defaults.
+    reason to check with the defaults. One that cannot be opened is someone else's
+    too; one that opens but is refused for what it is (a device, too large) is reported.
     """
     try:
-        return "launchverify" in _read(pyproject).get("tool", {})
+        text = _read_text(pyproject)
     except ConfigError:
-        try:
-            text = pyproject.read_text(encoding="utf-8", errors="replace")
-        except OSError:
-            return False
+        if os.access(pyproject, os.R_OK):
+            raise
+        return False
+    try:
+        return "launchverify" in _parse(pyproject, text).get("tool", {})
+    except ConfigError:
         if _TABLE.search(text):
             raise
         return False
 
 
+MAX_DEPTH = 100  # nested arrays, tables and key parts a configuration may have
+# What cannot nest: strings (multi-line ones first) and comments.
+_NOT_STRUCTURE = re.compile(r'"""(?:[^\\]|\\.)*?"""|\'\'\'.*?\'\'\'|"(?:[^"\\\n]|\\.)*"'
+                            r"|'[^'\n]*'|#[^\n]*", re.DOTALL)
+_STRUCTURE = re.compile(r"[\[\]{}.=,\n]")
 _TOML_POSITION = re.compile(r"\s*\(at (?:line (\d+), column (\d+)|end of document)\)$")
 
 
-def _read(path: Path) -> dict[str, Any]:
+def _read_text(path: Path) -> str:
+    """Return a configuration file's text, read as a launch file is (``read_file``).
+
+    Wherever it is (the user's may be above the workspace, outside the folders a check
+    reads), but only a regular file within the size limit, never a system file.
+    """
+    try:
+        data = reading.read_file(path, anywhere=True)
+    except reading.Outside:
+        raise ConfigError(f"{path}: a system file (below /proc, /sys or /dev): "
+                          "not read") from None
+    except reading.Unreadable as error:
+        raise ConfigError(f"cannot read {path}: {error}") from None
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as error:
+        line = data.count(b"\n", 0, error.start) + 1
+        raise ConfigError(f"{path}:{line}: invalid TOML: not UTF-8 text") from None
+
+
+def _refuse_deep(path: Path, text: str) -> None:
+    """Refuse TOML nested more than ``MAX_DEPTH`` deep, before tomllib reads it.
+
+    tomllib recurses once per array or inline table (Python's recursion limit, else),
+    and its time grows with the square of a dotted key's length: ``a.a.a...`` of
+    100,000 parts took minutes. Depth here is the open brackets (arrays, inline tables,
+    table headers) plus the dots of the key being written, outside strings and comments.
+    """
+    if sum(text.count(mark) for mark in ".[{") <= MAX_DEPTH:
+        return  # nearly every configuration: nothing to count
+    bare = _NOT_STRUCTURE.sub(lambda match: "''" + "\n" * match.group().count("\n"), text)
+    brackets = dots = 0
+    line = 1
+    for match in _STRUCTURE.finditer(bare):
+        mark = match.group()
+        if mark == ".":
+            dots += 1
+        else:  # a key ends at '=', ',', a line's end or a bracket
+            dots = 0
+            line += mark == "\n"
+            if mark in "[{":
+                brackets += 1
+            elif mark in "]}":
+                brackets = max(brackets - 1, 0)
+        if brackets + dots > MAX_DEPTH:
+            raise ConfigError(f"{path}:{line}: invalid TOML: nested more than {MAX_DEPTH} "
+                              "deep (arrays, tables and dotted keys)")
+
+
+def _parse(path: Path, text: str) -> dict[str, Any]:
+    """Return a configuration file's TOML, or say where it is invalid (``ConfigError``)."""
+    _refuse_deep(path, text)
     if sys.version_info >= (3, 11):  # imported here: a check without a configuration
         import tomllib  # reads no TOML (4 ms of a one-file check)
     else:  # pragma: no cover - Python 3.10
         import tomli as tomllib
     try:
-        with path.open("rb") as handle:
-            return tomllib.load(handle)
-    except OSError as error:
-        raise ConfigError(f"cannot read {path}: {error.strerror}") from error
-    except (tomllib.TOMLDecodeError, ValueError, RecursionError) as error:
+        return tomllib.loads(text)
+    except RecursionError:  # tomllib recurses once per nested array or inline table
+        raise ConfigError(f"{path}: invalid TOML: nested too deeply (arrays or inline "
+                          "tables)") from None
+    except (tomllib.TOMLDecodeError, ValueError) as error:
         message = str(error)
         at = _TOML_POSITION.search(message)  # tomllib ends its messages so
         if at is None:
             raise ConfigError(f"{path}: invalid TOML: {message}") from error
-        where = f"{at[1]}:{at[2]}" if at[1] else str(_line_count(path))
+        where = f"{at[1]}:{at[2]}" if at[1] else str(_line_count(text))
         raise ConfigError(f"{path}:{where}: invalid TOML: {message[:at.start()]}") from error
 
 
-def _line_count(path: Path) -> int:
-    """Return the number of the last line of a file (where its end of document is)."""
-    try:
-        return path.read_bytes().rstrip(b"\n").count(b"\n") + 1
-    except OSError:  # pragma: no cover - read a moment ago
-        return 1
+def _line_count(text: str) -> int:
+    """Return the number of the last line of a text (where its end of document is)."""
+    return text.rstrip("\n").count("\n") + 1
 
 
 class _Lines:
@@ -236,11 +302,9 @@ def _key_pattern(key: str) -> re.Pattern[str]:
 
 def load_config(path: Path) -> Config:
     """Read one configuration file."""
-    data = _read(path)
-    try:
-        lines = _Lines(path, path.read_text(encoding="utf-8", errors="replace"))
-    except OSError as error:  # read a moment ago
-        raise ConfigError(f"cannot read {path}: {error.strerror}") from error
+    text = _read_text(path)
+    data = _parse(path, text)
+    lines = _Lines(path, text)
     if path.name == "pyproject.toml":
         data = data.get("tool", {}).get("launchverify", {})
     if not isinstance(data, dict):
@@ -456,13 +520,15 @@ def confirmed_package_paths(given: Sequence[Path] = ()) -> list[Path]:
 
 def confined(config: Config, checked: Sequence[Path], workspace: Path,
              confirmed: Sequence[Path]) -> tuple[Config, list[str]]:
-    """Return ``config`` without the folders it may not add, and a note for each.
+    """Return ``config`` without what it may not ask for, and a note for each.
 
     A configuration file inside the workspace or a checked path is the checked tree's
     own: a pull request wrote it. Folders it names outside the workspace would widen what
     Python launch files may read (and so what findings may show), so they count only
-    when inside a folder the user confirmed. A file elsewhere (``--config ~/lv.toml``, a
-    file above the repository) is the user's, and trusted.
+    when inside a folder the user confirmed. Its ``jobs`` is at most the machine's cores:
+    each worker may hold its memory limit (``isolation.confine.Limits``), so 10,000 of
+    them would take the machine. A file elsewhere (``--config ~/lv.toml``, a file above
+    the repository) is the user's, and trusted, as ``-j`` is.
     """
     if config.path is None:
         return config, []
@@ -483,6 +549,18 @@ def confined(config: Config, checked: Sequence[Path], workspace: Path,
                                    else [])]
              if not kept(folder)]
     workspace_key = config.workspace if config.workspace and kept(config.workspace) else None
+    jobs, lowered = _jobs_within_cores(config.jobs)
+    if lowered:
+        notes.append(f"{config.path.name} sets jobs = {config.jobs}: lowered to {jobs}, the "
+                     "machine's cores (a -j on the command line is not)")
     return dataclasses.replace(
         config, package_paths=[p for p in config.package_paths if kept(p)],
-        workspace=workspace_key), notes
+        workspace=workspace_key, jobs=jobs), notes
+
+
+def _jobs_within_cores(jobs: int | None) -> tuple[int | None, bool]:
+    """Return ``jobs`` capped at the machine's cores, and whether it was lowered."""
+    cores = os.cpu_count() or 1
+    if jobs is not None and jobs > cores:
+        return cores, True
+    return jobs, False

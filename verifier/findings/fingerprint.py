@@ -53,8 +53,20 @@ def fingerprints(findings: Iterable[Finding], base: Path, legacy: bool = False) 
         fields = fingerprint_fields(finding, base, legacy)
         digest = hashlib.sha256()
         for field in (*fields, str(seen[fields])):
-            digest.update(field.encode("utf-8", errors="surrogateescape"))
+            digest.update(_field_bytes(field))
             digest.update(b"\0")
         seen[fields] += 1
         out.append(digest.hexdigest())
     return out
+
+
+def _field_bytes(field: str) -> bytes:
+    """Return a field's bytes: a file name's undecodable byte as itself.
+
+    A lone surrogate that no file name decodes to (a Python launch file built it) has
+    no such byte: it is hashed by its code point (``surrogatepass``).
+    """
+    try:
+        return field.encode("utf-8", errors="surrogateescape")
+    except UnicodeEncodeError:
+        return field.encode("utf-8", errors="surrogatepass")

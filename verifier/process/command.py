@@ -26,6 +26,9 @@ def run() -> None:
     from launchverify.process.code_cache import install
 
     code = install()
+    from launchverify.render.encodable import escape_unencodable
+
+    escape_unencodable(sys.stdout, sys.stderr)  # the last net: what no encoding holds is shown
     from launchverify.cli import main
 
     status = main()

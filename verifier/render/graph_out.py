@@ -7,7 +7,6 @@ its path condition and values as expressions over the arguments.
 
 from __future__ import annotations
 
-import json
 from typing import TYPE_CHECKING, Any, TextIO
 
 from launchverify.dds.discovery import CALLER, discovery_of
@@ -19,6 +18,7 @@ from launchverify.models.booleans import bool_text
 from launchverify.models.parameter_values import typed_parameter
 from launchverify.models.ros_names import node_fqn
 from launchverify.parameters import Contribution, effective_parameters
+from launchverify.render.encodable import write_json
 from launchverify.workspace.paths import display_path
 
 if TYPE_CHECKING:
@@ -264,8 +264,7 @@ def view(graph: LaunchGraph) -> dict[str, Any]:
 def render_graph_json(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False,
                       interfaces: InterfaceSource | None = None) -> None:
     """Write the graph as JSON (with topics, services and actions given ``interfaces``)."""
-    json.dump(GraphView(graph, symbolic, interfaces).document(), out, indent=2)
-    out.write("\n")
+    write_json(GraphView(graph, symbolic, interfaces).document(), out)
 
 
 def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False,

@@ -3,15 +3,19 @@ r"""Text from checked files, made inert before it reaches a terminal or a text r
 Names, values and source lines come from files a pull request wrote. Raw, they could move
 a reviewer's cursor, erase lines, set the clipboard (OSC 52) or a window title, forge
 extra finding lines, or reorder what is shown (bidi overrides). Every such character is
-shown visibly instead, as git and ruff do: ``\x1b``, ``\u202e``.
+shown visibly instead, as git and ruff do: ``\x1b``, ``\u202e``. Text that has no
+UTF-8 form is shown too (``encodable``): an undecodable file-name byte as ``\xff``, a
+lone surrogate as ``\ud800``; written raw, it would end the output half way.
 
 Machine formats (JSON, SARIF, the language server) keep values exact: their encoders
-escape what they must.
+escape what they must (``encodable.write_json`` for lone surrogates).
 """
 
 from __future__ import annotations
 
 from typing import TextIO
+
+from launchverify.render.encodable import SURROGATES
 
 # Bidi embeddings, overrides, isolates and marks; line and paragraph separators (they
 # break a line on some terminals and editors).
@@ -26,7 +30,7 @@ def _escape(code: int) -> str:
 def _table(*, escape_newlines: bool) -> dict[int, str]:
     codes = [*range(0x20), 0x7F, *range(0x80, 0xA0), *_INVISIBLE]
     kept = {0x09} if escape_newlines else {0x09, 0x0A}  # tabs are expanded by the renderers
-    return {code: _escape(code) for code in codes if code not in kept}
+    return {**{code: _escape(code) for code in codes if code not in kept}, **SURROGATES}
 
 
 _IN_LINE = _table(escape_newlines=True)
@@ -34,9 +38,10 @@ _IN_TEXT = _table(escape_newlines=False)
 
 
 def inert(text: str) -> str:
-    """Return text for one line of human output: every control character shown visibly.
+    r"""Return text for one line of human output: every control character shown visibly.
 
-    Line breaks are escaped too, so a name cannot forge another finding line.
+    Line breaks are escaped too, so a name cannot forge another finding line; lone
+    surrogates are shown (``\xff``, ``\ud800``), so the text can always be encoded.
     """
     return text.translate(_IN_LINE)
 

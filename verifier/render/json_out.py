@@ -1,12 +1,16 @@
-"""``check --format json``: the machine-readable contract documented in docs/output.md."""
+r"""``check --format json``: the machine-readable contract documented in docs/output.md.
+
+Values are exact but for what has no UTF-8 form, shown as text (``encodable``): a file
+name's undecodable byte as ``\xff``, a lone surrogate as ``\ud800``.
+"""
 
 from __future__ import annotations
 
-import json
 from typing import Any, TextIO
 
 from launchverify import __version__
 from launchverify.engine import Report
+from launchverify.render.encodable import write_json
 from launchverify.render.links import rule_url
 from launchverify.rule import Finding, Fix, Severity
 
@@ -80,5 +84,4 @@ def render_json(report: Report, out: TextIO) -> None:
             "cached": report.cached,
         },
     }
-    json.dump(document, out, indent=2)
-    out.write("\n")
+    write_json(document, out)

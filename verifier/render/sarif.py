@@ -1,4 +1,4 @@
-"""``check --format sarif``: SARIF 2.1.0, the format GitHub code scanning uploads.
+r"""``check --format sarif``: SARIF 2.1.0, the format GitHub code scanning uploads.
 
 One run; its driver lists every registered rule (so a viewer can show a rule's help even
 for findings from an older run), and each finding becomes a result with its location,
@@ -15,21 +15,25 @@ A finding with a fix has ``fixes``: one ``artifactChange`` per file it edits, ea
 Fingerprints: ``partialFingerprints["launchverify/v1"]`` lets a viewer recognise a
 finding again after edits elsewhere in the file moved it; the recipe (shared with
 baselines) is in ``launchverify.findings.fingerprint``, with paths relative to the root.
+
+What has no UTF-8 form is shown as text (``encodable``): an undecodable file-name byte as
+``\xff`` and a lone surrogate as ``\ud800`` in messages; in a URI, such a byte is
+percent-encoded as itself (``%FF``), so the URI still names the file.
 """
 
 from __future__ import annotations
 
-import json
 import os
 from pathlib import Path
 from typing import Any, TextIO
-from urllib.parse import quote
+from urllib.parse import quote_from_bytes
 
 from launchverify import __version__
 from launchverify.engine import Report
 from launchverify.findings.fingerprint import fingerprints
 from launchverify.registry import all_rules
 from launchverify.render import links
+from launchverify.render.encodable import path_bytes, write_json
 from launchverify.rule import Finding, Fix, Rule, Severity
 from launchverify.span import Span
 
@@ -112,6 +116,11 @@ def region(span: Span) -> dict[str, int]:
     return area
 
 
+def file_uri(absolute: Path) -> str:
+    """Return the ``file://`` URI of an absolute path (``Path.as_uri``, for any name)."""
+    return "file://" + quote_from_bytes(path_bytes(absolute.as_posix()))
+
+
 class Places:
     """Turns spans into SARIF locations relative to the root; reads source lines once."""
 
@@ -130,8 +139,8 @@ class Places:
         """Return an ``artifactLocation``."""
         path, relative = self.path(file)
         if relative:
-            return {"uri": quote(path, safe="/"), "uriBaseId": SRCROOT}
-        return {"uri": Path(os.path.realpath(file)).as_uri()}
+            return {"uri": quote_from_bytes(path_bytes(path)), "uriBaseId": SRCROOT}
+        return {"uri": file_uri(Path(os.path.realpath(file)))}
 
     def location(self, span: Span, message: str | None = None,
                  number: int | None = None) -> dict[str, Any]:
@@ -221,7 +230,7 @@ def sarif_log(report: Report, *, root: Path | None = None) -> dict[str, Any]:
     }
     run = {
         "tool": {"driver": driver},
-        "originalUriBaseIds": {SRCROOT: {"uri": places.root.as_uri().rstrip("/") + "/"}},
+        "originalUriBaseIds": {SRCROOT: {"uri": file_uri(places.root).rstrip("/") + "/"}},
         "columnKind": "unicodeCodePoints",
         "results": results,
     }
@@ -230,5 +239,4 @@ def sarif_log(report: Report, *, root: Path | None = None) -> dict[str, Any]:
 
 def render_sarif(report: Report, out: TextIO, *, root: Path | None = None) -> None:
     """Write the report as a SARIF 2.1.0 log (paths relative to ``root``, default cwd)."""
-    json.dump(sarif_log(report, root=root), out, indent=2)
-    out.write("\n")
+    write_json(sarif_log(report, root=root), out)

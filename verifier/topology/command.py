@@ -7,12 +7,12 @@ tree-sitter is imported until the command runs.
 from __future__ import annotations
 
 import argparse
-import json
 import sys
 import time
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TextIO, cast
 
+from launchverify.render.encodable import write_json
 from launchverify.workspace.paths import display_path
 
 if TYPE_CHECKING:
@@ -66,10 +66,9 @@ def run(args: argparse.Namespace, out: TextIO | None = None) -> int:
                                         single.endpoints, (single.file,), problems))
     elapsed = time.perf_counter() - started
     if args.format == "json":
-        json.dump({"interfaces": [_as_json(i) for i in interfaces],
-                   "files_parsed": cache_stats()["parsed"],
-                   "seconds": round(elapsed, 3)}, stream, indent=2)
-        stream.write("\n")
+        write_json({"interfaces": [_as_json(i) for i in interfaces],
+                    "files_parsed": cache_stats()["parsed"],
+                    "seconds": round(elapsed, 3)}, stream)
     else:
         from launchverify.render.inert import InertWriter
 

@@ -194,11 +194,14 @@ def _record(path: str | Path) -> None:
         into.add(real_path(path))
 
 
-def read_file(path: str | Path, *, prefix: int | None = None) -> bytes:
+def read_file(path: str | Path, *, prefix: int | None = None, anywhere: bool = False
+              ) -> bytes:
     """Return a regular file's bytes.
 
     ``prefix``: return at most that many bytes of a larger file instead of refusing it
-    (for scans that need only the start, like a package manifest's name).
+    (for scans that need only the start, like a package manifest's name). ``anywhere``:
+    also outside the folders the check reads (``confine``), for a file the user keeps
+    elsewhere (a configuration file above the workspace); system files stay refused.
     """
     _record(path)
     buffered = unsaved(path)
@@ -207,7 +210,7 @@ def read_file(path: str | Path, *, prefix: int | None = None) -> bytes:
         if prefix is None and len(buffered) > most:
             raise Unreadable(_too_large(most))
         return buffered[:most]
-    refused = outside(path)
+    refused = None if anywhere else outside(path)
     if refused is not None:
         raise Outside(f"{refused} is outside the workspace and its packages: not read")
     try:
