@@ -911,3 +911,147 @@ def test_a_description_too_large_is_not_checked_and_the_rest_is(tmp_path: Path) 
     assert ("LV101", "sentinel.launch.xml") in found
     [big] = [f for f in report.findings if f.span.file.name == "big.launch.py"]
     assert big.code == "LV003" and "250,000 parts" in big.message
+
+
+# ---- issue 42: diff and git ----
+# `launchverify diff` exports each revision from git's objects. A link in a revision is
+# judged on the final tree (a chain of links cannot end outside once all exist), and the
+# reviewer's repository is left exactly as it was: nothing under .git is written, and no
+# file of the working tree is linked (a hard link changes its ctime, and git then rewrites
+# the index).
+
+_DIFF_PACKAGE = ("<package format='3'><name>demo</name><version>0.0.0</version>"
+                 "<description>d</description><maintainer email='a@b.c'>a</maintainer>"
+                 "<license>MIT</license></package>\n")
+_DIFF_LAUNCH = """\
+<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker">
+    <param from="$(find-pkg-share demo)/config/params.yaml"/>
+  </node>
+</launch>
+"""
+_DIFF_PARAMS = "/**:\n  ros__parameters:\n    rate: 10\n"
+_DIFF_SECRET = "LV-DIFF-SECRET-5e1b"
+
+
+def _diff_git(root: Path, *arguments: str) -> str:
+    return subprocess.run(["git", "-C", str(root), *arguments], check=True,
+                          capture_output=True, text=True,
+                          env={**os.environ, "GIT_AUTHOR_NAME": "a", "GIT_AUTHOR_EMAIL": "a@b",
+                               "GIT_COMMITTER_NAME": "a", "GIT_COMMITTER_EMAIL": "a@b"}).stdout
+
+
+def _diff_repository(root: Path, *config: str) -> Path:
+    """A repository with a package (tag T1), then a changed parameter (tag T2)."""
+    root.mkdir()
+    _diff_git(root, "init", "-q", "-b", "main")
+    for name, value in config:
+        _diff_git(root, "config", name, value)
+    for name, text in (("demo/package.xml", _DIFF_PACKAGE),
+                       ("demo/launch/bringup.launch.xml", _DIFF_LAUNCH),
+                       ("demo/config/params.yaml", _DIFF_PARAMS)):
+        (root / name).parent.mkdir(parents=True, exist_ok=True)
+        (root / name).write_text(text)
+    _diff_commit(root, "T1")
+    (root / "demo/config/params.yaml").write_text(_DIFF_PARAMS.replace("10", "12"))
+    _diff_commit(root, "T2")
+    return root
+
+
+def _diff_commit(root: Path, tag: str) -> None:
+    _diff_git(root, "add", "-A")
+    _diff_git(root, "commit", "-q", "-m", tag)
+    _diff_git(root, "tag", tag)
+
+
+def _diff_json(*arguments: str) -> dict[str, object]:
+    """Run ``launchverify diff`` in this process (its reads can be watched); its JSON."""
+    import contextlib
+    import io
+
+    from launchverify.cli import main
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        status = main(["diff", *arguments, "--format", "json", "-j", "1"])
+    assert status in (0, 1), out.getvalue()[-2000:]
+    found = json.loads(out.getvalue())
+    assert isinstance(found, dict)
+    return found
+
+
+def _links_leaving(root: Path) -> list[str]:
+    """Return the links below ``root`` whose real target is outside it."""
+    top = root.resolve()
+    return sorted(str(path.relative_to(root)) for path in root.rglob("*")
+                  if path.is_symlink() and not path.resolve().is_relative_to(top))
+
+
+def test_a_chain_of_links_in_a_head_commit_cannot_end_outside(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each of ``l0 -> l1/..``, ..., ``l11 -> l12/..``, ``l12 -> .`` looks inside while
+    the next does not exist yet; once all exist, ``l0`` is ``/``. The parameter file links
+    through it to a secret outside: the head side holds no link out, and its check tries
+    to read nothing outside."""
+    from launchverify.diff import sides
+    from launchverify.workspace import reading
+
+    secret = tmp_path / "secret" / "leak.yaml"
+    secret.parent.mkdir()
+    secret.write_text(f"/**:\n  ros__parameters:\n    key: {_DIFF_SECRET}\n")
+    root = _diff_repository(tmp_path / "repo")
+    chain = root / "chain"
+    chain.mkdir()
+    for index in range(12):
+        (chain / f"l{index}").symlink_to(f"l{index + 1}/..")
+    (chain / "l12").symlink_to(".")
+    params = root / "demo" / "config" / "params.yaml"
+    params.unlink()
+    params.symlink_to(f"../../chain/l0{secret.resolve()}")
+    assert _DIFF_SECRET in params.read_text()  # (on disk, all links made, it leaks)
+    _diff_commit(root, "T3")
+    _diff_git(root, "checkout", "-q", "T1")  # (the head is exported, not read in place)
+    monkeypatch.chdir(root)
+
+    with sides.exported(root, sides.commit_of(root, "T3"), "T3", 10_000_000) as side:
+        assert _links_leaving(side.root) == []
+        assert not (side.root / "demo" / "config" / "params.yaml").exists()
+        assert (side.root / "demo" / "launch" / "bringup.launch.xml").is_file()
+    refused: list[str] = []
+    judge = reading.outside
+
+    def watched(path: str | Path) -> str | None:
+        found = judge(path)
+        if found is not None:
+            refused.append(found)
+        return found
+
+    monkeypatch.setattr(reading, "outside", watched)
+    found = _diff_json("T2", "T3")
+    assert not [path for path in refused if "secret" in path], refused
+    assert _DIFF_SECRET not in json.dumps(found)
+
+
+def test_links_that_stay_inside_through_other_links_are_exported(tmp_path: Path) -> None:
+    """A link through a linked folder, ``..`` after a linked folder (its real parent, not
+    the link's), and a chain that ends inside are all made, and read what they name."""
+    from launchverify.diff import sides
+
+    root = _diff_repository(tmp_path / "repo")
+    (root / "pkg").symlink_to("demo")
+    (root / "conf").symlink_to("pkg/config")
+    (root / "demo" / "launch" / "params.yaml").symlink_to("../../conf/params.yaml")
+    (root / "shared").symlink_to("demo/launch")
+    (root / "up.yaml").symlink_to("shared/../config/params.yaml")  # demo/config/params.yaml
+    (root / "c0").symlink_to("c1/..")
+    (root / "c1").symlink_to("demo/c2")
+    (root / "demo" / "c2").symlink_to("config")  # c0 -> demo
+    _diff_commit(root, "T3")
+    with sides.exported(root, sides.commit_of(root, "T3"), "T3", 10_000_000) as side:
+        for name in ("demo/launch/params.yaml", "up.yaml", "c0/config/params.yaml"):
+            path = side.root / name
+            assert path.is_file(), name
+            assert "rate: 12" in path.read_text(), name
+        assert (side.root / "c0").resolve() == (side.root / "demo").resolve()
+        assert _links_leaving(side.root) == []
+

@@ -2,9 +2,10 @@
 
 A revision is read from git's objects (``git ls-tree``, ``git cat-file``), never checked
 out: the user's working tree, index and branches stay as they are, and nothing is
-fetched. Its files are written into a private temporary folder that is removed when the
-diff ends; links out of the tree, submodules, objects the clone lacks and files larger
-than what a check reads are left out, and the whole tree is bounded.
+fetched; no file of the working tree is linked or touched. Its files are written into a
+private temporary folder that is removed when the diff ends; links that leave the tree
+(judged on the final tree), submodules, objects the clone lacks and files larger than
+what a check reads are left out, and the whole tree is bounded.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ from contextlib import contextmanager, suppress
 from dataclasses import dataclass
 from pathlib import Path
 
+from launchverify.diff.links import Parts, inside_links, parts_of
 from launchverify.engine import UsageError
 
 MAX_TREE_BYTES = 2 << 30  # what one side's files may add up to
@@ -131,98 +133,90 @@ def exported(repository: Path, commit: str, label: str,
 def _extract(repository: Path, commit: str, into: Path, max_file_size: int) -> None:
     """Write a commit's files into ``into`` from git's objects, within bounds.
 
-    Files larger than a check reads, objects the clone lacks (a partial clone, a mirror
-    without its largest files) and submodules are left out; a link is made only when
-    it points inside the tree.
+    Every file comes from git's objects, none from the working tree: a hard link to the
+    reviewer's copy would change its ctime (git then rewrites ``.git/index``, and a
+    results cache sees a changed file). Files larger than a check reads, objects the
+    clone lacks (a partial clone, a mirror without its largest files), submodules and
+    names that are not plain (``..``, empty) are left out. Links are made last, each
+    only when its whole walk, in the final tree, stays inside it (``links.py``).
     """
-    listing = git(repository, "ls-tree", "-r", "-z", "--long", "--full-tree", commit)
-    wanted: list[tuple[str, str, str]] = []  # (mode, object, path)
+    into = into.resolve()
+    files: list[tuple[str, str, Parts]] = []  # (mode, object, path)
+    links: list[tuple[str, Parts]] = []
     total = 0
-    for entry in listing.split("\0"):
-        if not entry:
-            continue
-        header, _, path = entry.partition("\t")
-        mode, kind, oid, size = header.split()
-        if kind != "blob" or not size.isdigit() or int(size) > max_file_size:
+    for mode, kind, oid, size, path in _listing(repository, commit):
+        parts = parts_of(path)
+        if kind != "blob" or not size.isdigit() or int(size) > max_file_size \
+                or parts is None:
             continue
         total += int(size)
         if total > MAX_TREE_BYTES:
             raise UsageError(f"the tree of {commit[:12]} is larger than "
                              f"{MAX_TREE_BYTES >> 30} GiB")
-        wanted.append((mode, oid, path))
-    place = _Places(into.resolve())
-    wanted = _linked(repository, wanted, place)
-    for (mode, _, path), data in zip(wanted, _blobs(repository, [w[1] for w in wanted]),
-                                     strict=True):
-        target = place(path) if data is not None else None
-        if data is None or target is None:
-            continue
-        if mode == "120000":  # a link: kept when it stays inside the tree
-            link = Path(os.fsdecode(data))
-            if not link.is_absolute() and (target.parent / link).resolve().is_relative_to(
-                    place.root):
-                with suppress(OSError):
-                    target.symlink_to(link)
-            continue
-        with suppress(OSError):  # (a name the file system refuses)
-            target.write_bytes(data)
-            if mode == "100755":
-                target.chmod(0o700)
+        if mode == "120000":
+            links.append((oid, parts))
+        else:
+            files.append((mode, oid, parts))
+    folders = _Folders(into)
+    written = [parts for (mode, _, parts), data
+               in zip(files, _blobs(repository, [oid for _, oid, _ in files]), strict=True)
+               if data is not None and _write(folders, parts, data, mode == "100755")]
+    targets: dict[Parts, str] = {}
+    for (_, parts), data in zip(links, _blobs(repository, [oid for oid, _ in links]),
+                                strict=True):
+        if data is not None:
+            targets.setdefault(parts, os.fsdecode(data))
+    for parts, target in inside_links(written, targets).items():
+        with suppress(OSError):
+            if folders.make(parts[:-1]):
+                into.joinpath(*parts).symlink_to(target)
 
 
-class _Places:
-    """Where a tree's files go below ``root``: each inside it, each folder made once."""
+def _listing(repository: Path, commit: str) -> Iterator[tuple[str, str, str, str, str]]:
+    """Yield each entry of a commit's whole tree: mode, kind, object, size and path."""
+    for entry in git(repository, "ls-tree", "-r", "-z", "--long", "--full-tree",
+                     commit).split("\0"):
+        header, _, path = entry.partition("\t")
+        fields = header.split()
+        if len(fields) == 4:
+            yield fields[0], fields[1], fields[2], fields[3], path
+
+
+class _Folders:
+    """The folders made below ``root``, each made once (only plain names: no link yet)."""
 
     def __init__(self, root: Path) -> None:
         self.root = root
-        self.folders: set[Path] = set()
+        self.made: set[Parts] = {()}
 
-    def __call__(self, path: str) -> Path | None:
-        """Return where ``path`` goes, its folder made (``None``: it would leave the root)."""
-        target = (self.root / path).resolve()
-        if not target.is_relative_to(self.root) or target == self.root:
-            return None
-        if target.parent not in self.folders:
-            target.parent.mkdir(parents=True, exist_ok=True)
-            self.folders.add(target.parent)
-        return target
+    def make(self, folder: Parts) -> bool:
+        """Make a folder and those above it; return whether it is there (a file may be)."""
+        for end in range(1, len(folder) + 1):
+            if folder[:end] not in self.made:
+                try:
+                    self.root.joinpath(*folder[:end]).mkdir(0o700)
+                except OSError:
+                    return False
+                self.made.add(folder[:end])
+        return True
 
 
-def _linked(repository: Path, wanted: list[tuple[str, str, str]], place: _Places
-            ) -> list[tuple[str, str, str]]:
-    """Link the files the working tree holds alike into ``root``; return the others.
-
-    A file counts as alike when the index has the commit's object for it and the working
-    tree's copy is unchanged (``git diff``): a hard link then costs a tenth of writing
-    it. Only regular files inside the repository are linked.
-    """
+def _write(folders: _Folders, parts: Parts, data: bytes, executable: bool) -> bool:
+    """Write one file of the side (a new file, never through a link); return whether done."""
+    if not folders.make(parts[:-1]):
+        return False
     try:
-        staged = git(repository, "ls-files", "-s", "-z")
-        changed = set(git(repository, "diff", "--no-ext-diff", "--name-only", "-z")
-                      .split("\0"))  # (content compared where the index's stat is stale)
-    except UsageError:
-        return wanted
-    index: dict[str, str] = {}
-    for entry in staged.split("\0"):
-        header, _, path = entry.partition("\t")
-        fields = header.split()
-        if len(fields) == 3 and fields[2] == "0" and path not in changed:
-            index[path] = fields[1]
-    top = repository.resolve()
-    rest = []
-    for mode, oid, path in wanted:
-        source = top / path
-        if (mode == "120000" or index.get(path) != oid or source.is_symlink()
-                or not source.resolve().is_relative_to(top)):
-            rest.append((mode, oid, path))
-            continue
-        try:
-            target = place(path)
-            if target is not None:
-                os.link(source, target, follow_symlinks=False)
-        except OSError:  # (another file system, a file that went)
-            rest.append((mode, oid, path))
-    return rest
+        descriptor = os.open(folders.root.joinpath(*parts),
+                             os.O_WRONLY | os.O_CREAT | os.O_EXCL | os.O_NOFOLLOW,
+                             0o700 if executable else 0o600)
+    except (OSError, ValueError):  # (a name the file system refuses, one given twice)
+        return False
+    try:
+        with os.fdopen(descriptor, "wb") as out:
+            out.write(data)
+    except OSError:  # (a full disk: the file is then not part of the side)
+        return False
+    return True
 
 
 def _blobs(repository: Path, objects: list[str]) -> Iterator[bytes | None]:
