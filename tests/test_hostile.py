@@ -1055,3 +1055,70 @@ def test_links_that_stay_inside_through_other_links_are_exported(tmp_path: Path)
         assert (side.root / "c0").resolve() == (side.root / "demo").resolve()
         assert _links_leaving(side.root) == []
 
+
+def _git_state(git_dir: Path) -> dict[str, str]:
+    """Return every path below ``.git`` with its mode, mtime and content (or target)."""
+    state = {}
+    for path in sorted(git_dir.rglob("*")):
+        info = path.lstat()
+        if path.is_symlink():
+            content = f"-> {path.readlink()}"
+        elif path.is_file():
+            content = hashlib.sha256(path.read_bytes()).hexdigest()
+        else:
+            content = "folder"
+        state[str(path.relative_to(git_dir))] = f"{oct(info.st_mode)} {info.st_mtime_ns} {content}"
+    return state
+
+
+def _working_tree_state(root: Path) -> dict[str, tuple[int, int, int]]:
+    """Return each working-tree file's inode, link count and ctime (what a link changes)."""
+    return {str(path.relative_to(root)): (info.st_ino, info.st_nlink, info.st_ctime_ns)
+            for path in sorted(root.rglob("*"))
+            if ".git" not in path.relative_to(root).parts
+            for info in [path.lstat()]}
+
+
+_GIT_CONFIGS = {"plain": (), "split index": (("core.splitIndex", "true"),
+                                             ("core.untrackedCache", "true"))}
+
+
+@pytest.mark.parametrize("config", sorted(_GIT_CONFIGS))
+@pytest.mark.parametrize("form", ["two tags, the head checked out", "two tags, both exported",
+                                  "a tag and the working tree", "the merge base",
+                                  "--against"])
+def test_a_diff_leaves_the_repository_byte_identical(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, form: str, config: str) -> None:
+    """One tracked file's stat is made stale first (another mtime, as after a copy or a
+    checkout): any git command that refreshes the index would then rewrite it. The others
+    are clean in the index (and not racily so), as a hard link would want them."""
+    root = _diff_repository(tmp_path / "repo", *_GIT_CONFIGS[config])
+    arguments: tuple[str, ...] = ("T1", "T2")
+    if form == "two tags, both exported":
+        _diff_git(root, "checkout", "-q", "T1")
+    elif form == "a tag and the working tree":
+        arguments = ("T1",)
+        (root / "demo/config/params.yaml").write_text(_DIFF_PARAMS.replace("10", "13"))
+    elif form == "the merge base":
+        arguments = ()
+        _diff_git(root, "checkout", "-q", "-b", "topic", "T1")
+        _diff_git(root, "branch", "-f", "main", "T1")
+        (root / "demo/config/params.yaml").write_text(_DIFF_PARAMS.replace("10", "14"))
+        _diff_commit(root, "T4")
+    elif form == "--against":
+        other = tmp_path / "other"
+        other.mkdir()
+        (other / "bringup.launch.xml").write_text(_DIFF_LAUNCH)
+        arguments = ("demo/launch/bringup.launch.xml", "--against",
+                     str(other / "bringup.launch.xml"))
+    for path in root.rglob("*"):  # (older than the index: not racily clean)
+        if path.is_file() and ".git" not in path.relative_to(root).parts:
+            os.utime(path, ns=(1_000_000_000_000_000_000, 1_000_000_000_000_000_000))
+    _diff_git(root, "status", "--porcelain")  # (the index as a reviewer's is: refreshed)
+    os.utime(root / "demo/package.xml", ns=(999_000_000_000_000_000, 999_000_000_000_000_000))
+    git_before, tree_before = _git_state(root / ".git"), _working_tree_state(root)
+    monkeypatch.chdir(root)
+    found = _diff_json(*arguments)
+    assert found["summary"]["launches_changed"] == (0 if form == "--against" else 1)
+    assert _git_state(root / ".git") == git_before
+    assert _working_tree_state(root) == tree_before

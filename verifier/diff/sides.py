@@ -1,11 +1,13 @@
 """The two trees a diff compares: git revisions, the working tree, or a folder.
 
 A revision is read from git's objects (``git ls-tree``, ``git cat-file``), never checked
-out: the user's working tree, index and branches stay as they are, and nothing is
-fetched; no file of the working tree is linked or touched. Its files are written into a
-private temporary folder that is removed when the diff ends; links that leave the tree
-(judged on the final tree), submodules, objects the clone lacks and files larger than
-what a check reads are left out, and the whole tree is bounded.
+out, and the repository is left exactly as it was: git runs only commands that write
+nothing (plumbing that never refreshes the index: ``diff-tree``, ``diff-index``,
+``ls-tree``; ``status`` only with ``GIT_OPTIONAL_LOCKS=0``, which it honours), and no
+file of the working tree is linked or touched. Its files are written into a private
+temporary folder that is removed when the diff ends; links that leave the tree (judged
+on the final tree), submodules, objects the clone lacks and files larger than what a
+check reads are left out, and the whole tree is bounded.
 """
 
 from __future__ import annotations
@@ -25,8 +27,11 @@ from launchverify.engine import UsageError
 MAX_TREE_BYTES = 2 << 30  # what one side's files may add up to
 GIT_SECONDS = 120.0
 # git as the repository's owner configured it, without prompts, pagers or file monitors
-_GIT = ("git", "-c", "core.fsmonitor=false", "-c", "core.pager=cat")
-# no prompt, no fetch of a missing object, no index refreshed on disk
+# (and an index written only whole: a split one would write a shared index into .git)
+_GIT = ("git", "-c", "core.fsmonitor=false", "-c", "core.pager=cat",
+        "-c", "core.splitIndex=false")
+# no prompt, no fetch of a missing object, no index refreshed on disk by `status` (porcelain
+# `git diff` ignores GIT_OPTIONAL_LOCKS and rewrites the index: it is never run)
 _QUIET = {"GIT_TERMINAL_PROMPT": "0", "GIT_NO_LAZY_FETCH": "1", "GIT_OPTIONAL_LOCKS": "0"}
 
 
@@ -39,11 +44,18 @@ class Side:
     commit: str | None = None  # the commit a revision names
 
 
-def git(repository: Path, *arguments: str) -> str:
-    """Run git in ``repository``; return its output (a failure is a usage error)."""
+def git(repository: Path, *arguments: str, index: Path | None = None) -> str:
+    """Run git in ``repository``; return its output (a failure is a usage error).
+
+    git never sees the user's index: a command is given ``index`` (a private one), else
+    none at all (reading the user's would do: with ``core.splitIndex`` every read
+    freshens ``.git/sharedindex.*``).
+    """
     try:
-        done = subprocess.run([*_GIT, "-C", str(repository), *arguments], capture_output=True,
-                              timeout=GIT_SECONDS, check=False, env={**os.environ, **_QUIET})
+        with _environment(index) as environment:
+            done = subprocess.run([*_GIT, "-C", str(repository), *arguments],
+                                  capture_output=True, timeout=GIT_SECONDS, check=False,
+                                  env=environment)
     except FileNotFoundError:
         raise UsageError("diff between revisions needs git") from None
     except subprocess.TimeoutExpired:
@@ -52,6 +64,33 @@ def git(repository: Path, *arguments: str) -> str:
         message = done.stderr.decode("utf-8", "replace").strip().splitlines()
         raise UsageError(f"git {' '.join(arguments)}: {message[-1] if message else 'failed'}")
     return done.stdout.decode("utf-8", "surrogateescape")
+
+
+@contextmanager
+def _environment(index: Path | None = None) -> Iterator[dict[str, str]]:
+    """Yield git's environment: quiet, with ``index`` as its index.
+
+    Without one, ``GIT_INDEX_FILE`` names a file that does not exist (an empty index), in
+    a private folder removed after.
+    """
+    if index is not None:
+        yield {**os.environ, **_QUIET, "GIT_INDEX_FILE": str(index)}
+        return
+    with tempfile.TemporaryDirectory(prefix="launchverify-git-") as empty:
+        yield {**os.environ, **_QUIET, "GIT_INDEX_FILE": str(Path(empty) / "index")}
+
+
+@contextmanager
+def _head_index(repository: Path) -> Iterator[Path]:
+    """Yield a private index holding HEAD's tree, to compare the working tree with.
+
+    It has no file's stat, so git compares every file's content (in memory: nothing is
+    written with ``GIT_OPTIONAL_LOCKS=0``); the user's index is never read.
+    """
+    with tempfile.TemporaryDirectory(prefix="launchverify-index-") as folder:
+        index = Path(folder) / "index"
+        git(repository, "read-tree", "HEAD", index=index)
+        yield index
 
 
 def repository_of(folder: Path) -> Path:
@@ -67,10 +106,18 @@ def commit_of(repository: Path, revision: str) -> str:
 
 
 def checked_out(repository: Path, commit: str) -> bool:
-    """Return whether the working tree holds exactly ``commit`` (no change, no new file)."""
+    """Return whether the working tree holds exactly ``commit`` (no change, no new file).
+
+    ``status`` against a private index of HEAD: the user's index is neither read nor
+    refreshed (a copy of it would not do: with ``core.splitIndex`` it names the shared
+    index in ``.git``, which git freshens on every read).
+    """
     try:
-        return (commit_of(repository, "HEAD") == commit
-                and not git(repository, "status", "--porcelain", "-z").strip("\0"))
+        if commit_of(repository, "HEAD") != commit:
+            return False
+        with _head_index(repository) as index:
+            return not git(repository, "status", "--porcelain", "-z",
+                           index=index).strip("\0")
     except UsageError:
         return False
 
@@ -97,11 +144,14 @@ def default_base(repository: Path) -> str:
 def renamed(repository: Path, base: str, head: str | None) -> dict[str, str]:
     """Return the files git sees renamed from ``base`` to ``head`` (None: the working tree).
 
-    Empty when git cannot tell (a clone without some objects): files then pair by path.
+    Two trees compared as objects (``diff-tree``: no index read, none refreshed); for the
+    working tree, the renames committed up to HEAD (a rename not yet committed is not
+    followed: its files pair by path). Empty when git cannot tell (a clone without some
+    objects): files then pair by path.
     """
     try:
-        output = git(repository, "diff", "--no-ext-diff", "-M", "--name-status", "-z", base,
-                     *([head] if head else []))
+        output = git(repository, "diff-tree", "-r", "-M", "--name-status", "-z", base,
+                     head or "HEAD")
     except UsageError:
         return {}
     fields = output.split("\0")
@@ -221,25 +271,25 @@ def _write(folders: _Folders, parts: Parts, data: bytes, executable: bool) -> bo
 
 def _blobs(repository: Path, objects: list[str]) -> Iterator[bytes | None]:
     """Yield each object's content (``None`` for one the repository lacks), in order."""
-    with tempfile.TemporaryFile() as asked:  # (a file: no thread to feed a pipe)
-        asked.write(b"".join(oid.encode("ascii") + b"\n" for oid in objects))
-        asked.seek(0)
-        process = subprocess.Popen(
-            [*_GIT, "-C", str(repository), "cat-file", "--batch"], stdin=asked,
-            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL,
-            env={**os.environ, **_QUIET})
-    assert process.stdout is not None
-    try:
-        for _ in objects:
-            header = process.stdout.readline().split()
-            if len(header) != 3 or not header[2].isdigit():
-                yield None  # "<object> missing"
-                continue
-            data = process.stdout.read(int(header[2]))
-            process.stdout.read(1)  # the line feed after each object
-            yield data
-    finally:
-        process.stdout.close()
-        if process.poll() is None:
-            process.kill()
-        process.wait()
+    with _environment() as environment:
+        with tempfile.TemporaryFile() as asked:  # (a file: no thread to feed a pipe)
+            asked.write(b"".join(oid.encode("ascii") + b"\n" for oid in objects))
+            asked.seek(0)
+            process = subprocess.Popen(
+                [*_GIT, "-C", str(repository), "cat-file", "--batch"], stdin=asked,
+                stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, env=environment)
+        assert process.stdout is not None
+        try:
+            for _ in objects:
+                header = process.stdout.readline().split()
+                if len(header) != 3 or not header[2].isdigit():
+                    yield None  # "<object> missing"
+                    continue
+                data = process.stdout.read(int(header[2]))
+                process.stdout.read(1)  # the line feed after each object
+                yield data
+        finally:
+            process.stdout.close()
+            if process.poll() is None:
+                process.kill()
+            process.wait()
