@@ -987,18 +987,28 @@ def _links_leaving(root: Path) -> list[str]:
                   if path.is_symlink() and not path.resolve().is_relative_to(top))
 
 
+_DIFF_OPENED: list[list[str]] = []  # while a test watches: the real paths opened
+
+
+def _diff_watch_opens(event: str, arguments: tuple[object, ...]) -> None:
+    """An audit hook (one for the session): record what this process opens, when asked."""
+    if event == "open" and _DIFF_OPENED and isinstance(arguments[0], (str, bytes, Path)):
+        _DIFF_OPENED[-1].append(os.path.realpath(os.fsdecode(arguments[0])))
+
+
 def test_a_chain_of_links_in_a_head_commit_cannot_end_outside(
         tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     """Each of ``l0 -> l1/..``, ..., ``l11 -> l12/..``, ``l12 -> .`` looks inside while
     the next does not exist yet; once all exist, ``l0`` is ``/``. The parameter file links
-    through it to a secret outside: the head side holds no link out, and its check tries
-    to read nothing outside."""
+    through it to a secret outside, and the launch file includes a file through it: the
+    head side holds no link out, and its check opens nothing outside."""
     from launchverify.diff import sides
-    from launchverify.workspace import reading
 
-    secret = tmp_path / "secret" / "leak.yaml"
-    secret.parent.mkdir()
-    secret.write_text(f"/**:\n  ros__parameters:\n    key: {_DIFF_SECRET}\n")
+    secret = tmp_path / "secret"
+    secret.mkdir()
+    (secret / "leak.yaml").write_text(f"/**:\n  ros__parameters:\n    key: {_DIFF_SECRET}\n")
+    (secret / "evil.launch.xml").write_text(
+        f'<launch><node pkg="demo_nodes_cpp" exec="talker" name="{_DIFF_SECRET}"/></launch>\n')
     root = _diff_repository(tmp_path / "repo")
     chain = root / "chain"
     chain.mkdir()
@@ -1007,8 +1017,12 @@ def test_a_chain_of_links_in_a_head_commit_cannot_end_outside(
     (chain / "l12").symlink_to(".")
     params = root / "demo" / "config" / "params.yaml"
     params.unlink()
-    params.symlink_to(f"../../chain/l0{secret.resolve()}")
+    params.symlink_to(f"../../chain/l0{secret.resolve()}/leak.yaml")
     assert _DIFF_SECRET in params.read_text()  # (on disk, all links made, it leaks)
+    launch = root / "demo" / "launch" / "bringup.launch.xml"
+    launch.write_text(_DIFF_LAUNCH.replace("</launch>", '  <include file="$(dirname)/../../'
+                                           f'chain/l0{secret.resolve()}/evil.launch.xml"/>\n'
+                                           "</launch>"))
     _diff_commit(root, "T3")
     _diff_git(root, "checkout", "-q", "T1")  # (the head is exported, not read in place)
     monkeypatch.chdir(root)
@@ -1016,19 +1030,18 @@ def test_a_chain_of_links_in_a_head_commit_cannot_end_outside(
     with sides.exported(root, sides.commit_of(root, "T3"), "T3", 10_000_000) as side:
         assert _links_leaving(side.root) == []
         assert not (side.root / "demo" / "config" / "params.yaml").exists()
+        assert (side.root / "chain" / "l12").is_symlink()  # (inside: kept)
         assert (side.root / "demo" / "launch" / "bringup.launch.xml").is_file()
-    refused: list[str] = []
-    judge = reading.outside
-
-    def watched(path: str | Path) -> str | None:
-        found = judge(path)
-        if found is not None:
-            refused.append(found)
-        return found
-
-    monkeypatch.setattr(reading, "outside", watched)
-    found = _diff_json("T2", "T3")
-    assert not [path for path in refused if "secret" in path], refused
+    if not getattr(sys, "_launchverify_diff_hook", False):
+        sys.addaudithook(_diff_watch_opens)
+        sys._launchverify_diff_hook = True  # type: ignore[attr-defined]
+    _DIFF_OPENED.append([])
+    try:
+        found = _diff_json("T2", "T3")
+    finally:
+        opened = _DIFF_OPENED.pop()
+    assert any(path.endswith("bringup.launch.xml") for path in opened)  # (watched)
+    assert not [path for path in opened if path.startswith(str(secret.resolve()))]
     assert _DIFF_SECRET not in json.dumps(found)
 
 
