@@ -2,12 +2,12 @@
 
 A revision is read from git's objects (``git ls-tree``, ``git cat-file``), never checked
 out, and the repository is left exactly as it was: git runs only commands that write
-nothing (plumbing that never refreshes the index: ``diff-tree``, ``diff-index``,
-``ls-tree``; ``status`` only with ``GIT_OPTIONAL_LOCKS=0``, which it honours), and no
-file of the working tree is linked or touched. Its files are written into a private
-temporary folder that is removed when the diff ends; links that leave the tree (judged
-on the final tree), submodules, objects the clone lacks and files larger than what a
-check reads are left out, and the whole tree is bounded.
+nothing and never read the user's index (objects compared by ``diff-tree``; the working
+tree by ``status`` against a private index of HEAD, with ``GIT_OPTIONAL_LOCKS=0``), and
+no file of the working tree is linked or touched. A revision's files are written into a
+private temporary folder that is removed when the diff ends; links that leave the tree
+(judged on the final tree), submodules, objects the clone lacks and files larger than
+what a check reads are left out, and the whole tree is bounded.
 """
 
 from __future__ import annotations
@@ -110,14 +110,15 @@ def checked_out(repository: Path, commit: str) -> bool:
 
     ``status`` against a private index of HEAD: the user's index is neither read nor
     refreshed (a copy of it would not do: with ``core.splitIndex`` it names the shared
-    index in ``.git``, which git freshens on every read).
+    index in ``.git``, which git freshens on every read). Submodules are not asked (an
+    export leaves them out; git would run in each).
     """
     try:
         if commit_of(repository, "HEAD") != commit:
             return False
         with _head_index(repository) as index:
             return not git(repository, "status", "--porcelain", "-z",
-                           index=index).strip("\0")
+                           "--ignore-submodules=all", index=index).strip("\0")
     except UsageError:
         return False
 
@@ -271,6 +272,8 @@ def _write(folders: _Folders, parts: Parts, data: bytes, executable: bool) -> bo
 
 def _blobs(repository: Path, objects: list[str]) -> Iterator[bytes | None]:
     """Yield each object's content (``None`` for one the repository lacks), in order."""
+    if not objects:
+        return
     with _environment() as environment:
         with tempfile.TemporaryFile() as asked:  # (a file: no thread to feed a pipe)
             asked.write(b"".join(oid.encode("ascii") + b"\n" for oid in objects))
