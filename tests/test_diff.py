@@ -522,18 +522,73 @@ def test_the_markdown_fits_in_a_comment(monkeypatch: pytest.MonkeyPatch) -> None
         "the whole diff is in `--format json`.\n")
 
 
-def test_files_the_working_tree_holds_alike_are_linked_not_written(
+def test_a_revision_is_written_from_git_objects_none_linked_from_the_working_tree(
         repo: Repository) -> None:
+    """A hard link would change the reviewer's file's ctime (git then rewrites the
+    index); the export's files are its own, with the commit's content."""
     from launchverify.diff.sides import commit_of, exported
 
     base = commit_of(repo.root, "HEAD")
     repo.edit("demo/config/params.yaml", "rate: 10", "rate: 13")  # not committed
+    mine = repo.root / "demo" / "launch" / "bringup.launch.xml"
+    before = mine.stat()
     with exported(repo.root, base, "base", 10_000_000) as side:
-        launch_file = side.root / "demo" / "launch" / "bringup.launch.xml"
-        assert launch_file.stat().st_ino == (repo.root / "demo" / "launch" /
-                                             "bringup.launch.xml").stat().st_ino
-        params = side.root / "demo" / "config" / "params.yaml"
-        assert "rate: 10" in params.read_text()  # the commit's, written apart
-        assert params.stat().st_ino != (repo.root / "demo" / "config" /
-                                        "params.yaml").stat().st_ino
-    assert (repo.root / "demo" / "launch" / "bringup.launch.xml").is_file()  # still there
+        copy = side.root / "demo" / "launch" / "bringup.launch.xml"
+        assert copy.read_text() == BRINGUP and copy.stat().st_ino != before.st_ino
+        assert "rate: 10" in (side.root / "demo" / "config" / "params.yaml").read_text()
+        assert mine.stat().st_nlink == 1
+    after = mine.stat()
+    assert (after.st_ino, after.st_nlink, after.st_ctime_ns) == (
+        before.st_ino, before.st_nlink, before.st_ctime_ns)
+
+
+def test_a_working_tree_diff_follows_committed_renames(
+        repo: Repository, capsys: pytest.CaptureFixture[str]) -> None:
+    base = repo.git("rev-parse", "HEAD").strip()
+    repo.git("mv", "demo/launch/sim.launch.py", "demo/launch/simulation.launch.py")
+    repo.commit("rename")
+    repo.edit("demo/launch/simulation.launch.py", "name='sim_talker'", "name='talker_sim'")
+    found = diff(capsys, base)  # the head: the working tree, one edit on the renamed file
+    moved = launch(found, "demo/launch/simulation.launch.py")
+    assert moved["base_file"] == "demo/launch/sim.launch.py" and moved["status"] == "changed"
+
+
+def _inside(files: list[str], links: dict[str, str]) -> dict[str, str]:
+    from launchverify.diff.links import inside_links
+
+    def parts(path: str) -> tuple[str, ...]:
+        return tuple(path.split("/"))
+
+    kept = inside_links([parts(f) for f in files], {parts(k): v for k, v in links.items()})
+    return {"/".join(path): target for path, target in kept.items()}
+
+
+def test_links_are_judged_on_the_whole_tree() -> None:
+    files = ["a/config/p.yaml", "a/launch/x.xml", "b/f"]
+    links = {
+        "chain/l0": "l1/..", "chain/l1": "l2/..", "chain/l2": ".",  # l0: above the top
+        "in/l0": "l1/..", "in/l1": "../a/launch",  # in/l0 -> a (the linked folder's parent)
+        "abs": "/etc/passwd", "up": "..", "deep": "a/../../x",
+        "loop1": "loop2", "loop2": "loop1", "self": "self/x",
+        "dangling": "a/none.yaml", "through_file": "b/f/..", "trailing": "b/f/",
+        "empty": "", "via_out": "chain/l0/a/launch/x.xml",
+        "to_file": "a/config/p.yaml", "to_top": ".", "via": "to_top/a/launch/x.xml",
+        "a/launch/param": "../../in/l0/config/p.yaml",
+        "a/launch/x.xml/inner": "../x.xml",  # below a file: a malformed tree
+        "b": "a",  # a link that is also a folder: a malformed tree
+    }
+    assert _inside(files, links) == {
+        "chain/l1": "l2/..", "chain/l2": ".", "in/l0": "l1/..", "in/l1": "../a/launch",
+        "to_file": "a/config/p.yaml", "to_top": ".", "via": "to_top/a/launch/x.xml",
+        "a/launch/param": "../../in/l0/config/p.yaml"}
+
+
+def test_a_long_chain_fails_as_the_kernel_does_and_costs_its_length() -> None:
+    """Past 40 links followed (the link itself counts), a walk fails as Linux's does
+    (ELOOP); 20,000 links are judged at once."""
+    from launchverify.diff.links import MAX_FOLLOWS
+
+    links = {f"c{i}": f"c{i + 1}" for i in range(20_000)} | {"c20000": "f"}
+    kept = _inside(["f"], links)
+    assert sorted(kept, key=lambda name: int(name[1:])) == [
+        f"c{i}" for i in range(20_001 - MAX_FOLLOWS, 20_001)]

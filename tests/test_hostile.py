@@ -1786,3 +1786,227 @@ def test_every_worker_has_the_memory_limit(tmp_path: Path) -> None:
              for finding in json.loads(done.stdout)["findings"]
              if finding["code"] == "LV101" and finding["file"].endswith(".launch.py")}
     assert names == {f"m{n}.launch.py": f"/m{n}_limit_set_held_yes" for n in range(6)}
+
+
+# ---- issue 42: diff and git ----
+# `launchverify diff` exports each revision from git's objects. A link in a revision is
+# judged on the final tree (a chain of links cannot end outside once all exist), and the
+# reviewer's repository is left exactly as it was: nothing under .git is written, and no
+# file of the working tree is linked (a hard link changes its ctime, and git then rewrites
+# the index).
+
+_DIFF_PACKAGE = ("<package format='3'><name>demo</name><version>0.0.0</version>"
+                 "<description>d</description><maintainer email='a@b.c'>a</maintainer>"
+                 "<license>MIT</license></package>\n")
+_DIFF_LAUNCH = """\
+<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker">
+    <param from="$(find-pkg-share demo)/config/params.yaml"/>
+  </node>
+</launch>
+"""
+_DIFF_PARAMS = "/**:\n  ros__parameters:\n    rate: 10\n"
+_DIFF_SECRET = "LV-DIFF-SECRET-5e1b"
+
+
+def _diff_git(root: Path, *arguments: str) -> str:
+    return subprocess.run(["git", "-C", str(root), *arguments], check=True,
+                          capture_output=True, text=True,
+                          env={**os.environ, "GIT_AUTHOR_NAME": "a", "GIT_AUTHOR_EMAIL": "a@b",
+                               "GIT_COMMITTER_NAME": "a", "GIT_COMMITTER_EMAIL": "a@b"}).stdout
+
+
+def _diff_repository(root: Path, *config: str) -> Path:
+    """A repository with a package (tag T1), then a changed parameter (tag T2)."""
+    root.mkdir()
+    _diff_git(root, "init", "-q", "-b", "main")
+    for name, value in config:
+        _diff_git(root, "config", name, value)
+    for name, text in (("demo/package.xml", _DIFF_PACKAGE),
+                       ("demo/launch/bringup.launch.xml", _DIFF_LAUNCH),
+                       ("demo/config/params.yaml", _DIFF_PARAMS)):
+        (root / name).parent.mkdir(parents=True, exist_ok=True)
+        (root / name).write_text(text)
+    _diff_commit(root, "T1")
+    (root / "demo/config/params.yaml").write_text(_DIFF_PARAMS.replace("10", "12"))
+    _diff_commit(root, "T2")
+    return root
+
+
+def _diff_commit(root: Path, tag: str) -> None:
+    _diff_git(root, "add", "-A")
+    _diff_git(root, "commit", "-q", "-m", tag)
+    _diff_git(root, "tag", tag)
+
+
+def _diff_json(*arguments: str) -> dict[str, object]:
+    """Run ``launchverify diff`` in this process (its reads can be watched); its JSON."""
+    import contextlib
+    import io
+
+    from launchverify.cli import main
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        status = main(["diff", *arguments, "--format", "json", "-j", "1"])
+    assert status in (0, 1), out.getvalue()[-2000:]
+    found = json.loads(out.getvalue())
+    assert isinstance(found, dict)
+    return found
+
+
+def _links_leaving(root: Path) -> list[str]:
+    """Return the links below ``root`` whose real target is outside it."""
+    top = root.resolve()
+    return sorted(str(path.relative_to(root)) for path in root.rglob("*")
+                  if path.is_symlink() and not path.resolve().is_relative_to(top))
+
+
+_DIFF_OPENED: list[list[str]] = []  # while a test watches: the real paths opened
+
+
+def _diff_watch_opens(event: str, arguments: tuple[object, ...]) -> None:
+    """An audit hook (one for the session): record what this process opens, when asked."""
+    if event == "open" and _DIFF_OPENED and isinstance(arguments[0], (str, bytes, Path)):
+        _DIFF_OPENED[-1].append(os.path.realpath(os.fsdecode(arguments[0])))
+
+
+def test_a_chain_of_links_in_a_head_commit_cannot_end_outside(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each of ``l0 -> l1/..``, ..., ``l11 -> l12/..``, ``l12 -> .`` looks inside while
+    the next does not exist yet; once all exist, ``l0`` is ``/``. The parameter file links
+    through it to a secret outside, and the launch file includes a file through it: the
+    head side holds no link out, and its check opens nothing outside."""
+    from launchverify.diff import sides
+
+    secret = tmp_path / "secret"
+    secret.mkdir()
+    (secret / "leak.yaml").write_text(f"/**:\n  ros__parameters:\n    key: {_DIFF_SECRET}\n")
+    (secret / "evil.launch.xml").write_text(
+        f'<launch><node pkg="demo_nodes_cpp" exec="talker" name="{_DIFF_SECRET}"/></launch>\n')
+    root = _diff_repository(tmp_path / "repo")
+    chain = root / "chain"
+    chain.mkdir()
+    for index in range(12):
+        (chain / f"l{index}").symlink_to(f"l{index + 1}/..")
+    (chain / "l12").symlink_to(".")
+    params = root / "demo" / "config" / "params.yaml"
+    params.unlink()
+    params.symlink_to(f"../../chain/l0{secret.resolve()}/leak.yaml")
+    assert _DIFF_SECRET in params.read_text()  # (on disk, all links made, it leaks)
+    launch = root / "demo" / "launch" / "bringup.launch.xml"
+    launch.write_text(_DIFF_LAUNCH.replace("</launch>", '  <include file="$(dirname)/../../'
+                                           f'chain/l0{secret.resolve()}/evil.launch.xml"/>\n'
+                                           "</launch>"))
+    _diff_commit(root, "T3")
+    _diff_git(root, "checkout", "-q", "T1")  # (the head is exported, not read in place)
+    monkeypatch.chdir(root)
+
+    with sides.exported(root, sides.commit_of(root, "T3"), "T3", 10_000_000) as side:
+        assert _links_leaving(side.root) == []
+        assert not (side.root / "demo" / "config" / "params.yaml").exists()
+        assert (side.root / "chain" / "l12").is_symlink()  # (inside: kept)
+        assert (side.root / "demo" / "launch" / "bringup.launch.xml").is_file()
+    if not getattr(sys, "_launchverify_diff_hook", False):
+        sys.addaudithook(_diff_watch_opens)
+        sys._launchverify_diff_hook = True  # type: ignore[attr-defined]
+    _DIFF_OPENED.append([])
+    try:
+        found = _diff_json("T2", "T3")
+    finally:
+        opened = _DIFF_OPENED.pop()
+    assert any(path.endswith("bringup.launch.xml") for path in opened)  # (watched)
+    assert not [path for path in opened if path.startswith(str(secret.resolve()))]
+    assert _DIFF_SECRET not in json.dumps(found)
+
+
+def test_links_that_stay_inside_through_other_links_are_exported(tmp_path: Path) -> None:
+    """A link through a linked folder, ``..`` after a linked folder (its real parent, not
+    the link's), and a chain that ends inside are all made, and read what they name."""
+    from launchverify.diff import sides
+
+    root = _diff_repository(tmp_path / "repo")
+    (root / "pkg").symlink_to("demo")
+    (root / "conf").symlink_to("pkg/config")
+    (root / "demo" / "launch" / "params.yaml").symlink_to("../../conf/params.yaml")
+    (root / "shared").symlink_to("demo/launch")
+    (root / "up.yaml").symlink_to("shared/../config/params.yaml")  # demo/config/params.yaml
+    (root / "c0").symlink_to("c1/..")
+    (root / "c1").symlink_to("demo/c2")
+    (root / "demo" / "c2").symlink_to("config")  # c0 -> demo
+    _diff_commit(root, "T3")
+    with sides.exported(root, sides.commit_of(root, "T3"), "T3", 10_000_000) as side:
+        for name in ("demo/launch/params.yaml", "up.yaml", "c0/config/params.yaml"):
+            path = side.root / name
+            assert path.is_file(), name
+            assert "rate: 12" in path.read_text(), name
+        assert (side.root / "c0").resolve() == (side.root / "demo").resolve()
+        assert _links_leaving(side.root) == []
+
+
+def _git_state(git_dir: Path) -> dict[str, str]:
+    """Return every path below ``.git`` with its mode, mtime and content (or target)."""
+    state = {}
+    for path in sorted(git_dir.rglob("*")):
+        info = path.lstat()
+        if path.is_symlink():
+            content = f"-> {path.readlink()}"
+        elif path.is_file():
+            content = hashlib.sha256(path.read_bytes()).hexdigest()
+        else:
+            content = "folder"
+        state[str(path.relative_to(git_dir))] = f"{oct(info.st_mode)} {info.st_mtime_ns} {content}"
+    return state
+
+
+def _working_tree_state(root: Path) -> dict[str, tuple[int, int, int]]:
+    """Return each working-tree file's inode, link count and ctime (what a link changes)."""
+    return {str(path.relative_to(root)): (info.st_ino, info.st_nlink, info.st_ctime_ns)
+            for path in sorted(root.rglob("*"))
+            if ".git" not in path.relative_to(root).parts
+            for info in [path.lstat()]}
+
+
+_GIT_CONFIGS = {"plain": (), "split index": (("core.splitIndex", "true"),
+                                             ("core.untrackedCache", "true"))}
+
+
+@pytest.mark.parametrize("config", sorted(_GIT_CONFIGS))
+@pytest.mark.parametrize("form", ["two tags, the head checked out", "two tags, both exported",
+                                  "a tag and the working tree", "the merge base",
+                                  "--against"])
+def test_a_diff_leaves_the_repository_byte_identical(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch, form: str, config: str) -> None:
+    """One tracked file's stat is made stale first (another mtime, as after a copy or a
+    checkout): any git command that refreshes the index would then rewrite it. The others
+    are clean in the index (and not racily so), as a hard link would want them."""
+    root = _diff_repository(tmp_path / "repo", *_GIT_CONFIGS[config])
+    arguments: tuple[str, ...] = ("T1", "T2")
+    if form == "two tags, both exported":
+        _diff_git(root, "checkout", "-q", "T1")
+    elif form == "a tag and the working tree":
+        arguments = ("T1",)
+        (root / "demo/config/params.yaml").write_text(_DIFF_PARAMS.replace("10", "13"))
+    elif form == "the merge base":
+        arguments = ()
+        _diff_git(root, "checkout", "-q", "-b", "topic", "T1")
+        _diff_git(root, "branch", "-f", "main", "T1")
+        (root / "demo/config/params.yaml").write_text(_DIFF_PARAMS.replace("10", "14"))
+        _diff_commit(root, "T4")
+    elif form == "--against":
+        other = tmp_path / "other"
+        other.mkdir()
+        (other / "bringup.launch.xml").write_text(_DIFF_LAUNCH)
+        arguments = ("demo/launch/bringup.launch.xml", "--against",
+                     str(other / "bringup.launch.xml"))
+    for path in root.rglob("*"):  # (older than the index: not racily clean)
+        if path.is_file() and ".git" not in path.relative_to(root).parts:
+            os.utime(path, ns=(1_000_000_000_000_000_000, 1_000_000_000_000_000_000))
+    _diff_git(root, "status", "--porcelain")  # (the index as a reviewer's is: refreshed)
+    os.utime(root / "demo/package.xml", ns=(999_000_000_000_000_000, 999_000_000_000_000_000))
+    git_before, tree_before = _git_state(root / ".git"), _working_tree_state(root)
+    monkeypatch.chdir(root)
+    found = _diff_json(*arguments)
+    assert found["summary"]["launches_changed"] == (0 if form == "--against" else 1)
+    assert _git_state(root / ".git") == git_before
+    assert _working_tree_state(root) == tree_before
