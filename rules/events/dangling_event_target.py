@@ -60,6 +60,8 @@ class DanglingEventTarget(Rule):
             if not runs:
                 if id(handler.target) in handed or isinstance(handler.target, OpaqueAction):
                     continue  # code launchverify cannot see holds it, or is it, and runs it
+                if graph.stopped_early:
+                    continue  # the evaluation stopped before its end: it may run later
                 yield self.finding(handler.origin, related=related, target=label,
                                    why="is never executed (is it added to the launch?)")
                 continue
