@@ -68,7 +68,6 @@ class DanglingEventTarget(Rule):
             reasoner = reasoner_for(graph)
             if reasoner.together(handler.origin.path) is None:
                 continue  # the handler itself is not registered under the switches
-            if all(reasoner.together(handler.origin.path, r.origin.path) is None
-                   for r in runs):
+            if all(reasoner.apart(handler.origin.path, r.origin.path) for r in runs):
                 yield self.finding(handler.origin, related=related, target=label,
                                    why="cannot run where the handler is registered")
