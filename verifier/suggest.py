@@ -71,6 +71,9 @@ def closest(name: str, candidates: Iterable[str], cutoff: float = 0.75) -> str |
     return _closest(name, pool, cutoff)
 
 
+FIRST_BATCH = 8  # ``closest``: the candidates of highest bound tried first (then 4 times more)
+
+
 @lru_cache(maxsize=4096)
 def _closest(name: str, pool: frozenset[str], cutoff: float) -> str | None:
     """``closest`` remembered: every root reaching an include asks it again (and the fix).
@@ -89,7 +92,7 @@ def _closest(name: str, pool: frozenset[str], cutoff: float) -> str | None:
     matcher.set_seq2(name)
     best: tuple[float, str] | None = None
     tried: set[str] = set()
-    limit = 8
+    limit = FIRST_BATCH
     while True:
         within = process.extract(name, choices, scorer=Indel.normalized_similarity,
                                  processor=None, score_cutoff=max(cutoff - 1e-6, 0.0),
