@@ -8,8 +8,8 @@ anything is absent from it) and the root gets an LV003 info naming the bound. Th
 are per root: no file can spend another's.
 
 Each bound is far above what real launch trees reach (measured on the 41-repository
-corpus and ``bench/fleet.py``) and low enough that a root stopped by it still costs
-about a second: every file of a fan-out is a root of its own too, and each pays.
+corpus and ``bench/fleet.py``) and low enough that a root stopped by it costs a fraction
+of a second: every file of a fan-out is a root of its own too, and each pays.
 """
 
 from __future__ import annotations
@@ -20,9 +20,9 @@ from launchverify.span import Span
 
 # Include instances (each file walked through an include, per root). The largest real
 # root, autoware.universe's reaction_analyzer, follows 270; autoware_launch's
-# logging_simulator 195; bench/fleet.py at 1,000 robots 1,100 (one include per robot).
-# A root stopped here costs about 0.3 s: 24 files of a 5 KB fan-out, each of them a
-# root, then check in a few seconds.
+# logging_simulator 195; bench/fleet.py at 1,000 robots 1,000 (one include per robot).
+# A root stopped here costs about 0.2 s: the 24 files of a 7 KB fan-out, each of them a
+# root, check in about 3 s.
 MAX_INCLUDES = 2_000
 
 # Nodes recorded per root. Real roots reach 380 (reaction_analyzer); the 1,000-robot
