@@ -10,11 +10,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from launchverify.evaluate.runner import evaluate
 from launchverify.evaluate.values import argument_names, is_literal, is_unset
+from launchverify.graph import LaunchGraph
 from launchverify.ir.subst import Concat, LaunchConfig, Sub, Text, walk
 from launchverify.ir.symbolic import Arg, Select, Truthy, Unset
 from launchverify.render.graph_out import GraphView
@@ -132,7 +134,7 @@ def fqns(path: Path) -> list[str]:
 @given(items)
 def test_xml_namespaces_match_launch_ros(tmp_path_factory: object, tree: tuple[object, ...]
                                          ) -> None:
-    folder = tmp_path_factory.mktemp("xml")  # type: ignore[attr-defined]
+    folder = tmp_path_factory.mktemp("xml")
     path = folder / "t.launch.xml"
     path.write_text(f"<launch>\n{to_xml(tree)}\n</launch>\n")
     assert fqns(path) == expected(tree)
@@ -141,7 +143,7 @@ def test_xml_namespaces_match_launch_ros(tmp_path_factory: object, tree: tuple[o
 @settings(max_examples=60, deadline=None)
 @given(items)
 def test_yaml_matches_xml(tmp_path_factory: object, tree: tuple[object, ...]) -> None:
-    folder = tmp_path_factory.mktemp("yaml")  # type: ignore[attr-defined]
+    folder = tmp_path_factory.mktemp("yaml")
     path = folder / "t.launch.yaml"
     body = to_yaml(tree)
     path.write_text("launch:\n" + (body + "\n" if body else "  []\n"))
@@ -187,3 +189,131 @@ def test_value_summaries_are_those_of_a_full_walk(values: list[Sub], data: st.Da
             assert is_unset(part) == any(isinstance(x, Unset) for x in walked)
             assert argument_names(part) == {x.name for x in walked if isinstance(x, Arg)}
             assert is_literal(part) == all(isinstance(x, (Text, Concat)) for x in walked)
+
+
+# ---- issue 42: what one root may expand (evaluate/budget.py) ----
+
+
+def _fan_out(folder: Path, levels: int) -> Path:
+    """``levels`` files, each including the next twice: 2 ** levels include instances."""
+    for level in range(levels):
+        body = ('  <node pkg="demo_nodes_cpp" exec="talker"/>\n' if level == levels - 1 else
+                f'  <include file="$(dirname)/f{level + 1}.launch.xml"/>\n' * 2)
+        (folder / f"f{level}.launch.xml").write_text(f"<launch>\n{body}</launch>\n")
+    return folder / "f0.launch.xml"
+
+
+def _bounded(path: Path) -> tuple[LaunchGraph, list[str]]:
+    graph = evaluate(path, index=PackageIndex(), workspace=path.parent)
+    notes = [r.problem.message for r in graph.problems
+             if r.problem.kind.value == "unmodeled" and r.problem.span.file == path]
+    return graph, notes
+
+
+def test_an_include_fan_out_stops_at_its_bound(tmp_path: Path) -> None:
+    """13 levels make 16,382 include instances: the walk stops at the bound, keeps what
+    it had, and says so on the root."""
+    from launchverify.evaluate.budget import MAX_INCLUDES
+
+    graph, notes = _bounded(_fan_out(tmp_path, 13))
+    assert graph.cut_short and not graph.complete and graph.stopped_early
+    followed = [i for i in graph.includes if i.status == "loaded"]
+    assert MAX_INCLUDES <= len(followed) <= MAX_INCLUDES + 1
+    assert graph.nodes
+    assert [n for n in notes if f"{MAX_INCLUDES:,} include instances" in n
+            and "stopped at f" in n], notes
+
+
+def test_a_tree_within_the_bounds_is_not_cut(tmp_path: Path) -> None:
+    graph, notes = _bounded(_fan_out(tmp_path, 8))
+    assert not graph.cut_short and graph.complete and not notes
+    assert len(graph.nodes) == 128
+
+
+NESTED_LOOPS = """<launch>
+  <for len="256" name="i"><for len="256" name="j">
+    {body}
+  </for></for>
+</launch>
+"""
+
+
+def test_nested_loops_stop_at_the_node_bound(tmp_path: Path,
+                                             monkeypatch: pytest.MonkeyPatch) -> None:
+    from launchverify.evaluate import budget, walker
+
+    monkeypatch.setattr(walker, "ExpansionBudget",
+                        lambda: budget.ExpansionBudget(max_nodes=500))
+    path = tmp_path / "loops.launch.xml"
+    path.write_text(NESTED_LOOPS.format(
+        body='<node pkg="demo_nodes_cpp" exec="talker" name="n$(index i)_$(index j)"/>'))
+    graph, notes = _bounded(path)
+    assert graph.cut_short and len(graph.nodes) == 501
+    assert ["500 nodes" in n for n in notes] == [True]
+
+
+def test_nested_loops_stop_at_the_action_bound(tmp_path: Path,
+                                               monkeypatch: pytest.MonkeyPatch) -> None:
+    """No node at all, only work: each loop iteration's actions count."""
+    from launchverify.evaluate import budget, walker
+
+    monkeypatch.setattr(walker, "ExpansionBudget",
+                        lambda: budget.ExpansionBudget(max_actions=5_000))
+    path = tmp_path / "loops.launch.xml"
+    path.write_text(NESTED_LOOPS.format(body='<let name="x" value="$(index j)"/>'))
+    graph, notes = _bounded(path)
+    assert graph.cut_short and ["5,000 actions" in n for n in notes] == [True]
+
+
+CUT_ROOT = """<launch>
+  <arg name="late" default="b"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="a">
+    <param from="$(dirname)/params.yaml"/>
+  </node>
+  <include file="$(dirname)/f0.launch.xml"/>
+  <node pkg="demo_nodes_cpp" exec="talker" name="$(var late)">
+    <param from="$(dirname)/params.yaml"/>
+  </node>
+</launch>
+"""
+CUT_PARAMS = "a:\n  ros__parameters:\n    x: 1\nb:\n  ros__parameters:\n    x: 2\n"
+CUT_PYTHON = """from launch import LaunchDescription
+from launch.actions import (ExecuteProcess, IncludeLaunchDescription, LogInfo,
+                            RegisterEventHandler)
+from launch.event_handlers import OnProcessExit
+from launch.launch_description_sources import AnyLaunchDescriptionSource
+from launch.substitutions import PathJoinSubstitution, ThisLaunchFileDir
+
+def generate_launch_description():
+    late = ExecuteProcess(cmd=['sleep', '1'], name='late')
+    return LaunchDescription([
+        RegisterEventHandler(OnProcessExit(target_action=late, on_exit=[LogInfo(msg='x')])),
+        IncludeLaunchDescription(AnyLaunchDescriptionSource(
+            PathJoinSubstitution([ThisLaunchFileDir(), 'f0.launch.xml']))),
+        late,
+    ])
+"""
+
+
+def test_no_absence_is_claimed_past_the_cut(tmp_path: Path,
+                                            monkeypatch: pytest.MonkeyPatch) -> None:
+    """What comes after the cut is unseen: an argument read there is not unused (LV202),
+    a parameter block for a node started there matches one (LV402), a handler's target
+    executed there is executed (LV502). Without the cut, none of them is reported either."""
+    from launchverify.engine import CheckOptions, run_check
+    from launchverify.evaluate import budget, walker
+
+    _fan_out(tmp_path, 3)  # 6 include instances
+    (tmp_path / "root.launch.xml").write_text(CUT_ROOT)
+    (tmp_path / "params.yaml").write_text(CUT_PARAMS)
+    (tmp_path / "handler.launch.py").write_text(CUT_PYTHON)
+    options = CheckOptions(paths=[tmp_path / "root.launch.xml", tmp_path / "handler.launch.py"],
+                           workspace=tmp_path, jobs=1)
+
+    def codes() -> set[tuple[str, str]]:
+        return {(f.code, f.span.file.name) for f in run_check(options).findings}
+
+    assert codes() == set()
+    monkeypatch.setattr(walker, "ExpansionBudget",
+                        lambda: budget.ExpansionBudget(max_includes=3))
+    assert codes() == {("LV003", "root.launch.xml"), ("LV003", "handler.launch.py")}

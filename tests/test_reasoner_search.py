@@ -14,6 +14,7 @@ from pathlib import Path
 from typing import Any
 from xml.sax.saxutils import quoteattr
 
+import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
@@ -229,3 +230,191 @@ def test_no_invalid_value_is_guessed_for_a_configuration_read_unset(tmp_path: Pa
     (node,) = graph.nodes
     (guard,) = node.origin.path
     assert reasoner_for(graph).invalid_value((), guard) is None
+
+
+# ---- issue 42: the solver time of a root is bounded (smt/budget.py) ----
+
+
+def _pigeonhole(pigeons: int) -> object:
+    """A z3 solver holding the pigeonhole formula: hard for z3 from 10 pigeons on."""
+    import z3
+
+    holes = [[z3.Bool(f"p{i}_{j}") for j in range(pigeons - 1)] for i in range(pigeons)]
+    solver = z3.Solver()
+    for row in holes:
+        solver.add(z3.Or(*row))
+    for j in range(pigeons - 1):
+        for i in range(pigeons):
+            for k in range(i + 1, pigeons):
+                solver.add(z3.Not(z3.And(holes[i][j], holes[k][j])))
+    return solver
+
+
+def test_a_spent_budget_answers_nothing(tmp_path: Path) -> None:
+    """Each question's "cannot tell" claims nothing; a root with time answers them all,
+    and what the spent one could not answer is not handed to it."""
+    from launchverify.smt.budget import SolverBudget
+    from launchverify.smt.reasoner import Reasoner
+
+    graph = graph_of(tmp_path, [("cam", "r1", "$(var sim)"), ("cam", "r1", "$(var sim)"),
+                                ("cam", "r1", "$(equals $(var mode) a)"),
+                                ("lidar", "r1", "$(equals $(var mode) b)"),
+                                ("lidar", "r2", "$(var mode)")])
+    first, second, in_a, in_b, any_mode = graph.nodes
+    [mode_a], [mode_b], [raw_mode] = (in_a.origin.path, in_b.origin.path,
+                                      any_mode.origin.path)
+    assert isinstance(raw_mode, Truthy)
+
+    def answers(reasoner: Reasoner) -> list[object]:
+        return [reasoner.together(first.origin.path, second.origin.path) is not None,
+                reasoner.apart(in_a.origin.path, in_b.origin.path),
+                reasoner.same_name(first.fqn, first.origin.path, second.fqn,
+                                   second.origin.path) is not None,
+                reasoner.never((mode_a,), mode_b) is not None,
+                reasoner.always((mode_a,), mode_a),
+                reasoner.invalid_value((), raw_mode) is not None]
+
+    _ANSWERS.clear()
+    spent = Reasoner(graph, SolverBudget(0.0))
+    assert answers(spent) == [False] * 6 and spent.budget.ran_out
+    assert answers(Reasoner(graph)) == [True] * 6  # the next root: time of its own
+
+
+def test_questions_share_one_budget(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The CPU time of every question counts: one that runs out of it stops, proving
+    nothing, the next one is not asked, and the root gets an LV003 info saying so."""
+    import time
+
+    from launchverify.smt import budget_notes
+    from launchverify.smt import search as search_module
+    from launchverify.smt.budget import SolverBudget
+    from launchverify.smt.reasoner import Reasoner
+
+    graph = graph_of(tmp_path, [("cam", "r1", "$(var sim)"), ("cam", "r1", "$(var sim)")])
+    first, second = graph.nodes
+    run = search_module.Search.run
+
+    def slow(self: search_module.Search, *args: Any, **kwargs: Any) -> Any:
+        started = time.thread_time()
+        while time.thread_time() - started < 0.2:  # a costly question
+            pass
+        return run(self, *args, **kwargs)
+
+    monkeypatch.setattr(search_module.Search, "run", slow)
+    _ANSWERS.clear()
+    graph._reasoner = reasoner = Reasoner(graph, SolverBudget(0.3))  # type: ignore[attr-defined]
+    assert budget_notes(graph) == []
+    assert reasoner.together(first.origin.path) is not None  # 0.2 s: answered
+    assert not reasoner.budget.ran_out and budget_notes(graph) == []
+    assert reasoner.same_name(first.fqn, first.origin.path, second.fqn,
+                              second.origin.path) is None  # its search ran out of time
+    assert reasoner.budget.ran_out and reasoner.budget.remaining() < 0
+    asked = reasoner.budget.left
+    assert reasoner.invalid_value((), first.origin.path[0]) is None
+    assert reasoner.budget.left == asked  # not asked at all
+    [note] = budget_notes(graph)
+    assert note.code == "LV003" and "not fully judged" in note.message
+    assert note.span.file == graph.root
+
+
+def test_a_search_stops_when_the_time_is_spent(tmp_path: Path) -> None:
+    from launchverify.smt.search import Search
+
+    graph = graph_of(tmp_path, [("cam", "r1", "$(var sim)"), ("cam", "r1", "$(var sim)")])
+    guards = list(graph.nodes[0].origin.path)
+    reasoner = reasoner_for(graph)
+    stopped = Search(reasoner.domains, graph.inputs(), out_of_time=lambda: True)
+    tried = stopped.run(Mode.SWITCHES, guards, lambda r: True)
+    assert tried.found is None and not tried.exhaustive  # proved nothing
+    assert Search(reasoner.domains, graph.inputs()).run(
+        Mode.SWITCHES, guards, lambda r: True).found is not None
+
+
+def test_z3_waits_no_longer_than_the_budget_left() -> None:
+    """A hard question (10 pigeons) with 0.3 s left is cut at 0.3 s, and that is no
+    answer another root may reuse; with its own limit (2 s) it is "cannot tell"."""
+    import time
+
+    from launchverify.smt.budget import BudgetSpent, SolverBudget
+    from launchverify.smt.solver import Z3Backend
+
+    backend = Z3Backend({}, {}, SolverBudget(0.3))
+    started = time.perf_counter()
+    with pytest.raises(BudgetSpent), backend.budget.question():
+        backend._run(_pigeonhole(10))
+    assert time.perf_counter() - started < 1.5 and backend.budget.ran_out
+
+
+def test_an_unknown_answer_is_no_dangling_target(tmp_path: Path,
+                                                 monkeypatch: pytest.MonkeyPatch) -> None:
+    """LV502 says a handler's target cannot run where it is registered only when that
+    is proved: z3 giving up (a timeout) is no proof."""
+    from launchverify.engine import CheckOptions, run_check
+    from launchverify.smt import search as search_module
+    from launchverify.smt import solver as solver_module
+    from launchverify.smt.budget import CannotTell
+    from launchverify.smt.search import Outcome
+
+    (tmp_path / "handler.launch.py").write_text(
+        "from launch import LaunchDescription\n"
+        "from launch.actions import (DeclareLaunchArgument, ExecuteProcess, LogInfo,\n"
+        "                            RegisterEventHandler)\n"
+        "from launch.conditions import IfCondition\n"
+        "from launch.event_handlers import OnProcessExit\n"
+        "from launch.substitutions import LaunchConfiguration\n"
+        "def generate_launch_description():\n"
+        "    proc = ExecuteProcess(cmd=['sleep', '1'],\n"
+        "                          condition=IfCondition(LaunchConfiguration('a')))\n"
+        "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('a', default_value='false'),\n"
+        "        DeclareLaunchArgument('b', default_value='false'),\n"
+        "        RegisterEventHandler(OnProcessExit(target_action=proc,\n"
+        "                                           on_exit=[LogInfo(msg='x')]),\n"
+        "                             condition=IfCondition(LaunchConfiguration('b'))),\n"
+        "        proc])\n")
+    options = CheckOptions(paths=[tmp_path], workspace=tmp_path, jobs=1)
+    _ANSWERS.clear()
+    assert run_check(options).findings == []  # a:=true b:=true: it runs where registered
+
+    run = search_module.Search.run
+
+    def undecided(self: search_module.Search, mode: Mode, items: Any, *args: Any,
+                  **kwargs: Any) -> Outcome:
+        items = list(items)
+        if len(items) < 2:  # whether the handler is registered: answered
+            return run(self, mode, items, *args, **kwargs)
+        return Outcome(None, None, exhaustive=False)  # with its target: for z3
+
+    def gives_up(self: object, solver: object) -> object:
+        raise CannotTell  # as a timeout does
+
+    monkeypatch.setattr(search_module.Search, "run", undecided)
+    monkeypatch.setattr(solver_module.Z3Backend, "_run", gives_up)
+    _ANSWERS.clear()
+    assert [f.code for f in run_check(options).findings] == []
+
+
+def test_forked_processes_share_a_roots_budget(tmp_path: Path) -> None:
+    """A root's rules may run in several processes (``-j``): its budget is one."""
+    import os
+    import time
+
+    from launchverify.smt import share_solver_time
+    from launchverify.smt.budget import SOLVER_SECONDS
+
+    for name in ("early", "late"):
+        (tmp_path / name).mkdir()
+    early = graph_of(tmp_path / "early", [("cam", "r1", "$(var sim)")])
+    late = graph_of(tmp_path / "late", [("cam", "r1", "$(var sim)")])
+    before = reasoner_for(early)  # made before the fork: it comes along
+    share_solver_time([early, late])
+    for reasoner in (before, reasoner_for(late)):
+        child = os.fork()
+        if child == 0:  # a forked process spends 0.3 s of the root's time
+            with reasoner.budget.question():
+                started = time.thread_time()
+                while time.thread_time() - started < 0.3:
+                    pass
+            os._exit(0)
+        os.waitpid(child, 0)
+        assert reasoner.budget.left <= SOLVER_SECONDS - 0.3

@@ -451,6 +451,9 @@ class LaunchGraph:
     # OpaqueFunctions stopped at a configuration nobody set (name, where): their reads before
     # that point are known (LV201 judges them), what they would read or start after is not.
     stops: list[tuple[str, Origin]] = field(default_factory=list)
+    # The walk stopped at a bound on what one root may expand (``evaluate/budget.py``):
+    # the records hold what came before, nothing after.
+    cut_short: bool = False
     # Strings OpaqueFunctions' code holds: configurations they may read on paths not taken.
     mentioned: set[str] = field(default_factory=set)
     # Reads a workspace file for values that depend on file content (set by the evaluator).
@@ -551,8 +554,11 @@ class LaunchGraph:
 
     @property
     def stopped_early(self) -> bool:
-        """Return whether an OpaqueFunction stopped before its end (absence is unknown)."""
-        return bool(self.stops)
+        """Return whether the evaluation stopped before its end (absence is unknown).
+
+        An OpaqueFunction stopped at a configuration nothing sets, or the walk at a bound.
+        """
+        return bool(self.stops) or self.cut_short
 
     def handed(self) -> set[int]:
         """Return the actions (by ``id``) given to code launchverify cannot see.

@@ -46,7 +46,7 @@ class UndeclaredArgument(Rule):
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         if not graph.complete:
             return  # a part we cannot see may set it
-        known = graph.declared_names() | set(graph.pinned)
+        known = frozenset(graph.declared_names() | set(graph.pinned))
         declared_in = {(arg.name, arg.action.span.file) for arg in graph.arguments}
         unset = [r for r in graph.reads if not r.found and not r.has_default]
         alone = graph.launchable_alone()

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import functools
 from collections.abc import Iterator
 from typing import cast
 
@@ -80,6 +81,7 @@ class UnknownIncludeArgument(Rule):
                 launch = graph.files[path].launch if path in graph.files else None
                 if launch is not None:
                     known |= configuration_names(launch)
+            frozen = frozenset(known)  # the suggestions' memory knows it (1,500 names)
             helpers = helper_names(include.action)  # used, but no name the target takes
             for name, value, span in include.arguments:
                 if name is None or name in known or name in helpers:
@@ -88,14 +90,14 @@ class UnknownIncludeArgument(Rule):
                 origin = Origin(span, include.origin.chain, include.origin.path, call=call)
                 same = applied_inside(graph, include, name, value)
                 hint = (self.applied.format(name=name, value=same) if same is not None
-                        else did_you_mean(name, known))
-                fix = None if same is not None else _fix(include, name, span, known)
+                        else did_you_mean(name, frozen))
+                fix = None if same is not None else _fix(include, name, span, frozen)
                 finding = self.finding(origin, name=name, target=include.target.name,
                                        hint=hint, fix=fix)
                 if same is not None:
                     yield dataclasses.replace(finding, severity=Severity.INFO)
                 else:
-                    yield _as_typo(finding, name, known)
+                    yield _as_typo(finding, name, frozen)
 
     def command_line(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         """Arguments given as name:=value that the launch never declares nor reads.
@@ -104,7 +106,8 @@ class UnknownIncludeArgument(Rule):
         """
         if not graph.pinned or not graph.complete or graph.stopped_early:
             return
-        known = graph.declared_names() | graph.read_names() | graph.mentioned_names()
+        known = frozenset(graph.declared_names() | graph.read_names()
+                          | graph.mentioned_names())
         sources = cast(dict[str, str], ctx.options.get("argument-sources", {}))
         for name in sorted(set(graph.pinned) - known):
             given = sources.get(name, "on the command line")
@@ -115,7 +118,7 @@ class UnknownIncludeArgument(Rule):
             yield _as_typo(finding, name, known)
 
 
-def _as_typo(finding: Finding, name: str, known: set[str]) -> Finding:
+def _as_typo(finding: Finding, name: str, known: frozenset[str]) -> Finding:
     """Make the finding an error when ``name`` misspells exactly one known name.
 
     Names that differ only in their digits (`input/rois8` next to `input/rois7`) are
@@ -127,16 +130,25 @@ def _as_typo(finding: Finding, name: str, known: set[str]) -> Finding:
     return dataclasses.replace(finding, severity=Severity.ERROR)
 
 
-def _fix(include: IncludeRecord, name: str, span: Span, known: set[str]) -> Fix | None:
+def _fix(include: IncludeRecord, name: str, span: Span, known: frozenset[str]) -> Fix | None:
     """Return the rename of an argument to the declared name the hint suggests."""
     meant = closest(name, known)
     if meant is None:
         return None
-    for argument in include.action.arguments:
+    for argument in _arguments_at(include.action).get(span, ()):
         written = argument.name
-        if argument.span == span and isinstance(written, s.Text) and written.text == name:
+        if isinstance(written, s.Text) and written.text == name:
             return rename(written.where, name, meant, unique=sole_typo(name, known) == meant)
     return None
+
+
+@functools.lru_cache(maxsize=64)
+def _arguments_at(include: a.Include) -> dict[Span, list[a.IncludeArg]]:
+    """Return an include's arguments by where each is written (1,500 are read once)."""
+    found: dict[Span, list[a.IncludeArg]] = {}
+    for argument in include.arguments:
+        found.setdefault(argument.span, []).append(argument)
+    return found
 
 
 def applied_inside(graph: LaunchGraph, include: IncludeRecord, name: str,

@@ -60,13 +60,14 @@ class DanglingEventTarget(Rule):
             if not runs:
                 if id(handler.target) in handed or isinstance(handler.target, OpaqueAction):
                     continue  # code launchverify cannot see holds it, or is it, and runs it
+                if graph.stopped_early:
+                    continue  # the evaluation stopped before its end: it may run later
                 yield self.finding(handler.origin, related=related, target=label,
                                    why="is never executed (is it added to the launch?)")
                 continue
             reasoner = reasoner_for(graph)
             if reasoner.together(handler.origin.path) is None:
                 continue  # the handler itself is not registered under the switches
-            if all(reasoner.together(handler.origin.path, r.origin.path) is None
-                   for r in runs):
+            if all(reasoner.apart(handler.origin.path, r.origin.path) for r in runs):
                 yield self.finding(handler.origin, related=related, target=label,
                                    why="cannot run where the handler is registered")

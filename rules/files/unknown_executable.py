@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Rule, RuleContext, Severity, rename
-from launchverify.suggest import typos
+from launchverify.suggest import closest, typos
 from launchverify.workspace.package_executables import executables
 
 
@@ -61,8 +60,8 @@ class UnknownExecutable(Rule):
             provided = executables(package)
             if provided is None or not provided.complete or executable in provided.names:
                 continue
-            close = difflib.get_close_matches(executable, sorted(provided.names), n=1,
-                                              cutoff=0.6)
+            meant = closest(executable, provided.names, cutoff=0.6)
+            close = [meant] if meant is not None else []
             hint = f" (did you mean {close[0]!r}?)" if close else (
                 f"; it installs {', '.join(sorted(provided.names)[:6])}"
                 if provided.names else "")

@@ -79,7 +79,7 @@ class UnknownParameter(Rule):
         for contract in contracts:
             if contract.open is not None:
                 continue
-            known = contract.concrete_names()
+            known = frozenset(contract.concrete_names())  # remembered by the suggestions
             interface = contract.composed.interface
             modelled = interface is not None and interface.model is not None
             for name, given in contract.received.values.items():

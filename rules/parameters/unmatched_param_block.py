@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import dataclasses
-import difflib
 import fnmatch
 import functools
 from collections.abc import Iterable, Iterator
@@ -18,7 +17,7 @@ from launchverify.models.ros_names import node_key_matches
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, GatheringRule, Related, RuleContext, Severity
 from launchverify.span import Span
-from launchverify.suggest import sole_typo
+from launchverify.suggest import closest, sole_typo
 from launchverify.topology.shipped import shipped_node_names
 from launchverify.workspace.package_contents import name_literals, unnamed_node_names
 from launchverify.workspace.packages import PackageIndex
@@ -354,8 +353,7 @@ def _mentions(text: str | None, spellings: set[str]) -> bool:
 def _closest(key: str, names: dict[str, str]) -> str:
     """Return " (did you mean '/robot1/listener'?)" for the node a block was likely for."""
     prefix, _, last = key.rpartition("/")
-    found = last if last in names else next(
-        iter(difflib.get_close_matches(last, sorted(names), n=1, cutoff=0.75)), None)
+    found = last if last in names else closest(last, names)
     if found is None:
         return ""
     # a wildcard key keeps its wildcard: '/**/colision_monitor' -> '/**/collision_monitor'

@@ -19,6 +19,7 @@ from typing import Any
 
 import yaml
 
+from launchverify.evaluate.budget import BoundReached, ExpansionBudget
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.nodes import NodeBuilder
 from launchverify.evaluate.reducers import Ctx, DefaultsReducer, ScopeReducer, fill_unset
@@ -121,6 +122,7 @@ class Walker:
         self.incomplete = False  # something before this point was not understood
         # the container actions that ran, by id, with their full names (LoadComposableNodes)
         self.container_names: dict[int, tuple[a.Action, s.Sub | None]] = {}
+        self.budget = ExpansionBudget()  # what this root may expand (``budget.py``)
 
     # ------------------------------------------------------------------ recording
 
@@ -210,9 +212,32 @@ class Walker:
         pinned = tuple(sorted((k, v) for k, v in self.graph.pinned.items()))
         self.file_stack.append((self.graph.root, pinned))
         self.record_lookups(loaded.launch.lookups, ctx)
-        self.visit_all(loaded.launch.actions, ctx)
-        self.file_stack.pop()
+        try:
+            self.visit_all(loaded.launch.actions, ctx)
+        except BoundReached as reached:
+            self.cut_short(reached)
+        finally:
+            self.file_stack.pop()
         self.name_rerun_loops()
+
+    def cut_short(self, reached: BoundReached) -> None:
+        """Keep what the walk found before a bound stopped it, and say so on the root.
+
+        The graph is incomplete and stopped early: rules claim nothing absent from it.
+        """
+        where = f", stopped at {reached.where.short()}" if reached.where else ""
+        self.graph.cut_short = True
+        self.graph.problems.append(ProblemRecord(Problem(
+            ProblemKind.UNMODELED,
+            f"not checked past {reached.message} (the most launchverify evaluates of one "
+            f"launch file with all it includes{where}): the rest of this launch is not "
+            "evaluated", Span.of_file(self.graph.root))))
+        self.mark_incomplete()
+
+    def stopping(self, reached: BoundReached) -> None:
+        """Note where a bound was reached; every include being walked is incomplete."""
+        reached.where = self.calls[-1] if self.calls else None
+        self.mark_incomplete()
 
     def name_rerun_loops(self) -> None:
         """Give LV501 the reruns that close a loop of handlers (it explains the loop)."""
@@ -275,7 +300,12 @@ class Walker:
             self.visit(action, ctx)
 
     def visit(self, action: a.Action, ctx: Ctx) -> None:
-        """Visit one action: evaluate its condition, then execute it."""
+        """Visit one action: evaluate its condition, then execute it (within the budget)."""
+        try:
+            self.budget.action(len(self.graph.nodes))
+        except BoundReached as reached:
+            self.stopping(reached)
+            raise
         self.calls.append(action.span)
         try:
             self._visit(action, ctx)
@@ -617,6 +647,12 @@ class Walker:
         if missing:  # launch raises here: what the file would start is not certain to run
             inner = inner.guarded(_opaque(f"{target.name} misses required argument "
                                           f"{missing[0].name!r}", action.span))
+        try:
+            self.budget.include()
+        except BoundReached as reached:
+            record.complete = False
+            self.stopping(reached)
+            raise
         self.include_stack.append(record)
         self.file_stack.append(key)
         self.record_lookups(loaded.launch.lookups, inner)

@@ -31,6 +31,7 @@ from launchverify.graph import LaunchGraph
 from launchverify.ir.symbolic import PathCondition
 from launchverify.parallel.forked import can_fork
 from launchverify.rule import Finding, GatheringRule, PollingRule, Rule, RuleContext
+from launchverify.smt import budget_notes, share_solver_time
 from launchverify.workspace import reading
 
 if TYPE_CHECKING:
@@ -101,6 +102,7 @@ class RuleRun:
                 out[(r, g)] = [
                     finding for finding in self.isolate(rule, check, graph.root)
                     if not (finding.path and self.dead(graph, finding.path))]
+                out[(r, g)] += budget_notes(graph)  # once its solver time ran out
                 self.ctx.interfaces.log = None
                 if places is not None:
                     places.log = None
@@ -264,6 +266,7 @@ def rule_findings(run: RuleRun, jobs: int) -> PerGraph:
                                    mp_context=multiprocessing.get_context("fork"))
     except OSError:  # no semaphores here (a container without /dev/shm): one process
         return run.run(list(range(len(run.rules))), everything)
+    share_solver_time(run.graphs)  # a root's solver budget is one, whoever asks
     _SHARED.update(run=run, pieces=shared, counter=counter)
     out: PerGraph = {}
     try:

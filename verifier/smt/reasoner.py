@@ -5,7 +5,10 @@ which arguments), whether a condition can never or must always hold (and why), w
 condition can take a value launch rejects, and whether two names can be equal. Each
 question is first tried with the concrete evaluator over the arguments' values
 (``search``); z3 (``solver``) is imported and asked only when that settles nothing.
-Answers are cached per question.
+Answers are cached per question. All the questions about one root share a budget of
+solver time (``budget.py``): a question z3 gives up on, or one asked once the budget is
+spent, is answered "cannot tell", which each question turns into the answer that claims
+nothing (no witness, no contradiction, not always).
 """
 
 from __future__ import annotations
@@ -28,6 +31,7 @@ from launchverify.ir.symbolic import (
     Unknown,
 )
 from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
+from launchverify.smt.budget import BudgetSpent, CannotTell, SolverBudget
 from launchverify.smt.domains import ArgumentDomain, Mode, argument_domains
 from launchverify.smt.search import Search, SearchReducer, all_hold
 from launchverify.smt.types import Contradiction, Witness
@@ -42,10 +46,11 @@ Answer = TypeVar("Answer")  # what one kind of question is answered with
 class Reasoner:
     """Answers questions about one graph (one root launch file and its arguments)."""
 
-    def __init__(self, graph: LaunchGraph) -> None:
+    def __init__(self, graph: LaunchGraph, budget: SolverBudget | None = None) -> None:
         self.graph = graph
         self.domains: dict[str, ArgumentDomain] = argument_domains(graph)
-        self.search = Search(self.domains, graph.inputs())
+        self.budget = budget or SolverBudget()  # the root's solver time, for all questions
+        self.search = Search(self.domains, graph.inputs(), out_of_time=self.budget.spent)
         self._backend: Z3Backend | None = None
         self._inputs = tuple(sorted(graph.inputs().items()))
         self._domain_keys: dict[str, tuple[object, ...]] = {}
@@ -59,7 +64,7 @@ class Reasoner:
         if self._backend is None:
             from launchverify.smt.solver import Z3Backend
 
-            self._backend = Z3Backend(self.domains, self.graph.inputs())
+            self._backend = Z3Backend(self.domains, self.graph.inputs(), self.budget)
         return self._backend
 
     @property
@@ -74,7 +79,16 @@ class Reasoner:
 
         Asked as one path of the guards of all, each once: a handler and its target in
         one scope share their guards, and the question is then the one already answered.
+        ``None`` also when it cannot tell: a finding needs a witness.
         """
+        found = self._together(paths)
+        return None if found is CANNOT_TELL else cast("Witness | None", found)
+
+    def apart(self, *paths: PathCondition) -> bool:
+        """Return whether the paths surely never hold together (``False``: they may)."""
+        return self._together(paths) is None
+
+    def _together(self, paths: tuple[PathCondition, ...]) -> Witness | _CannotTell | None:
         merged = tuple(dict.fromkeys(g for p in paths for g in p))
 
         def answer() -> Witness | None:
@@ -118,7 +132,10 @@ class Reasoner:
 
     def same_name(self, first: Sub, first_path: PathCondition, second: Sub,
                   second_path: PathCondition) -> tuple[Witness, str] | None:
-        """Return (assignment, name) where two names are equal and both paths hold."""
+        """Return (assignment, name) where two names are equal and both paths hold.
+
+        ``None`` when they cannot be, or when it cannot tell.
+        """
         guards = (*first_path, *second_path)
 
         def same(reducer: SearchReducer) -> bool | None:
@@ -141,26 +158,32 @@ class Reasoner:
                 return None
             return self.z3.same_name(first, first_path, second, second_path)
 
-        return self._answer("same name", (first, first_path, second, second_path),
-                            (*guards, first, second), answer)
+        found = self._answer("same name", (first, first_path, second, second_path),
+                             (*guards, first, second), answer)
+        return None if found is CANNOT_TELL else cast("tuple[Witness, str] | None", found)
 
     def never(self, path: PathCondition, guard: Guard) -> Contradiction | None:
         """Return why ``guard`` cannot hold where ``path`` does (for any argument values).
 
         ``None`` when it can, or when ``path`` itself cannot hold (that is reported where
-        the path became impossible).
+        the path became impossible), or when it cannot tell.
         """
         key = (path, guard)
         if key in self._never:
             return self._never[key]
         opposite = _opposite(guard)
+        found: Contradiction | None = None
         if opposite in path:  # no solver needed
             found = Contradiction((path[path.index(opposite)], guard)) if _satisfiable_alone(
                 path) else None
-        else:
+        elif not self.budget.spent():
             facts = (*path, guard)
-            tried = self.search.run(Mode.ANY, facts, lambda r: all_hold(r, facts))
-            found = None if tried.found is not None else self.z3.never(path, guard)
+            try:
+                with self.budget.question():
+                    tried = self.search.run(Mode.ANY, facts, lambda r: all_hold(r, facts))
+                    found = None if tried.found is not None else self.z3.never(path, guard)
+            except CannotTell:
+                found = None
         self._never[key] = found
         return found
 
@@ -188,7 +211,7 @@ class Reasoner:
                 return held
             return self.z3.always(path, guard)
 
-        return self._answer("always", (path, guard), (*path, guard), answer)
+        return self._answer("always", (path, guard), (*path, guard), answer) is True
 
     def invalid_value(self, path: PathCondition, guard: Truthy) -> tuple[str, Witness] | None:
         """Return a value the condition can take that launch rejects, with the switches."""
@@ -213,12 +236,15 @@ class Reasoner:
                 return None
             return self.z3.invalid_value(path, guard)
 
-        return self._answer("invalid value", (path, guard), (*path, guard), answer)
+        found = self._answer("invalid value", (path, guard), (*path, guard), answer)
+        return None if found is CANNOT_TELL else cast("tuple[str, Witness] | None", found)
 
     def _answer(self, kind: str, question: tuple[object, ...], items: Iterable[object],
-                compute: Callable[[], Answer]) -> Answer:
+                compute: Callable[[], Answer]) -> Answer | _CannotTell:
         """Return a question's answer: this reasoner's, another's (same key), or computed.
 
+        ``CANNOT_TELL`` when z3 gave up (remembered for every reasoner, as an answer) or
+        the budget is spent (remembered here only: another root has time of its own).
         (``kind`` names what ``compute`` answers, so an answer found under a key is of
         the type ``compute`` returns.)
         """
@@ -228,8 +254,17 @@ class Reasoner:
         key = self._shared_key(kind, question, items)
         found = _ANSWERS.get(key, _UNKNOWN)
         if found is _UNKNOWN:
-            found = compute()
-            _remember(key, found)
+            try:
+                self.budget.require()
+                with self.budget.question():
+                    found = compute()
+            except BudgetSpent:
+                found = CANNOT_TELL
+            except CannotTell:
+                found = CANNOT_TELL
+                _remember(key, found)
+            else:
+                _remember(key, found)
         self._answers[local] = found
         return cast("Answer", found)
 
@@ -260,6 +295,14 @@ class Reasoner:
                         if name in self.domains and self.domains[name].defaults != {value}})
 
 
+class _CannotTell:
+    """The answer to a question z3 gave up on, or that the budget left unasked."""
+
+    def __repr__(self) -> str:
+        return "CANNOT_TELL"
+
+
+CANNOT_TELL = _CannotTell()
 _ANSWERS: dict[tuple[object, ...], object] = {}
 _UNKNOWN = object()  # no answer yet (an answer may be None)
 MAX_ANSWERS = 200_000  # answers remembered in one process (a long-lived server)

@@ -64,9 +64,12 @@ class Outcome:
 class Search:
     """Enumerates small argument domains for one graph."""
 
-    def __init__(self, domains: dict[str, ArgumentDomain], pinned: dict[str, str]) -> None:
+    def __init__(self, domains: dict[str, ArgumentDomain], pinned: dict[str, str], *,
+                 out_of_time: Callable[[], bool] | None = None) -> None:
         self.domains = domains
         self.pinned = pinned
+        # the root's solver budget is spent: a search stops, having proved nothing
+        self.out_of_time = out_of_time or (lambda: False)
         self._reducer = SearchReducer(dict(pinned))  # reused: its pinned values change
         self.names = NameReducer(self._reducer.pinned)  # names, under the same assignment
         self._memo: dict[int, _Inputs] = {}  # per item, by identity (``_keep``)
@@ -118,6 +121,8 @@ class Search:
             _nearest_first(choices), MAX_ASSIGNMENTS)
         reducer = self._reducer
         for assignment in assignments:
+            if self.out_of_time():
+                return Outcome(None, None, exhaustive=False)
             reducer.pinned = self.names.pinned = {**self.pinned, **assignment}
             verdict = predicate(reducer)
             if verdict is True:

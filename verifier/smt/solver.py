@@ -1,8 +1,10 @@
 """The z3 side of the reasoner: what the concrete search could not settle.
 
 Each method answers one question of ``reasoner.Reasoner`` with the encodings of
-``encode``; a solver that gives up (timeout) counts as "cannot tell". Importing this
-module imports z3, which is why the reasoner imports it only when a question needs it.
+``encode``; a solver that gives up (a timeout, an undecided theory) raises
+``CannotTell``, and one asked once the root's budget is spent raises ``BudgetSpent``:
+the reasoner answers "cannot tell". Importing this module imports z3, which is why the
+reasoner imports it only when a question needs it.
 """
 
 from __future__ import annotations
@@ -13,20 +15,23 @@ import z3
 
 from launchverify.ir.subst import Sub
 from launchverify.ir.symbolic import Guard, PathCondition, Truthy
+from launchverify.smt.budget import BudgetSpent, CannotTell, SolverBudget
 from launchverify.smt.domains import ArgumentDomain, Mode
 from launchverify.smt.encode import Encoder
 from launchverify.smt.search import inputs_of
 from launchverify.smt.types import Contradiction, Witness
 
-TIMEOUT_MS = 2000
+TIMEOUT_MS = 2000  # per question; the root's budget (``budget.py``) bounds them all
 
 
 class Z3Backend:
     """Asks z3 about one graph's values and guards."""
 
-    def __init__(self, domains: dict[str, ArgumentDomain], pinned: dict[str, str]) -> None:
+    def __init__(self, domains: dict[str, ArgumentDomain], pinned: dict[str, str],
+                 budget: SolverBudget | None = None) -> None:
         self.domains = domains
         self.pinned = pinned
+        self.budget = budget or SolverBudget()
         self._encoders: dict[Mode, Encoder] = {}
         self.queries = 0
 
@@ -74,8 +79,7 @@ class Z3Backend:
         constraints = encoder.domain_constraints(names)
         for index, (_, formula) in enumerate(constraints):
             solver.assert_and_track(formula, f"d{index}")
-        self.queries += 1
-        if solver.check() != z3.unsat:
+        if self._run(solver) != z3.unsat:
             return None
         if isinstance(guard, Truthy) and self._check(
                 encoder, [encoder.path(path), z3.Not(encoder.raises(guard))], names) != z3.sat:
@@ -115,21 +119,37 @@ class Z3Backend:
         solver.set("timeout", TIMEOUT_MS)
         return solver
 
+    def _run(self, solver: z3.Solver) -> z3.CheckSatResult:
+        """Ask z3 within the budget left: ``sat`` or ``unsat``, else ``CannotTell``.
+
+        A question the budget cut short raises ``BudgetSpent`` (another root, with time
+        of its own, may still answer it).
+        """
+        self.budget.require()
+        limit = min(TIMEOUT_MS, max(1, int(self.budget.remaining() * 1000)))
+        solver.set("timeout", limit)
+        self.queries += 1
+        result = solver.check()
+        if result == z3.unknown:
+            if limit < TIMEOUT_MS:  # cut by the root's budget, not by its own limit
+                self.budget.ran_out = True
+                raise BudgetSpent
+            raise CannotTell
+        return result
+
     def _check(self, encoder: Encoder, formulas: Iterable[z3.BoolRef],
                names: set[str]) -> z3.CheckSatResult:
         solver = self._solver()
         solver.add(*formulas)
         solver.add(*[f for _, f in encoder.domain_constraints(names)])
-        self.queries += 1
-        return solver.check()
+        return self._run(solver)
 
     def _model(self, encoder: Encoder, formulas: list[z3.BoolRef],
                names: set[str]) -> z3.ModelRef | None:
         solver = self._solver()
         solver.add(*formulas)
         solver.add(*[f for _, f in encoder.domain_constraints(names)])
-        self.queries += 1
-        if solver.check() != z3.sat:
+        if self._run(solver) != z3.sat:
             return None
         model: z3.ModelRef = solver.model()
         return model
