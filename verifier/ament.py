@@ -20,6 +20,7 @@ ament_lint_auto does for its linters.
 
 from __future__ import annotations
 
+import io
 import os
 from collections.abc import Sequence
 from pathlib import Path
@@ -50,6 +51,7 @@ def main_with_errors(argv: Sequence[str] | None = None) -> tuple[int, list[str]]
     from launchverify.config import ConfigError
     from launchverify.engine import UsageError, run_check
     from launchverify.findings.baseline import BaselineError
+    from launchverify.process.outputs import write_file
     from launchverify.registry import RegistryError
     from launchverify.render.junit import render_junit
 
@@ -66,9 +68,13 @@ def main_with_errors(argv: Sequence[str] | None = None) -> tuple[int, list[str]]
         report = run_check(options)
     except (UsageError, ConfigError, RegistryError, BaselineError) as error:
         return 2, [f"launchverify: error: {error}"]  # a test failure, never a traceback
-    if args.xunit_file is not None:
-        with args.xunit_file.open("w", encoding="utf-8") as handle:
-            render_junit(report, handle, checked=report.checked)
+    if args.xunit_file is not None:  # never through a link (as check's --xunit-file)
+        junit = io.StringIO()
+        render_junit(report, junit, checked=report.checked)
+        try:
+            write_file(args.xunit_file, junit.getvalue(), inside=options.paths)
+        except UsageError as error:
+            return 2, [f"launchverify: error: {error}"]
     errors = [
         f"{report.display_path(f.span.file)}:{f.span.line}:{f.span.column}: "
         f"{f.severity.value} {f.code} [{f.slug}] {f.message}"

@@ -14,6 +14,7 @@ from __future__ import annotations
 import argparse
 import dataclasses
 import gc
+import io
 import json
 import os
 import select
@@ -57,6 +58,7 @@ from launchverify.findings.fixes import Outcome, fix_all, hidden, unified_diff
 from launchverify.models.distros import DISTROS
 from launchverify.process.collector import collector_paused
 from launchverify.process.command import LONG_RUNNING
+from launchverify.process.outputs import check_writable, write_file
 from launchverify.registry import RegistryError
 from launchverify.render.inert import InertWriter, inert, inert_block
 from launchverify.rule import Rule, Severity
@@ -561,20 +563,33 @@ def _read_stdin(args: argparse.Namespace) -> bool:
     return True
 
 
-def writable(*paths: Path | None) -> None:
-    """Refuse, before any work, to write into a folder that does not exist."""
-    for path in paths:
-        if path is None:
-            continue
-        if path.is_dir():
-            raise UsageError(f"cannot write {str(path)!r}: it is a folder")
-        folder = path.parent
-        if not folder.is_dir():
-            raise UsageError(f"cannot write {str(path)!r}: no folder {str(folder)!r}")
+def _writable_outputs(args: argparse.Namespace, *paths: Path | None) -> tuple[Path, ...]:
+    """Refuse, before any work, an output ``write_file`` would refuse; return its anchors.
+
+    Outputs go through no link below the working folder or a checked tree: the
+    check's workspace, and the workspace of each path given (see ``process.outputs``).
+    """
+    wanted = [path for path in paths if path is not None]
+    if not wanted:
+        return ()
+    inside = _checked_trees(args)
+    for path in wanted:
+        check_writable(path, inside=inside)
+    return inside
+
+
+def _checked_trees(args: argparse.Namespace) -> tuple[Path, ...]:
+    """Return the workspaces of what a check reads (each found once per folder given)."""
+    paths = [Path(token) for token in args.targets if ":=" not in token and token != "-"]
+    stdin = getattr(args, "stdin_filename", None)
+    starts = dict.fromkeys(path if path.is_dir() else path.parent
+                           for path in [*(paths or [Path()]), *([stdin] if stdin else [])])
+    trees = [find_workspace(start) for start in starts]
+    return tuple(dict.fromkeys([*trees, *([args.workspace] if args.workspace else [])]))
 
 
 def _check(args: argparse.Namespace) -> int:
-    writable(args.output, args.write_baseline, args.xunit_file)
+    inside = _writable_outputs(args, args.output, args.write_baseline, args.xunit_file)
     _fix_usage(args)
     buffered = _read_stdin(args)
     options, config = check_options(args, progress=not args.quiet and sys.stderr.isatty())
@@ -583,21 +598,23 @@ def _check(args: argparse.Namespace) -> int:
     if cache is not None and cache.refused is not None and not args.quiet:
         print(f"launchverify: note: {inert(cache.refused)}", file=sys.stderr)
     if args.diff:
-        return _diff(args, options, report)
+        return _diff(args, options, report, inside)
     report_out = sys.stdout
     if args.fix:
         report = _fix(args, options, report, args.stdin_filename if buffered else None)
         report_out = sys.stderr if buffered else sys.stdout  # stdout has the fixed buffer
     if args.write_baseline is not None:
-        write_baseline(args.write_baseline, report.findings)
+        write_baseline(args.write_baseline, report.findings, inside=inside)
     if args.xunit_file is not None:
         from launchverify.render.junit import render_junit
 
-        with args.xunit_file.open("w", encoding="utf-8") as handle:
-            render_junit(report, handle, checked=report.checked)
+        junit = io.StringIO()
+        render_junit(report, junit, checked=report.checked)
+        write_file(args.xunit_file, junit.getvalue(), inside=inside)
     if args.output is not None:
-        with args.output.open("w", encoding="utf-8") as handle:
-            _render(args, report, handle, color=False)
+        text = io.StringIO()
+        _render(args, report, text, color=False)
+        write_file(args.output, text.getvalue(), inside=inside)
     else:
         color = {"auto": None, "always": True, "never": False}[args.color]
         if color is None and os.environ.get("NO_COLOR"):  # no-color.org: plain text
@@ -637,7 +654,8 @@ def _fixed(report: Report, options: CheckOptions, unsafe: bool,
     return outcome
 
 
-def _diff(args: argparse.Namespace, options: CheckOptions, report: Report) -> int:
+def _diff(args: argparse.Namespace, options: CheckOptions, report: Report,
+          inside: tuple[Path, ...]) -> int:
     """Print what ``--fix`` would change as a unified diff; write nothing.
 
     Exit 1 when there is something to fix (as ruff's ``--diff``), else 0.
@@ -645,7 +663,7 @@ def _diff(args: argparse.Namespace, options: CheckOptions, report: Report) -> in
     outcome = _fixed(report, options, args.unsafe_fixes, args.stdin_filename)
     text = unified_diff(outcome, report.display_path)
     if args.output is not None:
-        args.output.write_text(text, encoding="utf-8")
+        write_file(args.output, text, inside=inside)
     else:
         # exact for a pipe (patch), inert for a reviewer's eyes
         sys.stdout.write(inert_block(text) if sys.stdout.isatty() else text)
@@ -671,18 +689,30 @@ def _fix(args: argparse.Namespace, options: CheckOptions, report: Report,
         sys.stdout.buffer.write(data)
         sys.stdout.flush()
     else:
-        for path, data in sorted(outcome.fixed.items()):
-            try:
-                path.write_bytes(data)
-            except OSError as error:
-                raise UsageError(f"cannot write {display_path(path)}: "
-                                 f"{error.strerror or error}") from None
+        _write_fixed(outcome.fixed)
     if not args.quiet:
         remaining = len(outcome.report.findings)
         print(f"Fixed {outcome.count} finding{'s' if outcome.count != 1 else ''} "
               f"({remaining} remaining){_hidden_note(outcome.report, args.unsafe_fixes)}.",
               file=sys.stderr)
     return outcome.report
+
+
+# The files fixes edit are named by their real paths (``canonical``: how a check knows a
+# file), with no link on the way when the check read them: one there now is refused.
+_NO_LINK_ANYWHERE = (Path("/"),)
+
+
+def _write_fixed(fixed: dict[Path, bytes]) -> None:
+    """Write the fixed files (each atomically, keeping its mode), never through a link.
+
+    Every file is checked before the first is written, so a refusal leaves all as they
+    were (a link swapped in after that is still never written through).
+    """
+    for path in sorted(fixed):
+        check_writable(path, inside=_NO_LINK_ANYWHERE)
+    for path, data in sorted(fixed.items()):
+        write_file(path, data, inside=_NO_LINK_ANYWHERE)
 
 
 def _hidden_note(report: Report, unsafe: bool) -> str:
@@ -757,13 +787,14 @@ def _report(args: argparse.Namespace) -> int:
     from launchverify.render.html_report import render_html
     from launchverify.topology.compose import WorkspaceInterfaces
 
-    writable(args.output)
+    inside = _writable_outputs(args, args.output)
     options, config = check_options(args, progress=sys.stderr.isatty())
     report = run_check(options)
     _say_protections(report, args.verbose)
     _, index = build_index(options.paths, options.workspace, options.config.package_paths)
-    with args.output.open("w", encoding="utf-8") as handle:
-        render_html(report, handle, interfaces=WorkspaceInterfaces(index))
+    page = io.StringIO()
+    render_html(report, page, interfaces=WorkspaceInterfaces(index))
+    write_file(args.output, page.getvalue(), inside=inside)
     print(f"wrote {args.output} ({len(report.findings)} findings in {report.files} files)",
           file=sys.stderr)
     return _exit_status(report, args, config)

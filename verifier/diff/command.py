@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import dataclasses
+import io
 import sys
 import time
 from collections.abc import Iterator
@@ -25,6 +26,7 @@ from launchverify.engine import (
     parse_environment,
 )
 from launchverify.models.distros import DISTROS
+from launchverify.process.outputs import check_writable, write_file
 
 EXIT_OK, EXIT_CHANGED = 0, 1
 
@@ -83,13 +85,13 @@ def add_parser(commands: Any) -> None:
 
 def run(args: argparse.Namespace) -> int:
     """Run a diff; return the exit status."""
-    from launchverify.cli import option_codes, refuse_unknown_selectors, writable
+    from launchverify.cli import option_codes, refuse_unknown_selectors
     from launchverify.diff.compare import compare
     from launchverify.diff.snapshot import Request, take
 
     started = time.perf_counter()
     refuse_unknown_selectors(args)  # (both before any work, as for check)
-    writable(args.output, args.json_file)
+    inside = _writable_outputs(args)
     tokens, arguments = parse_arguments(args.targets)
     literal = len(after_end_of_options(args.targets)[1])  # after --: paths, not revisions
     request = Request(paths=("",), arguments=arguments,
@@ -121,7 +123,7 @@ def run(args: argparse.Namespace) -> int:
             "arguments": arguments, **diff, "assignments": assignments,
             "seconds": {"base": round(before.seconds, 3), "head": round(after.seconds, 3),
                         "total": round(time.perf_counter() - started, 3)}}
-    _write(diff, args)
+    _write(diff, args, inside)
     summary = diff["summary"]
     changed = summary["launches_changed"] or summary["findings_introduced"] \
         or summary["findings_fixed"]
@@ -159,13 +161,41 @@ def _new_changes(under: list[dict[str, Any]], default: list[dict[str, Any]]
     return out
 
 
-def _write(diff: dict[str, Any], args: argparse.Namespace) -> None:
+def _writable_outputs(args: argparse.Namespace) -> tuple[Path, ...]:
+    """Refuse, before any work, an output that would go through a link; return its anchors.
+
+    Below the working folder and the trees compared (the repository, or the two folders
+    of ``--against``) no link is followed (see ``process.outputs``).
+    """
+    wanted = [path for path in (args.output, args.json_file) if path is not None]
+    if not wanted:
+        return ()
+    inside = _compared_trees(args)
+    for path in wanted:
+        check_writable(path, inside=inside)
+    return inside
+
+
+def _compared_trees(args: argparse.Namespace) -> tuple[Path, ...]:
+    """Return the folders a diff reads: ``--against``'s two, else the repository's top."""
+    if args.against is not None:
+        here = next((Path(t) for t in args.targets if ":=" not in t), Path())
+        return tuple(path if path.is_dir() else path.parent for path in (args.against, here))
+    from launchverify.diff.sides import repository_of
+
+    try:
+        return (repository_of(Path.cwd()),)
+    except UsageError:  # not in a repository: said as the diff starts
+        return ()
+
+
+def _write(diff: dict[str, Any], args: argparse.Namespace, inside: tuple[Path, ...]) -> None:
     from launchverify.diff import render
 
     if args.json_file is not None:
-        with _output(args.json_file) as out:
+        with _output(args.json_file, inside) as out:
             render.render_json(diff, out)
-    with _output(args.output) as out:
+    with _output(args.output, inside) as out:
         if args.format == "json":
             render.render_json(diff, out)
         elif args.format == "markdown":
@@ -179,12 +209,14 @@ def _write(diff: dict[str, Any], args: argparse.Namespace) -> None:
 
 
 @contextmanager
-def _output(path: Path | None) -> Iterator[TextIO]:
+def _output(path: Path | None, inside: tuple[Path, ...]) -> Iterator[TextIO]:
+    """Yield where to render: standard output, or a buffer then written to ``path``."""
     if path is None:
         yield sys.stdout
         return
-    with path.open("w", encoding="utf-8") as out:
-        yield out
+    out = io.StringIO()
+    yield out
+    write_file(path, out.getvalue(), inside=inside)
 
 
 Pairs = tuple[tuple[Any, tuple[str, ...]], tuple[Any, tuple[str, ...]]]

@@ -9,11 +9,14 @@ baseline file's folder, so the file can be committed.
 from __future__ import annotations
 
 import json
+import os
 from collections import Counter
+from collections.abc import Iterable
 from pathlib import Path
 
 from launchverify import __version__
 from launchverify.findings.fingerprint import fingerprints
+from launchverify.process.outputs import write_file
 from launchverify.rule import Finding
 from launchverify.workspace.paths import relative_file, resolved
 
@@ -22,8 +25,9 @@ class BaselineError(ValueError):
     """A baseline file that cannot be read (exit status 2)."""
 
 
-def write_baseline(path: Path, findings: list[Finding]) -> None:
-    """Record every finding's fingerprint in ``path``."""
+def write_baseline(path: Path, findings: list[Finding], *,
+                   inside: Iterable[str | os.PathLike[str]] = ()) -> None:
+    """Record every finding's fingerprint in ``path`` (``inside``: see ``write_file``)."""
     base = resolved(path).parent
     entries = [
         {"fingerprint": print_, "code": f.code, "file": relative_file(f.span.file, base),
@@ -31,7 +35,7 @@ def write_baseline(path: Path, findings: list[Finding]) -> None:
         for f, print_ in zip(findings, fingerprints(findings, base), strict=True)
     ]
     document = {"tool": "launchverify", "version": __version__, "findings": entries}
-    path.write_text(json.dumps(document, indent=1) + "\n", encoding="utf-8")
+    write_file(path, json.dumps(document, indent=1) + "\n", inside=inside)
 
 
 def apply_baseline(path: Path, findings: list[Finding]) -> tuple[list[Finding], int]:
