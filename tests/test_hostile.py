@@ -2162,3 +2162,282 @@ def test_twelve_pigeonhole_conditions(tmp_path: Path) -> None:
             and "not fully judged" in str(f["message"])], mine
     assert not [f for f in mine if f["severity"] == "error"], mine  # none can hold
     assert seconds < BUDGET_WALL, seconds
+
+
+# ---- issue 42: outputs ----
+# Outputs go only where the user said (``process.outputs``): a link the pull request
+# commits in the checkout (``launchverify.sarif -> ~/.bashrc``, a folder ``reports ->
+# /etc``) never takes a report, JUnit file, baseline, diff or fix outside it. The baseline
+# is read as the pull request's file it may be: bounded, never a device, never deep.
+
+_OUT_LAUNCH = """<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="twin"/>
+  <node pkg="demo_nodes_cpp" exec="listener" name="twin"/>
+</launch>
+"""
+_OUT_FIXABLE = ('<launch>\n  <arg name="unused" default="1"/>  '
+                "<!-- launchverify: ignore[LV101, unused-argument] -->\n</launch>\n")
+_OUT_VICTIM = "export PATH=/usr/bin  # the user's own file\n"
+_OUT_LINK_NOTE = "(launchverify writes only where the path says)"
+# Each output option, as a command line whose output path is NAME (run from the checkout).
+_OUT_COMMANDS = {
+    "check -o": ["check", "robot.launch.xml", "--no-cache", "--format", "sarif", "-o"],
+    "check --xunit-file": ["check", "robot.launch.xml", "--no-cache", "--xunit-file"],
+    "check --write-baseline": ["check", "robot.launch.xml", "--no-cache",
+                               "--write-baseline"],
+    "check --diff -o": ["check", "fixable.launch.xml", "--no-cache", "--diff", "-o"],
+    "report -o": ["report", "robot.launch.xml", "-o"],
+    "diff -o": ["diff", "--against", "../base", "-j", "1", "--format", "markdown", "-o"],
+    "diff --json": ["diff", "--against", "../base", "-j", "1", "--json"],
+}
+
+
+@dataclass
+class _OutTree:
+    """A checkout (the working folder, a git root) and the user's home beside it."""
+
+    checkout: Path
+    home: Path
+
+    def untouched(self) -> bool:
+        return (sorted(p.name for p in self.home.iterdir()) == [".bashrc"]
+                and (self.home / ".bashrc").read_text() == _OUT_VICTIM)
+
+
+@pytest.fixture
+def out_tree(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> _OutTree:
+    checkout, base, home = tmp_path / "checkout", tmp_path / "base", tmp_path / "home"
+    for folder in (checkout / ".git", base, home):
+        folder.mkdir(parents=True)
+    for side in (checkout, base):
+        (side / "robot.launch.xml").write_text(_OUT_LAUNCH)
+    (checkout / "fixable.launch.xml").write_text(_OUT_FIXABLE)
+    (home / ".bashrc").write_text(_OUT_VICTIM)
+    monkeypatch.chdir(checkout)
+    monkeypatch.delenv("AMENT_PREFIX_PATH", raising=False)
+    monkeypatch.delenv("NO_COLOR", raising=False)
+    return _OutTree(checkout, home)
+
+
+def _out_run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str]:
+    from launchverify.cli import main
+
+    status = main(list(argv))
+    return status, capsys.readouterr().err
+
+
+def _out_leftovers(folder: Path) -> list[str]:
+    return [p.name for p in folder.rglob(".launchverify-*")]
+
+
+@pytest.mark.parametrize("command", sorted(_OUT_COMMANDS))
+def test_an_output_that_is_a_link_out_of_the_tree_is_refused(
+        out_tree: _OutTree, capsys: pytest.CaptureFixture[str], command: str) -> None:
+    (out_tree.checkout / "launchverify.out").symlink_to(out_tree.home / ".bashrc")
+    status, err = _out_run(capsys, *_OUT_COMMANDS[command], "launchverify.out")
+    assert status == 2, err
+    assert f"cannot write 'launchverify.out': it is a link {_OUT_LINK_NOTE}" in err
+    assert out_tree.untouched()
+
+
+@pytest.mark.parametrize("command", sorted(_OUT_COMMANDS))
+def test_an_output_below_a_linked_folder_is_refused(
+        out_tree: _OutTree, capsys: pytest.CaptureFixture[str], command: str) -> None:
+    (out_tree.checkout / "reports").symlink_to(out_tree.home)
+    status, err = _out_run(capsys, *_OUT_COMMANDS[command], "reports/.bashrc")
+    assert status == 2, err
+    assert f"cannot write 'reports/.bashrc': 'reports' is a link {_OUT_LINK_NOTE}" in err
+    assert out_tree.untouched()
+    absolute = str(out_tree.checkout / "reports" / "new.sarif")  # the same, spelt in full
+    status, err = _out_run(capsys, *_OUT_COMMANDS[command], absolute)
+    assert status == 2 and "reports' is a link" in err and out_tree.untouched()
+
+
+@pytest.mark.parametrize("command", ["check -o", "diff --json"])
+def test_a_dangling_link_creates_nothing(out_tree: _OutTree,
+                                         capsys: pytest.CaptureFixture[str],
+                                         command: str) -> None:
+    (out_tree.checkout / "launchverify.out").symlink_to(out_tree.home / ".profile")
+    (out_tree.checkout / "gone").symlink_to(out_tree.home / "made")
+    for name in ("launchverify.out", "gone/out.json"):
+        status, err = _out_run(capsys, *_OUT_COMMANDS[command], name)
+        assert status == 2 and "link" in err, err
+    assert out_tree.untouched()
+
+
+@pytest.mark.parametrize("command", ["check -o", "diff --json"])
+def test_a_fifo_as_the_output_is_refused_at_once(out_tree: _OutTree, command: str) -> None:
+    """``open`` would wait for a reader forever; the check would never end."""
+    os.mkfifo(out_tree.checkout / "launchverify.out")
+    done = subprocess.run([sys.executable, "-m", "launchverify", *_OUT_COMMANDS[command],
+                           "launchverify.out"], capture_output=True, text=True,
+                          cwd=out_tree.checkout, timeout=120, check=False)
+    assert done.returncode == 2
+    assert "cannot write 'launchverify.out': it is a FIFO" in done.stderr
+
+
+@pytest.mark.parametrize("command", sorted(_OUT_COMMANDS))
+def test_an_output_in_a_plain_folder_is_written(out_tree: _OutTree,
+                                                capsys: pytest.CaptureFixture[str],
+                                                command: str, tmp_path: Path) -> None:
+    """Absolute, outside the tree, reached through the user's own link: still written."""
+    (tmp_path / "results").mkdir()
+    (tmp_path / "ci").symlink_to(tmp_path / "results")  # a link of the user's machine
+    target = tmp_path / "ci" / "launchverify.out"
+    status, err = _out_run(capsys, *_OUT_COMMANDS[command], str(target))
+    assert status in (0, 1), err
+    assert (tmp_path / "results" / "launchverify.out").stat().st_size > 0
+    inside = out_tree.checkout / "reports" / "launchverify.out"
+    inside.parent.mkdir()
+    inside.write_text("old")
+    status, err = _out_run(capsys, *_OUT_COMMANDS[command], str(inside))
+    assert status in (0, 1), err
+    assert inside.read_text() not in ("", "old")
+    assert _out_leftovers(tmp_path) == []
+
+
+@pytest.mark.parametrize("command", sorted(_OUT_COMMANDS))
+def test_an_output_whose_folder_is_missing_is_the_usage_error_it_was(
+        out_tree: _OutTree, capsys: pytest.CaptureFixture[str], command: str) -> None:
+    status, err = _out_run(capsys, *_OUT_COMMANDS[command], "missing/out")
+    assert status == 2 and "cannot write 'missing/out': no folder 'missing'" in err, err
+    assert "internal error" not in err
+
+
+def test_an_interrupted_output_leaves_the_old_file_and_no_temporary(
+        out_tree: _OutTree, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    from launchverify.process import outputs
+
+    report = out_tree.checkout / "launchverify.sarif"
+    report.write_text("the last run's")
+
+    def disk_full(_: int) -> None:
+        raise OSError(28, "No space left on device")
+
+    monkeypatch.setattr(outputs.os, "fsync", disk_full)
+    status, err = _out_run(capsys, *_OUT_COMMANDS["check -o"], "launchverify.sarif")
+    monkeypatch.undo()
+    assert status == 2 and "No space left on device" in err, err
+    assert report.read_text() == "the last run's"
+    assert _out_leftovers(out_tree.checkout) == []
+
+
+def test_fix_keeps_the_mode_and_leaves_a_linked_file_alone(
+        out_tree: _OutTree, capsys: pytest.CaptureFixture[str]) -> None:
+    fixable = out_tree.checkout / "fixable.launch.xml"
+    fixable.chmod(0o640)
+    (out_tree.home / "vendor.launch.xml").write_text(_OUT_FIXABLE)
+    (out_tree.checkout / "vendor.launch.xml").symlink_to(out_tree.home / "vendor.launch.xml")
+    status, err = _out_run(capsys, "check", ".", "--no-cache", "--fix", "--exclude",
+                           "robot.launch.xml")
+    assert status == 0, err
+    assert "ignore[unused-argument]" in fixable.read_text()
+    assert fixable.stat().st_mode & 0o777 == 0o640
+    assert (out_tree.home / "vendor.launch.xml").read_text() == _OUT_FIXABLE
+    assert (out_tree.checkout / "vendor.launch.xml").is_symlink()
+
+
+def test_fix_never_writes_through_a_link_swapped_in_after_the_check(
+        out_tree: _OutTree, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    from launchverify import cli
+
+    fixable = out_tree.checkout / "fixable.launch.xml"
+    real_fix_all = cli.fix_all
+
+    def then_swapped(*args: object, **kwargs: object) -> object:
+        outcome = real_fix_all(*args, **kwargs)  # type: ignore[arg-type]
+        fixable.unlink()
+        fixable.symlink_to(out_tree.home / ".bashrc")
+        return outcome
+
+    monkeypatch.setattr(cli, "fix_all", then_swapped)
+    status, err = _out_run(capsys, "check", "fixable.launch.xml", "--no-cache", "--fix")
+    assert status == 2 and f"it is a link {_OUT_LINK_NOTE}" in err, err
+    assert out_tree.untouched()
+
+
+@pytest.mark.parametrize("kind", ["dev-zero", "fifo"])
+def test_a_baseline_that_is_a_device_or_fifo_is_a_usage_error_at_once(
+        out_tree: _OutTree, kind: str) -> None:
+    """A 2 GB address space: reading /dev/zero to the end would fail, not pass, the test."""
+    import resource
+
+    baseline = out_tree.checkout / "launchverify-baseline.json"
+    if kind == "fifo":
+        os.mkfifo(baseline)
+    else:
+        baseline.symlink_to("/dev/zero")
+
+    def bounded() -> None:
+        resource.setrlimit(resource.RLIMIT_AS, (2 << 30, 2 << 30))
+
+    done = subprocess.run([sys.executable, "-m", "launchverify", "check", "robot.launch.xml",
+                           "--no-cache", "--baseline", baseline.name], capture_output=True,
+                          text=True, cwd=out_tree.checkout, timeout=120, check=False,
+                          preexec_fn=bounded)
+    assert done.returncode == 2
+    assert "launchverify: error: cannot read baseline 'launchverify-baseline.json'" in \
+        done.stderr, done.stderr
+
+
+@pytest.mark.parametrize("depth", [100_000, 100])
+def test_a_deeply_nested_baseline_is_not_a_baseline(
+        out_tree: _OutTree, capsys: pytest.CaptureFixture[str], depth: int) -> None:
+    """100,000 deep would overflow the decoder; 100 decodes, but no baseline nests so."""
+    nested = "[" * depth + "]" * depth
+    (out_tree.checkout / "baseline.json").write_text(
+        '{"findings": [{"fingerprint": ' + nested + "}]}")
+    status, err = _out_run(capsys, "check", "robot.launch.xml", "--no-cache", "--baseline",
+                           "baseline.json")
+    assert status == 2, err
+    assert "'baseline.json' is not a launchverify baseline" in err
+    assert "internal error" not in err and "Recursion" not in err
+
+
+def test_a_big_baseline_outside_the_tree_still_works(
+        out_tree: _OutTree, capsys: pytest.CaptureFixture[str], tmp_path: Path) -> None:
+    """Larger than a launch file may be (10 MB), and outside the folders checks read."""
+    baseline = tmp_path / "kept" / "baseline.json"
+    baseline.parent.mkdir()
+    assert _out_run(capsys, "check", "robot.launch.xml", "--no-cache", "--write-baseline",
+                    str(baseline))[0] == 1
+    document = json.loads(baseline.read_text())
+    padding = [{"fingerprint": f"{n:064x}", "code": "LV101", "file": "old.launch.xml",
+                "message": "a finding fixed long ago " * 4} for n in range(60_000)]
+    document["findings"] += padding
+    baseline.write_text(json.dumps(document, indent=1))
+    assert baseline.stat().st_size > 12_000_000
+    status, err = _out_run(capsys, "check", "robot.launch.xml", "--no-cache", "--baseline",
+                           str(baseline))
+    assert status == 0, err
+
+
+@pytest.mark.parametrize("command", ["check -o", "diff --json"])
+def test_the_checked_tree_is_guarded_wherever_the_command_runs(
+        out_tree: _OutTree, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch, tmp_path: Path, command: str) -> None:
+    """From a folder outside the checkout, the checkout (or diff's folders) still counts."""
+    (out_tree.checkout / "reports").symlink_to(out_tree.home)
+    (tmp_path / "elsewhere").mkdir()
+    monkeypatch.chdir(tmp_path / "elsewhere")
+    target = str(out_tree.checkout / "reports" / ".bashrc")
+    if command == "check -o":
+        argv = ["check", str(out_tree.checkout), "--no-cache", "-o", target]
+    else:
+        argv = ["diff", "--against", str(tmp_path / "base"), str(out_tree.checkout),
+                "--json", target]
+    status, err = _out_run(capsys, *argv)
+    assert status == 2 and f"/reports' is a link {_OUT_LINK_NOTE}" in err, err
+    assert out_tree.untouched()
+
+
+def test_the_ament_xunit_file_is_never_written_through_a_link(out_tree: _OutTree) -> None:
+    from launchverify.ament import main_with_errors
+
+    (out_tree.checkout / "launchverify.xunit.xml").symlink_to(out_tree.home / ".bashrc")
+    status, lines = main_with_errors([str(out_tree.checkout), "--xunit-file",
+                                      "launchverify.xunit.xml"])
+    assert status == 2 and "it is a link" in lines[0], lines
+    assert out_tree.untouched()
