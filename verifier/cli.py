@@ -58,7 +58,6 @@ from launchverify.findings.fixes import Outcome, fix_all, hidden, unified_diff
 from launchverify.models.distros import DISTROS
 from launchverify.process.collector import collector_paused
 from launchverify.process.command import LONG_RUNNING
-from launchverify.process.outputs import check_writable, write_file
 from launchverify.registry import RegistryError
 from launchverify.render.inert import InertWriter, inert, inert_block
 from launchverify.rule import Rule, Severity
@@ -572,6 +571,8 @@ def _writable_outputs(args: argparse.Namespace, *paths: Path | None) -> tuple[Pa
     wanted = [path for path in paths if path is not None]
     if not wanted:
         return ()
+    from launchverify.process.outputs import check_writable  # (only when writing: start-up)
+
     inside = _checked_trees(args)
     for path in wanted:
         check_writable(path, inside=inside)
@@ -606,12 +607,15 @@ def _check(args: argparse.Namespace) -> int:
     if args.write_baseline is not None:
         write_baseline(args.write_baseline, report.findings, inside=inside)
     if args.xunit_file is not None:
+        from launchverify.process.outputs import write_file
         from launchverify.render.junit import render_junit
 
         junit = io.StringIO()
         render_junit(report, junit, checked=report.checked)
         write_file(args.xunit_file, junit.getvalue(), inside=inside)
     if args.output is not None:
+        from launchverify.process.outputs import write_file
+
         text = io.StringIO()
         _render(args, report, text, color=False)
         write_file(args.output, text.getvalue(), inside=inside)
@@ -663,6 +667,8 @@ def _diff(args: argparse.Namespace, options: CheckOptions, report: Report,
     outcome = _fixed(report, options, args.unsafe_fixes, args.stdin_filename)
     text = unified_diff(outcome, report.display_path)
     if args.output is not None:
+        from launchverify.process.outputs import write_file
+
         write_file(args.output, text, inside=inside)
     else:
         # exact for a pipe (patch), inert for a reviewer's eyes
@@ -709,6 +715,8 @@ def _write_fixed(fixed: dict[Path, bytes]) -> None:
     Every file is checked before the first is written, so a refusal leaves all as they
     were (a link swapped in after that is still never written through).
     """
+    from launchverify.process.outputs import check_writable, write_file
+
     for path in sorted(fixed):
         check_writable(path, inside=_NO_LINK_ANYWHERE)
     for path, data in sorted(fixed.items()):
@@ -784,6 +792,7 @@ def _render(args: argparse.Namespace, report: Report, out: TextIO,
 
 
 def _report(args: argparse.Namespace) -> int:
+    from launchverify.process.outputs import write_file
     from launchverify.render.html_report import render_html
     from launchverify.topology.compose import WorkspaceInterfaces
 

@@ -26,7 +26,6 @@ from launchverify.engine import (
     parse_environment,
 )
 from launchverify.models.distros import DISTROS
-from launchverify.process.outputs import check_writable, write_file
 
 EXIT_OK, EXIT_CHANGED = 0, 1
 
@@ -170,6 +169,8 @@ def _writable_outputs(args: argparse.Namespace) -> tuple[Path, ...]:
     wanted = [path for path in (args.output, args.json_file) if path is not None]
     if not wanted:
         return ()
+    from launchverify.process.outputs import check_writable
+
     inside = _compared_trees(args)
     for path in wanted:
         check_writable(path, inside=inside)
@@ -214,6 +215,8 @@ def _output(path: Path | None, inside: tuple[Path, ...]) -> Iterator[TextIO]:
     if path is None:
         yield sys.stdout
         return
+    from launchverify.process.outputs import write_file
+
     out = io.StringIO()
     yield out
     write_file(path, out.getvalue(), inside=inside)

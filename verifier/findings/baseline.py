@@ -24,7 +24,6 @@ from typing import Any
 
 from launchverify import __version__
 from launchverify.findings.fingerprint import fingerprints
-from launchverify.process.outputs import write_file
 from launchverify.rule import Finding
 from launchverify.workspace import reading
 from launchverify.workspace.paths import relative_file, resolved
@@ -42,6 +41,8 @@ class BaselineError(ValueError):
 def write_baseline(path: Path, findings: list[Finding], *,
                    inside: Iterable[str | os.PathLike[str]] = ()) -> None:
     """Record every finding's fingerprint in ``path`` (``inside``: see ``write_file``)."""
+    from launchverify.process.outputs import write_file  # (only when writing: start-up)
+
     base = resolved(path).parent
     entries = [
         {"fingerprint": print_, "code": f.code, "file": relative_file(f.span.file, base),
