@@ -581,7 +581,7 @@ def _writable_outputs(args: argparse.Namespace, *paths: Path | None) -> tuple[Pa
 
 def _checked_trees(args: argparse.Namespace) -> tuple[Path, ...]:
     """Return the workspaces of what a check reads (each found once per folder given)."""
-    paths = [Path(token) for token in args.targets if ":=" not in token and token != "-"]
+    paths = [Path(token) for token in parse_arguments(args.targets)[0] if token != "-"]
     stdin = getattr(args, "stdin_filename", None)
     starts = dict.fromkeys(path if path.is_dir() else path.parent
                            for path in [*(paths or [Path()]), *([stdin] if stdin else [])])

@@ -180,7 +180,7 @@ def _writable_outputs(args: argparse.Namespace) -> tuple[Path, ...]:
 def _compared_trees(args: argparse.Namespace) -> tuple[Path, ...]:
     """Return the folders a diff reads: ``--against``'s two, else the repository's top."""
     if args.against is not None:
-        here = next((Path(t) for t in args.targets if ":=" not in t), Path())
+        here = next(map(Path, parse_arguments(args.targets)[0]), Path())
         return tuple(path if path.is_dir() else path.parent for path in (args.against, here))
     from launchverify.diff.sides import repository_of
 
