@@ -1055,6 +1055,25 @@ def test_links_in_the_cache_folder_lead_nowhere(tmp_path: Path) -> None:
     assert old.read_text() == "keep me"
 
 
+def test_a_cache_folder_reached_through_a_link_in_the_tree_is_not_used(tmp_path: Path
+                                                                      ) -> None:
+    """``--cache-dir .cache/launchverify`` where the pull request made ``.cache`` a link
+    out of the tree: nothing is written, read or pruned there."""
+    workspace, canary, state = _cache_tree(tmp_path)
+    (canary / "launchverify").mkdir()
+    old = canary / "launchverify" / "old.json"
+    old.write_text("keep me")
+    os.utime(old, (0, 0))
+    (workspace / ".cache").symlink_to(canary)
+    for cache_dir in (".cache/launchverify", str(workspace / ".cache" / "launchverify")):
+        done = _cached_check(workspace, workspace, "--cache-dir", cache_dir,
+                             environment={"XDG_STATE_HOME": str(state)})
+        assert done.returncode == 1, done.stderr[-2000:]
+        assert "is a link" in done.stderr and "cache is not used" in done.stderr
+        assert sorted(p.name for p in (canary / "launchverify").iterdir()) == ["old.json"]
+        assert old.read_text() == "keep me"
+
+
 def test_a_result_from_the_cache_reads_no_more_than_its_check(tmp_path: Path) -> None:
     """A check answered from the cache shows no code frame of a linked file outside the
     workspace: its reads are confined as the check's were."""

@@ -312,11 +312,13 @@ class ResultCache:
 
     def __init__(self, folder: Path, *, named: bool = False, state: Path | None = None
                  ) -> None:
+        self.path = Path(os.path.abspath(folder))  # as given: walked without links
         self.folder = Path(os.path.realpath(folder))
         self.named = named
         self._state = state
         self._seal: Seal | bool | None = False  # made when first needed
         self.refused: str | None = None  # why this check uses no cache, to say
+        self.inside: tuple[str, ...] = ()  # the checked trees: no link followed below
 
     def usable(self, checked: Iterable[str]) -> bool:
         """Return whether this check may use the folder; else say why (``refused``).
@@ -326,7 +328,8 @@ class ResultCache:
         file has no valid seal. The installation's secret never lies in a checked tree.
         """
         state = Path(os.path.realpath(self._state or default_state_dir()))
-        for folder in checked:
+        self.inside = tuple(checked)
+        for folder in self.inside:
             tree = Path(os.path.realpath(folder))
             if state.is_relative_to(tree):
                 self.refused = (f"the state folder {state} is inside the checked tree "
@@ -428,7 +431,20 @@ class ResultCache:
 
     @contextlib.contextmanager
     def _opened(self, *, create: bool = False) -> Iterator[Folder | None]:
-        folder = Folder.open(self.folder, create=create)
+        """Open the folder as outputs are opened: never through a link in a checked tree.
+
+        One that cannot be so opened is no cache (and said, once).
+        """
+        from launchverify.engine import UsageError
+        from launchverify.process.outputs import open_folder
+
+        try:
+            folder: Folder | None = Folder(open_folder(self.path, inside=self.inside,
+                                                       create=create, mode=0o700))
+        except UsageError as error:
+            if create and self.refused is None:
+                self.refused = f"the results cache is not used: {error}"
+            folder = None
         try:
             yield folder
         finally:

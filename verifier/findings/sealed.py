@@ -188,15 +188,9 @@ class Folder:
 
     def write(self, name: str, data: bytes) -> bool:
         """Write ``name`` atomically: a reader sees the old file or the new one, whole."""
-        temporary = f".{name}.{os.urandom(6).hex()}.tmp"
-        if not self.create(temporary, data):
-            return False
-        try:
-            os.replace(temporary, name, src_dir_fd=self.fd, dst_dir_fd=self.fd)
-        except OSError:
-            self.remove(temporary)
-            return False
-        return True
+        from launchverify.process.outputs import replace_in
+
+        return replace_in(self.fd, name, data)
 
     def touch(self, name: str) -> None:
         """Mark a file recently used (never a link's target)."""
