@@ -312,7 +312,7 @@ class ResultCache:
 
     def __init__(self, folder: Path, *, named: bool = False, state: Path | None = None
                  ) -> None:
-        self.path = Path(os.path.abspath(folder))  # as given: walked without links
+        self.path = folder.absolute()  # as given: walked without following links
         self.folder = Path(os.path.realpath(folder))
         self.named = named
         self._state = state
