@@ -390,3 +390,24 @@ def test_plain_values_come_back_equal(value: object) -> None:
     from launchverify.findings import plain
 
     assert plain.loads(plain.dumps(value)) == value
+
+
+def test_a_default_cache_folder_reached_through_the_user_s_own_link_is_used(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """Checked from a home whose ``.cache`` is a link elsewhere: that is the user's link
+    (no checked tree holds it), so the cache works there."""
+    monkeypatch.delenv("LAUNCHVERIFY_NO_CACHE", raising=False)
+    monkeypatch.setattr(cache, "CLOCK_SLACK", 0.0)
+    home, elsewhere, root = tmp_path / "home", tmp_path / "elsewhere", tmp_path / "ws"
+    for folder in (home, elsewhere, root):
+        folder.mkdir()
+    (home / ".cache").symlink_to(elsewhere)
+    (root / "top.launch.xml").write_text(TOP)
+    (root / "robot.launch.xml").write_text(ROBOT)
+    (root / "params.yaml").write_text(PARAMS)
+    monkeypatch.setenv("XDG_CACHE_HOME", str(home / ".cache"))
+    monkeypatch.chdir(home)
+    first = check(capsys, root)
+    assert check(capsys, root) == (first[0], True)
+    assert list((elsewhere / "launchverify").glob("*.json"))

@@ -568,15 +568,11 @@ def _writable_outputs(args: argparse.Namespace, *paths: Path | None) -> tuple[Pa
     Outputs go through no link below the working folder or a checked tree: the
     check's workspace, and the workspace of each path given (see ``process.outputs``).
     """
-    wanted = [path for path in paths if path is not None]
-    if not wanted:
+    if all(path is None for path in paths):
         return ()
-    from launchverify.process.outputs import check_writable  # (only when writing: start-up)
+    from launchverify.process.outputs import check_outputs  # (only when writing: start-up)
 
-    inside = _checked_trees(args)
-    for path in wanted:
-        check_writable(path, inside=inside)
-    return inside
+    return check_outputs(paths, lambda: _checked_trees(args))
 
 
 def _checked_trees(args: argparse.Namespace) -> tuple[Path, ...]:

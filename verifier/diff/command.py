@@ -166,15 +166,11 @@ def _writable_outputs(args: argparse.Namespace) -> tuple[Path, ...]:
     Below the working folder and the trees compared (the repository, or the two folders
     of ``--against``) no link is followed (see ``process.outputs``).
     """
-    wanted = [path for path in (args.output, args.json_file) if path is not None]
-    if not wanted:
+    if args.output is None and args.json_file is None:
         return ()
-    from launchverify.process.outputs import check_writable
+    from launchverify.process.outputs import check_outputs
 
-    inside = _compared_trees(args)
-    for path in wanted:
-        check_writable(path, inside=inside)
-    return inside
+    return check_outputs((args.output, args.json_file), lambda: _compared_trees(args))
 
 
 def _compared_trees(args: argparse.Namespace) -> tuple[Path, ...]:

@@ -439,8 +439,9 @@ class ResultCache:
         from launchverify.process.outputs import open_folder
 
         try:
-            folder: Folder | None = Folder(open_folder(self.path, inside=self.inside,
-                                                       create=create, mode=0o700))
+            folder: Folder | None = Folder(open_folder(
+                self.path, inside=self.inside, create=create, mode=0o700,
+                here=self.named))  # (a folder named may be relative to the working one)
         except UsageError as error:
             if create and self.refused is None:
                 self.refused = f"the results cache is not used: {error}"

@@ -41,13 +41,14 @@ import errno
 import os
 import stat
 from collections import deque
-from collections.abc import Iterable
-from typing import TYPE_CHECKING
+from collections.abc import Callable, Iterable
+from typing import TYPE_CHECKING, TypeVar
 
 if TYPE_CHECKING:
     from launchverify.engine import UsageError
 
 PathLike = str | os.PathLike[str]
+T = TypeVar("T", bound=PathLike)
 LINK_NOTE = "(launchverify writes only where the path says)"
 MAX_LINKS = 40  # as the kernel: a longer chain of links above the anchors is refused
 _CLOEXEC = getattr(os, "O_CLOEXEC", 0)
@@ -80,6 +81,22 @@ def check_writable(path: PathLike, *, inside: Iterable[PathLike] = ()) -> None:
         raise _usage_error(shown, error) from None
 
 
+def check_outputs(paths: Iterable[PathLike | None],
+                  trees: Callable[[], tuple[T, ...]]) -> tuple[T, ...]:
+    """Refuse, before any work, each output given that ``write_file`` would refuse.
+
+    ``trees``: the checked trees, below which no link is followed, worked out only when
+    there is an output; returned (``()`` without one) for the writes that follow.
+    """
+    wanted = [path for path in paths if path is not None]
+    if not wanted:
+        return ()
+    inside = trees()
+    for path in wanted:
+        check_writable(path, inside=inside)
+    return inside
+
+
 def write_file(path: PathLike, data: bytes | str, *, inside: Iterable[PathLike] = (),
                sync: bool = True) -> None:
     r"""Write ``data`` to ``path`` atomically, never through a link (``UsageError`` if not).
@@ -103,16 +120,20 @@ def write_file(path: PathLike, data: bytes | str, *, inside: Iterable[PathLike] 
 
 
 def open_folder(path: PathLike, *, inside: Iterable[PathLike] = (), create: bool = False,
-                mode: int = 0o777) -> int:
+                mode: int = 0o777, here: bool = True) -> int:
     """Return a descriptor of the folder ``path`` (close it with ``os.close``).
 
     The folder is reached as a file's would be, the folder itself included: below an
     anchor no link is followed. ``create``: make the missing folders (``mode``, less the
-    umask). ``UsageError`` when it cannot be opened so.
+    umask). ``here``: the working folder is an anchor (a folder the user did not name
+    relative to it, the default cache folder, needs only the checked trees: a check run
+    from a home whose ``.cache`` is a link uses it). ``UsageError`` when it cannot be
+    opened so.
     """
     shown = os.fspath(path)
     try:
-        walked = _walk(shown, _anchors(inside), create=create, mode=mode, whole=True)[0]
+        walked = _walk(shown, _anchors(inside, here=here), create=create, mode=mode,
+                       whole=True)[0]
         try:
             return os.open(".", os.O_RDONLY | os.O_DIRECTORY | _CLOEXEC, dir_fd=walked)
         finally:
@@ -145,14 +166,14 @@ def _usage_error(shown: str, error: Exception) -> UsageError:
     return UsageError(f"cannot write {shown!r}: {reason}")
 
 
-def _anchors(inside: Iterable[PathLike]) -> tuple[str, ...]:
+def _anchors(inside: Iterable[PathLike], *, here: bool = True) -> tuple[str, ...]:
     """Return the real paths below which no link is followed: the working folder's first."""
     try:
-        here = os.getcwd()
+        working = os.getcwd() if here else None
     except OSError:  # the working folder was removed: only the named folders count
-        here = None
+        working = None
     named = (os.path.realpath(os.fspath(folder)) for folder in inside)
-    return tuple(dict.fromkeys(p for p in (here, *named) if p is not None))
+    return tuple(dict.fromkeys(p for p in (working, *named) if p is not None))
 
 
 def _below(real: str, anchors: tuple[str, ...]) -> bool:
