@@ -22,7 +22,9 @@ _INSIDE = 0xE000
 _WRITE = {code: _INSIDE + code for code in range(128)}
 _READ = {_INSIDE + code: code for code in range(128)}
 PATTERN = re.compile(OPEN + "([^" + OPEN + CLOSE + "]*)" + CLOSE)
-_MARK = re.compile("[" + OPEN + CLOSE + chr(_INSIDE) + "-" + chr(_INSIDE + 127) + "]")
+# also escaped, as json.dumps and ascii() write them: what they give still rests on one
+_MARK = re.compile("[" + OPEN + CLOSE + chr(_INSIDE) + "-" + chr(_INSIDE + 127) + "]"
+                   + r"|\\u27e[89]|\\ue0[0-7][0-9a-f]", re.IGNORECASE)
 KINDS = ("env", "pkg", "prefix", "arg", "opaque")
 
 

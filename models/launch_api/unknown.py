@@ -87,8 +87,46 @@ class Opaque(str):
         wanted = _unpacked_count(sys._getframe(1)) or assumed(0, 1, self._description)
         return iter([Opaque(f"{self._description}[{i}]") for i in range(wanted)])
 
+    def __next__(self) -> Opaque:
+        return Opaque(f"{self._description}[]")  # an unknown iterator's next item
+
     def __fspath__(self) -> str:
         return str(self)
+
+    def __bytes__(self) -> bytes:
+        return str(self).encode()
+
+    def __divmod__(self, other: Any) -> tuple[Opaque, Opaque]:
+        return self, self
+
+    def __rdivmod__(self, other: Any) -> tuple[Opaque, Opaque]:
+        return self, self
+
+    def __trunc__(self) -> Opaque:
+        return self
+
+    def __floor__(self) -> Opaque:
+        return self
+
+    def __ceil__(self) -> Opaque:
+        return self
+
+    def __delattr__(self, name: str) -> None:
+        if name in vars(self):
+            super().__delattr__(name)
+
+    def __await__(self) -> Iterator[Any]:
+        return Opaque(f"await {self._description}")
+        yield  # a generator: awaiting an unknown gives more of it, at once
+
+    async def __aenter__(self) -> Opaque:
+        return self
+
+    async def __aexit__(self, *exc: Any) -> None:
+        return None
+
+    def __aiter__(self) -> _UnknownRounds:
+        return _UnknownRounds(self)
 
     def __format__(self, spec: str) -> str:
         return str(self)
@@ -149,6 +187,25 @@ class Opaque(str):
 
     def __deepcopy__(self, memo: Any) -> Opaque:
         return self
+
+
+class _UnknownRounds:
+    """``async for`` over an unknown: no round, or one when assumptions are varied."""
+
+    def __init__(self, unknown: Opaque) -> None:
+        self._unknown = unknown
+        self._left: int | None = None
+
+    def __aiter__(self) -> _UnknownRounds:
+        return self
+
+    async def __anext__(self) -> Opaque:
+        if self._left is None:
+            self._left = assumed(0, 1, self._unknown._description)
+        if self._left <= 0:
+            raise StopAsyncIteration
+        self._left -= 1
+        return Opaque(f"{self._unknown._description}[]")
 
 
 def _answering(name: str, answer: str) -> Any:
@@ -237,9 +294,168 @@ class _Float(float, metaclass=_Converting):
     """``float``: an unknown value converted stays unknown."""
 
 
+class _Complex(complex, metaclass=_Converting):
+    """``complex``: Python parses a string's text, which for an unknown is no number."""
+
+
+class _Bytearray(bytearray, metaclass=_Converting):
+    """``bytearray``: Python wants an encoding for a string; an unknown's bytes are unknown."""
+
+
+def _ord(value: Any) -> Any:
+    """``ord``: an unknown character's code is unknown (its text is no one character)."""
+    return value if isinstance(value, Opaque) else ord(value)
+
+
+def _callable(value: Any) -> bool:
+    """``callable``: whether an unknown can be called is an assumption (yes, then no)."""
+    if isinstance(value, Opaque):
+        return assumed(True, False, f"whether {value._description} is callable")
+    return callable(value)
+
+
+def _hasattr(value: Any, name: str) -> bool:
+    """``hasattr``: whether an unknown has an attribute is an assumption (yes, then no)."""
+    if isinstance(value, Opaque):
+        return assumed(True, False, f"whether {value._description} has {name}")
+    return hasattr(value, name)
+
+
+class _TypeQuestion(type):
+    """The type of ``type`` as a launch file's code sees it: an unknown's type is asked."""
+
+    def __call__(cls, *args: Any, **kwargs: Any) -> Any:
+        if cls is not _Type:  # a metaclass of the launch file's, deriving from type
+            return super().__call__(*args, **kwargs)
+        if len(args) == 1 and isinstance(args[0], Opaque):
+            assumed(None, None, args[0]._description, fixed=True)
+        return type(*args, **kwargs)
+
+    def __instancecheck__(cls, value: Any) -> bool:
+        return isinstance(value, type)
+
+    def __subclasscheck__(cls, subclass: type) -> bool:
+        return issubclass(subclass, type)
+
+
+class _Type(type, metaclass=_TypeQuestion):
+    """``type``: asking an unknown value its type is an assumption nothing varies."""
+
+
+def _unknown_class(value: Any) -> bool:
+    """Return whether a value stands for a class launchverify cannot see."""
+    return isinstance(value, Opaque) or (
+        isinstance(value, type) and issubclass(value, OpaqueBase))
+
+
+def _described(value: Any) -> str:
+    return value._description if isinstance(value, Opaque) else getattr(
+        value, "__name__", type(value).__name__)
+
+
+def _class_test(real: Any, kind: str) -> Any:
+    """``isinstance``/``issubclass``: against a class nobody can see, an assumption.
+
+    Python refuses a string as the class. The known classes of a tuple answer first.
+    """
+    def test(value: Any, classes: Any) -> bool:
+        if isinstance(value, Opaque):  # an unknown's type: an assumption nothing varies
+            assumed(None, None, value._description, fixed=True)
+            if kind == "a subclass of":
+                return assumed(False, True, f"whether {value._description} is a class")
+        try:
+            return bool(real(value, classes))
+        except TypeError:
+            pending = list(classes) if type(classes) is tuple else [classes]
+            unknown = [c for c in pending if _unknown_class(c)]
+            if not unknown:
+                raise
+            known = tuple(c for c in pending if not _unknown_class(c))
+            if known and real(value, known):
+                return True
+            return assumed(False, True, f"whether a value is {kind} {_described(unknown[0])}")
+
+    test.__name__ = real.__name__
+    return test
+
+
+class UnknownRaised(Exception):
+    """What the launch file raises when what it raises is a value launchverify cannot see.
+
+    The raise happens on the robot whatever the value is (an exception of the vendor's,
+    or Python's ``TypeError`` if it is none), so reached on facts it is a fact. It is
+    named after the unknown, which ``except`` clauses recognise.
+    """
+
+    origin: str = ""
+
+
+def _raised(value: Any) -> Any:
+    """What ``raise value`` raises (the launch file's ``raise`` statements call it)."""
+    if isinstance(value, BaseException) or (
+            isinstance(value, type) and issubclass(value, BaseException)) or value is None:
+        return value
+    if isinstance(value, OpaqueBase):
+        origin, text = type(value).__name__, "an exception class built on code launchverify " \
+            "cannot see"
+    elif _unknown_class(value):
+        origin, text = _described(value).removesuffix("()"), "an exception of code " \
+            "launchverify cannot see"
+    else:
+        return value  # Python's own TypeError follows: a fact
+    kind = type(origin, (UnknownRaised,), {"origin": origin})
+    return kind(text)
+
+
+class _CatchesNothing(Exception):
+    """An ``except`` clause's class that the propagating exception is not."""
+
+
+def _caught(value: Any) -> Any:
+    """What ``except value`` compares with (the launch file's clauses call it).
+
+    Evaluated only while an exception propagates (as Python evaluates the clause): a
+    class nobody can see catches the same unknown's raise, and anything else by an
+    assumption (no, then yes).
+    """
+    if type(value) is tuple:
+        return tuple(_caught(item) for item in value)
+    if not _unknown_class(value):
+        return value
+    current = sys.exc_info()[1]
+    origin = _described(value).removesuffix("()")
+    if current is None:
+        return _CatchesNothing
+    if isinstance(current, UnknownRaised) and current.origin == origin:
+        return type(current)
+    if assumed(False, True, f"whether except {origin} catches {type(current).__name__}"):
+        return type(current)
+    return _CatchesNothing
+
+
+def _subject(value: Any) -> Any:
+    """A ``match`` statement's subject: patterns ask an unknown for its type (an assumption)."""
+    if isinstance(value, Opaque):
+        assumed(None, None, value._description, fixed=True)
+    return value
+
+
 _Int.__name__ = _Int.__qualname__ = "int"
 _Float.__name__ = _Float.__qualname__ = "float"
-CONVERSIONS = {"int": _Int, "float": _Float}  # for the launch file's builtins
+_Complex.__name__ = _Complex.__qualname__ = "complex"
+_Bytearray.__name__ = _Bytearray.__qualname__ = "bytearray"
+_Type.__name__ = _Type.__qualname__ = "type"
+# for the launch file's builtins: conversions and tests that Python would refuse on an
+# unknown, and what the compiled launch file calls for ``raise``, ``except``, ``match``
+# (frontends/python/rewrite.py)
+CONVERSIONS = {
+    "int": _Int, "float": _Float, "complex": _Complex, "bytearray": _Bytearray, "ord": _ord,
+    "callable": _callable, "hasattr": _hasattr, "type": _Type,
+    "isinstance": _class_test(isinstance, "an instance of"),
+    "issubclass": _class_test(issubclass, "a subclass of"),
+    "__launchverify_raised__": _raised, "__launchverify_caught__": _caught,
+    "__launchverify_subject__": _subject,
+}
 
 
 class OpaqueModule(types.ModuleType):
@@ -295,6 +511,7 @@ def handed(value: Any) -> bool:
 
 _UNPACK_SEQUENCE = dis.opmap["UNPACK_SEQUENCE"]
 _UNPACK_EX = dis.opmap["UNPACK_EX"]
+_EXTENDED_ARG = dis.opmap["EXTENDED_ARG"]
 
 
 def _unpacked_count(frame: types.FrameType | None) -> int:
@@ -306,6 +523,10 @@ def _unpacked_count(frame: types.FrameType | None) -> int:
     if not 0 <= at < len(code) - 1:
         return 0
     operation, argument = code[at], code[at + 1]
+    back = at - 2
+    while back >= 0 and code[back] == _EXTENDED_ARG:  # a count over 255 (or a, *b, c)
+        argument |= code[back + 1] << (8 * ((at - back) // 2))
+        back -= 2
     if operation == _UNPACK_SEQUENCE:
         return argument
     if operation == _UNPACK_EX:  # a, *rest, b: the fixed ones, and the rest empty

@@ -28,6 +28,7 @@ from launchverify.frontends.python.convert import PythonConverter
 from launchverify.frontends.python.importer import absent_import, import_context
 from launchverify.frontends.python.machine import robot_machine
 from launchverify.frontends.python.mentions import mentioned_strings
+from launchverify.frontends.python.rewrite import compile_launch_file
 from launchverify.frontends.python.sandbox import (
     SCRATCH_NAME,
     SandboxViolation,
@@ -97,7 +98,7 @@ class PythonFrontend:
             sink.cannot_read(error, Span.of_file(path))
             return None
         try:
-            code = compile(data, str(path), "exec", dont_inherit=True)
+            code = compile_launch_file(data, str(path))
         except SyntaxError as error:
             sink.parse(f"invalid Python: {error.msg}",
                        Span(path, error.lineno or 1, (error.offset or 1)))
@@ -467,10 +468,27 @@ class OpaqueText(io.StringIO):
 
 @contextmanager
 def _yaml_knows_opaque_files() -> Iterator[None]:
-    """Make ``yaml.safe_load(open(robot_file))`` an unknown mapping rather than a string."""
+    """Make ``yaml.safe_load(open(robot_file))`` an unknown mapping rather than a string.
+
+    ``json.loads`` of an unknown text is an unknown value too; dumping an unknown to
+    YAML writes its text (a string's), as a safe dumper writes a string.
+    """
+    import json
+
     import yaml
 
     originals = {name: getattr(yaml, name) for name in ("safe_load", "load", "full_load")}
+    json_loads = json.loads
+
+    def loads(text: Any, *args: Any, **kwargs: Any) -> Any:
+        if isinstance(text, Opaque):
+            return Opaque(f"the JSON in {text._description}")
+        return json_loads(text, *args, **kwargs)
+
+    json.loads = loads
+    for dumper in (yaml.SafeDumper, yaml.Dumper):
+        if Opaque not in dumper.yaml_representers:
+            dumper.add_representer(Opaque, _represent_unknown)
 
     def wrap(original: Any) -> Any:
         def load(stream: Any, *args: Any, **kwargs: Any) -> Any:
@@ -488,6 +506,12 @@ def _yaml_knows_opaque_files() -> Iterator[None]:
     finally:
         for name, original in originals.items():
             setattr(yaml, name, original)
+        json.loads = json_loads
+
+
+def _represent_unknown(dumper: Any, value: Opaque) -> Any:
+    """Write an unknown value to YAML as its placeholder's text (a plain string)."""
+    return dumper.represent_str(str.__str__(value))
 
 
 def _unknown_content(path: Path, mode: str) -> Any:
