@@ -143,6 +143,13 @@ def test_what_is_not_certain_installs_nothing(tmp_path: Path, cmake: str) -> Non
     assert installed(folder) == {}
 
 
+def test_a_subdirectory_that_adds_itself_ends(tmp_path: Path) -> None:
+    cmake = "add_subdirectory(.)\nadd_subdirectory(${CMAKE_CURRENT_SOURCE_DIR}/../..)\n" \
+            "ament_python_install_package(fleet_names)\n"
+    folder = package(tmp_path, cmake, {"fleet_names/__init__.py": ""})
+    assert installed(folder) == {"fleet_names": "fleet_names"}
+
+
 @settings(max_examples=150, deadline=None)
 @given(st.text(alphabet='ament_python_install_package( )"#[]=${}\\;\n/PACKAGE_DIR',
                max_size=120))
