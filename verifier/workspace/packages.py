@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from launchverify.workspace.cmake_python import MAX_CMAKE_BYTES, PythonModule, python_modules
 from launchverify.workspace.paths import link_inside, resolved
 from launchverify.workspace.reading import read_file
 
@@ -188,6 +189,7 @@ class PackageIndex:
         self._files: dict[str, list[Path]] = {}  # package -> its source files (package_files)
         self._headers: dict[str, Path | None] = {}  # #include path -> its file (header)
         self._python_packages: dict[str, list[Path]] | None = None  # name -> packages
+        self._cmake_python: dict[str, list[PythonModule]] | None = None  # name -> installs
         self._site: list[Path] | None = None
         self.sources: dict[str, list[Path]] = {}  # every source folder of each name
         self.workspaces = [resolved(w) for w in workspaces]
@@ -288,12 +290,16 @@ class PackageIndex:
         return any(dependency in package_dependencies(folder / "package.xml")
                    for folder in folders)
 
-    def python_roots(self, module: str) -> list[Path]:
-        """Return the workspace packages that install a top-level Python module.
+    def python_sources(self, module: str) -> list[Path]:
+        """Return what workspace packages install as the top-level Python module ``module``.
 
-        A package installs the Python packages its build names (``setup.py`` of an
-        ament_python package, ``ament_python_install_package(name)`` of an ament_cmake
-        one), whatever the package itself is called.
+        Each is a package folder (holding ``__init__.py``) or a ``.py`` file of a
+        package's sources: the Python packages of an ament_python package (``setup.py``,
+        ``setup.cfg``), and what an ament_cmake package's ``CMakeLists.txt`` installs into
+        ``PYTHON_INSTALL_DIR`` (``ament_python_install_package``, ``..._module``,
+        ``install(DIRECTORY|FILES ...)``, see ``cmake_python``), whatever the package is
+        called. A name two packages install differently is left out: which one a sourced
+        workspace imports depends on the build order, so the module stays unknown.
         """
         if self._python_packages is None:  # one listing of every package folder, once
             self._python_packages = {}
@@ -301,8 +307,24 @@ class PackageIndex:
                 for folder in folders:
                     for name in _python_package_folders(folder):
                         self._python_packages.setdefault(name, []).append(folder)
-        return [folder for folder in self._python_packages.get(module, [])
-                if _installs_python(folder, module)]
+        found = [folder / module for folder in self._python_packages.get(module, [])
+                 if _build_type(folder) != "cmake" and _setup_installs(folder, module)]
+        found += [installed.path for installed in self._cmake_modules().get(module, [])]
+        distinct = list(dict.fromkeys(found))
+        return distinct if len(distinct) == 1 else []
+
+    def _cmake_modules(self) -> dict[str, list[PythonModule]]:
+        """Return the modules the ament_cmake packages here install, by name (read once)."""
+        if self._cmake_python is None:
+            self._cmake_python = {}
+            for folders in self.sources.values():
+                for folder in folders:
+                    if _build_type(folder) == "python" or \
+                            not _may_install_python(folder / "CMakeLists.txt"):
+                        continue
+                    for installed in python_modules(folder):
+                        self._cmake_python.setdefault(installed.name, []).append(installed)
+        return self._cmake_python
 
     def site_packages(self) -> list[Path]:
         """Return the Python folders of the installed prefixes (``lib/python3.*/...``).
@@ -478,18 +500,46 @@ def _python_package_folders(folder: Path) -> list[str]:
         return []
 
 
-def _installs_python(folder: Path, module: str) -> bool:
-    """Return whether a package's build installs the Python package ``module`` it holds."""
-    if not (folder / module / "__init__.py").is_file():
-        return False
-    if (folder / "setup.py").is_file() or (folder / "setup.cfg").is_file():
-        return True  # ament_python: its packages (find_packages) are installed
+def _setup_installs(folder: Path, module: str) -> bool:
+    """Return whether an ament_python package's build installs the package it holds.
+
+    ``find_packages()`` of its ``setup.py`` (or ``setup.cfg``) finds the Python packages
+    beside it.
+    """
+    return (folder / module / "__init__.py").is_file() and (
+        (folder / "setup.py").is_file() or (folder / "setup.cfg").is_file())
+
+
+_BUILD_TYPE = re.compile(rb"<build_type>\s*ament_(cmake|python)")
+
+
+def _build_type(folder: Path) -> str | None:
+    """Return ``cmake`` or ``python`` as a package's manifest declares its build, if it does.
+
+    A package declaring neither is read both ways (colcon guesses; so may the user).
+    """
     try:
-        cmake = read_file(folder / "CMakeLists.txt").decode(errors="replace")
+        data = read_file(folder / "package.xml", prefix=200_000)
+    except OSError:
+        return None
+    match = _BUILD_TYPE.search(data)
+    return match.group(1).decode() if match else None
+
+
+# Words without which a CMakeLists.txt installs no Python (the many C++ packages of a
+# workspace are not parsed for it).
+_PYTHON_INSTALL_WORDS = re.compile(
+    rb"ament_python_install|PYTHON_INSTALL_DIR|site-packages|dist-packages|add_subdirectory",
+    re.IGNORECASE)
+
+
+def _may_install_python(cmake: Path) -> bool:
+    """Return whether a ``CMakeLists.txt`` can install Python modules at all (cheap)."""
+    try:
+        data = read_file(cmake, prefix=MAX_CMAKE_BYTES + 1)
     except OSError:
         return False
-    return re.search(r"ament_python_install_package\s*\(\s*" + re.escape(module) + r"\b",
-                     cmake) is not None
+    return _PYTHON_INSTALL_WORDS.search(data) is not None
 
 
 def _installed_layout(path: Path, package: str) -> bool:

@@ -84,7 +84,10 @@ class ModelFinder(importlib.abc.MetaPathFinder):
 class WorkspaceFinder(importlib.abc.MetaPathFinder):
     """Finds modules beside the launch file and the Python packages a build would install.
 
-    Those of workspace packages, and those of installed prefixes; pure Python only.
+    Those a workspace package's build installs come first (``index.python_sources``: an
+    ament_python package's ``setup.py``, an ament_cmake package's ``CMakeLists.txt``), as
+    they do once the workspace is built and sourced; then a module in the source folder
+    of the package of that name, and those of installed prefixes. Pure Python only.
     """
 
     def __init__(self, folders: list[Path], index: PackageIndex) -> None:
@@ -95,17 +98,33 @@ class WorkspaceFinder(importlib.abc.MetaPathFinder):
                   target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
         if "." in fullname:
             return None  # submodules are found through the parent's __path__
+        if fullname not in sys.stdlib_module_names:
+            for source in self.index.python_sources(fullname):
+                spec = installed_spec(fullname, source)
+                if spec is not None:
+                    return spec
         roots = list(self.folders)
         package = self.index.find(fullname)
         if package is not None and package.source is not None:
             roots.append(package.source)
-        if fullname not in sys.stdlib_module_names:
-            roots += self.index.python_roots(fullname)
         for root in roots:
             spec = importlib.machinery.PathFinder.find_spec(fullname, [str(root)])
             if spec is not None and spec.origin and not spec.origin.endswith((".so", ".pyd")):
                 return spec
         return None
+
+
+def installed_spec(name: str, source: Path) -> importlib.machinery.ModuleSpec | None:
+    """Return the spec of ``source`` imported as ``name``, the name its build installs it as.
+
+    ``ament_python_install_package(fleet_names PACKAGE_DIR python/helpers)`` makes the
+    folder ``helpers`` the package ``fleet_names``: the folder's name says nothing, so
+    the spec is made from the path (its submodules are found in the folder).
+    """
+    if source.is_dir():
+        return importlib.util.spec_from_file_location(
+            name, source / "__init__.py", submodule_search_locations=[str(source)])
+    return importlib.util.spec_from_file_location(name, source)
 
 
 class InstalledFinder(importlib.abc.MetaPathFinder):

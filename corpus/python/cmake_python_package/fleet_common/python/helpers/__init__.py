@@ -1,0 +1,1 @@
+"""The fleet's naming helpers (installed as fleet_names)."""

@@ -1,0 +1,1 @@
+SCAN_TOPIC = '/fleet/scan'
