@@ -228,6 +228,10 @@ def normalize_to_list_of_substitutions(subs: Any) -> list[Any]:
 
 def perform_substitutions(context: LaunchContext, subs: Any) -> str:
     """``launch.utilities.perform_substitutions``."""
+    if _unknown(context):  # a context from code launchverify cannot see: the text is unknown
+        from launchverify.models.launch_api.unknown import Opaque
+
+        return Opaque("perform_substitutions(an unknown context)")
     return "".join(context.perform_substitution(s) if isinstance(s, Substitution) else str(s)
                    for s in normalize_to_list_of_substitutions(subs))
 

@@ -15,24 +15,30 @@ from typing import Any
 
 from launchverify.ir import subst as s
 from launchverify.models import distros, rewritten_yaml
-from launchverify.models.launch_api.base import Converter, Substitution
+from launchverify.models.launch_api.base import Converter, Substitution, _unknown
 from launchverify.models.launch_api.placeholders import has_placeholder, placeholder
 from launchverify.models.launch_api.runtime import active
 from launchverify.workspace.paths import resolved
 
 
 def _values(mapping: Mapping[Any, Any] | None) -> list[Any]:
+    if _unknown(mapping):
+        return [mapping]  # a vendor's mapping: what it holds is an unknown input
     if not mapping:
         return []
     return [item for pair in mapping.items() for item in pair]
 
 
 def _text_keys(mapping: Mapping[Any, Any] | None) -> list[tuple[str, Any]]:
+    if _unknown(mapping):
+        return []  # its keys are unknown: ``_other_keys`` keeps it as an input
     return [(key, value) for key, value in (mapping or {}).items() if isinstance(key, str)]
 
 
 def _other_keys(mapping: Mapping[Any, Any] | None) -> list[Any]:
     """Return the entries whose key is not text, flattened (read, not followed)."""
+    if _unknown(mapping):
+        return [mapping]
     return [item for key, value in (mapping or {}).items() if not isinstance(key, str)
             for item in (key, value)]
 
@@ -199,6 +205,10 @@ def generate_controllers_spawner_launch_description_from_dict(
     controller_info_dict: dict[str, Any], extra_spawner_args: list[Any] | None = None,
 ) -> Any:
     """``controller_manager.launch_utils``: spawners from ``{name: params file}``."""
+    if _unknown(controller_info_dict):  # a vendor's table: unknown controllers, unknown files
+        return generate_controllers_spawner_launch_description(
+            [controller_info_dict],  # type: ignore[list-item]  # an unknown name
+            extra_spawner_args=extra_spawner_args)
     files = [f for f in controller_info_dict.values() if f]
     return generate_controllers_spawner_launch_description(
         list(controller_info_dict), controller_params_files=files or None,

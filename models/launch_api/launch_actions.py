@@ -19,6 +19,7 @@ from launchverify.models.launch_api.base import (
     Converter,
     LaunchDescriptionEntity,
     Modelled,
+    _unknown,
     check_substitutions,
     flatten,
     launch_getter,
@@ -144,7 +145,9 @@ class DeclareLaunchArgument(Action):
         super().__init__(**kwargs)
         if not isinstance(name, str):
             raise TypeError(f"DeclareLaunchArgument name must be a str, got {type(name)}")
-        if choices is not None and not list(choices):
+        if _unknown(choices):
+            choices = None  # a vendor's list: which values it allows is unknown, no claim
+        elif choices is not None and not list(choices):
             raise RuntimeError(
                 "Provided choices arg is empty. Use None to ignore the choice list.")
         self._name = name

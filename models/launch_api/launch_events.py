@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from launchverify.models.launch_api.base import Modelled, caller_span
+from launchverify.models.launch_api.base import Modelled, _unknown, caller_span
 from launchverify.models.launch_api.lifecycle_msgs import State, Transition
 
 
@@ -139,7 +139,8 @@ class OnStateTransition(EventHandler):
                  goal_state: str | None = None, matcher: Any = None, **kwargs: Any) -> None:
         from launchverify.models.launch_api.launch_ros import LifecycleNode
 
-        if not isinstance(target_lifecycle_node, (LifecycleNode, type(None))):
+        if not isinstance(target_lifecycle_node, (LifecycleNode, type(None))) \
+                and not _unknown(target_lifecycle_node):  # a vendor's node: may be one
             raise RuntimeError("OnStateTransition requires a 'LifecycleNode' action as the "
                                "target")
         super().__init__(entities=entities, matcher=matcher, **kwargs)

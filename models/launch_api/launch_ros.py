@@ -20,6 +20,7 @@ from launchverify.models.launch_api.base import (
     Converter,
     Modelled,
     Substitution,
+    _unknown,
     caller_span,
     described,
     launch_getter,
@@ -457,8 +458,11 @@ class LifecycleTransition(Action):
             raise ImportError(f"cannot import name 'LifecycleTransition' from "
                               f"'launch_ros.actions' ({why})")
         super().__init__(**kwargs)
-        self.names = list(lifecycle_node_names)
-        self.transition_ids = list(transition_ids)
+        # a vendor's list (our own list() of it is empty) stands for unknown items
+        self.names = [lifecycle_node_names] if _unknown(lifecycle_node_names) \
+            else list(lifecycle_node_names)
+        self.transition_ids = [transition_ids] if _unknown(transition_ids) \
+            else list(transition_ids)
         if not self.names or not self.transition_ids:
             raise ValueError("LifecycleTransition needs node names and transition ids")
 

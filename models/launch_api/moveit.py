@@ -9,14 +9,16 @@ opaque values, so the nodes ``generate_*_launch`` build carry what they really c
 
 from __future__ import annotations
 
+import functools
+from collections.abc import Callable
 from pathlib import Path
-from typing import Any
+from typing import Any, TypeVar
 
 import yaml
 
 from launchverify.ir import subst as s
 from launchverify.models.launch_api.ament import get_package_share_directory
-from launchverify.models.launch_api.base import Converter, Substitution
+from launchverify.models.launch_api.base import Converter, Substitution, _unknown
 from launchverify.models.launch_api.launch_actions import (
     DeclareLaunchArgument,
     IncludeLaunchDescription,
@@ -372,6 +374,8 @@ def add_debuggable_node(ld: LaunchDescription, package: str, executable: str,
                         condition_name: str = "debug", commands_file: Any = None,
                         extra_debug_args: Any = None, **kwargs: Any) -> None:
     """``moveit_configs_utils.launch_utils.add_debuggable_node``: the node, run or debugged."""
+    if _unknown(ld):
+        return  # a description of code launchverify cannot see: what it holds stays unknown
     debug = LaunchConfiguration(condition_name)
     ld.add_action(Node(package=package, executable=executable,
                        condition=UnlessCondition(debug), **kwargs))
@@ -380,6 +384,27 @@ def add_debuggable_node(ld: LaunchDescription, package: str, executable: str,
                        condition=IfCondition(debug), **kwargs))
 
 
+
+_Launch = TypeVar("_Launch", bound=Callable[..., Any])
+
+
+def _configured(generate: _Launch) -> _Launch:
+    """Make ``generate_*_launch(unknown)`` an unknown description, not an error.
+
+    A configuration from code launchverify cannot see answers none of our questions: what
+    the generated description holds is unknown (the frontend makes it an unknown action).
+    """
+    @functools.wraps(generate)
+    def launch(moveit_config: Any, *args: Any, **kwargs: Any) -> Any:
+        if _unknown(moveit_config):
+            from launchverify.models.launch_api.unknown import Opaque
+
+            return LaunchDescription([Opaque(f"{generate.__name__}(an unknown configuration)")])
+        return generate(moveit_config, *args, **kwargs)
+
+    return launch  # type: ignore[return-value]
+
+@_configured
 def generate_rsp_launch(moveit_config: MoveItConfigs) -> LaunchDescription:
     """robot_state_publisher with the robot description."""
     ld = LaunchDescription()
@@ -392,6 +417,7 @@ def generate_rsp_launch(moveit_config: MoveItConfigs) -> LaunchDescription:
     return ld
 
 
+@_configured
 def generate_moveit_rviz_launch(moveit_config: MoveItConfigs) -> LaunchDescription:
     """RViz with the MoveIt configuration."""
     ld = LaunchDescription()
@@ -405,6 +431,7 @@ def generate_moveit_rviz_launch(moveit_config: MoveItConfigs) -> LaunchDescripti
     return ld
 
 
+@_configured
 def generate_setup_assistant_launch(moveit_config: MoveItConfigs) -> LaunchDescription:
     """The setup assistant."""
     ld = LaunchDescription()
@@ -415,12 +442,14 @@ def generate_setup_assistant_launch(moveit_config: MoveItConfigs) -> LaunchDescr
     return ld
 
 
+@_configured
 def generate_static_virtual_joint_tfs_launch(moveit_config: MoveItConfigs
                                              ) -> LaunchDescription:
     """Static transforms for the SRDF's virtual joints (unknown statically: none)."""
     return LaunchDescription()
 
 
+@_configured
 def generate_spawn_controllers_launch(moveit_config: MoveItConfigs) -> LaunchDescription:
     """A spawner per controller named in the configuration."""
     ld = LaunchDescription()
@@ -432,6 +461,7 @@ def generate_spawn_controllers_launch(moveit_config: MoveItConfigs) -> LaunchDes
     return ld
 
 
+@_configured
 def generate_warehouse_db_launch(moveit_config: MoveItConfigs) -> LaunchDescription:
     """The MongoDB warehouse."""
     ld = LaunchDescription()
@@ -454,6 +484,7 @@ def generate_warehouse_db_launch(moveit_config: MoveItConfigs) -> LaunchDescript
     return ld
 
 
+@_configured
 def generate_move_group_launch(moveit_config: MoveItConfigs) -> LaunchDescription:
     """move_group with the whole configuration."""
     ld = LaunchDescription()
@@ -480,6 +511,7 @@ def generate_move_group_launch(moveit_config: MoveItConfigs) -> LaunchDescriptio
     return ld
 
 
+@_configured
 def generate_demo_launch(moveit_config: MoveItConfigs, launch_package_path: Any = None
                          ) -> LaunchDescription:
     """The demo: the configuration package's own launch files, plus ros2_control."""
