@@ -141,8 +141,6 @@ def test_no_error_rests_on_a_loop_over_an_unknown(sweep: dict[str, list[str]]) -
     assert not lines, "\n".join(lines)
 
 
-@pytest.mark.xfail(strict=True, reason="OpaqueBase (unknown.py) is no unknown to Python's "
-                   "protocols: an instance of a class derived from an absent one raises")
 def test_no_error_rests_on_an_instance_of_an_unknown_class(sweep: dict[str, list[str]]) -> None:
     lines = _problems(sweep, derived=True)
     assert not lines, "\n".join(lines)

@@ -138,7 +138,17 @@ class Opaque(str):
         return str(self)
 
     def __mro_entries__(self, bases: tuple[Any, ...]) -> tuple[type, ...]:
-        return (OpaqueBase,)
+        # ``class D(vendor.Base)``: D's instances are unknown values themselves (strings
+        # to Python, as an Opaque is), unless a known base lays them out otherwise
+        # (``class D(vendor.Base, dict)``); two unknown bases are one
+        if any(isinstance(base, Opaque) for base in bases[:bases.index(self)]):
+            return ()
+        known = tuple(base for base in bases if isinstance(base, type))
+        try:
+            type("probe", (UnknownInstance, *known), {})
+        except TypeError:
+            return (OpaqueBase,)
+        return (UnknownInstance,)
 
     def __enter__(self) -> Opaque:
         return self
@@ -345,7 +355,7 @@ class _Type(type, metaclass=_TypeQuestion):
 def _unknown_class(value: Any) -> bool:
     """Return whether a value stands for a class launchverify cannot see."""
     return isinstance(value, Opaque) or (
-        isinstance(value, type) and issubclass(value, OpaqueBase))
+        isinstance(value, type) and issubclass(value, (OpaqueBase, UnknownInstance)))
 
 
 def _described(value: Any) -> str:
@@ -395,7 +405,7 @@ def _raised(value: Any) -> Any:
     if isinstance(value, BaseException) or (
             isinstance(value, type) and issubclass(value, BaseException)) or value is None:
         return value
-    if isinstance(value, OpaqueBase):
+    if isinstance(value, (OpaqueBase, UnknownInstance)):
         origin, text = type(value).__name__, "an exception class built on code launchverify " \
             "cannot see"
     elif _unknown_class(value):
@@ -546,6 +556,30 @@ class OpaqueBase:
         return None
 
 
+class UnknownInstance(Opaque):
+    """What a class deriving from an unknown one derives from: its instances are unknown.
+
+    The launch file's own methods and attributes are the class's; everything else is
+    what an ``Opaque`` gives. Each instance is a value of its own.
+    """
+
+    _made = 0
+
+    def __new__(cls, *args: Any, **kwargs: Any) -> UnknownInstance:
+        UnknownInstance._made += 1
+        value = super().__new__(cls, f"a {cls.__name__} object #{UnknownInstance._made}")
+        return value  # type: ignore[return-value]
+
+    def __init__(self, *args: Any, **kwargs: Any) -> None:
+        hand_over(args, kwargs)
+
+    @property  # type: ignore[misc]
+    def __class__(self) -> type:
+        return type(self)
+
+    __hash__ = Opaque.__hash__
+
+
 def _more_of_it(name: str) -> Any:
     def operator(self: OpaqueBase, *args: Any) -> Any:
         if name in ("__lt__", "__le__", "__gt__", "__ge__"):
@@ -612,4 +646,4 @@ def _unpacked_count(frame: types.FrameType | None) -> int:
     return 0
 
 
-__all__ = ["WORLD", "Opaque", "OpaqueBase", "OpaqueModule"]
+__all__ = ["WORLD", "Opaque", "OpaqueBase", "OpaqueModule", "UnknownInstance"]
