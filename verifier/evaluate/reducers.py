@@ -61,6 +61,7 @@ class _Located:
 
     prefix = ""
     contextual = False  # its failures rest on argument values an includer may replace
+    with_defaults = False  # its failures rest on the default arguments, whatever the path
 
     def __init__(self, walker: Walker) -> None:
         self.walker = walker
@@ -75,7 +76,8 @@ class _Located:
     def fail(self, message: str, rule: str | None = None) -> None:
         assert self.span is not None
         self.walker.problem(ProblemKind.EVALUATION, self.prefix + message, self.span, self.ctx,
-                            contextual=self.contextual, rule=rule)
+                            contextual=self.contextual, rule=rule,
+                            with_defaults=self.with_defaults)
 
     def unmodeled(self, message: str) -> None:
         assert self.span is not None
@@ -230,6 +232,7 @@ class DefaultsReducer(_Located, BaseReducer):
 
     prefix = "with the default arguments, "
     contextual = True  # an includer passes other values: reported where launched directly
+    with_defaults = True
 
     def __init__(self, walker: Walker) -> None:
         BaseReducer.__init__(self, walker.graph.inputs())

@@ -169,6 +169,7 @@ class Reducer:
             s.PathJoin: self._path_join,
             s.LocalSub: lambda x: Unknown(f"event value {x.describe()}"),
             s.Opaque: lambda x: Unknown(x.describe()),
+            s.Raises: self._raises,
             s.Rewritten: self._rewritten,
             s.AsBool: self._as_bool,
             Arg: lambda x: self.arg(x) if isinstance(x, Arg) else x,
@@ -329,6 +330,12 @@ class Reducer:
         except Unsupported as error:
             self.unmodeled(f"{error}: {text!r}")
         return Unknown(f"value of $(eval {text!r})")
+
+    def _raises(self, sub: s.Sub) -> s.Sub:
+        """Launch raises performing this value: a failure where it is evaluated."""
+        assert isinstance(sub, s.Raises)
+        self.fail(f"ros2 launch raises {sub.error}")
+        return Unknown(f"a value launch rejects ({sub.error})")
 
     def _command(self, sub: s.Sub) -> s.Sub:
         """A command's output: never run statically, but kept runnable for ``run``."""
