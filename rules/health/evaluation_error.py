@@ -57,6 +57,10 @@ class EvaluationError(Rule):
                 continue  # a rule names this failure, and reports it
             if record.problem.kind is ProblemKind.EVALUATION:
                 yield self.finding(record.origin, text=record.problem.message)
+            elif record.problem.kind is ProblemKind.CONDITIONAL and record.value is not None:
+                found = reasoner_for(graph).fails(record.path, record.value)
+                if found is not None:
+                    yield self.finding(record.origin, witness=found[1].values, text=found[0])
             elif record.problem.kind is ProblemKind.CONDITIONAL:
                 witness = conditional_witness(graph, record)
                 if witness is not None:
@@ -70,7 +74,7 @@ def conditional_witness(graph: LaunchGraph, record: ProblemRecord) -> Witness | 
     Its path does not hold with the arguments as given: without such arguments there is
     no fact that launch ever evaluates what failed.
     """
-    witness = reasoner_for(graph).together(record.path)
+    witness = reasoner_for(graph).reachable(record.path)
     return witness if witness is not None and witness.values else None
 
 

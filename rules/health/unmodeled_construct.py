@@ -45,7 +45,7 @@ class UnmodeledConstruct(Rule):
         for record in graph.problems:
             if record.problem.kind is ProblemKind.UNMODELED:
                 yield self.finding(record.origin, text=record.problem.message)
-            elif (record.problem.kind is ProblemKind.CONDITIONAL
+            elif (record.problem.kind is ProblemKind.CONDITIONAL and record.value is None
                   and conditional_witness(graph, record) is None
                   and not never_evaluated(graph, record)):
                 # under a condition false by default, and no values were found that make

@@ -217,10 +217,17 @@ class ScopeReducer(_Located, Reducer):
         return super().guard(guard)
 
     def probe(self, residual: s.Sub) -> None:
-        """A ``$(eval)`` over arguments: it must work with the default arguments too."""
+        """A ``$(eval)`` over arguments: it must work with the default arguments too.
+
+        Off the path the defaults take (under a condition false with them), launch
+        evaluates it only with arguments that make the condition true: kept for LV002 to
+        look for arguments that do and make it raise.
+        """
         assert self.ctx is not None and self.span is not None
         if self.walker.graph.runs(self.ctx.origin(self.span)) is not False:
             self.walker.base_check.at(self.ctx, self.span).reduce(residual)
+        else:
+            self.walker.may_fail(residual, self.span, self.ctx)
 
 
 class DefaultsReducer(_Located, BaseReducer):

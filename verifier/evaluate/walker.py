@@ -156,6 +156,12 @@ class Walker:
         if kind is ProblemKind.UNMODELED and not harmless:
             self.mark_incomplete()
 
+    def may_fail(self, value: s.Sub, span: Span, ctx: Ctx) -> None:
+        """Keep a value over arguments evaluated off the default path (see ``probe``)."""
+        self.graph.problems.append(ProblemRecord(
+            Problem(ProblemKind.CONDITIONAL, f"{value.describe()} may raise", span),
+            ctx.chain, ctx.path, value))
+
     def mark_incomplete(self) -> None:
         """Note that the includes being walked contain something not understood."""
         self.incomplete = True
