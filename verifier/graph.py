@@ -243,6 +243,9 @@ class ProblemRecord:
     problem: Problem
     chain: tuple[Span, ...] = ()
     path: PathCondition = ()
+    # a CONDITIONAL problem that only some argument values cause: the value that fails
+    # with them (an ``$(eval)`` over arguments), for LV002 to look for them
+    value: Sub | None = None
 
     @property
     def origin(self) -> Origin:

@@ -20,6 +20,10 @@ class ProblemKind(enum.Enum):
     PARSE = "parse"
     EVALUATION = "evaluation"
     UNMODELED = "unmodeled"
+    # Evaluating an action fails, on a path the arguments as given do not take (under a
+    # condition false with them): a failure only with arguments that take that path, which
+    # LV002 names (a witness); none when no values do (launch never evaluates it).
+    CONDITIONAL = "conditional"
     INTERNAL = "internal"  # launchverify failed (LV005), not the file
 
 

@@ -336,11 +336,9 @@ class IncludeLaunchDescription(Action):
         if isinstance(launch_arguments, Opaque):  # arguments of any name: unknown ones
             self._given_arguments = ((Opaque(f"name in {launch_arguments}"),
                                       Opaque(f"value in {launch_arguments}")),)
-        pairs = []
-        for pair in self._given_arguments:  # a dict iterates its keys: launch fails there too
-            name, value = pair
-            pairs.append((check_substitutions(name), check_substitutions(value)))
-        self._arguments = pairs
+        # launch unpacks and normalizes the pairs only in ``execute``, once the condition
+        # held: what it rejects (a dict's keys, a number) fails there, not in the file
+        self._arguments = [_argument_pair(pair) for pair in self._given_arguments]
 
     @property
     def launch_description_source(self) -> Any:
@@ -362,10 +360,13 @@ class IncludeLaunchDescription(Action):
     def to_ir(self, cv: Converter) -> a.Action:
         keys = cv.keyword_keys(self._span, "launch_arguments")
         arguments = tuple(
+            a.IncludeArg(name=s.Raises(error), value=s.EMPTY,
+                         span=keys.get(name, self._span) if isinstance(name, str) else self._span)
+            if error is not None else
             a.IncludeArg(name=cv.written_key(self._span, "launch_arguments", name),
                          value=cv.sub(value),
                          span=keys.get(name, self._span) if isinstance(name, str) else self._span)
-            for name, value in self._arguments
+            for name, value, error in self._arguments
         )
         source = self._source
         if isinstance(source, LaunchDescriptionSource) and source.launch_description is not None:
@@ -381,6 +382,19 @@ class IncludeLaunchDescription(Action):
         kind = source.kind if isinstance(source, LaunchDescriptionSource) else "any"
         return a.Include(**cv_common(self, cv), path=cv.sub(location), arguments=arguments,
                          source_kind=kind)
+
+
+def _argument_pair(pair: Any) -> tuple[Any, Any, str | None]:
+    """Return one launch argument as ``(name, value, None)``, or what launch raises on it."""
+    try:
+        name, value = pair
+    except (TypeError, ValueError) as error:
+        return None, None, f"{type(error).__name__}: {error} (a launch argument is no pair)"
+    try:
+        return check_substitutions(name), check_substitutions(value), None
+    except TypeError as error:
+        where = f"launch argument {name!r}" if isinstance(name, str) else "a launch argument"
+        return name, None, f"TypeError: {error} ({where})"
 
 
 class GroupAction(Action):

@@ -22,6 +22,7 @@ from launchverify.models.launch_api.base import (
     Substitution,
     _unknown,
     caller_span,
+    check_substitutions,
     described,
     launch_getter,
     normalized,
@@ -247,8 +248,8 @@ class Node(ExecuteProcess):
             "executable": cv.written(self._span, self.node_executable, keyword="executable"),
             "package": (None if self.node_package is None
                         else cv.written(self._span, self.node_package, keyword="package")),
-            "name": cv.opt_sub(self._node_name),
-            "namespace": cv.opt_sub(self._node_namespace),
+            "name": cv.opt_sub(performed_later(self._node_name, "name")),
+            "namespace": cv.opt_sub(performed_later(self._node_namespace, "namespace")),
             "exec_name": cv.opt_sub(self._exec_name),
             "parameters": cv.parameters(self._parameters, self._span),
             "remappings": cv.remaps(self._remappings, self._span),
@@ -259,6 +260,19 @@ class Node(ExecuteProcess):
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.Node(**self.node_fields(cv))
+
+
+def performed_later(value: Any, field: str) -> Any:
+    """Return a field launch_ros normalizes only in ``execute``, or the IR of its failure.
+
+    A name that is no text (``name=5``) fails only where the node runs, under its condition.
+    """
+    if value is None:
+        return None
+    try:
+        return check_substitutions(value)
+    except TypeError as error:
+        return s.Raises(f"TypeError: {error} (the node's {field})")
 
 
 _NOT_GIVEN: Any = object()

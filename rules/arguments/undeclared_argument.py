@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Rule, RuleContext, Severity, rename
+from launchverify.smt import reasoner_for
 from launchverify.suggest import typos
 
 
@@ -19,6 +20,9 @@ class UndeclaredArgument(Rule):
     that declares arguments without defaults, or that reads configurations it never
     declares is meant to be included: its includers must set them, so on its own only a
     read one or two edits away from a declared name (a typo) is reported.
+
+    A read under a condition false with the default arguments is reported with arguments
+    that make it true, as launch reads it only then.
 
     ## Why it matters
     ros2 launch stops with `launch configuration 'name' does not exist`. Usually the name
@@ -53,8 +57,13 @@ class UndeclaredArgument(Rule):
         seen: set[tuple[object, ...]] = set()
         for read in unset:
             key = (read.name, read.origin.span)
-            if key in seen or graph.runs(read.origin) is False:
+            if key in seen:
                 continue
+            witness = None
+            if graph.runs(read.origin) is False:  # read only under a condition false now
+                witness = reasoner_for(graph).reachable(read.origin.path)
+                if witness is None or not witness.values:
+                    continue  # launch never reads it: no argument values make it true
             seen.add(key)
             close = typos(read.name, known)
             typo = close[0] if close else None
@@ -67,5 +76,6 @@ class UndeclaredArgument(Rule):
                 if declared else "")
             fix = (None if typo is None
                    else rename(read.written, read.name, typo, unique=len(close) == 1))
-            yield self.finding(read.origin, name=read.name, hint=hint, fix=fix)
+            yield self.finding(read.origin, name=read.name, hint=hint, fix=fix,
+                               witness=None if witness is None else witness.values)
 

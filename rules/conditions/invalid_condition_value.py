@@ -9,6 +9,7 @@ from launchverify.ir.symbolic import Truthy
 from launchverify.models.booleans import InvalidBoolean, condition_truth
 from launchverify.problems import ProblemKind
 from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.rules.health.evaluation_error import conditional_witness
 from launchverify.smt import reasoner_for
 
 
@@ -65,8 +66,14 @@ class InvalidConditionValue(Rule):
         conditions = {record.origin.span: record for record in graph.conditions}
         for record in graph.problems:
             problem = record.problem
-            if problem.rule != self.code or problem.kind is not ProblemKind.EVALUATION:
+            if problem.rule != self.code or problem.kind not in (ProblemKind.EVALUATION,
+                                                                 ProblemKind.CONDITIONAL):
                 continue
+            witness = None
+            if problem.kind is ProblemKind.CONDITIONAL:  # inside a part off by default
+                witness = conditional_witness(graph, record)
+                if witness is None:
+                    continue  # no values found under which launch evaluates it
             if problem.contextual and not graph.launchable_alone():
                 continue  # an includer of this root may pass a valid value
             condition = conditions.get(problem.span)
@@ -79,7 +86,8 @@ class InvalidConditionValue(Rule):
             arguments = ("" if condition.literal else " with the default arguments"
                          if problem.contextual else " with the arguments as given")
             yield self.finding(record.origin, condition=condition.text, value=value,
-                               arguments=arguments)
+                               arguments=arguments,
+                               witness=None if witness is None else witness.values)
 
 
 def is_boolean(value: str) -> bool:

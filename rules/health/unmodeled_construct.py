@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from launchverify.graph import LaunchGraph
 from launchverify.problems import ProblemKind
 from launchverify.rule import Finding, Rule, RuleContext, Severity
+from launchverify.rules.health.evaluation_error import conditional_witness, never_evaluated
 
 
 class UnmodeledConstruct(Rule):
@@ -44,3 +45,11 @@ class UnmodeledConstruct(Rule):
         for record in graph.problems:
             if record.problem.kind is ProblemKind.UNMODELED:
                 yield self.finding(record.origin, text=record.problem.message)
+            elif (record.problem.kind is ProblemKind.CONDITIONAL and record.value is None
+                  and conditional_witness(graph, record) is None
+                  and not never_evaluated(graph, record)):
+                # under a condition false by default, and no values were found that make
+                # it true (nor shown that none do): whether launch gets there is unknown
+                yield self.finding(record.origin, text=(
+                    f"{record.problem.message}, under a condition no argument values were "
+                    "found to make true: not judged"))

@@ -216,7 +216,8 @@ class NodeBuilder:
             if line.expression is None:
                 self.walker.problem(ProblemKind.EVALUATION,
                                     "invalid substitution in parameter file loaded with "
-                                    f"allow_substs: {line.error}", line.where, ctx)
+                                    f"allow_substs: {line.error}", line.where, ctx,
+                                    with_defaults=text_of(location) is None)
                 continue
             self.walker.reducer.at(ctx, line.where).reduce(line.expression)
 

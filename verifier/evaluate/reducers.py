@@ -61,6 +61,7 @@ class _Located:
 
     prefix = ""
     contextual = False  # its failures rest on argument values an includer may replace
+    with_defaults = False  # its failures rest on the default arguments, whatever the path
 
     def __init__(self, walker: Walker) -> None:
         self.walker = walker
@@ -75,7 +76,8 @@ class _Located:
     def fail(self, message: str, rule: str | None = None) -> None:
         assert self.span is not None
         self.walker.problem(ProblemKind.EVALUATION, self.prefix + message, self.span, self.ctx,
-                            contextual=self.contextual, rule=rule)
+                            contextual=self.contextual, rule=rule,
+                            with_defaults=self.with_defaults)
 
     def unmodeled(self, message: str) -> None:
         assert self.span is not None
@@ -215,10 +217,17 @@ class ScopeReducer(_Located, Reducer):
         return super().guard(guard)
 
     def probe(self, residual: s.Sub) -> None:
-        """A ``$(eval)`` over arguments: it must work with the default arguments too."""
+        """A ``$(eval)`` over arguments: it must work with the default arguments too.
+
+        Off the path the defaults take (under a condition false with them), launch
+        evaluates it only with arguments that make the condition true: kept for LV002 to
+        look for arguments that do and make it raise.
+        """
         assert self.ctx is not None and self.span is not None
         if self.walker.graph.runs(self.ctx.origin(self.span)) is not False:
             self.walker.base_check.at(self.ctx, self.span).reduce(residual)
+        else:
+            self.walker.may_fail(residual, self.span, self.ctx)
 
 
 class DefaultsReducer(_Located, BaseReducer):
@@ -230,6 +239,7 @@ class DefaultsReducer(_Located, BaseReducer):
 
     prefix = "with the default arguments, "
     contextual = True  # an includer passes other values: reported where launched directly
+    with_defaults = True
 
     def __init__(self, walker: Walker) -> None:
         BaseReducer.__init__(self, walker.graph.inputs())

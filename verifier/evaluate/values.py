@@ -138,6 +138,7 @@ class Reducer:
     """Reduce expressions; subclasses say what configurations and the environment hold."""
 
     def __init__(self) -> None:
+        self._in_guards = 0  # evaluating a guard (see ``guard``)
         self._dispatch: dict[type, Callable[[s.Sub], s.Sub]] = {
             s.Text: lambda x: x,
             s.Concat: self._concat,
@@ -169,6 +170,7 @@ class Reducer:
             s.PathJoin: self._path_join,
             s.LocalSub: lambda x: Unknown(f"event value {x.describe()}"),
             s.Opaque: lambda x: Unknown(x.describe()),
+            s.Raises: self._raises,
             s.Rewritten: self._rewritten,
             s.AsBool: self._as_bool,
             Arg: lambda x: self.arg(x) if isinstance(x, Arg) else x,
@@ -203,7 +205,18 @@ class Reducer:
             return None
 
     def guard(self, guard: Guard) -> bool | None:
-        """Return whether a guard holds, or ``None`` when unknown."""
+        """Return whether a guard holds, or ``None`` when unknown.
+
+        A guard is a condition launch evaluated where it is written: an ``$(eval)`` in it
+        is probed there (``probe``), not again wherever a value that depends on it is read.
+        """
+        self._in_guards += 1
+        try:
+            return self._guard(guard)
+        finally:
+            self._in_guards -= 1
+
+    def _guard(self, guard: Guard) -> bool | None:
         if isinstance(guard, Truthy):
             value = self.truth(guard.expression)
             return None if value is None else value != guard.negate
@@ -319,7 +332,8 @@ class Reducer:
         module_text = text_of(modules) if modules is not None else "math"
         if text is None or module_text is None:
             residual = s.PythonExpr(expression, modules)
-            self.probe(residual)
+            if not self._in_guards:  # a guard's $(eval) is its condition's, judged there
+                self.probe(residual)
             return residual
         names = [m.strip() for m in module_text.split(",") if m.strip()]
         try:
@@ -329,6 +343,12 @@ class Reducer:
         except Unsupported as error:
             self.unmodeled(f"{error}: {text!r}")
         return Unknown(f"value of $(eval {text!r})")
+
+    def _raises(self, sub: s.Sub) -> s.Sub:
+        """Launch raises performing this value: a failure where it is evaluated."""
+        assert isinstance(sub, s.Raises)
+        self.fail(f"ros2 launch raises {sub.error}")
+        return Unknown(f"a value launch rejects ({sub.error})")
 
     def _command(self, sub: s.Sub) -> s.Sub:
         """A command's output: never run statically, but kept runnable for ``run``."""

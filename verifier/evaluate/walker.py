@@ -128,26 +128,39 @@ class Walker:
 
     def problem(self, kind: ProblemKind, message: str, span: Span, ctx: Ctx | None,
                 *, contextual: bool = False, rule: str | None = None,
-                harmless: bool = False) -> None:
+                harmless: bool = False, with_defaults: bool = False) -> None:
         """Record an evaluation problem (``contextual``: an includer might prevent it).
 
-        A failure in a part that does not run with the values it was evaluated with (an
-        OpaqueFunction or include under a condition false by default) says nothing about
-        what launch does: that part is not judged (LV003), and the evaluation is incomplete.
+        Launch evaluates an action's fields only once its condition held. A failure met on
+        a path the arguments as given do not take (an include's argument, a node's name
+        under a condition false by default) happens only with arguments that take it: it
+        is ``CONDITIONAL``, for LV002 to report with such arguments (or not at all).
+        ``with_defaults``: the failure was computed with the values as given, whatever the
+        path (an OpaqueFunction's body): off the path it says nothing about what launch
+        does, so that part is not judged (LV003), and the evaluation is incomplete.
         ``harmless``: what was not understood could start nothing (code run at shutdown),
         so the evaluation stays complete.
         """
         chain = ctx.chain if ctx else ()
         if (kind is ProblemKind.EVALUATION and ctx is not None and ctx.path
                 and self.graph.runs(ctx.origin(span)) is False):
-            kind = ProblemKind.UNMODELED
-            message = (f"{message}, in a part evaluated with argument values under which it "
-                       "does not run: not judged (give the arguments that switch it on to "
-                       "check it)")
+            if with_defaults:
+                kind = ProblemKind.UNMODELED
+                message = (f"{message}, in a part evaluated with argument values under which "
+                           "it does not run: not judged (give the arguments that switch it "
+                           "on to check it)")
+            else:
+                kind = ProblemKind.CONDITIONAL
         self.graph.problems.append(ProblemRecord(Problem(kind, message, span, contextual, rule),
                                                  chain, ctx.path if ctx else ()))
         if kind is ProblemKind.UNMODELED and not harmless:
             self.mark_incomplete()
+
+    def may_fail(self, value: s.Sub, span: Span, ctx: Ctx) -> None:
+        """Keep a value over arguments evaluated off the default path (see ``probe``)."""
+        self.graph.problems.append(ProblemRecord(
+            Problem(ProblemKind.CONDITIONAL, f"{value.describe()} may raise", span),
+            ctx.chain, ctx.path, value))
 
     def mark_incomplete(self) -> None:
         """Note that the includes being walked contain something not understood."""
@@ -934,7 +947,8 @@ class Walker:
             # At shutdown launch starts nothing more: what a failing body would have given
             # (a temporary file removed, say) leaves the evaluation complete.
             self.problem(problem.kind, problem.message, problem.span, ctx,
-                         contextual=problem.contextual, harmless=self.at_shutdown)
+                         contextual=problem.contextual, harmless=self.at_shutdown,
+                         with_defaults=True)
             if problem.kind is ProblemKind.EVALUATION and not self.at_shutdown:
                 # the body stopped at an exception: what it would have read and started
                 # is unknown, so absence rules (unused arguments...) must not judge

@@ -493,6 +493,22 @@ class Opaque(Sub):
         return text if text.startswith("<") and text.endswith(">") else f"<{text}>"
 
 
+@dataclass(frozen=True, slots=True)
+class Raises(Sub):
+    """A value launch raises on when it performs it, not before (``error`` says what).
+
+    Launch takes some values as they are and normalizes them only when the action
+    executes: an include's arguments (``SetLaunchConfiguration`` in ``execute``), a
+    node's name. A value it rejects then fails only where the action runs, under its
+    condition: the evaluator reports it on that path, never as the file failing to load.
+    """
+
+    error: str
+
+    def describe(self) -> str:
+        return f"<raises {self.error}>"
+
+
 EMPTY = Text("")
 
 

@@ -100,6 +100,59 @@ class Reasoner:
 
         return self._answer("together", merged, merged, answer)
 
+    def reachable(self, path: PathCondition) -> Witness | None:
+        """Return argument values, any the user may give, under which a path holds.
+
+        For the claim that launch fails where a path holds (launch evaluates an action's
+        fields only under its condition): the switches first (``together``), then every
+        value (``Mode.ANY``), so that a free-text argument takes what the condition
+        compares it to (``sensor:=oakd``), as whoever picks that sensor gives it.
+        ``None`` when none is found.
+        """
+        found = self.together(path)
+        if found is not None or not path:
+            return found
+        guards = list(dict.fromkeys(path))
+
+        def answer() -> Witness | None:
+            tried = self.search.run(Mode.ANY, guards, lambda r: all_hold(r, guards))
+            return self._tried(tried.found)
+
+        result = self._answer("reachable", tuple(guards), guards, answer)
+        return None if result is CANNOT_TELL else cast("Witness | None", result)
+
+    def fails(self, path: PathCondition, value: Sub) -> tuple[str, Witness] | None:
+        """Return how evaluating ``value`` raises where ``path`` holds, and the arguments.
+
+        Tried over the switches, then over every value (as ``reachable``); only what
+        evaluation shows is reported (``None`` when nothing tried raised).
+        """
+        guards = list(dict.fromkeys(path))
+        failure: list[str] = []
+
+        def raises(reducer: SearchReducer) -> bool | None:
+            inside = all_hold(reducer, guards)
+            if inside is False:
+                return False
+            probe = _RaisingReducer(reducer.pinned)
+            probe.reduce(value)
+            if probe.failures:
+                if inside:
+                    failure[:] = probe.failures[:1]
+                return True if inside else None
+            return None
+
+        def answer() -> tuple[str, Witness] | None:
+            for mode in (Mode.SWITCHES, Mode.ANY):
+                tried = self.search.run(mode, [*guards, value], raises)
+                found = self._tried(tried.found)
+                if found is not None and found.values and failure:
+                    return failure[0], found
+            return None
+
+        result = self._answer("fails", (tuple(guards), value), [*guards, value], answer)
+        return None if result is CANNOT_TELL else cast("tuple[str, Witness] | None", result)
+
     def unreachable(self, path: PathCondition) -> bool:
         """Return whether a path holds under no value the user can give the arguments.
 
@@ -293,6 +346,17 @@ class Reasoner:
             return None
         return Witness({name: value for name, value in assignment.items()
                         if name in self.domains and self.domains[name].defaults != {value}})
+
+
+class _RaisingReducer(SearchReducer):
+    """A search's reducer that keeps what launch would raise on (``fails``)."""
+
+    def __init__(self, pinned: dict[str, str]) -> None:
+        super().__init__(pinned)
+        self.failures: list[str] = []
+
+    def fail(self, message: str, rule: str | None = None) -> None:
+        self.failures.append(message)
 
 
 class _CannotTell:

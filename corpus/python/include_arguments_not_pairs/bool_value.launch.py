@@ -9,7 +9,7 @@ def generate_launch_description():
     robot = os.path.join(os.path.dirname(__file__), 'robot.launch.py')
     # argument values must be text: launch raises TypeError: 'bool' object is not iterable
     return LaunchDescription([
-        IncludeLaunchDescription(PythonLaunchDescriptionSource(robot),  # expect: LV002
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(robot),
                                  launch_arguments={'robot': 'r3',
-                                                   'use_sim_time': True}.items()),
+                                                   'use_sim_time': True}.items()),  # expect: LV002
     ])
