@@ -96,7 +96,8 @@ def _marked(value: Any) -> bool:
 def test_each_rule_holds_for_an_unknown(rule: Rule, tmp_path: Path) -> None:
     plain = _run(rule, tmp_path, varied=False)
     varied = _run(rule, tmp_path, varied=True)
-    why = f"{rule.operation}: {rule.answer.name}, but plain {plain.shown()}, varied {varied.shown()}"
+    why = (f"{rule.operation}: {rule.answer.name}, but plain {plain.shown()}, "
+           f"varied {varied.shown()}")
     if rule.answer is Answer.UNKNOWN:
         assert plain.error is None and _unknown(plain.result), why
     elif rule.answer is Answer.ASSUMED:

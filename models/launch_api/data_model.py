@@ -91,7 +91,8 @@ TABLE: tuple[Rule, ...] = (
         "async with": ("async def f():\n    async with u as w:\n        return w\n"
                        "r = drive(f())"),
         "int": "int(u)", "float": "float(u)", "complex": "complex(u)", "__complex__":
-        "complex(u)", "bytearray": "bytearray(u)", "ord": "ord(u)",         "str methods": "u.split('_')[1].strip().upper()",
+        "complex(u)", "bytearray": "bytearray(u)", "ord": "ord(u)",
+        "str methods": "u.split('_')[1].strip().upper()",
         "unpacking": "a, b, c = u\nr = c", "starred unpacking": "a, *rest, b = u\nr = b",
         "json.loads": "json.loads(u)", "yaml.safe_load": "yaml.safe_load(u)['robot']",
         "os.environ": "os.environ.get(u)", "os.getenv": "os.getenv(u)",
@@ -106,7 +107,8 @@ TABLE: tuple[Rule, ...] = (
         "and/or": "u and 1", "assert": "assert u\nr = 1",
         "__contains__": "'a' in u", "in": "'a' in u", "__len__": "len(u)", "len": "len(u)",
         "__index__": "[1, 2][u]", "__int__": "import builtins\nr = builtins.int(u)",
-        "__float__": "math.sqrt(u)", "str.join": "'/'.join(u)", "__iter__": "list(u)", "iter": "list(iter(u))",
+        "__float__": "math.sqrt(u)", "str.join": "'/'.join(u)", "__iter__": "list(u)",
+        "iter": "list(iter(u))",
         "for": "r = [x for x in u]", "comprehension": "{x: 1 for x in u}",
         "__reversed__": "list(reversed(u))", "reversed": "list(reversed(u))",
         "sorted": "sorted(u)", "sum": "sum(u)", "max": "max(u)", "min": "min(u)",
@@ -151,7 +153,8 @@ TABLE: tuple[Rule, ...] = (
         "f-string": "f'{u}/x'", "%-formatting": "'%s/x' % u", "__fspath__": "os.fspath(u)",
         "os.fspath": "os.fspath(u)",
         "os.path": "os.path.join(u, 'x')", "pathlib": "str(pathlib.Path(u) / 'x')",
-        "json.dumps": "json.dumps({'a': u})", "__bytes__": "bytes(u)", "bytes": "bytes(u)", "yaml.dump": "yaml.dump({'a': u})",
+        "json.dumps": "json.dumps({'a': u})", "__bytes__": "bytes(u)", "bytes": "bytes(u)",
+        "yaml.dump": "yaml.dump({'a': u})",
         "yaml.safe_dump": "yaml.safe_dump({'a': u})", "shlex": "' '.join(shlex.split(u))",
         "string concatenation": "'a' + u", "__hash__": "{u: 1}",
         "print": "print(u, end='')\nr = u", "eval": "eval(repr(u))",
@@ -166,7 +169,8 @@ TABLE: tuple[Rule, ...] = (
     }),
     # ------------------------------------------------- the same answer for any value
     *_rules(Answer.SAME, {
-        "id": "id(u) > 0", "hash": "{u: 1}[u]", "dir": "dir(u) is not None", "vars": "vars(u) is not None",
+        "id": "id(u) > 0", "hash": "{u: 1}[u]", "dir": "dir(u) is not None",
+        "vars": "vars(u) is not None",
         "__dir__": "dir(u) is not None", "__sizeof__": "u.__sizeof__() > 0",
         "globals": "globals() is not None", "locals": "locals() is not None",
         "object": "object()", "super": "super", "type()": "type('T', (), {})",

@@ -24,7 +24,7 @@ from __future__ import annotations
 import dis
 import sys
 import types
-from collections.abc import Iterator
+from collections.abc import Generator, Iterator
 from typing import Any
 
 from launchverify.models.launch_api.placeholders import WORLD, assumed, placeholder
@@ -116,8 +116,7 @@ class Opaque(str):
             super().__delattr__(name)
 
     def __await__(self) -> Iterator[Any]:
-        return Opaque(f"await {self._description}")
-        yield  # a generator: awaiting an unknown gives more of it, at once
+        return _awaited(self)
 
     async def __aenter__(self) -> Opaque:
         return self
@@ -197,6 +196,13 @@ class Opaque(str):
 
     def __deepcopy__(self, memo: Any) -> Opaque:
         return self
+
+
+def _awaited(unknown: Opaque) -> Generator[Any, None, Opaque]:
+    """Awaiting an unknown gives more of it, at once (a generator that never yields)."""
+    if False:
+        yield None
+    return Opaque(f"await {unknown._description}")
 
 
 class _UnknownRounds:

@@ -485,7 +485,7 @@ def _yaml_knows_opaque_files() -> Iterator[None]:
             return Opaque(f"the JSON in {text._description}")
         return json_loads(text, *args, **kwargs)
 
-    json.loads = loads
+    json.loads = loads  # type: ignore[assignment]
     for dumper in (yaml.SafeDumper, yaml.Dumper):
         if Opaque not in dumper.yaml_representers:
             dumper.add_representer(Opaque, _represent_unknown)
