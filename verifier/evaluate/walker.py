@@ -123,6 +123,7 @@ class Walker:
         # the container actions that ran, by id, with their full names (LoadComposableNodes)
         self.container_names: dict[int, tuple[a.Action, s.Sub | None]] = {}
         self.budget = ExpansionBudget()  # what this root may expand (``budget.py``)
+        self.maybe_failing: set[tuple[object, ...]] = set()  # ``may_fail``'s, once each
 
     # ------------------------------------------------------------------ recording
 
@@ -157,7 +158,14 @@ class Walker:
             self.mark_incomplete()
 
     def may_fail(self, value: s.Sub, span: Span, ctx: Ctx) -> None:
-        """Keep a value over arguments evaluated off the default path (see ``probe``)."""
+        """Keep a value over arguments evaluated off the default path (see ``probe``).
+
+        Once per place, value and path: a value read again asks the same question.
+        """
+        key = (span, value, ctx.chain, ctx.path)
+        if key in self.maybe_failing:
+            return
+        self.maybe_failing.add(key)
         self.graph.problems.append(ProblemRecord(
             Problem(ProblemKind.CONDITIONAL, f"{value.describe()} may raise", span),
             ctx.chain, ctx.path, value))

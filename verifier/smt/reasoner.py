@@ -33,7 +33,14 @@ from launchverify.ir.symbolic import (
 from launchverify.models.booleans import CONDITION_FALSE, CONDITION_TRUE
 from launchverify.smt.budget import BudgetSpent, CannotTell, SolverBudget
 from launchverify.smt.domains import ArgumentDomain, Mode, argument_domains
-from launchverify.smt.search import Search, SearchReducer, all_hold
+from launchverify.smt.search import (
+    FREE_KEY,
+    OPAQUE_KEY,
+    UNSET_KEY,
+    Search,
+    SearchReducer,
+    all_hold,
+)
 from launchverify.smt.types import Contradiction, Witness
 
 if TYPE_CHECKING:
@@ -124,34 +131,44 @@ class Reasoner:
     def fails(self, path: PathCondition, value: Sub) -> tuple[str, Witness] | None:
         """Return how evaluating ``value`` raises where ``path`` holds, and the arguments.
 
-        Tried over the switches, then over every value (as ``reachable``); only what
-        evaluation shows is reported (``None`` when nothing tried raised).
+        Only the arguments are varied, and a failure must show with them and the defaults
+        (``_facts``): a value the search guesses for an environment variable, or for a
+        free-text argument to break the expression (``name:='``), is no fact. The switches
+        are tried first; then the arguments under which the path holds (``reachable``).
+        ``None`` when nothing tried raised.
         """
         guards = list(dict.fromkeys(path))
         failure: list[str] = []
 
         def raises(reducer: SearchReducer) -> bool | None:
-            inside = all_hold(reducer, guards)
-            if inside is False:
-                return False
-            probe = _RaisingReducer(reducer.pinned)
-            probe.reduce(value)
-            if probe.failures:
-                if inside:
-                    failure[:] = probe.failures[:1]
-                return True if inside else None
-            return None
+            found = self._failure(guards, value, _facts(reducer.pinned))
+            if found:
+                failure[:] = [found]
+            return True if found else None
 
         def answer() -> tuple[str, Witness] | None:
-            for mode in (Mode.SWITCHES, Mode.ANY):
-                tried = self.search.run(mode, [*guards, value], raises)
-                found = self._tried(tried.found)
-                if found is not None and found.values and failure:
-                    return failure[0], found
-            return None
+            tried = self.search.run(Mode.SWITCHES, [*guards, value], raises)
+            found = self._tried(tried.found)
+            if found is not None and found.values and failure:
+                return failure[0], found
+            reached = self.reachable(path)
+            if reached is None or not reached.values:
+                return None
+            message = self._failure(guards, value, {**self.graph.inputs(), **reached.values})
+            return None if message is None else (message, reached)
 
         result = self._answer("fails", (tuple(guards), value), [*guards, value], answer)
         return None if result is CANNOT_TELL else cast("tuple[str, Witness] | None", result)
+
+    @staticmethod
+    def _failure(guards: list[Guard], value: Sub, pinned: dict[str, str]) -> str | None:
+        """Return what evaluating ``value`` raises with ``pinned`` where the path holds."""
+        probe = _RaisingReducer(pinned)
+        if all_hold(probe, guards) is not True:
+            return None
+        probe.failures.clear()  # the guards' own are their conditions' (judged there)
+        probe.reduce(value)
+        return probe.failures[0] if probe.failures else None
 
     def unreachable(self, path: PathCondition) -> bool:
         """Return whether a path holds under no value the user can give the arguments.
@@ -346,6 +363,12 @@ class Reasoner:
             return None
         return Witness({name: value for name, value in assignment.items()
                         if name in self.domains and self.domains[name].defaults != {value}})
+
+
+def _facts(pinned: dict[str, str]) -> dict[str, str]:
+    """Return a search's assignment without what it guessed for values without a model."""
+    return {key: value for key, value in pinned.items()
+            if not key.startswith((FREE_KEY, OPAQUE_KEY, UNSET_KEY))}
 
 
 class _RaisingReducer(SearchReducer):
