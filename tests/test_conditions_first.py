@@ -101,3 +101,18 @@ def test_an_eval_over_arguments_off_the_default_path_is_tried_where_it_runs(
     found = [f for f in findings(tmp_path) if f.code == "LV002"]
     assert [(f.span.line, "ZeroDivisionError" in f.message) for f in found] == [(6, True)]
     assert found[0].witness and found[0].witness.get("divisor") not in (None, "0")
+
+
+def test_no_failure_rests_on_a_value_guessed_to_break_the_expression(tmp_path: Path) -> None:
+    # a free-text argument or an environment variable quoted into an $(eval): a value
+    # such as ' breaks it, but that is no fact about the launch (autoware, husarion)
+    (tmp_path / "quoted.launch.xml").write_text(
+        '<launch>\n'
+        '  <arg name="use_x" default="false"/>\n'
+        '  <arg name="prefix" default=""/>\n'
+        '  <let name="ns" value="$(eval &quot;\'$(var prefix)\' + \'/\'&quot;)"'
+        ' if="$(var use_x)"/>\n'
+        '  <let name="file" value="$(eval &quot;\'cfg_$(env ROBOT_MODEL panther).yaml\'&quot;)"'
+        ' if="$(var use_x)"/>\n'
+        '</launch>\n', encoding="utf-8")
+    assert [f for f in findings(tmp_path) if f.code == "LV002"] == []
