@@ -116,3 +116,16 @@ def test_no_failure_rests_on_a_value_guessed_to_break_the_expression(tmp_path: P
         ' if="$(var use_x)"/>\n'
         '</launch>\n', encoding="utf-8")
     assert [f for f in findings(tmp_path) if f.code == "LV002"] == []
+
+
+def test_a_failure_under_a_condition_on_the_machine_is_not_an_error(tmp_path: Path) -> None:
+    # whether the robot sets USE_X is unknown: what fails only if it does is no error
+    (tmp_path / "machine.launch.xml").write_text(
+        '<launch>\n'
+        '  <group if="$(env USE_X)">\n'
+        '    <let name="ratio" value="$(eval \'1 / 0\')"/>\n'
+        '  </group>\n'
+        '</launch>\n', encoding="utf-8")
+    found = findings(tmp_path)
+    assert not [f for f in found if f.code == "LV002"]
+    assert [f.span.line for f in found if f.code == "LV003"] == [3]

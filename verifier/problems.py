@@ -21,8 +21,9 @@ class ProblemKind(enum.Enum):
     EVALUATION = "evaluation"
     UNMODELED = "unmodeled"
     # Evaluating an action fails, on a path the arguments as given do not take (under a
-    # condition false with them): a failure only with arguments that take that path, which
-    # LV002 names (a witness); none when no values do (launch never evaluates it).
+    # condition false with them) or may not take (a condition on the machine): a failure
+    # only with arguments that take that path, which LV002 names (a witness); none when
+    # no values do (launch never evaluates it), an info (LV003) when it cannot tell.
     CONDITIONAL = "conditional"
     INTERNAL = "internal"  # launchverify failed (LV005), not the file
 

@@ -134,8 +134,9 @@ class Walker:
 
         Launch evaluates an action's fields only once its condition held. A failure met on
         a path the arguments as given do not take (an include's argument, a node's name
-        under a condition false by default) happens only with arguments that take it: it
-        is ``CONDITIONAL``, for LV002 to report with such arguments (or not at all).
+        under a condition false by default), or may not take (a condition on the machine),
+        happens only with arguments that take it: it is ``CONDITIONAL``, for LV002 to
+        report with such arguments (or not at all).
         ``with_defaults``: the failure was computed with the values as given, whatever the
         path (an OpaqueFunction's body): off the path it says nothing about what launch
         does, so that part is not judged (LV003), and the evaluation is incomplete.
@@ -143,15 +144,15 @@ class Walker:
         so the evaluation stays complete.
         """
         chain = ctx.chain if ctx else ()
-        if (kind is ProblemKind.EVALUATION and ctx is not None and ctx.path
-                and self.graph.runs(ctx.origin(span)) is False):
-            if with_defaults:
-                kind = ProblemKind.UNMODELED
-                message = (f"{message}, in a part evaluated with argument values under which "
-                           "it does not run: not judged (give the arguments that switch it "
-                           "on to check it)")
-            else:
-                kind = ProblemKind.CONDITIONAL
+        runs = (self.graph.runs(ctx.origin(span))
+                if kind is ProblemKind.EVALUATION and ctx is not None and ctx.path else True)
+        if runs is False and with_defaults:
+            kind = ProblemKind.UNMODELED
+            message = (f"{message}, in a part evaluated with argument values under which "
+                       "it does not run: not judged (give the arguments that switch it "
+                       "on to check it)")
+        elif runs is not True and not with_defaults:  # off the path, or not known to be on it
+            kind = ProblemKind.CONDITIONAL
         self.graph.problems.append(ProblemRecord(Problem(kind, message, span, contextual, rule),
                                                  chain, ctx.path if ctx else ()))
         if kind is ProblemKind.UNMODELED and not harmless:

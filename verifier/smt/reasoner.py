@@ -113,8 +113,8 @@ class Reasoner:
         For the claim that launch fails where a path holds (launch evaluates an action's
         fields only under its condition): the switches first (``together``), then every
         value (``Mode.ANY``), so that a free-text argument takes what the condition
-        compares it to (``sensor:=oakd``), as whoever picks that sensor gives it.
-        ``None`` when none is found.
+        compares it to (``sensor:=oakd``), as whoever picks that sensor gives it; only
+        arguments of the root's interface (``domains``). ``None`` when none is found.
         """
         found = self.together(path)
         if found is not None or not path:
@@ -123,7 +123,10 @@ class Reasoner:
 
         def answer() -> Witness | None:
             tried = self.search.run(Mode.ANY, guards, lambda r: all_hold(r, guards))
-            return self._tried(tried.found)
+            found = self._tried(tried.found)
+            if found is None or any(not self.domains[name].exposed for name in found.values):
+                return None  # an included file's own knob is not the root user's to turn
+            return found
 
         result = self._answer("reachable", tuple(guards), guards, answer)
         return None if result is CANNOT_TELL else cast("Witness | None", result)
