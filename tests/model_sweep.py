@@ -81,6 +81,7 @@ TOGETHER = {
                                 "package": "'rclcpp_components'"},
     "ComposableLifecycleNode": {"package": "'demo_nodes_cpp'",
                                 "plugin": "'demo_nodes_cpp::Talker'"},
+    "NotSubstitution": {"value": "'true'"},  # performs to a boolean: 'v' raises
 }
 
 _REAL_API = json.loads((Path(__file__).resolve().parent.parent / "models" / "launch_api"

@@ -693,8 +693,8 @@ class ExecuteProcess(Action):
             shell=bool(o["shell"]),
             emulate_tty=bool(o["emulate_tty"]),
             respawn=respawn if isinstance(respawn, bool) else cv.sub(respawn),
-            respawn_delay=o["respawn_delay"],
-            respawn_max_retries=o["respawn_max_retries"],
+            respawn_delay=_number(o["respawn_delay"], float),
+            respawn_max_retries=_number(o["respawn_max_retries"], int),
             sigterm_timeout=cv.opt_sub(_text(o["sigterm_timeout"])),
             sigkill_timeout=cv.opt_sub(_text(o["sigkill_timeout"])),
             on_exit=exit_actions,
@@ -722,6 +722,17 @@ def _timeout(value: Any, name: str) -> list[Any]:
 
         value = LaunchConfiguration(name, default=5)
     return normalized(_text(value))  # type: ignore[no-any-return]
+
+
+def _number(value: Any, kind: type) -> Any:
+    """Return a respawn setting as the IR holds it: launch reads it only when it respawns.
+
+    Anything but a number of its kind (an unknown, a list, a substitution) is not known
+    here (``None``); launch would fail on it at run time, not while loading the file.
+    """
+    if isinstance(value, bool) or not isinstance(value, (int, float)):
+        return None
+    return kind(value) if kind is float or isinstance(value, int) else None
 
 
 def _text(value: Any) -> Any:

@@ -317,13 +317,31 @@ class ComposableNodeContainer(Node):
                  composable_node_descriptions: Iterable[Any] | None = None,
                  **kwargs: Any) -> None:
         super().__init__(name=name, namespace=namespace, **kwargs)
-        self._descriptions = list(composable_node_descriptions or [])
+        self._descriptions = _descriptions(composable_node_descriptions or [])
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.ComposableNodeContainer(
             **self.node_fields(cv),
-            composable_nodes=tuple(d.to_description(cv) for d in self._descriptions),
+            composable_nodes=tuple(_described(d, cv, self._span) for d in self._descriptions),
         )
+
+
+def _descriptions(value: Any) -> list[Any]:
+    """Return composable node descriptions as a list: an unknown list is one unknown item."""
+    return [value] if _unknown(value) else list(value)
+
+
+def _described(description: Any, cv: Converter, span: Any) -> a.ComposableNode:
+    """Return a description's IR: one that code launchverify cannot see built is unknown.
+
+    Its package, plugin and name are unknowns (never one another's: each its own).
+    """
+    if not _unknown(description):
+        return description.to_description(cv)  # type: ignore[no-any-return]
+    what = f"a composable node of code launchverify cannot see ({id(description):x})"
+    return a.ComposableNode(package=s.Opaque(f"{what}: package"),
+                            plugin=s.Opaque(f"{what}: plugin"), span=span,
+                            name=s.Opaque(f"{what}: name"))
 
 
 class LoadComposableNodes(Action):
@@ -332,7 +350,7 @@ class LoadComposableNodes(Action):
     def __init__(self, *, composable_node_descriptions: Iterable[Any], target_container: Any,
                  **kwargs: Any) -> None:
         super().__init__(**kwargs)
-        self._descriptions = list(composable_node_descriptions)
+        self._descriptions = _descriptions(composable_node_descriptions)
         self._target_container = target_container
 
     def to_ir(self, cv: Converter) -> a.Action:
@@ -343,7 +361,7 @@ class LoadComposableNodes(Action):
             ir_target = cv.sub(target)
         return a.LoadComposableNodes(
             **cv_common(self, cv), target=ir_target,
-            composable_nodes=tuple(d.to_description(cv) for d in self._descriptions),
+            composable_nodes=tuple(_described(d, cv, self._span) for d in self._descriptions),
         )
 
 

@@ -73,8 +73,8 @@ def _block(plan: Plan, within: int | None, title: str, lines: list[str],
             extras = [f"output={process.output}"]
             if process.respawn:
                 retries = process.respawn_max_retries
-                extras.append(f"respawn (delay {process.respawn_delay:g} s, retries "
-                              f"{'unlimited' if retries < 0 else retries})")
+                extras.append(f"respawn (delay {process.respawn_delay or 0.0:g} s, retries "
+                              f"{'unlimited' if retries is None or retries < 0 else retries})")
             extras.append(f"sigterm_timeout={process.sigterm_timeout:g}")
             entries.append("      " + ", ".join(extras))
         elif (log := plan.log(execution)) is not None:

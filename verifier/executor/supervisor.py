@@ -335,7 +335,8 @@ class Supervisor:
         self.fire("process_exit", execution)
         retries = self.retries.get(execution, 0)
         if (process.respawn and not self.shutting_down
-                and (process.respawn_max_retries < 0 or retries < process.respawn_max_retries)):
+                and (process.respawn_max_retries is None or process.respawn_max_retries < 0
+                     or retries < process.respawn_max_retries)):
             self.retries[execution] = retries + 1
             self.event(f"respawn {label}")
             loop = asyncio.get_running_loop()
@@ -346,7 +347,7 @@ class Supervisor:
                 self.start(execution, respawn=True)
                 self.check_done()
 
-            handle = loop.call_later(process.respawn_delay, again)
+            handle = loop.call_later(process.respawn_delay or 0.0, again)
             self.timers.add(handle)
             return
         self.fire("execution_complete", execution)

@@ -15,13 +15,17 @@ anything, runs again with every assumption the other way (the varied world):
 
 from __future__ import annotations
 
+import dataclasses
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Generic, TypeVar
 
 from launchverify.ir import actions as a
+from launchverify.ir import subst as s
+from launchverify.ir.conditions import Condition, OpaqueCondition
 from launchverify.models.launch_api.placeholders import WORLD, varied_world
 from launchverify.problems import Problem, ProblemKind
+from launchverify.span import Span
 
 _T = TypeVar("_T")
 
@@ -55,7 +59,76 @@ def checked(run: Callable[[], tuple[_T, Sequence[Problem]]],
     # an assumption no other run can vary (an unknown value's type): nothing is a fact
     problems = settle(found, () if unvaried else repeated, assumed) if failed else list(found)
     depends = branched and shape(actions(result)) != shape(actions(other))
+    if branched:
+        what = ", ".join(f"<{name}>" for name in reversed(assumed[-3:]))
+        unvary(actions(result), actions(other),
+               f"a value built from what launchverify assumed for unknown values: {what}")
     return Checked(result, problems, depends)
+
+
+def unvary(plain: object, varied: object, what: str) -> None:
+    """Make unknown, in place, each value of the plain world's that the other built otherwise.
+
+    A value may differ between the worlds: a name joined from a loop over a vendor's list
+    (no round, then one), a flag's text. Such a value rests on an assumption, so it is
+    no fact: it becomes an unknown (``s.Opaque``). Where the worlds built different
+    actions, an action is paired with the other world's of its kind written at the same
+    place. Actions keep their identity (an event handler names its target by it).
+    """
+    seen: set[int] = set()
+    made: list[object] = []
+
+    def walk(mine: object, theirs: object) -> None:
+        if (mine is theirs or id(mine) in seen or type(mine) is not type(theirs)
+                or not dataclasses.is_dataclass(mine) or isinstance(mine, (s.Sub, Span))):
+            return
+        seen.add(id(mine))
+        for item in dataclasses.fields(mine):
+            old = getattr(mine, item.name)
+            new = value(old, getattr(theirs, item.name))
+            if new is not old:
+                object.__setattr__(mine, item.name, new)
+
+    def value(mine: object, theirs: object) -> object:
+        if isinstance(mine, s.Sub):
+            if mine == theirs or not isinstance(theirs, s.Sub):
+                return mine
+            made.append(mine)  # each its own unknown: two of them are not one value
+            return s.Opaque(f"{what}, #{len(made)}")
+        conditions = (isinstance(mine, Condition) or mine is None) and (
+            isinstance(theirs, Condition) or theirs is None)
+        if conditions and mine is not theirs and type(mine) is not type(theirs):
+            made.append(mine)  # whether it runs rests on the assumption
+            return OpaqueCondition(f"{what}, #{len(made)}")
+        if type(mine) is tuple and type(theirs) is tuple:
+            partners = _partners(mine, theirs)
+            items = tuple(item if partner is None else value(item, partner)
+                          for item, partner in zip(mine, partners, strict=True))
+            return mine if all(a is b for a, b in zip(items, mine, strict=True)) else items
+        walk(mine, theirs)
+        return mine
+
+    value(plain, varied)
+
+
+def _partners(mine: tuple[object, ...], theirs: tuple[object, ...]) -> list[object | None]:
+    """Return, for each item of one world's tuple, the other world's item it stands for.
+
+    Items at the same place, when both worlds hold as many; otherwise an action is the
+    other world's action of its kind written at the same place (a loop's extra round
+    has none), and other items have no partner.
+    """
+    if len(mine) == len(theirs):
+        return list(theirs)
+    left = [item for item in theirs if isinstance(item, a.Action)]
+    found: list[object | None] = []
+    for item in mine:
+        partner = next((other for other in left if type(other) is type(item)
+                        and getattr(other, "span", None) == getattr(item, "span", 0)), None)
+        if partner is not None:
+            left.remove(partner)
+        found.append(partner)
+    return found
 
 
 def shape(actions: tuple[a.Action, ...] | None) -> object:
