@@ -369,7 +369,6 @@ REFUSED = [
      "unexpected attribute `bogus` in `node`"),
     ("xml", '<launch><node pkg="p" exec="e"><bogus/></node></launch>',
      "unexpected nested tag `bogus` in `node`"),
-    ("xml", '<launch bogus="1"/>', "unexpected attribute `bogus` in `launch`"),
     ("xml", "<launch><arg/></launch>", "`arg` requires the attribute `name`"),
     ("xml", '<launch><node pkg="p"/></launch>', "`node` requires the attribute `exec`"),
     ("xml", '<launch><node pkg="p" exec="e" if="1" unless="0"/></launch>',
@@ -392,6 +391,19 @@ REFUSED = [
     ("yaml", "launch: []\nother: []\n", "one root key"),
     ("yaml", "launch: [\n", "invalid YAML"),
 ]
+
+
+def test_the_roots_other_attributes_are_ignored_as_launch_ignores_them(tmp_path: Path) -> None:
+    # launch's parser reads ``deprecated`` from the root and checks nothing else there
+    # (LeoRover's files: ``<launch version="0.1.1">``); an action's attributes it checks.
+    path = tmp_path / "root.launch.xml"
+    sink = ProblemSink()
+    root = read_xml(path, b'<launch version="0.1.1"><node pkg="p" exec="e" bogus="1"/>'
+                          b'</launch>', sink)
+    assert root is not None
+    TagParser(path, sink).launch_file(root, "xml")
+    assert [p.message for p in sink.problems] == [
+        "unexpected attribute `bogus` in `node` (ros2 launch refuses it)"]
 
 
 @pytest.mark.parametrize(("fmt", "text", "fragment"), REFUSED, ids=[r[2] for r in REFUSED])

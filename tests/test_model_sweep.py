@@ -113,11 +113,9 @@ def test_every_exported_callable_is_swept() -> None:
 DERIVED = "instance of a derived class"
 
 
-# The calls whose errors the models cannot fix alone (each flips its xfail when fixed):
-# iterating an unknown runs no round in the plain world, and what the loop built (an
-# empty name) reaches the IR as a fact: the varied world only judges the frontend's own
-# failures. The "outside any call" raises come from an OpaqueFunction's body, whose
-# failure has no call's line; they are the derived-class instances of the context copy.
+# Calls whose values a loop over an unknown built (no round in the plain world, one in the
+# varied one): what the loop built is no fact (``assumptions.unvary``). A model's failure
+# on such a value points at the call (the action's line).
 LEFT = ("=comprehension: ['LV102']", "outside any call: ['LV002']")
 
 
@@ -143,11 +141,6 @@ def test_no_error_rests_on_an_unknown(sweep: dict[str, list[str]]) -> None:
     assert not lines, "\n".join(lines)
 
 
-@pytest.mark.xfail(strict=True, reason="where the worlds build different actions at one "
-                   "place (RosGzBridge's setups from a flag built by a loop over an unknown), "
-                   "the plain world's extra action keeps its values as facts; the rest are "
-                   "real errors the sweep's twins miss (a str or dict given for a list of "
-                   "descriptions or configurations: launch fails on both)")
 def test_no_error_rests_on_a_loop_over_an_unknown(sweep: dict[str, list[str]]) -> None:
     lines = _problems(sweep, derived=False, left=True)
     assert not lines, "\n".join(lines)

@@ -6,6 +6,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from launchverify.graph import LaunchGraph
+from launchverify.models.rewritten_yaml import rewrite_of
 from launchverify.parameters import file_readers
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 
@@ -24,7 +25,9 @@ class ParamFileError(Rule):
     written twice is merged by rcl but replaced by launch_ros). Files that only components
     loaded into a container read are read by launch_ros with `yaml.safe_load`, not rcl:
     for them only what YAML itself gets wrong is reported, and a file without any
-    `ros__parameters` is one flat set of parameters, as launch_ros takes it.
+    `ros__parameters` is one flat set of parameters, as launch_ros takes it. A file every
+    node reads through nav2's `RewrittenYaml` reaches rcl as PyYAML writes it again: a key
+    without a value (written `null` then) is no error there.
 
     ## Why it matters
     rcl refuses the whole file and the node does not start (`Couldn't parse params file`),
@@ -50,9 +53,23 @@ class ParamFileError(Rule):
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
         for path, param_file in graph.param_files.items():
-            reader = "launch_ros" if only_components(graph, path) else "rcl"
-            for problem in param_file.problems_for(reader):
+            for problem in param_file.problems_for(reader_of(graph, path)):
                 yield self.finding(problem.span, text=problem.message)
+
+
+def reader_of(graph: LaunchGraph, path: Path) -> str:
+    """Return what reads a file: rcl, launch_ros (components only), or nav2's rewrite.
+
+    ``RewrittenYaml`` loads the file with ``yaml.safe_load`` and writes it out again for
+    rcl: what only rcl refuses in the text as written (a key without a value, which the
+    rewrite writes as ``null``) never reaches rcl when every node reads it that way.
+    """
+    if only_components(graph, path):
+        return "launch_ros"
+    readers = file_readers(graph).get(path, [])
+    if readers and all(rewrite_of(param.file) is not None for _, param in readers):
+        return "rewritten"
+    return "rcl"
 
 
 def only_components(graph: LaunchGraph, path: Path) -> bool:

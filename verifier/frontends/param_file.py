@@ -74,6 +74,8 @@ class ParamFile:
     sink: ProblemSink = field(default_factory=ProblemSink)
     # What only rcl rejects: launch_ros reads files for loaded components itself.
     rcl_sink: ProblemSink = field(default_factory=ProblemSink)
+    # Of those, keys without a value: written again by PyYAML (RewrittenYaml), ``null``.
+    empty_sink: ProblemSink = field(default_factory=ProblemSink)
     # What only launch_ros's yaml.safe_load loses (a mapping written twice: rcl merges).
     yaml_sink: ProblemSink = field(default_factory=ProblemSink)
     # Node keys without ros__parameters: ignored, unless launch_ros reads a flat file.
@@ -81,11 +83,19 @@ class ParamFile:
     readable: bool = True
 
     def problems_for(self, reader: str) -> list[Problem]:
-        """Return what is wrong with the file for ``"rcl"`` or ``"launch_ros"``."""
+        """Return what is wrong with the file for ``"rcl"``, ``"launch_ros"`` or ``"rewritten"``.
+
+        ``"rewritten"``: PyYAML loads it and rcl reads what PyYAML writes again (nav2's
+        ``RewrittenYaml``): what YAML loses counts, and what rcl refuses in any text, but
+        not a key without a value (PyYAML writes ``null``, which rcl takes as text).
+        """
         problems = list(self.sink.problems)
         if reader == "rcl":
-            return problems + self.rcl_sink.problems + self.ignored_sink.problems
+            return (problems + self.rcl_sink.problems + self.empty_sink.problems
+                    + self.ignored_sink.problems)
         problems += self.yaml_sink.problems
+        if reader == "rewritten":
+            return problems + self.rcl_sink.problems + self.ignored_sink.problems
         if self.blocks:  # without any ros__parameters, launch_ros takes the whole file
             problems += self.ignored_sink.problems
         return problems
@@ -268,7 +278,8 @@ class _Reader:
             else:
                 assert isinstance(value, yaml.ScalarNode)
                 if _empty(value):
-                    self.rcl_problem(f"parameter {name!r} has no value", key_node)
+                    self.result.empty_sink.parse(f"parameter {name!r} has no value",
+                                                 span_of(self.path, key_node))
                     continue
                 parsed, kind = scalar(value)
                 block.parameters[name] = FileParameter(parsed, kind,

@@ -98,7 +98,8 @@ class TagParser(EntityReader):
             return a.LaunchFile(path=self.path, format=fmt, actions=(), span=root.span)
         deprecated = self.plain(root, "deprecated")
         actions = self.actions(root.children())
-        self.finish(root)
+        # no ``finish(root)``: launch reads ``deprecated`` from the root and checks no
+        # other attribute there (``<launch version="0.1">`` loads), only each action's
         return a.LaunchFile(
             path=self.path, format=fmt, actions=actions, span=root.span, deprecated=deprecated
         )

@@ -24,7 +24,7 @@ from typing import Any
 
 from launchverify.frontends.python.assumptions import checked
 from launchverify.frontends.python.concrete import SubstitutionFailure
-from launchverify.frontends.python.convert import PythonConverter
+from launchverify.frontends.python.convert import BLAMED, PythonConverter
 from launchverify.frontends.python.importer import absent_import, import_context
 from launchverify.frontends.python.machine import robot_machine
 from launchverify.frontends.python.mentions import mentioned_strings
@@ -220,7 +220,9 @@ class _Session:
         user = [f for f in frames if blamable(f.filename, self.path)
                 and not f.filename.startswith(_STDLIB)]
         if not user:
-            return self.fallback or Span.of_file(self.path)
+            blamed = getattr(error, BLAMED, None)  # an action launch rejects, built here
+            return blamed if isinstance(blamed, Span) else (
+                self.fallback or Span.of_file(self.path))
         frame = user[-1]
         column = (frame.colno or 0) + 1 if getattr(frame, "colno", None) is not None else 1
         return in_characters(Span(Path(frame.filename), frame.lineno or 1, column))

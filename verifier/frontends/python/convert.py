@@ -62,6 +62,11 @@ def _known(text: str) -> s.Sub:
     return s.Opaque("a part of an unknown value") if has_placeholder(text) else s.Text(text)
 
 
+# The attribute an exception raised while an action becomes IR carries: the action's span
+# (the model's own frames are not the launch file's, so the traceback names no line).
+BLAMED = "_launchverify_blamed_span"
+
+
 class PythonConverter:
     """Implements ``launch_api.base.Converter`` for one launch file."""
 
@@ -166,7 +171,13 @@ class PythonConverter:
         self._memo[key] = None  # a cycle through handlers resolves to nothing
         self._keep.append(entity)
         if isinstance(entity, base.LaunchDescriptionEntity):
-            result = entity.to_ir(self)
+            try:
+                result = entity.to_ir(self)
+            except Exception as error:  # launch rejects a value: blame the action's line
+                span = getattr(entity, "_span", None)
+                if isinstance(span, Span) and not hasattr(error, BLAMED):
+                    setattr(error, BLAMED, span)
+                raise
             if result is not None and handed(entity):
                 self.handed.append(result)
         elif isinstance(entity, Opaque):  # what it does is unknown: declare, set, start
