@@ -404,6 +404,33 @@ def generate_launch_description():
     assert "/etc/acme/robot.yaml exists on the robot" in found[1][2]
 
 
+def test_what_each_answer_about_a_robots_file_starts_is_in_the_graph(tmp_path: Path) -> None:
+    # Is this a Raspberry Pi? On the robot the file decides; here both answers are
+    # possible, so what each starts is in the graph (the other's under an unknown
+    # condition), and a value a loop over a vendor's list built is no fact.
+    path = write(tmp_path, "board.launch.py", """
+import vendor_boards
+
+def generate_launch_description():
+    if os.path.exists('/sys/firmware/devicetree/base/model'):
+        return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker',
+                                       name='pi_' + ''.join(vendor_boards.names()))])
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='desk'),
+        Node(package='demo_nodes_cpp', executable='listener', name='listen')])
+""")
+    from launchverify.evaluate.runner import evaluate
+    from launchverify.workspace.packages import PackageIndex
+
+    graph = evaluate(path, index=PackageIndex(), workspace=tmp_path)
+    named = {node.fqn.describe(): node for node in graph.nodes if node.fqn}
+    assert {"/desk", "/listen"} <= set(named)  # the other answer's nodes
+    assert all("other answers" in (named[n].origin.condition_text() or "")
+               for n in ("/desk", "/listen"))
+    assert not any(fqn.startswith("/pi_") and fqn != "/pi_" for fqn in named)
+    assert [code for code, _, _ in findings(path)] == ["LV003"]  # the module, no error
+
+
 def test_a_missing_file_of_the_workspace_is_a_fact(tmp_path: Path) -> None:
     # The twin: the file would be in the workspace, which launchverify sees.
     body = f"""

@@ -22,7 +22,7 @@ from typing import Generic, TypeVar
 
 from launchverify.ir import actions as a
 from launchverify.ir import subst as s
-from launchverify.ir.conditions import Condition, OpaqueCondition
+from launchverify.ir.conditions import Condition, IfCondition
 from launchverify.models.launch_api.placeholders import WORLD, varied_world
 from launchverify.problems import Problem, ProblemKind
 from launchverify.span import Span
@@ -59,21 +59,23 @@ def checked(run: Callable[[], tuple[_T, Sequence[Problem]]],
     # an assumption no other run can vary (an unknown value's type): nothing is a fact
     problems = settle(found, () if unvaried else repeated, assumed) if failed else list(found)
     depends = branched and shape(actions(result)) != shape(actions(other))
-    if branched:
+    if branched and actions(result) is not None and actions(other) is not None:
         what = ", ".join(f"<{name}>" for name in reversed(assumed[-3:]))
-        unvary(actions(result), actions(other),
-               f"a value built from what launchverify assumed for unknown values: {what}")
+        unvary(result, other, f"what launchverify assumed for unknown values: {what}")
     return Checked(result, problems, depends)
 
 
 def unvary(plain: object, varied: object, what: str) -> None:
-    """Make unknown, in place, each value of the plain world's that the other built otherwise.
+    """Merge, in place, what the other world built into the plain world's result.
 
     A value may differ between the worlds: a name joined from a loop over a vendor's list
     (no round, then one), a flag's text. Such a value rests on an assumption, so it is
-    no fact: it becomes an unknown (``s.Opaque``). Where the worlds built different
-    actions, an action is paired with the other world's of its kind written at the same
-    place. Actions keep their identity (an event handler names its target by it).
+    no fact: it becomes an unknown (``s.Opaque``), and a condition that differs an unknown
+    condition. Where the worlds built different actions, an action is paired with the
+    other world's of its kind written at the same place; an action only the other world
+    built (the nodes of a launch that checks for a file only the robot has, then finds it
+    absent) is kept too, under an unknown condition, so that what each answer starts is
+    in the graph. Actions keep their identity (an event handler names its target by it).
     """
     seen: set[int] = set()
     made: list[object] = []
@@ -94,19 +96,32 @@ def unvary(plain: object, varied: object, what: str) -> None:
             if mine == theirs or not isinstance(theirs, s.Sub):
                 return mine
             made.append(mine)  # each its own unknown: two of them are not one value
-            return s.Opaque(f"{what}, #{len(made)}")
+            return s.Opaque(f"a value built from {what}, #{len(made)}")
         conditions = (isinstance(mine, Condition) or mine is None) and (
             isinstance(theirs, Condition) or theirs is None)
         if conditions and mine is not theirs and type(mine) is not type(theirs):
             made.append(mine)  # whether it runs rests on the assumption
-            return OpaqueCondition(f"{what}, #{len(made)}")
+            return IfCondition(s.Opaque(f"a condition built from {what}, #{len(made)}"))
         if type(mine) is tuple and type(theirs) is tuple:
             partners = _partners(mine, theirs)
             items = tuple(item if partner is None else value(item, partner)
                           for item, partner in zip(mine, partners, strict=True))
-            return mine if all(a is b for a, b in zip(items, mine, strict=True)) else items
+            if mine and not all(isinstance(item, a.Action) for item in mine):
+                extra: tuple[object, ...] = ()
+            else:
+                extra = tuple(other_world(item) for item in theirs if isinstance(
+                    item, a.Action) and not any(item is p for p in partners))
+            if not extra and all(x is y for x, y in zip(items, mine, strict=True)):
+                return mine
+            return items + extra
         walk(mine, theirs)
         return mine
+
+    def other_world(action: a.Action) -> a.Action:
+        made.append(action)
+        return a.Group(span=action.span, condition=IfCondition(s.Opaque(
+            f"the other answers about {what}, #{len(made)}")), actions=(action,),
+            scoped=False, forwarding=True)
 
     value(plain, varied)
 
@@ -118,9 +133,13 @@ def _partners(mine: tuple[object, ...], theirs: tuple[object, ...]) -> list[obje
     other world's action of its kind written at the same place (a loop's extra round
     has none), and other items have no partner.
     """
-    if len(mine) == len(theirs):
+    if len(mine) == len(theirs) and all(
+            type(x) is type(y) and getattr(x, "span", None) == getattr(y, "span", None)
+            for x, y in zip(mine, theirs, strict=True)):
         return list(theirs)
-    left = [item for item in theirs if isinstance(item, a.Action)]
+    if not all(isinstance(item, a.Action) for item in (*mine, *theirs)):
+        return list(theirs) if len(mine) == len(theirs) else [None] * len(mine)
+    left = list(theirs)
     found: list[object | None] = []
     for item in mine:
         partner = next((other for other in left if type(other) is type(item)
