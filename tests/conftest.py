@@ -9,6 +9,19 @@ from collections.abc import Iterator
 import pytest
 
 
+def pytest_addoption(parser: pytest.Parser, pluginmanager: pytest.PytestPluginManager) -> None:
+    """Take pyproject's xdist options in one process when xdist is off (``-p no:xdist``).
+
+    The suite runs in parallel by default (``--numprocesses=auto`` in addopts); without
+    the plugin those options would be unknown and pytest would not start at all.
+    """
+    if pluginmanager.has_plugin("xdist"):
+        return
+    group = parser.getgroup("xdist", "xdist is off: the suite runs in this process")
+    group.addoption("--numprocesses", action="store", default=None, help="ignored")
+    group.addoption("--dist", action="store", default="no", help="ignored")
+
+
 def pytest_configure() -> None:
     """Check afresh everywhere: tests reuse paths with new contents, and monkeypatch.
 

@@ -136,10 +136,10 @@ def _overlap(a: tuple[float, float, float, float], b: tuple[float, float, float,
 
 
 def test_layout_of_two_hundred_nodes(flow: FlowGraph) -> None:
-    started = time.perf_counter()
+    started = time.process_time()  # CPU time: a loaded machine stretches wall time alone
     placed = layout(flow)
     html = render_flow(flow, 1, "sys1-node")
-    elapsed = time.perf_counter() - started
+    elapsed = time.process_time() - started
     assert elapsed < 3.0  # about 0.1 s here
     assert len(html) < 600_000
     assert set(placed.boxes) == set(flow.nodes) | set(flow.topics)

@@ -118,10 +118,14 @@ def _git(cwd: Path, *argv: str) -> None:
 
 
 @pytest.fixture(scope="module")
-def hook_repository(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, str, dict[str, str]]:
-    """Return a repository of this tree's hook, pre-commit, and the environment to run it in.
+def pre_commit_hook(tmp_path_factory: pytest.TempPathFactory) -> tuple[list[str], dict[str, str]]:
+    """Return the pre-commit command running this tree's hook, and the environment to run
+    it in.
 
-    pre-commit installs launchverify from it once (its cache is shared by the tests).
+    The command is what ``pre-commit try-repo REPO launchverify`` runs (a configuration
+    naming the repository's commit and the hook), with a store shared by the tests:
+    try-repo makes a store of its own each time, and so installs launchverify anew each
+    time (about 30 s); here pre-commit installs it once.
     """
     pre_commit = shutil.which("pre-commit", path=str(Path(sys.executable).parent))
     if pre_commit is None:
@@ -138,16 +142,21 @@ def hook_repository(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, str
     _git(hooks, "init", "-q")
     _git(hooks, "add", ".")
     _git(hooks, "commit", "-q", "-m", "hooks")
+    commit = subprocess.run(["git", "rev-parse", "HEAD"], cwd=hooks, check=True,
+                            capture_output=True, text=True, timeout=60).stdout.strip()
+    config = tmp_path / "pre-commit-config.yaml"  # outside the checked repositories
+    config.write_text(f"repos:\n- repo: {hooks}\n  rev: {commit}\n"
+                      "  hooks:\n  - id: launchverify\n")
     env = {**os.environ, "PRE_COMMIT_HOME": str(tmp_path / "cache"),
            "PIP_DISABLE_PIP_VERSION_CHECK": "1"}
     env.pop("AMENT_PREFIX_PATH", None)
-    return hooks, pre_commit, env
+    return [pre_commit, "run", "--config", str(config)], env
 
 
 def test_pre_commit_hook_end_to_end(
-        tmp_path: Path, hook_repository: tuple[Path, str, dict[str, str]]) -> None:
-    """``pre-commit try-repo`` installs launchverify from this tree and runs the hook."""
-    hooks, pre_commit, env = hook_repository
+        tmp_path: Path, pre_commit_hook: tuple[list[str], dict[str, str]]) -> None:
+    """pre-commit installs launchverify from this tree and runs the hook."""
+    pre_commit, env = pre_commit_hook
     work = tmp_path / "work"
     (work / "launch").mkdir(parents=True)
     (work / "launch" / "bad.launch.xml").write_text(DUPLICATE)
@@ -155,7 +164,7 @@ def test_pre_commit_hook_end_to_end(
     (work / "notes.xml").write_text("<notes/>")
     _git(work, "init", "-q")
     _git(work, "add", ".")
-    done = subprocess.run([pre_commit, "try-repo", str(hooks), "launchverify", "--all-files"],
+    done = subprocess.run([*pre_commit, "--all-files"],
                           cwd=work, capture_output=True, text=True, timeout=600, env=env,
                           check=False)
     output = done.stdout + done.stderr
@@ -163,7 +172,7 @@ def test_pre_commit_hook_end_to_end(
     assert "LV101 [duplicate-node-name]" in output and "bad.launch.xml:3:3" in output
     (work / "launch" / "bad.launch.xml").write_text(CLEAN.replace("talker\"/>",
                                                                   "other\"/>"))
-    done = subprocess.run([pre_commit, "try-repo", str(hooks), "launchverify", "--all-files"],
+    done = subprocess.run([*pre_commit, "--all-files"],
                           cwd=work, capture_output=True, text=True, timeout=600, env=env,
                           check=False)
     assert done.returncode == 0, done.stdout + done.stderr
@@ -178,7 +187,7 @@ def test_pre_commit_hook_end_to_end(
         "<launch>", '<launch>\n  <arg name="robot"/>').replace("talker\"/>",
                                                               'part" args="$(var robot)"/>'))
     _git(work, "add", "launch/part.launch.xml")
-    done = subprocess.run([pre_commit, "try-repo", str(hooks), "launchverify"],
+    done = subprocess.run(pre_commit,
                           cwd=work, capture_output=True, text=True, timeout=600, env=env,
                           check=False)
     output = done.stdout + done.stderr
@@ -193,10 +202,10 @@ DUPLICATE_YAML = """launch:
 
 
 def test_pre_commit_passes_committed_names_as_paths_never_as_options(
-        tmp_path: Path, hook_repository: tuple[Path, str, dict[str, str]]) -> None:
+        tmp_path: Path, pre_commit_hook: tuple[list[str], dict[str, str]]) -> None:
     """Files named like options reach the hook as files: the hook fails on their mistakes
     and writes nothing (without the entry's ``--``, it passed on 0 files and wrote one)."""
-    hooks, pre_commit, env = hook_repository
+    pre_commit, env = pre_commit_hook
     work = tmp_path / "work"
     work.mkdir()
     (work / "--exclude=*launch.xml").write_text(DUPLICATE)
@@ -204,7 +213,7 @@ def test_pre_commit_passes_committed_names_as_paths_never_as_options(
     (work / "robot:=x.launch.xml").write_text(DUPLICATE)  # a path, not a launch argument
     _git(work, "init", "-q")
     _git(work, "add", "--", ".")
-    done = subprocess.run([pre_commit, "try-repo", str(hooks), "launchverify", "--all-files"],
+    done = subprocess.run([*pre_commit, "--all-files"],
                           cwd=work, capture_output=True, text=True, timeout=600, env=env,
                           check=False)
     output = done.stdout + done.stderr

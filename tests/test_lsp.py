@@ -8,6 +8,7 @@ names no folder).
 
 from __future__ import annotations
 
+import contextlib
 import json
 import os
 import queue
@@ -380,6 +381,48 @@ def test_an_internal_error_is_logged_and_the_server_goes_on(client: Client,
     client.diagnostics(launch / "part.launch.xml")
 
 
+def _serve_on_a_free_port() -> tuple[subprocess.Popen[bytes], socket.socket]:
+    """Start ``launchverify lsp --tcp`` on a port free a moment ago; connect to it.
+
+    The port is free when chosen, not when the server binds it: another process (a
+    parallel test, another run on the machine) may take it meanwhile. Then the server
+    exits and another port is tried; and the connection is made only once the server
+    itself holds the listening socket, never to whoever else listens there.
+    """
+    for _attempt in range(5):
+        with socket.socket() as probe:
+            probe.bind(("127.0.0.1", 0))
+            port = probe.getsockname()[1]
+        process = start("-m", "launchverify", "lsp", "--tcp", f"127.0.0.1:{port}")
+        deadline = time.monotonic() + TIMEOUT
+        while process.poll() is None and time.monotonic() < deadline:
+            if _listens(process.pid, port):
+                return process, socket.create_connection(("127.0.0.1", port), timeout=1)
+            time.sleep(0.05)
+        process.kill()
+        process.wait(timeout=TIMEOUT)
+    raise AssertionError("the language server listened on none of five free ports")
+
+
+def _listens(pid: int, port: int) -> bool:
+    """Whether process ``pid`` holds the socket listening on 127.0.0.1:``port``.
+
+    Read from ``/proc`` (Linux); elsewhere whoever listens is taken for the server.
+    """
+    table = Path("/proc/net/tcp")
+    if not table.exists():
+        with socket.socket() as attempt:
+            return attempt.connect_ex(("127.0.0.1", port)) == 0
+    listening = {fields[9] for fields in map(str.split, table.read_text().splitlines()[1:])
+                 if fields[1] == f"0100007F:{port:04X}" and fields[3] == "0A"}
+    held = set()
+    with contextlib.suppress(OSError):
+        for fd in Path(f"/proc/{pid}/fd").iterdir():
+            with contextlib.suppress(OSError):
+                held.add(str(fd.readlink()))
+    return any(f"socket:[{inode}]" in held for inode in listening)
+
+
 def test_editor_folder_is_the_workspace_and_tcp_transport(tmp_path: Path) -> None:
     # Two repositories side by side: only with the editor's folder as the workspace does
     # one find the other's package.
@@ -392,19 +435,8 @@ def test_editor_folder_is_the_workspace_and_tcp_transport(tmp_path: Path) -> Non
         '<launch>\n  <include file="$(find-pkg-share other_pkg)/part.launch.xml"/>\n'
         "</launch>\n")})
     robot = launch / "robot.launch.xml"
-    with socket.socket() as probe:
-        probe.bind(("127.0.0.1", 0))
-        port = probe.getsockname()[1]
-    process = start("-m", "launchverify", "lsp", "--tcp", f"127.0.0.1:{port}")
+    process, connection = _serve_on_a_free_port()
     try:
-        deadline = time.monotonic() + TIMEOUT
-        while True:
-            try:
-                connection = socket.create_connection(("127.0.0.1", port), timeout=1)
-                break
-            except OSError:
-                assert time.monotonic() < deadline and process.poll() is None
-                time.sleep(0.05)
         with connection:
             stream = connection.makefile("rwb")
             client = Client(stream, stream)

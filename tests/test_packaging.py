@@ -37,3 +37,15 @@ def test_no_generic_top_level_packages() -> None:
         spec = importlib.machinery.PathFinder.find_spec(name, elsewhere)
         origin = None if spec is None or spec.origin is None else Path(spec.origin).resolve()
         assert origin is None or origin.parent == ROOT / name, (name, origin)
+
+
+def test_the_test_extra_runs_the_suite_in_parallel() -> None:
+    """The README's test command runs on every core: the extra brings the plugin that
+    pyproject's addopts ask for (without it, tests/conftest.py would quietly run the suite
+    in one process)."""
+    config = tomllib.loads((ROOT / "pyproject.toml").read_text())
+    extras = config["project"]["optional-dependencies"]
+    addopts = config["tool"]["pytest"]["ini_options"]["addopts"].split()
+    assert "--numprocesses=auto" in addopts
+    for extra in ("test", "dev"):
+        assert any(d.startswith("pytest-xdist") for d in extras[extra]), extra

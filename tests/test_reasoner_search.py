@@ -339,10 +339,10 @@ def test_z3_waits_no_longer_than_the_budget_left() -> None:
     from launchverify.smt.solver import Z3Backend
 
     backend = Z3Backend({}, {}, SolverBudget(0.3))
-    started = time.perf_counter()
+    started = time.process_time()  # CPU time (z3's too): load stretches wall time alone
     with pytest.raises(BudgetSpent), backend.budget.question():
         backend._run(_pigeonhole(10))
-    assert time.perf_counter() - started < 1.5 and backend.budget.ran_out
+    assert time.process_time() - started < 1.5 and backend.budget.ran_out
 
 
 def test_an_unknown_answer_is_no_dangling_target(tmp_path: Path,

@@ -48,8 +48,8 @@ def chromium() -> str:
 @pytest.fixture(scope="module")
 def pages(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     folder = tmp_path_factory.mktemp("report")
-    saved = os.environ.pop("AMENT_PREFIX_PATH", None)
-    try:
+    with pytest.MonkeyPatch.context() as patch:
+        patch.delenv("AMENT_PREFIX_PATH", raising=False)
         out = {}
         for name, tree in (("fleet", FLEET), ("escaping", ESCAPING)):
             report = run_check(CheckOptions(paths=[tree], workspace=tree))
@@ -64,9 +64,6 @@ def pages(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
             render_html(report, handle, interfaces=WorkspaceInterfaces(
                 PackageIndex.from_environment([folder / "fleet_ws"], [])))
         return out
-    finally:
-        if saved is not None:
-            os.environ["AMENT_PREFIX_PATH"] = saved
 
 
 def browse(chromium: str, profile: Path, *arguments: str) -> str:

@@ -9,6 +9,8 @@ import pytest
 
 from launchverify.evaluate.files import FileCache
 from launchverify.evaluate.static_args import Found, StaticSubtree, static_arguments
+from launchverify.isolation.confine import Limits
+from launchverify.isolation.pool import IsolatedPython
 from launchverify.problems import ProblemSink
 from launchverify.workspace.discover import discover
 from launchverify.workspace.packages import PackageIndex
@@ -28,7 +30,10 @@ def test_shared_answers_equal_fresh_ones(group: str) -> None:
     assert trees
     for tree in trees:
         index = PackageIndex([tree])
-        cache = FileCache(index, tree)
+        # a file whose evaluation fails has nothing to compare: the endless loop's need not
+        # take the default 10 s to fail
+        python = IsolatedPython(index, tree, limits=Limits(seconds=3.0))
+        cache = FileCache(index, tree, python)
         shared: dict[Path, StaticSubtree] = {}
         try:
             for path in discover([tree]):
@@ -39,7 +44,7 @@ def test_shared_answers_equal_fresh_ones(group: str) -> None:
                 reused = _key(static_arguments(loaded.launch, cache, index, shared))
                 assert reused == fresh, path
         finally:
-            cache.close()
+            python.close()
 
 
 class _Recorder:

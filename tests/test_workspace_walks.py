@@ -88,12 +88,13 @@ def _tree(root: Path) -> None:
         root / "src" / "b" / "launch" / "one.launch.xml")
 
 
-def test_discover_finds_what_a_plain_walk_finds(tmp_path: Path) -> None:
+def test_discover_finds_what_a_plain_walk_finds(tmp_path: Path,
+                                                monkeypatch: pytest.MonkeyPatch) -> None:
     _tree(tmp_path)
     expected = _reference_discover(tmp_path)
     assert discover([tmp_path]) == expected
     assert len(expected) == 9  # the cases are all there
-    os.chdir(tmp_path)  # a relative folder, given with a trailing slash
+    monkeypatch.chdir(tmp_path)  # a relative folder, given with a trailing slash
     assert discover([Path("src/")]) == _reference_discover(Path("src/"))
 
 
