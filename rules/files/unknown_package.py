@@ -5,6 +5,8 @@ from __future__ import annotations
 import dataclasses
 from collections.abc import Iterator
 
+from rapidfuzz.distance import Levenshtein
+
 from launchverify.graph import LaunchGraph, PackageRef
 from launchverify.models.known_packages import is_released, released_packages
 from launchverify.rule import Finding, Rule, RuleContext, Severity, rename
@@ -28,9 +30,11 @@ class UnknownPackage(Rule):
     - a package that the launch file's own package declares in its `package.xml`
       (`<exec_depend>`...) comes from elsewhere (a `.repos` file, another overlay):
       quiet;
-    - an unreleased package within one or two edits of a workspace or released package
-      is a typo: an error (not one that differs only in its numbers, `example_1` beside
-      `example_10`: a sibling that is not here);
+    - an unreleased package within one or two edits of a workspace package, or one edit
+      of a released package, is a typo: an error (not one that differs only in its
+      numbers, `example_1` beside `example_10`: a sibling that is not here); two edits
+      from a released package only is a warning (a package built from source outside
+      the workspace may have that name: `kobuki_node` beside the released `kobuki_core`);
     - another unreleased package whose name is close to a workspace package's (shares
       most words, whole or shortened) is a warning: nothing declares it, and a renamed or
       mistyped package is likely;
@@ -107,14 +111,17 @@ class UnknownPackage(Rule):
         if (not installed and ctx.packages is not None
                 and ctx.packages.declares(ref.origin.span.file, ref.name)):
             return None  # a declared dependency from elsewhere (.repos): not here yet
+        # two edits from a released package only: a package built from source outside the
+        # workspace may well have that name (kobuki_node beside the released kobuki_core)
+        sure = typo is not None and (typo in local or _one_edit(ref.name, typo))
         hint = typo or self._closest_package(ref.name, local)
         where = ("neither in the workspace nor installed" if installed
                  else "not in the workspace and not a released ROS 2 package")
         fix = None if hint is None else rename(ref.written, ref.name, hint,
-                                               unique=typo is not None and unique)
+                                               unique=sure and unique)
         finding = self.finding(ref.origin, name=ref.name, where=where,
                                hint=f" (did you mean {hint!r}?)" if hint else "", fix=fix)
-        if installed or typo is not None:
+        if installed or sure:
             return finding
         if hint is None:
             return dataclasses.replace(finding, severity=Severity.INFO,
@@ -136,6 +143,11 @@ class UnknownPackage(Rule):
         if name not in self._closest:
             self._closest[name] = closest_package(name, local)
         return self._closest[name]
+
+
+def _one_edit(name: str, other: str) -> bool:
+    """Return whether two names are one insertion, deletion or substitution apart."""
+    return Levenshtein.distance(name, other, score_cutoff=1) <= 1
 
 
 def _digitless(name: str) -> str:
