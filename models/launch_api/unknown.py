@@ -472,6 +472,12 @@ def _compared(comparison: str, left: Any, right: Any) -> Any:
     answers as its own methods say.
     """
     unknown = [value for value in (left, right) if isinstance(value, (Opaque, OpaqueBase))]
+    if not unknown and comparison in ("in", "not in") and type(right) in (list, tuple, set):
+        # a list holding an unknown: Python asks it ``==`` from here, launchverify's code
+        unknown = [item for item in right if isinstance(item, (Opaque, OpaqueBase))][:1]
+        if unknown and left in [item for item in right if not isinstance(
+                item, (Opaque, OpaqueBase))]:
+            return comparison == "in"  # found among the known items: a fact
     if unknown:
         what = _described(unknown[0])
         if comparison in ("==", "!="):
