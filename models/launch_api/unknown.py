@@ -471,12 +471,11 @@ def _compared(comparison: str, left: Any, right: Any) -> Any:
     assumption: Python's answer for the texts, then the other. An unknown value itself
     answers as its own methods say.
     """
-    unknown = [value for value in (left, right) if isinstance(value, (Opaque, OpaqueBase))]
+    unknown = [value for value in (left, right) if _answers_as_unknown(value)]
     if not unknown and comparison in ("in", "not in") and type(right) in (list, tuple, set):
         # a list holding an unknown: Python asks it ``==`` from here, launchverify's code
-        unknown = [item for item in right if isinstance(item, (Opaque, OpaqueBase))][:1]
-        if unknown and left in [item for item in right if not isinstance(
-                item, (Opaque, OpaqueBase))]:
+        unknown = [item for item in right if _answers_as_unknown(item)][:1]
+        if unknown and left in [item for item in right if not _answers_as_unknown(item)]:
             return comparison == "in"  # found among the known items: a fact
     if unknown:
         what = _described(unknown[0])
@@ -490,6 +489,12 @@ def _compared(comparison: str, left: Any, right: Any) -> Any:
         return answer
     return assumed(answer, not answer, f"whether {read(str(left))} {comparison} "
                                        f"{read(str(right))}")
+
+
+def _answers_as_unknown(value: Any) -> bool:
+    """Return whether a value compares as an unknown (not by a class's own ``__eq__``)."""
+    return isinstance(value, (Opaque, OpaqueBase)) and type(value).__eq__ in (
+        Opaque.__eq__, OpaqueBase.__eq__)
 
 
 def _holds_unknown_text(left: Any, right: Any, comparison: str) -> bool:
