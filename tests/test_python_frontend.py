@@ -431,6 +431,31 @@ def generate_launch_description():
     assert [code for code, _, _ in findings(path)] == ["LV003"]  # the module, no error
 
 
+def test_a_configuration_handed_to_unknown_code_may_be_read(tmp_path: Path) -> None:
+    # crane_plus: ``loader.use_camera = LaunchConfiguration('use_camera')`` hands the
+    # configuration to a vendor's object, whose ``load()`` reads it: no "never used"; an
+    # argument nothing hands over stays unused.
+    path = write(tmp_path, "handed.launch.py", """
+from vendor_description import Loader
+
+def generate_launch_description():
+    loader = Loader()
+    loader.use_camera = LaunchConfiguration('use_camera')
+    loader.configure(gripper=LaunchConfiguration('gripper'))
+    loader['arm'] = LaunchConfiguration('arm')
+    return LaunchDescription([
+        DeclareLaunchArgument('use_camera', default_value='false'),
+        DeclareLaunchArgument('gripper', default_value='true'),
+        DeclareLaunchArgument('arm', default_value='a'),
+        DeclareLaunchArgument('spare', default_value='x'),
+        Node(package='demo_nodes_cpp', executable='talker', name='t',
+             parameters=[{'robot_description': loader.load()}]),
+    ])
+""")
+    found = [(code, message) for code, _, message in findings(path) if code == "LV202"]
+    assert len(found) == 1 and "'spare'" in found[0][1]
+
+
 def test_a_missing_file_of_the_workspace_is_a_fact(tmp_path: Path) -> None:
     # The twin: the file would be in the workspace, which launchverify sees.
     body = f"""

@@ -31,6 +31,8 @@ class Runtime:
     launch_file: Path
     packages_seen: set[str] = field(default_factory=set)
     lookups: list[tuple[str, Span]] = field(default_factory=list)  # package lookups by call
+    # configurations handed to code launchverify cannot see, which may read them
+    handed_names: set[str] = field(default_factory=set)
     # Builds (perform, evaluate) for a LaunchContext the launch file makes itself.
     context_tools: Callable[[dict[str, str]], tuple[Any, Any]] | None = None
     # Where to point when no frame may be blamed (an OpaqueFunction whose body is in

@@ -163,7 +163,14 @@ class Opaque(str):
         return None
 
     def __setitem__(self, key: Any, value: Any) -> None:
-        return None  # the unknown stays unknown
+        if not _by_own_code(1):
+            hand_over(value)  # the unknown stays unknown, and holds the value now
+        return None
+
+    def __setattr__(self, name: str, value: Any) -> None:
+        if not name.startswith("_") and not _by_own_code(1):
+            hand_over(value)  # ``loader.use_camera = LaunchConfiguration(...)``
+        super().__setattr__(name, value)
 
     def __delitem__(self, key: Any) -> None:
         return None
@@ -670,6 +677,7 @@ def hand_over(*values: Any) -> None:
     parser declares the arguments), or run an action it was given (a helper that starts
     the spawners once a controller is up): what launchverify sees of them is not all.
     """
+    from launchverify.models.launch_api import runtime
     from launchverify.models.launch_api.base import Modelled
 
     pending, seen = list(values), 0
@@ -678,6 +686,9 @@ def hand_over(*values: Any) -> None:
         seen += 1
         if isinstance(value, Modelled):
             object.__setattr__(value, "handed", True)
+            name = vars(value).get("_variable_name")  # a LaunchConfiguration: it may read it
+            if isinstance(name, str) and runtime.current is not None:
+                runtime.current.handed_names.add(name)
         elif isinstance(value, (list, tuple, set)):
             pending.extend(value)
         elif isinstance(value, dict):

@@ -234,6 +234,7 @@ class Walker:
         pinned = tuple(sorted((k, v) for k, v in self.graph.pinned.items()))
         self.file_stack.append((self.graph.root, pinned))
         self.record_lookups(loaded.launch.lookups, ctx)
+        self.graph.mentioned.update(loaded.launch.mentions)
         try:
             self.visit_all(loaded.launch.actions, ctx)
         except BoundReached as reached:
@@ -678,6 +679,9 @@ class Walker:
         self.include_stack.append(record)
         self.file_stack.append(key)
         self.record_lookups(loaded.launch.lookups, inner)
+        self.graph.mentioned.update(loaded.launch.mentions)
+        for each in self.include_stack:
+            each.mentioned.update(loaded.launch.mentions)
         try:
             self.visit_all(loaded.launch.actions, inner)
         finally:

@@ -539,3 +539,5 @@ class LaunchFile:
     lookups: tuple[tuple[str, Span], ...] = ()  # packages looked up by Python code
     # actions given to code launchverify cannot see, which may run them (Python files)
     handed: tuple[Action, ...] = ()
+    # configurations given to such code, which may read them (Python files)
+    mentions: tuple[str, ...] = ()

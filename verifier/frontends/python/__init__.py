@@ -134,6 +134,7 @@ class _Session:
         self.in_opaque = False
         self.namespace: dict[str, Any] = {}
         self.lookups: list[tuple[str, Span]] = []
+        self.handed_names: set[str] = set()  # configurations handed to unknown code
         self.failed_read: tuple[str, Span] | None = None  # OpaqueFunction read of nothing
         self.fallback: Span | None = None  # the running OpaqueFunction's line
 
@@ -235,7 +236,8 @@ class _Session:
         frontend = self.frontend
         runtime.current = runtime.Runtime(frontend.index, frontend.workspace, self.unmodeled,
                                           self.path, context_tools=self._context_tools,
-                                          lookups=self.lookups, fallback=self.fallback)
+                                          lookups=self.lookups, fallback=self.fallback,
+                                          handed_names=self.handed_names)
         take_refusals()
         saved_argv, sys.argv = sys.argv, frontend.argv(self.path)
         try:
@@ -324,7 +326,8 @@ class _Session:
         return a.LaunchFile(path=self.path, format="python", actions=actions,
                             span=Span.of_file(self.path),
                             deprecated=description.deprecated_reason,
-                            lookups=tuple(self.lookups), handed=tuple(converter.handed))
+                            lookups=tuple(self.lookups), handed=tuple(converter.handed),
+                            mentions=tuple(sorted(self.handed_names)))
 
     def converter(self, context: Any = None) -> PythonConverter:
         """Return a converter reporting into this session (``context``: an OpaqueFunction's)."""
