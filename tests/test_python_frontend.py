@@ -431,6 +431,35 @@ def generate_launch_description():
     assert [code for code, _, _ in findings(path)] == ["LV003"]  # the module, no error
 
 
+def test_a_class_on_an_unknown_and_a_known_base_answers_as_the_known_one(
+        tmp_path: Path) -> None:
+    # ``class Params(vendor.Base, dict)`` makes dicts (the vendor's base adds what the
+    # class lacks); on the unknown base alone, its instances are unknown values.
+    path = write(tmp_path, "bases.launch.py", """
+import vendor_config
+
+class Params(vendor_config.Base, dict):
+    pass
+
+class Robot(vendor_config.Base):
+    pass
+
+def generate_launch_description():
+    params = Params()
+    params['rate'] = 10
+    return LaunchDescription([
+        Node(package='demo_nodes_cpp', executable='talker', name='n_' + list(params)[0]),
+        Node(package='demo_nodes_cpp', executable='listener', name=str(Robot())),
+    ])
+""")
+    from launchverify.evaluate.runner import evaluate
+    from launchverify.workspace.packages import PackageIndex
+
+    graph = evaluate(path, index=PackageIndex(), workspace=tmp_path)
+    names = [node.fqn.describe() for node in graph.nodes if node.fqn]
+    assert names[0] == "/n_rate" and len(names) == 2 and "Robot" in names[1]
+
+
 def test_a_configuration_handed_to_unknown_code_may_be_read(tmp_path: Path) -> None:
     # crane_plus: ``loader.use_camera = LaunchConfiguration('use_camera')`` hands the
     # configuration to a vendor's object, whose ``load()`` reads it: no "never used"; an

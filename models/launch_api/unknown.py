@@ -375,7 +375,7 @@ class _Type(type, metaclass=_TypeQuestion):
 def _unknown_class(value: Any) -> bool:
     """Return whether a value stands for a class launchverify cannot see."""
     return isinstance(value, Opaque) or (
-        isinstance(value, type) and issubclass(value, (OpaqueBase, UnknownInstance)))
+        isinstance(value, type) and issubclass(value, UnknownInstance))
 
 
 def _described(value: Any) -> str:
@@ -425,7 +425,7 @@ def _raised(value: Any) -> Any:
     if isinstance(value, BaseException) or (
             isinstance(value, type) and issubclass(value, BaseException)) or value is None:
         return value
-    if isinstance(value, (OpaqueBase, UnknownInstance)):
+    if isinstance(value, UnknownInstance):
         origin, text = type(value).__name__, "an exception class built on code launchverify " \
             "cannot see"
     elif _unknown_class(value):
@@ -500,8 +500,7 @@ def _compared(comparison: str, left: Any, right: Any) -> Any:
 
 def _answers_as_unknown(value: Any) -> bool:
     """Return whether a value compares as an unknown (not by a class's own ``__eq__``)."""
-    return isinstance(value, (Opaque, OpaqueBase)) and type(value).__eq__ in (
-        Opaque.__eq__, OpaqueBase.__eq__)
+    return isinstance(value, Opaque) and type(value).__eq__ is Opaque.__eq__
 
 
 def _holds_unknown_text(left: Any, right: Any, comparison: str) -> bool:
@@ -557,11 +556,10 @@ class OpaqueModule(types.ModuleType):
 
 
 class OpaqueBase:
-    """What a class deriving from an opaque one derives from: accepts anything.
+    """What a class deriving from an unknown one and a laid-out known one derives from.
 
-    Its instances are unknown values too (the vendor's base class may make them a list,
-    a string, a number): they answer Python's protocols as ``Opaque`` does, unless the
-    launch file's class defines its own.
+    ``class D(vendor.Base, dict)``: its instances are dicts, and answer as dicts do; what
+    the vendor's base adds is unknown (any attribute the class lacks).
     """
 
     def __init__(self, *args: Any, **kwargs: Any) -> None:
@@ -571,64 +569,6 @@ class OpaqueBase:
         if name.startswith("__") or _by_own_code(1):
             raise AttributeError(name)
         return Opaque(f"{type(self).__name__}.{name}")
-
-    @property
-    def _description(self) -> str:
-        """What the instance is, as its placeholder names it (base._unknown sees it)."""
-        return f"a {type(self).__name__} object"
-
-    def __str__(self) -> str:
-        return placeholder("opaque", self._description)
-
-    def __repr__(self) -> str:
-        return str(self)
-
-    def __format__(self, spec: str) -> str:
-        return str(self)
-
-    def __fspath__(self) -> str:
-        return str(self)
-
-    def __iter__(self) -> Iterator[Any]:
-        if _by_own_code(1):
-            return iter(())  # as an Opaque: a collection of unknown items
-        wanted = _unpacked_count(sys._getframe(1)) or assumed(0, 1, self._description)
-        return iter([Opaque(f"{self._description}[{i}]") for i in range(wanted)])
-
-    def __bool__(self) -> bool:
-        return True if _by_own_code(1) else assumed(False, True, self._description)
-
-    def __len__(self) -> int:
-        return 0 if _by_own_code(1) else assumed(0, 1, self._description)
-
-    def __contains__(self, item: Any) -> bool:
-        return False if _by_own_code(1) else assumed(False, True, self._description)
-
-    def __eq__(self, other: object) -> bool:
-        if other is self or _by_own_code(1):
-            return other is self
-        return assumed(False, True, self._description)
-
-    def __ne__(self, other: object) -> bool:
-        return not self.__eq__(other) if not _by_own_code(1) else other is not self
-
-    __hash__ = object.__hash__
-
-    def __getitem__(self, key: Any) -> Opaque:
-        return Opaque(f"{self._description}[]")
-
-    def __setitem__(self, key: Any, value: Any) -> None:
-        return None
-
-    def __call__(self, *args: Any, **kwargs: Any) -> Opaque:
-        hand_over(args, kwargs)
-        return Opaque(f"{self._description}()")
-
-    def __enter__(self) -> OpaqueBase:
-        return self
-
-    def __exit__(self, *exc: Any) -> None:
-        return None
 
 
 class UnknownInstance(Opaque):
@@ -653,21 +593,6 @@ class UnknownInstance(Opaque):
         return type(self)
 
     __hash__ = Opaque.__hash__
-
-
-def _more_of_it(name: str) -> Any:
-    def operator(self: OpaqueBase, *args: Any) -> Any:
-        if name in ("__lt__", "__le__", "__gt__", "__ge__"):
-            return assumed(False, True, self._description)
-        return Opaque(f"{self._description} {name.strip('_')}")
-
-    operator.__name__ = name
-    return operator
-
-
-for _name in ("__lt__", "__le__", "__gt__", "__ge__", *(
-        name for name, answer in _OPERATORS.items() if answer == "self")):
-    setattr(OpaqueBase, _name, _more_of_it(_name))
 
 
 def hand_over(*values: Any) -> None:
