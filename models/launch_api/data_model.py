@@ -10,7 +10,7 @@ Python offers (found by introspection, so a new Python's are found too), and
 ``tests/test_data_model.py`` runs each rule's probe and fails on an operation without one.
 
 What implements each rule: ``Opaque``'s methods (``unknown.py``), the launch file's
-builtins (``unknown.CONVERSIONS``), the compiled file's ``raise``/``except``/``match``
+builtins (``unknown.LAUNCH_BUILTINS``), the compiled file's ``raise``/``except``/``match``
 (``frontends/python/rewrite.py``), the machine's functions (``frontends/python/machine.py``)
 and the libraries the session wraps (``frontends/python/__init__.py``).
 """

@@ -532,7 +532,7 @@ _Type.__name__ = _Type.__qualname__ = "type"
 # for the launch file's builtins: conversions and tests that Python would refuse on an
 # unknown, and what the compiled launch file calls for ``raise``, ``except``, ``match``
 # (frontends/python/rewrite.py)
-CONVERSIONS = {
+LAUNCH_BUILTINS = {
     "int": _Int, "float": _Float, "complex": _Complex, "bytearray": _Bytearray, "ord": _ord,
     "callable": _callable, "hasattr": _hasattr, "type": _Type,
     "isinstance": _class_test(isinstance, "an instance of"),

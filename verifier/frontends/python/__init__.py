@@ -50,7 +50,7 @@ from launchverify.models.launch_api.placeholders import (
     placeholder,
 )
 from launchverify.models.launch_api.runtime import blamable
-from launchverify.models.launch_api.unknown import CONVERSIONS, Opaque, handed
+from launchverify.models.launch_api.unknown import LAUNCH_BUILTINS, Opaque, handed
 from launchverify.own_code import is_own_file
 from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
@@ -242,7 +242,7 @@ class _Session:
         saved_argv, sys.argv = sys.argv, frontend.argv(self.path)
         try:
             with import_context([self.path.parent], frontend.index, self.module_unmodeled,
-                                self.name_unmodeled), sandbox(), _yaml_knows_opaque_files(), \
+                                self.name_unmodeled), sandbox(), _libraries_know_unknowns(), \
                     robot_machine(self._seen, self._open):
                 yield
         finally:
@@ -337,7 +337,7 @@ class _Session:
 
     def _builtins(self) -> dict[str, Any]:
         namespace = dict(vars(builtins))
-        namespace.update(CONVERSIONS)
+        namespace.update(LAUNCH_BUILTINS)
         namespace["open"] = self._open
         if self.frontend.absent_modules:
             namespace["__import__"] = absent_import(self.module_unmodeled)
@@ -472,7 +472,7 @@ class OpaqueText(io.StringIO):
 
 
 @contextmanager
-def _yaml_knows_opaque_files() -> Iterator[None]:
+def _libraries_know_unknowns() -> Iterator[None]:
     """Make ``yaml.safe_load(open(robot_file))`` an unknown mapping rather than a string.
 
     ``json.loads`` of an unknown text is an unknown value too; dumping an unknown to

@@ -16,6 +16,7 @@ anything, runs again with every assumption the other way (the varied world):
 from __future__ import annotations
 
 import dataclasses
+import itertools
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from typing import Generic, TypeVar
@@ -78,7 +79,7 @@ def unvary(plain: object, varied: object, what: str) -> None:
     in the graph. Actions keep their identity (an event handler names its target by it).
     """
     seen: set[int] = set()
-    made: list[object] = []
+    made = itertools.count(1)  # each its own unknown: two of them are not one value
 
     def walk(mine: object, theirs: object) -> None:
         if (mine is theirs or id(mine) in seen or type(mine) is not type(theirs)
@@ -95,13 +96,12 @@ def unvary(plain: object, varied: object, what: str) -> None:
         if isinstance(mine, s.Sub):
             if mine == theirs or not isinstance(theirs, s.Sub):
                 return mine
-            made.append(mine)  # each its own unknown: two of them are not one value
-            return s.Opaque(f"a value built from {what}, #{len(made)}")
+            return s.Opaque(f"a value built from {what}, #{next(made)}")
         conditions = (isinstance(mine, Condition) or mine is None) and (
             isinstance(theirs, Condition) or theirs is None)
         if conditions and mine is not theirs and type(mine) is not type(theirs):
-            made.append(mine)  # whether it runs rests on the assumption
-            return IfCondition(s.Opaque(f"a condition built from {what}, #{len(made)}"))
+            # whether it runs rests on the assumption
+            return IfCondition(s.Opaque(f"a condition built from {what}, #{next(made)}"))
         if type(mine) is tuple and type(theirs) is tuple:
             partners = _partners(mine, theirs)
             items = tuple(item if partner is None else value(item, partner)
@@ -118,9 +118,8 @@ def unvary(plain: object, varied: object, what: str) -> None:
         return mine
 
     def other_world(action: a.Action) -> a.Action:
-        made.append(action)
         return a.Group(span=action.span, condition=IfCondition(s.Opaque(
-            f"the other answers about {what}, #{len(made)}")), actions=(action,),
+            f"the other answers about {what}, #{next(made)}")), actions=(action,),
             scoped=False, forwarding=True)
 
     value(plain, varied)

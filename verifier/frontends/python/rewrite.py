@@ -6,7 +6,7 @@ level, and ``==`` on two strings compares their texts: none of that asks a value
 anything, so an unknown value (a vendor's exception class, an environment variable's
 text) cannot answer as the data model's table says it should
 (``models/launch_api/data_model.py``). The compiled file asks instead: each of those
-places calls a function of the launch file's builtins (``unknown.CONVERSIONS``) that turns
+places calls a function of the launch file's builtins (``unknown.LAUNCH_BUILTINS``) that turns
 an unknown into what the table rules. Lines and columns stay the source's, so every
 finding points where it did.
 """
