@@ -485,6 +485,21 @@ def generate_launch_description():
     assert len(found) == 1 and "'spare'" in found[0][1]
 
 
+def test_json_of_an_unknown_text_is_unknown_and_broken_json_a_fact(tmp_path: Path) -> None:
+    body = """
+import json
+
+def generate_launch_description():
+    cfg = json.loads(os.environ.get('ROBOT_CFG', '{"name": "r"}'))
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker',
+                                   name=cfg['name'])])
+"""
+    assert findings(write(tmp_path, "env.launch.py", body)) == []
+    broken = body.replace("os.environ.get('ROBOT_CFG', '{\"name\": \"r\"}')", "'{name: r}'")
+    [(code, _, message)] = findings(write(tmp_path, "broken.launch.py", broken))
+    assert code == "LV002" and "JSONDecodeError" in message
+
+
 def test_a_missing_file_of_the_workspace_is_a_fact(tmp_path: Path) -> None:
     # The twin: the file would be in the workspace, which launchverify sees.
     body = f"""

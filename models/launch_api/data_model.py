@@ -94,7 +94,8 @@ TABLE: tuple[Rule, ...] = (
         "complex(u)", "bytearray": "bytearray(u)", "ord": "ord(u)",
         "str methods": "u.split('_')[1].strip().upper()",
         "unpacking": "a, b, c = u\nr = c", "starred unpacking": "a, *rest, b = u\nr = b",
-        "json.loads": "json.loads(u)", "yaml.safe_load": "yaml.safe_load(u)['robot']",
+        "json.loads": "json.loads(u)",
+        "json.loads of the environment": "json.loads(os.environ.get('CFG', '{}'))", "yaml.safe_load": "yaml.safe_load(u)['robot']",
         "os.environ": "os.environ.get(u)", "os.getenv": "os.getenv(u)",
     }),
     # --------------------------------------------- plain answers: assumptions, then varied
@@ -219,7 +220,8 @@ STATEMENTS = (
     "text comparison", "text membership",
 )
 LIBRARIES = (
-    "str.join", "json.dumps", "json.loads", "yaml.dump", "yaml.safe_dump", "yaml.safe_load",
+    "str.join", "json.dumps", "json.loads", "json.loads of the environment", "yaml.dump",
+    "yaml.safe_dump", "yaml.safe_load",
     "os.path", "os.fspath", "pathlib", "shlex", "os.environ", "os.getenv", "math",
     "file on the robot", "environment comparison", "isinstance of a known class",
     "isinstance of a class built on it",

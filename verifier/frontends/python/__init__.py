@@ -48,6 +48,7 @@ from launchverify.models.launch_api.placeholders import (
     UnknownMapping,
     has_placeholder,
     placeholder,
+    read,
 )
 from launchverify.models.launch_api.runtime import blamable
 from launchverify.models.launch_api.unknown import LAUNCH_BUILTINS, Opaque, handed
@@ -475,8 +476,9 @@ class OpaqueText(io.StringIO):
 def _libraries_know_unknowns() -> Iterator[None]:
     """Make ``yaml.safe_load(open(robot_file))`` an unknown mapping rather than a string.
 
-    ``json.loads`` of an unknown text is an unknown value too; dumping an unknown to
-    YAML writes its text (a string's), as a safe dumper writes a string.
+    ``json.loads`` of a text that holds an unknown (a vendor's value, an environment
+    variable) and does not parse is an unknown value too; dumping an unknown to YAML
+    writes its text (a string's), as a safe dumper writes a string.
     """
     import json
 
@@ -486,9 +488,12 @@ def _libraries_know_unknowns() -> Iterator[None]:
     json_loads = json.loads
 
     def loads(text: Any, *args: Any, **kwargs: Any) -> Any:
-        if isinstance(text, Opaque):
-            return Opaque(f"the JSON in {text._description}")
-        return json_loads(text, *args, **kwargs)
+        try:
+            return json_loads(text, *args, **kwargs)
+        except ValueError:  # a text that holds an unknown is no JSON here, on the robot any
+            if isinstance(text, str) and has_placeholder(text):
+                return Opaque(f"the JSON in {read(text)}")
+            raise
 
     json.loads = loads  # type: ignore[assignment]
     for dumper in (yaml.SafeDumper, yaml.Dumper):
