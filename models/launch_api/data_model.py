@@ -95,7 +95,8 @@ TABLE: tuple[Rule, ...] = (
         "str methods": "u.split('_')[1].strip().upper()",
         "unpacking": "a, b, c = u\nr = c", "starred unpacking": "a, *rest, b = u\nr = b",
         "json.loads": "json.loads(u)",
-        "json.loads of the environment": "json.loads(os.environ.get('CFG', '{}'))", "yaml.safe_load": "yaml.safe_load(u)['robot']",
+        "json.loads of the environment": "json.loads(os.environ.get('CFG', '{}'))",
+        "yaml.safe_load": "yaml.safe_load(u)['robot']",
         "os.environ": "os.environ.get(u)", "os.getenv": "os.getenv(u)",
     }),
     # --------------------------------------------- plain answers: assumptions, then varied
