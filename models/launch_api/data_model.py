@@ -140,9 +140,6 @@ TABLE: tuple[Rule, ...] = (
         "os.path.exists": "os.path.exists(u)", "os.path.isfile": "os.path.isfile(u)",
         "os.path.isdir": "os.path.isdir(u)", "os.path.lexists": "os.path.lexists(u)",
         "file on the robot": "os.path.exists('/etc/vendor/robot.yaml')",
-        "text comparison": "('robot_' + str(u)) == 'robot_a'",
-        "text membership": "('robot_' + str(u)) in ('robot_a', 'robot_b')",
-        "environment comparison": "os.environ.get('ROS_DISTRO', 'humble') == 'humble'",
         "math": "math.log(u)",
     }),
     # ------------------------------------------------------------- questions of its type
@@ -218,14 +215,12 @@ STATEMENTS = (
     "starred unpacking", "with", "async with", "async for", "await", "raise", "raise a call",
     "raise from", "except", "match", "class base", "class base of an exception", "del",
     "f-string", "%-formatting", "slicing", "string concatenation", "str methods",
-    "text comparison", "text membership",
 )
 LIBRARIES = (
     "str.join", "json.dumps", "json.loads", "json.loads of the environment", "yaml.dump",
     "yaml.safe_dump", "yaml.safe_load",
     "os.path", "os.fspath", "pathlib", "shlex", "os.environ", "os.getenv", "math",
-    "file on the robot", "environment comparison", "isinstance of a known class",
-    "isinstance of a class built on it",
+    "file on the robot", "isinstance of a known class", "isinstance of a class built on it",
     *(f"os.path.{name}" for name in ("exists", "isfile", "isdir", "lexists")),
 )
 # the built-in types whose special methods Python calls on values

@@ -22,19 +22,12 @@ holding it may add to it or run it.
 from __future__ import annotations
 
 import dis
-import operator
 import sys
 import types
-from collections.abc import Callable, Generator, Iterator
+from collections.abc import Generator, Iterator
 from typing import Any
 
-from launchverify.models.launch_api.placeholders import (
-    WORLD,
-    assumed,
-    has_placeholder,
-    placeholder,
-    read,
-)
+from launchverify.models.launch_api.placeholders import WORLD, assumed, placeholder
 from launchverify.own_code import for_launchverify
 
 
@@ -470,60 +463,6 @@ def _subject(value: Any) -> Any:
     return value
 
 
-def _compared(comparison: str, left: Any, right: Any) -> Any:
-    """``==``, ``!=``, ``in``, ``not in`` in the launch file's code.
-
-    A text holding an unknown (``⟨env:ROS_DISTRO⟩``, ``'robot_' + vendor.name`` made a
-    string) compared with a text that does not, or with another unknown, answers by an
-    assumption: Python's answer for the texts, then the other. An unknown value itself
-    answers as its own methods say.
-    """
-    unknown = [value for value in (left, right) if _answers_as_unknown(value)]
-    if not unknown and comparison in ("in", "not in") and type(right) in (list, tuple, set):
-        # a list holding an unknown: Python asks it ``==`` from here, launchverify's code
-        unknown = [item for item in right if _answers_as_unknown(item)][:1]
-        if unknown and left in [item for item in right if not _answers_as_unknown(item)]:
-            return comparison == "in"  # found among the known items: a fact
-    if unknown:
-        what = _described(unknown[0])
-        if comparison in ("==", "!="):
-            same = left is right or assumed(False, True, what)
-            return same if comparison == "==" else not same
-        found = assumed(False, True, what)
-        return found if comparison == "in" else not found
-    answer = _COMPARED[comparison](left, right)
-    if not isinstance(answer, bool) or not _holds_unknown_text(left, right, comparison):
-        return answer
-    return assumed(answer, not answer, f"whether {read(str(left))} {comparison} "
-                                       f"{read(str(right))}")
-
-
-def _answers_as_unknown(value: Any) -> bool:
-    """Return whether a value compares as an unknown (not by a class's own ``__eq__``)."""
-    return isinstance(value, Opaque) and type(value).__eq__ is Opaque.__eq__
-
-
-def _holds_unknown_text(left: Any, right: Any, comparison: str) -> bool:
-    """Return whether a comparison's answer rests on a text only the robot knows."""
-    if comparison in ("==", "!=") or isinstance(right, str):
-        pair = (left, right)
-    elif isinstance(right, (list, tuple, set, frozenset, dict)) and isinstance(left, str):
-        return any(isinstance(item, str) and _texts_differ(left, item) for item in right)
-    else:
-        return False
-    return isinstance(pair[0], str) and isinstance(pair[1], str) and _texts_differ(*pair)
-
-
-def _texts_differ(one: str, other: str) -> bool:
-    """Return whether two texts compare on an unknown (the same unknown is equal to itself)."""
-    return one != other and (has_placeholder(one) or has_placeholder(other))
-
-
-_COMPARED: dict[str, Callable[[Any, Any], Any]] = {
-    "==": operator.eq, "!=": operator.ne, "in": lambda a, b: a in b,
-    "not in": lambda a, b: a not in b}
-
-
 _Int.__name__ = _Int.__qualname__ = "int"
 _Float.__name__ = _Float.__qualname__ = "float"
 _Complex.__name__ = _Complex.__qualname__ = "complex"
@@ -538,7 +477,7 @@ LAUNCH_BUILTINS = {
     "isinstance": _class_test(isinstance, "an instance of"),
     "issubclass": _class_test(issubclass, "a subclass of"),
     "__launchverify_raised__": _raised, "__launchverify_caught__": _caught,
-    "__launchverify_subject__": _subject, "__launchverify_compared__": _compared,
+    "__launchverify_subject__": _subject,
 }
 
 

@@ -1,10 +1,9 @@
-"""How a launch file's code is compiled: ``raise``, ``except``, ``match`` and ``==`` see unknowns.
+"""How a launch file's code is compiled: ``raise``, ``except`` and ``match`` see unknowns.
 
 Python insists that what a ``raise`` raises and what an ``except`` clause names are
-exception classes, a ``match`` statement's patterns read its subject's type at the C
-level, and ``==`` on two strings compares their texts: none of that asks a value
-anything, so an unknown value (a vendor's exception class, an environment variable's
-text) cannot answer as the data model's table says it should
+exception classes, and a ``match`` statement's patterns read its subject's type at the C
+level: none of that asks a value anything, so an unknown value (a vendor's exception
+class, a string to Python) cannot answer as the data model's table says it should
 (``models/launch_api/data_model.py``). The compiled file asks instead: each of those
 places calls a function of the launch file's builtins (``unknown.LAUNCH_BUILTINS``) that turns
 an unknown into what the table rules. Lines and columns stay the source's, so every
@@ -16,10 +15,8 @@ from __future__ import annotations
 import ast
 from types import CodeType
 
-RAISED, CAUGHT, SUBJECT, COMPARED = (
-    "__launchverify_raised__", "__launchverify_caught__", "__launchverify_subject__",
-    "__launchverify_compared__")
-_COMPARISONS = {ast.Eq: "==", ast.NotEq: "!=", ast.In: "in", ast.NotIn: "not in"}
+RAISED, CAUGHT, SUBJECT = ("__launchverify_raised__", "__launchverify_caught__",
+                           "__launchverify_subject__")
 
 
 class _AskingUnknowns(ast.NodeTransformer):
@@ -43,18 +40,6 @@ class _AskingUnknowns(ast.NodeTransformer):
         self.generic_visit(node)
         node.subject = _call(SUBJECT, node.subject)
         return node
-
-    def visit_Compare(self, node: ast.Compare) -> ast.expr:
-        # ``os.environ['ROS_DISTRO'] == 'humble'``: a text holding an unknown compared
-        # with another answers by an assumption (a chain ``a == b == c`` stays Python's)
-        self.generic_visit(node)
-        operator = _COMPARISONS.get(type(node.ops[0])) if len(node.ops) == 1 else None
-        if operator is None:
-            return node
-        call = ast.Call(func=ast.Name(id=COMPARED, ctx=ast.Load()),
-                        args=[ast.Constant(operator), node.left, node.comparators[0]],
-                        keywords=[])
-        return ast.copy_location(call, node)
 
 
 def _call(function: str, value: ast.expr) -> ast.expr:
