@@ -9,10 +9,10 @@ such as ``⟨env:ROBOT⟩``. The Python frontend turns placeholders back into sy
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass, field
-from typing import TypeVar
+from typing import Any, TypeVar
 
 OPEN, CLOSE = "\u27e8", "\u27e9"
 # Inside the brackets, ASCII is written in the Private Use Area: what a launch file does to
@@ -67,7 +67,63 @@ def environment_variable(name: str, default: str | None = None) -> str:
     With a default it reads as ``$(env NAME default)`` does: the default when the robot
     does not set it, which launchverify cannot know (environment names hold no ``=``).
     """
-    return placeholder("env", name if default is None else f"{name}={default}")
+    if default is None:
+        return placeholder("env", name)
+    return EnvironmentText(placeholder("env", f"{name}={default}"), default)
+
+
+class EnvironmentText(str):
+    """A variable of the robot's environment read with a default: unknown, compared as its default.
+
+    ``os.environ.get('ROS_DISTRO', 'humble') == 'humble'`` picks the branch a machine
+    without the variable takes, as the base evaluation reads ``$(env NAME default)``, so
+    the graph shows what that branch starts (not every branch's nodes). The answer is an
+    assumption, though: a failure after it runs again with the other answer (the robot may
+    set the variable), and is an error only if it fails there too. The text itself stays
+    a placeholder: a name or path built from it is still unknown.
+    """
+
+    default: str
+
+    def __new__(cls, text: str, default: str) -> EnvironmentText:
+        made = super().__new__(cls, text)
+        made.default = default
+        return made
+
+    def _answer(self, plain: bool) -> bool:
+        # not a branch to explore (the graph shows the default's): only a failure runs again
+        return assumed(plain, not plain, read(str(self)).strip(OPEN + CLOSE), text=True)
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, str) or has_placeholder(other):
+            return str.__eq__(self, other)
+        return self._answer(self.default == other)
+
+    def __ne__(self, other: object) -> bool:
+        if not isinstance(other, str) or has_placeholder(other):
+            return str.__ne__(self, other)
+        return self._answer(self.default != other)
+
+    __hash__ = str.__hash__
+
+    def _same(self, name: str) -> Callable[..., str]:
+        def cased(*args: Any) -> str:
+            text = getattr(str, name)(str(self), *args)
+            return EnvironmentText(text, getattr(str, name)(self.default, *args))
+        return cased
+
+    def __getattribute__(self, name: str) -> Any:
+        if name in _SAME_VALUE:  # what changes the default's case or spaces keeps it
+            return object.__getattribute__(self, "_same")(name)
+        return super().__getattribute__(name)
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return EnvironmentText, (str(self), self.default)
+
+
+# methods after which an environment variable's text still compares as its default would
+_SAME_VALUE = frozenset({"lower", "upper", "casefold", "strip", "lstrip", "rstrip",
+                         "title", "capitalize"})
 
 
 def has_placeholder(text: str) -> bool:
