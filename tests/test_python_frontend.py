@@ -431,6 +431,64 @@ def generate_launch_description():
     assert [code for code, _, _ in findings(path)] == ["LV003"]  # the module, no error
 
 
+def test_what_a_helper_finds_in_a_robots_file_is_unknown(tmp_path: Path) -> None:
+    # A helper finds its tool where the robot installs it and parses the version file:
+    # what ``re`` finds in the unknown content is unknown (not "nothing", whose ``[0]``
+    # would fail), so the file loads and its graph is there.
+    path = write(tmp_path, "sim.launch.py", """
+import re
+
+def tool_version():
+    if os.path.isdir('/opt/simulator'):
+        with open('/opt/simulator/version.txt') as f:
+            return int(re.findall(r'R(\\d+)', f.read())[0])
+    return None
+
+def generate_launch_description():
+    tool_version()
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker',
+                                   name='sim_bridge')])
+""")
+    from launchverify.evaluate.runner import evaluate
+    from launchverify.workspace.packages import PackageIndex
+
+    graph = evaluate(path, index=PackageIndex(), workspace=tmp_path)
+    assert [node.fqn.describe() for node in graph.nodes if node.fqn] == ["/sim_bridge"]
+    assert not findings(path)
+    # a failure on known values is still one
+    broken = write(tmp_path, "broken.launch.py", path.read_text().replace(
+        "    tool_version()\n", "    {}['version']\n    tool_version()\n"))
+    assert [code for code, _, _ in findings(broken)] == ["LV002"]
+
+
+def test_a_variable_the_check_was_not_given_reads_as_unset(tmp_path: Path) -> None:
+    # ``NAME in os.environ`` answers no, as a default is read: the branch of a machine
+    # that does not set it is the graph's; one given with --env is set.
+    path = write(tmp_path, "shared.launch.py", """
+def generate_launch_description():
+    name = 'shared' if 'SIM_SHARED_FOLDER' in os.environ else 'local'
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker', name=name)])
+""")
+    from launchverify.evaluate.runner import evaluate
+    from launchverify.workspace.packages import PackageIndex
+
+    graph = evaluate(path, index=PackageIndex(), workspace=tmp_path)
+    assert [node.fqn.describe() for node in graph.nodes] == ["/local"]
+    assert not findings(path)
+    shown = _graph_names(path, "--env", "SIM_SHARED_FOLDER=/srv")
+    assert shown == ["/shared"]
+
+
+def _graph_names(path: Path, *arguments: str) -> list[str]:
+    import contextlib
+    import io
+
+    out = io.StringIO()
+    with contextlib.redirect_stdout(out):
+        main(["graph", str(path), *arguments])
+    return [node["fqn"] for node in json.loads(out.getvalue())["nodes"]]
+
+
 def test_a_class_on_an_unknown_and_a_known_base_answers_as_the_known_one(
         tmp_path: Path) -> None:
     # ``class Params(vendor.Base, dict)`` makes dicts (the vendor's base adds what the

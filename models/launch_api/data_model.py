@@ -98,6 +98,7 @@ TABLE: tuple[Rule, ...] = (
         "json.loads of the environment": "json.loads(os.environ.get('CFG', '{}'))",
         "yaml.safe_load": "yaml.safe_load(u)['robot']",
         "os.environ": "os.environ.get(u)", "os.getenv": "os.getenv(u)",
+        "re": "import re\nr = int(re.findall(r'R(\\d+)', u)[0][0])",
     }),
     # --------------------------------------------- plain answers: assumptions, then varied
     *_rules(Answer.ASSUMED, {f"__{name}__": f"u {symbol} 2" for name, symbol in
@@ -146,6 +147,7 @@ TABLE: tuple[Rule, ...] = (
     *_rules(Answer.FIXED, {
         "type": "type(u) is dict", "__class__": "u.__class__ is dict",
         "isinstance of a known class": "isinstance(u, dict)",
+        "mapping merge": "d = {'a': 1}\nd.update(u)\nr = d.get('b')",
         "match": "match u:\n    case [a, b]:\n        r = 1\n    case _:\n        r = 2",
     }),
     # ----------------------------------------------- Python's answer, carrying the mark
@@ -219,7 +221,8 @@ STATEMENTS = (
 LIBRARIES = (
     "str.join", "json.dumps", "json.loads", "json.loads of the environment", "yaml.dump",
     "yaml.safe_dump", "yaml.safe_load",
-    "os.path", "os.fspath", "pathlib", "shlex", "os.environ", "os.getenv", "math",
+    "os.path", "os.fspath", "pathlib", "shlex", "os.environ", "os.getenv", "math", "re",
+    "mapping merge",
     "file on the robot", "isinstance of a known class", "isinstance of a class built on it",
     *(f"os.path.{name}" for name in ("exists", "isfile", "isdir", "lexists")),
 )

@@ -29,8 +29,10 @@ KINDS = ("env", "pkg", "prefix", "arg", "opaque")
 
 
 # In the varied world an unknown text holds what a launch file's code may cut it at, so
-# that code relying on what it holds (``value.split('_')[1]``) behaves otherwise there.
-_VARIED_TEXT = " _/:.-,;=" * 3
+# that code relying on what it holds (``value.split('_')[1]``) behaves otherwise there;
+# each separator is followed by a marked character, so that every piece cut from it is
+# still a piece of an unknown (never the plain text ``'/:.-'``).
+_VARIED_TEXT = "".join(sep + chr(0xE000 + ord("?")) for sep in " _/:.-,;=") * 3
 
 
 def placeholder(kind: str, name: str) -> str:

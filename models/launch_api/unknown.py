@@ -77,6 +77,11 @@ class Opaque(str):
         # it has nothing; the launch file's code gets more of the unknown
         if name.startswith("__") or _by_own_code(1):
             raise AttributeError(name)
+        if name == "keys" and not _loads_attribute(sys._getframe(1)):
+            # ``d.update(unknown)``, ``dict(unknown)``, ``{**unknown}``: Python's own code
+            # merges an unknown mapping, so the result holds keys no run can name (a
+            # lookup that misses there is no fact, whichever way the keys are assumed)
+            assumed(None, None, f"which keys {self._description} has", fixed=True)
         return Opaque(f"{self._description}.{name}")
 
     def __iter__(self) -> Iterator[Any]:
@@ -564,9 +569,22 @@ def handed(value: Any) -> bool:
     return bool(vars(value).get("handed")) if hasattr(value, "__dict__") else False
 
 
+_ATTRIBUTE_LOADS = frozenset(dis.opmap[name] for name in ("LOAD_ATTR", "LOAD_METHOD")
+                             if name in dis.opmap)
 _UNPACK_SEQUENCE = dis.opmap["UNPACK_SEQUENCE"]
 _UNPACK_EX = dis.opmap["UNPACK_EX"]
 _EXTENDED_ARG = dis.opmap["EXTENDED_ARG"]
+
+
+def _loads_attribute(frame: types.FrameType | None) -> bool:
+    """Return whether the instruction running in ``frame`` reads an attribute.
+
+    (Python code asking for it, not a C function such as ``dict.update`` that it called.)
+    """
+    if frame is None:
+        return False
+    code, at = frame.f_code.co_code, frame.f_lasti
+    return 0 <= at < len(code) and code[at] in _ATTRIBUTE_LOADS
 
 
 def _unpacked_count(frame: types.FrameType | None) -> int:

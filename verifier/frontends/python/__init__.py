@@ -52,7 +52,7 @@ from launchverify.models.launch_api.placeholders import (
 )
 from launchverify.models.launch_api.runtime import blamable
 from launchverify.models.launch_api.unknown import LAUNCH_BUILTINS, Opaque, handed
-from launchverify.own_code import is_own_file
+from launchverify.own_code import for_launchverify, is_own_file
 from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
 from launchverify.workspace.packages import PackageIndex
@@ -496,6 +496,9 @@ def _libraries_know_unknowns() -> Iterator[None]:
             raise
 
     json.loads = loads  # type: ignore[assignment]
+    searches = {name: getattr(re, name) for name in _RE_SEARCHES}
+    for name, search in searches.items():
+        setattr(re, name, _searching_unknowns(name, search))
     for dumper in (yaml.SafeDumper, yaml.Dumper):
         if Opaque not in dumper.yaml_representers:
             dumper.add_representer(Opaque, _represent_unknown)
@@ -517,6 +520,31 @@ def _libraries_know_unknowns() -> Iterator[None]:
         for name, original in originals.items():
             setattr(yaml, name, original)
         json.loads = json_loads
+        for name, search in searches.items():
+            setattr(re, name, search)
+
+
+# ``re``'s functions and where each takes the text it searches
+_RE_SEARCHES = {"findall": 1, "finditer": 1, "search": 1, "match": 1, "fullmatch": 1,
+                "split": 1, "sub": 2, "subn": 2}
+
+
+def _searching_unknowns(name: str, search: Any) -> Any:
+    r"""Wrap a ``re`` function: what it finds in a text that holds an unknown is unknown.
+
+    (``re.findall(r'R(\d+)', version_file.read())[0]`` finds nothing in a placeholder;
+    on the robot the file holds a version.)
+    """
+    at = _RE_SEARCHES[name]
+
+    def searching(*args: Any, **kwargs: Any) -> Any:
+        text = args[at] if len(args) > at else kwargs.get("string")
+        if isinstance(text, str) and has_placeholder(text) and not for_launchverify(1):
+            return Opaque(f"what re.{name} finds in {read(text)}")
+        return search(*args, **kwargs)
+
+    searching.__name__ = name
+    return searching
 
 
 def _represent_unknown(dumper: Any, value: Opaque) -> Any:

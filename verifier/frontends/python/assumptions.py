@@ -80,12 +80,16 @@ def unvary(plain: object, varied: object, what: str) -> None:
     """
     seen: set[int] = set()
     made = itertools.count(1)  # each its own unknown: two of them are not one value
+    paired: dict[int, a.Action] = {}  # the other world's action -> this world's partner
+    kept: list[a.Group] = []  # what only the other world started, under its condition
 
     def walk(mine: object, theirs: object) -> None:
         if (mine is theirs or id(mine) in seen or type(mine) is not type(theirs)
                 or not dataclasses.is_dataclass(mine) or isinstance(mine, (s.Sub, Span))):
             return
         seen.add(id(mine))
+        if isinstance(mine, a.Action):
+            paired[id(theirs)] = mine
         for item in dataclasses.fields(mine):
             old = getattr(mine, item.name)
             new = value(old, getattr(theirs, item.name))
@@ -118,11 +122,20 @@ def unvary(plain: object, varied: object, what: str) -> None:
         return mine
 
     def other_world(action: a.Action) -> a.Action:
-        return a.Group(span=action.span, condition=IfCondition(s.Opaque(
+        group = a.Group(span=action.span, condition=IfCondition(s.Opaque(
             f"the other answers about {what}, #{next(made)}")), actions=(action,),
             scoped=False, forwarding=True)
+        kept.append(group)
+        return group
 
     value(plain, varied)
+    for group in kept:
+        # an action this world built too, without starting it (a handler's target that
+        # only the other answers start): started as this world's, so that what names it
+        # by identity (``OnProcessExit(target_action=driver)``) finds it
+        partner = paired.get(id(group.actions[0]))
+        if partner is not None:
+            object.__setattr__(group, "actions", (partner,))
 
 
 def _partners(mine: tuple[object, ...], theirs: tuple[object, ...]) -> list[object | None]:

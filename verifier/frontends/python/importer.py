@@ -30,8 +30,9 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
+from launchverify.frontends.python.rewrite import compile_launch_file
 from launchverify.models.launch_api import MODULES, QUIET_ROOTS, exports_for, is_modelled
-from launchverify.models.launch_api.unknown import Opaque, OpaqueModule
+from launchverify.models.launch_api.unknown import LAUNCH_BUILTINS, Opaque, OpaqueModule
 from launchverify.own_code import is_own_file
 from launchverify.workspace.packages import PackageIndex
 
@@ -96,13 +97,17 @@ class WorkspaceFinder(importlib.abc.MetaPathFinder):
 
     def find_spec(self, fullname: str, path: Sequence[str] | None = None,
                   target: types.ModuleType | None = None) -> importlib.machinery.ModuleSpec | None:
-        if "." in fullname:
-            return None  # submodules are found through the parent's __path__
+        if "." in fullname:  # a submodule of a workspace package is the workspace's too
+            parent = sys.modules.get(fullname.rpartition(".")[0])
+            spec = getattr(parent, "__spec__", None)
+            if not isinstance(getattr(spec, "loader", None), UserCodeLoader) or path is None:
+                return None
+            return user_code(importlib.machinery.PathFinder.find_spec(fullname, path))
         if fullname not in sys.stdlib_module_names:
             for source in self.index.python_sources(fullname):
                 spec = installed_spec(fullname, source)
                 if spec is not None:
-                    return spec
+                    return user_code(spec)
         roots = list(self.folders)
         package = self.index.find(fullname)
         if package is not None and package.source is not None:
@@ -110,8 +115,37 @@ class WorkspaceFinder(importlib.abc.MetaPathFinder):
         for root in roots:
             spec = importlib.machinery.PathFinder.find_spec(fullname, [str(root)])
             if spec is not None and spec.origin and not spec.origin.endswith((".so", ".pyd")):
-                return spec
+                return user_code(spec)
         return None
+
+
+class UserCodeLoader(importlib.machinery.SourceFileLoader):
+    """Loads a workspace's Python module as a launch file is run: it is the user's code too.
+
+    Compiled from its source (never from a ``__pycache__`` a pull request could fill),
+    the way launch files are (``raise``/``except``/``match`` ask an unknown), with the
+    launch file's builtins (``int``, ``ord``, ``isinstance``... of an unknown): a vendor's
+    helper in the workspace meets unknown values as the launch file that calls it does.
+    """
+
+    def get_code(self, fullname: str) -> types.CodeType:
+        return compile_launch_file(self.get_data(self.path), self.path)
+
+    def exec_module(self, module: types.ModuleType) -> None:
+        namespace = dict(vars(builtins))
+        namespace.update(LAUNCH_BUILTINS)
+        module.__dict__["__builtins__"] = namespace
+        super().exec_module(module)
+
+
+def user_code(spec: importlib.machinery.ModuleSpec | None
+              ) -> importlib.machinery.ModuleSpec | None:
+    """Return a source module's spec loading it as the user's code (others unchanged)."""
+    if spec is None or not spec.origin or not spec.origin.endswith(".py") or not isinstance(
+            spec.loader, importlib.machinery.SourceFileLoader):
+        return spec
+    spec.loader = UserCodeLoader(spec.name, spec.origin)
+    return spec
 
 
 def installed_spec(name: str, source: Path) -> importlib.machinery.ModuleSpec | None:

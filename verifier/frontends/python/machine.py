@@ -7,7 +7,7 @@ is run and the robot's files are not there, so the answers are unknown values:
 
 - a command (``subprocess``, ``os.system``, ``os.popen``) runs nothing (an LV003 says
   so) and gives an unknown result, whatever is asked of it (its output, its return code);
-- the host name is unknown;
+- the host name is unknown, and so is what the user types at a prompt (``input()``);
 - whether a file outside what launchverify sees exists (``os.path.exists``,
   ``Path.is_file``...) is an assumption (``assumed``): "yes" in the plain world (the
   launch is written for a robot that has its files), "no" in the varied one, so a
@@ -54,6 +54,11 @@ def _command(module: str, name: str) -> Callable[..., Any]:
 
 def _hostname() -> str:
     return Opaque("the robot's host name")
+
+
+def _typed(prompt: Any = "") -> str:
+    """``input()``: what the user types at the launch's prompt (launchverify's stdin is not it)."""
+    return Opaque("what the user types at the prompt")
 
 
 def _judged(found: bool, path: Any, seen: Callable[[str], bool]) -> bool:
@@ -116,6 +121,7 @@ def robot_machine(seen: Callable[[str], bool], opener: Callable[..., Any]) -> It
         (os, "system", _command("os", "system")),
         (os, "popen", _command("os", "popen")),
         (socket, "gethostname", _hostname),
+        (builtins, "input", _typed),
         (builtins, "open", _opening(builtins.open, opener)),
         (io, "open", _opening(io.open, opener)),
     ]

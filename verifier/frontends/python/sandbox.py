@@ -28,7 +28,7 @@ from contextlib import contextmanager, redirect_stderr, redirect_stdout
 from pathlib import Path
 from typing import Any
 
-from launchverify.models.launch_api.placeholders import environment_variable
+from launchverify.models.launch_api.placeholders import assumed, environment_variable, read
 from launchverify.own_code import is_own_file
 from launchverify.workspace.paths import SYSTEM_FOLDERS, below
 
@@ -280,7 +280,11 @@ class SymbolicEnviron(MutableMapping[str, str]):
         self._set.pop(key, None)
 
     def __contains__(self, key: object) -> bool:
-        return True
+        if key in self._set:
+            return True
+        # whether the robot sets it is unknown: read as unset, as a default is (an assumption
+        # a failure is run again without, not a branch whose other side the graph shows)
+        return assumed(False, True, f"env:{read(str(key))} is set", text=True)
 
     def __iter__(self) -> Iterator[str]:
         return iter(self._set)
