@@ -207,3 +207,24 @@ class UnknownMapping(dict):  # type: ignore[type-arg]
 
     def __contains__(self, key: object) -> bool:
         return assumed(False, True, "the content of a file only the robot has")
+
+    # which keys it holds no run can say (a loop over them runs no round in either world)
+    def __iter__(self) -> Iterator[Any]:
+        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        return super().__iter__()
+
+    def __len__(self) -> int:
+        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        return super().__len__()
+
+    def keys(self) -> Any:
+        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        return super().keys()
+
+    def values(self) -> Any:
+        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        return super().values()
+
+    def items(self) -> Any:
+        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        return super().items()

@@ -55,8 +55,11 @@ def checked(run: Callable[[], tuple[_T, Sequence[Problem]]],
     if WORLD.answers == answers or not (failed or branched):
         return Checked(result, list(found))
     assumed, unvaried = list(WORLD.answered), WORLD.fixed != fixed
+    before_varied = WORLD.fixed
     with varied_world():
         other, repeated = run()
+    # the other run may reach what neither can vary (its own path to an unknown's type)
+    unvaried = unvaried or WORLD.fixed != before_varied
     # an assumption no other run can vary (an unknown value's type): nothing is a fact
     problems = settle(found, () if unvaried else repeated, assumed) if failed else list(found)
     depends = branched and shape(actions(result)) != shape(actions(other))
