@@ -187,11 +187,12 @@ class DeclareLaunchArgument(Action):
             cv.unmodeled(f"an argument named by code launchverify cannot see "
                          f"({read(self._name)}) is declared here", self._span)
             return a.OpaqueAction(span=self._span, description="an argument of unknown name")
+        choices = None if self._choices is None else tuple(str(c) for c in self._choices)
+        if choices is not None and any(has_placeholder(c) for c in choices):
+            choices = None  # one of them is a vendor's value: which values it allows is unknown
         return a.DeclareArgument(**cv_common(self, cv), name=self._name,
                                  default=cv.opt_sub(self._default_value),
-                                 description=self._description,
-                                 choices=None if self._choices is None else tuple(
-                                     str(c) for c in self._choices))
+                                 description=self._description, choices=choices)
 
 
 class SetLaunchConfiguration(Action):
