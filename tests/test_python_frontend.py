@@ -461,6 +461,36 @@ def generate_launch_description():
     assert [code for code, _, _ in findings(broken)] == ["LV002"]
 
 
+def test_webots_helpers_start_what_they_start(tmp_path: Path) -> None:
+    # webots_ros2_driver is modelled (sources or not): the supervisor is a node the file
+    # adds itself, the simulator and the driver are processes, the nodes a connection
+    # waits for start once it is made.
+    path = write(tmp_path, "sim.launch.py", """
+from webots_ros2_driver.wait_for_controller_connection import WaitForControllerConnection
+from webots_ros2_driver.webots_controller import WebotsController
+from webots_ros2_driver.webots_launcher import WebotsLauncher
+
+def generate_launch_description():
+    webots = WebotsLauncher(world='/opt/worlds/arena.wbt', ros2_supervisor=True)
+    driver = WebotsController(robot_name='rover', namespace='r1')
+    odometry = Node(package='demo_nodes_cpp', executable='listener', name='odometry')
+    return LaunchDescription([webots, webots._supervisor, driver,
+        WaitForControllerConnection(target_driver=driver, nodes_to_start=[odometry])])
+""")
+    from launchverify.evaluate.runner import evaluate
+    from launchverify.workspace.packages import PackageIndex
+
+    graph = evaluate(path, index=PackageIndex(), workspace=tmp_path)
+    nodes = {(node.executable_label(), graph.base(node.namespace) if node.namespace else None)
+             for node in graph.nodes}
+    assert ("ros2_supervisor.py", "/Ros2Supervisor") in {
+        (label.rpartition("/")[2], ns) for label, ns in nodes}
+    assert "/odometry" in {node.fqn.describe() for node in graph.nodes if node.fqn}
+    processes = {graph.base(p.settings.name) for p in graph.processes if p.settings.name}
+    assert {"webots", "webots_controller_rover"} <= processes
+    assert not findings(path)
+
+
 def test_a_variable_the_check_was_not_given_reads_as_unset(tmp_path: Path) -> None:
     # ``NAME in os.environ`` answers no, as a default is read: the branch of a machine
     # that does not set it is the graph's; one given with --env is set.

@@ -25,6 +25,7 @@ from launchverify.models.launch_api import (
     launch_ros,
     moveit,
     ros_gz,
+    webots,
 )
 from launchverify.models.launch_api import launch_actions as la
 from launchverify.models.launch_api import launch_substitutions as ls
@@ -199,6 +200,14 @@ MODULES: dict[str, dict[str, Any]] = {
     "ros_gz_sim.actions": _exports(ros_gz, "GzServer", "GzSpawnModel"),
     "ros_gz_bridge": {},
     "ros_gz_bridge.actions": _exports(ros_gz, "RosGzBridge"),
+    "webots_ros2_driver": {},
+    "webots_ros2_driver.webots_launcher": _exports(
+        webots, "WebotsLauncher", "Ros2SupervisorLauncher"),
+    "webots_ros2_driver.webots_controller": _exports(webots, "WebotsController"),
+    "webots_ros2_driver.wait_for_controller_connection": _exports(
+        webots, "WaitForControllerConnection"),
+    "webots_ros2_driver.urdf_spawner": _exports(
+        webots, "URDFSpawner", "get_webots_driver_node"),
 }
 
 

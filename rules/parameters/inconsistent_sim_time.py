@@ -89,8 +89,9 @@ def _label(graph: LaunchGraph, node: NodeRecord) -> str:
 
 # Nodes whose behaviour does not depend on the clock they use: containers (their
 # components have their own parameters), static transforms (valid at any time), the
-# Gazebo bridges (stamps come from the simulator), filters that stamp their output with
-# their input's stamps and read no clock for anything else (imu_filter_madgwick's ROS 2
+# Gazebo bridges and Webots' supervisor (stamps come from the simulator), filters that
+# stamp their output with their input's stamps and read no clock for anything else
+# (imu_filter_madgwick's ROS 2
 # node, rtabmap's depth-to-cloud converters; not obstacles_detection, whose TF buffer
 # runs on the node's clock) and one-shot helpers that spawn models or controllers and
 # exit.
@@ -100,6 +101,7 @@ TIMELESS = frozenset({
     ("rclcpp_components", "component_container_isolated"),
     ("ros_gz_bridge", "parameter_bridge"),
     ("ros_gz_image", "image_bridge"),  # converts gz images, stamps and all
+    ("webots_ros2_driver", "ros2_supervisor.py"),  # Webots' clock: it publishes /clock
     ("imu_filter_madgwick", "imu_filter_madgwick_node"),  # stamps from the IMU messages
     ("rtabmap_util", "point_cloud_xyz"),  # clouds stamped as their images; now() only logs
     ("rtabmap_util", "point_cloud_xyzrgb"),
