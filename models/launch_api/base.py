@@ -17,7 +17,7 @@ import sysconfig
 from collections.abc import Iterable
 from pathlib import Path
 from types import CodeType, FrameType
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol, cast
 
 from launchverify.ir import subst as s
 from launchverify.ir.actions import Action as IRAction
@@ -453,6 +453,10 @@ class Substitution(Modelled):
 
     def perform(self, context: Any) -> str:
         """Perform the substitution in an OpaqueFunction's concrete context."""
+        if _unknown(context):  # a context of code launchverify cannot see: its text too
+            from launchverify.models.launch_api.unknown import Opaque
+
+            return Opaque(f"{type(self).__name__} performed in an unknown context")
         performer = getattr(context, "perform_substitution", None)
         if performer is None:
             raise TypeError("perform() needs a LaunchContext")
@@ -474,6 +478,10 @@ class Condition(Modelled):
 
     def evaluate(self, context: Any) -> bool:
         """Evaluate in an OpaqueFunction's concrete context."""
+        if _unknown(context):  # a context of code launchverify cannot see: an unknown truth
+            from launchverify.models.launch_api.unknown import Opaque
+
+            return cast(bool, Opaque(f"{type(self).__name__} in an unknown context"))
         evaluator = getattr(context, "evaluate_condition", None)
         if evaluator is None:
             raise TypeError("evaluate() needs a LaunchContext")

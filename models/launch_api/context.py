@@ -14,6 +14,8 @@ from typing import Any
 
 from launchverify.models.launch_api.base import Modelled, Substitution, _unknown
 from launchverify.models.launch_api.launch_substitutions import TextSubstitution
+from launchverify.models.launch_api.placeholders import has_placeholder
+from launchverify.models.launch_api.unknown import LAUNCH_BUILTINS, Opaque
 
 
 class LaunchContext(Modelled):
@@ -37,6 +39,7 @@ class LaunchContext(Modelled):
         self._condition_evaluator = condition_evaluator
         self._globals: dict[str, Any] = {}
         self._locals: dict[str, Any] = {}
+        self._unknown_names = False  # extended by a mapping of code launchverify cannot see
         if launch_file:  # what IncludeLaunchDescription sets for the file it includes
             self._locals.update(current_launch_file_path=launch_file,
                                 current_launch_file_directory=str(Path(launch_file).parent))
@@ -75,18 +78,20 @@ class LaunchContext(Modelled):
     @property
     def locals(self) -> _AttributeDict:
         """Return the locals (and globals) as read-only attributes (launch's API)."""
-        return _AttributeDict(self.get_locals_as_dict())
+        return _AttributeDict(self.get_locals_as_dict(), unknown_names=self._unknown_names)
 
     def get_locals_as_dict(self) -> dict[str, Any]:
         """Return the globals, overridden by the locals (launch's API)."""
         return {**self._globals, **self._locals}
 
     def extend_globals(self, extensions: dict[str, Any]) -> None:
-        """Add globals (launch's API)."""
+        """Add globals (launch's API); a vendor's mapping adds names nobody can list."""
+        self._unknown_names |= _unknown(extensions)
         self._globals.update(extensions)
 
     def extend_locals(self, extensions: dict[str, Any]) -> None:
-        """Add locals (launch's API)."""
+        """Add locals (launch's API); a vendor's mapping adds names nobody can list."""
+        self._unknown_names |= _unknown(extensions)
         self._locals.update(extensions)
 
     def perform_substitution(self, substitution: Any) -> str:
@@ -129,11 +134,14 @@ class LaunchContext(Modelled):
 class _AttributeDict:
     """What ``LaunchContext.locals`` returns: the locals as read-only attributes."""
 
-    def __init__(self, values: dict[str, Any]) -> None:
+    def __init__(self, values: dict[str, Any], *, unknown_names: bool = False) -> None:
         self.__dict__["_values"] = values
+        self.__dict__["_unknown_names"] = unknown_names
 
     def __getattr__(self, key: str) -> Any:
         values = self.__dict__["_values"]
+        if key not in values and (self.__dict__["_unknown_names"] or _unknown(key)):
+            return Opaque(f"context.locals.{key}")  # a vendor's mapping may hold it
         if key not in values:
             raise AttributeError(f"context.locals does not contain attribute '{key}', it "
                                  f"contains: [{', '.join(values)}]")
@@ -166,6 +174,9 @@ class RecordingDict(dict[str, str]):
 
     def __getitem__(self, key: str) -> str:
         found = super().__contains__(key)
+        if not found and isinstance(key, str) and has_placeholder(key):
+            self.whole = True  # a name only the robot knows: it may be any of them
+            return Opaque(f"the launch configuration {key}")
         self.read.append((key, found, False))
         if not found:
             raise MissingConfiguration(key)
@@ -237,13 +248,16 @@ def perform_substitutions(context: LaunchContext, subs: Any) -> str:
 
 
 _SCALARS = (int, float, bool, str)
+# the launch file's ``int`` and ``float`` (they keep an unknown unknown) are Python's
+_PYTHON_TYPES: dict[Any, type] = {LAUNCH_BUILTINS["int"]: int, LAUNCH_BUILTINS["float"]: float}
 
 
 def _extract_type(data_type: Any) -> tuple[Any, bool]:
     """``extract_type``: ``List[int]`` -> ``(int, True)``, ``bool`` -> ``(bool, False)``."""
     arguments = getattr(data_type, "__args__", None)
     if getattr(data_type, "__origin__", None) is list and arguments:
-        return arguments[0], True
+        return _PYTHON_TYPES.get(arguments[0], arguments[0]), True
+    data_type = _PYTHON_TYPES.get(data_type, data_type)
     if data_type not in _SCALARS:
         raise ValueError(f"Unrecognized data type: {data_type}")
     return data_type, False
@@ -259,6 +273,9 @@ def _valid(value: Any) -> bool:
 def coerce_to_type(value: str, data_type: Any = None) -> Any:
     """``launch.utilities.type_utils.coerce_to_type``: YAML rules, or the type asked for."""
     import yaml
+
+    if _unknown(data_type) or has_placeholder(value):  # a vendor's type or text: unknown
+        return Opaque(f"{value} as {data_type}")
 
     def as_yaml(text: str, message: str) -> Any:
         if not text:
@@ -293,6 +310,8 @@ def coerce_to_type(value: str, data_type: Any = None) -> Any:
 
 def perform_typed_substitution(context: LaunchContext, value: Any, data_type: Any) -> Any:
     """``launch.utilities.type_utils.perform_typed_substitution``."""
+    if _unknown(value) or _unknown(data_type):  # a vendor's value or type: unknown
+        return Opaque(f"{value} as {data_type}")
     if isinstance(value, _SCALARS):
         if data_type is not None and not isinstance(value, _extract_type(data_type)[0]):
             raise TypeError(f"value=`{value}` is a scalar and not an instance of `{data_type}`")

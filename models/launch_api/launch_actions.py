@@ -513,6 +513,9 @@ class ForEach(OpaqueFunction):
         entities: list[Any] = []
         for chunk in (part for part in text.split(self.SEPARATOR) if part.strip()):
             mapping = yaml.safe_load(chunk)
+            if not isinstance(mapping, dict) and has_placeholder(chunk):
+                entities.append(Opaque(f"what ForEach's function builds from {chunk}"))
+                continue  # a value only the robot knows: what the call would build is unknown
             if not isinstance(mapping, dict):
                 raise ValueError(f"ForEach value {chunk!r} is not a mapping")
             entities.extend(self.function(**mapping) or [])
@@ -662,7 +665,7 @@ class ExecuteProcess(Action):
         return self._cached("stderr")
 
     def _cached(self, stream: str) -> str:
-        if not self.cached_output:
+        if not self.cached_output and not _unknown(self.cached_output):
             raise RuntimeError(f"cached output must be true to be able to get {stream}, proc "
                                f"'{self.options['name']}'")
         return ""
@@ -884,7 +887,9 @@ class EmitEvent(Action):
         fields: dict[str, Any] = {}
         if isinstance(event, ChangeState):
             matcher = event.lifecycle_node_matcher
-            fields["transition_ids"] = (s.Text(str(event.transition_id)),)
+            transition = str(event.transition_id)  # a vendor's: an unknown expression
+            fields["transition_ids"] = (cv.sub(transition) if has_placeholder(transition)
+                                        else s.Text(transition),)
             if isinstance(matcher, ActionMatcher):
                 fields["matcher"] = "action"
                 fields["target"] = (cv.action(matcher.target)

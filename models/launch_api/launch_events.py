@@ -159,7 +159,9 @@ class Event(Modelled):
     name = "launch.Event"
 
     def __init__(self, **details: Any) -> None:
-        self.details = {k: v for k, v in details.items() if isinstance(v, (str, int, bool))}
+        # a vendor's value is kept as its text (the IR holds plain values)
+        self.details = {k: str(v) if _unknown(v) else v for k, v in details.items()
+                        if isinstance(v, (str, int, bool))}
 
 
 class Shutdown(Event):
@@ -222,7 +224,7 @@ class ChangeState(Event):
 
     def __init__(self, *, lifecycle_node_matcher: Any, transition_id: int) -> None:
         super().__init__(transition_id=transition_id)
-        if transition_id not in range(9):
+        if not _unknown(transition_id) and transition_id not in range(9):  # a vendor's id: any
             raise ValueError(f"given transition_id of '{transition_id}', expected one of "
                              "{0, 1, 2, 3, 4, 5, 6, 7, 8}")
         self.lifecycle_node_matcher = lifecycle_node_matcher

@@ -196,7 +196,8 @@ class Node(ExecuteProcess):
                  remappings: Any = None, ros_arguments: Any = None, arguments: Any = None,
                  **kwargs: Any) -> None:
         super().__init__(cmd=[], **kwargs)
-        if parameters is not None and not isinstance(parameters, list):
+        if parameters is not None and not isinstance(parameters, list) and not _unknown(
+                parameters):  # a vendor's list of parameters: what it holds is unknown
             raise TypeError(f"Expected 'parameters' to be one of [<class 'list'>], but got "
                             f"'{parameters}' of type '{type(parameters)}'")
         self.node_executable, self.node_package = executable, package

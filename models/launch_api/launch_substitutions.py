@@ -418,7 +418,7 @@ class IfElseSubstitution(Substitution):
 
     def __init__(self, condition: Any, if_value: Any = "", else_value: Any = "") -> None:
         super().__init__()
-        if not if_value and not else_value:
+        if not if_value and not else_value and not (_unknown(if_value) or _unknown(else_value)):
             raise RuntimeError("One of if_value and else_value must be specified")
         self._condition, self._if_value, self._else_value = condition, if_value, else_value
 

@@ -301,7 +301,8 @@ class MoveItConfigsBuilder(ParameterBuilder):
         names = list(pipelines)
         if default_planning_pipeline is None:
             default_planning_pipeline = "ompl" if "ompl" in names else names[0]
-        if default_planning_pipeline not in names:
+        if default_planning_pipeline not in names and not any(  # a vendor's name: may be one
+                has_placeholder(str(name)) for name in [default_planning_pipeline, *names]):
             raise RuntimeError(f"default_planning_pipeline: `{default_planning_pipeline}` "
                                f"doesn't name any of the input pipelines `{names}`")
         parameters: dict[str, Any] = {"planning_pipelines": names,

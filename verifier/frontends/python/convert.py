@@ -225,7 +225,8 @@ class PythonConverter:
 
     def parameters(self, value: Any, span: Span) -> tuple[a.ParamEntry, ...]:
         out: list[a.ParamEntry] = []
-        items = list(value or [])
+        # a vendor's list holds parameters nobody can list: one unknown entry, not none
+        items = [value] if isinstance(value, Opaque) else list(value or [])
         written = self._locator.keyword_items(span, "parameters")
         if len(written) != len(items):
             written = [(span, {})] * len(items)  # not written out: the call it is in
