@@ -58,6 +58,7 @@ KNOWN_BY_NAME = {
     "on_completion": "[]", "on_exit": "[]", "on_start": "[]", "on_shutdown": "[]",
     "target_action": "None", "signal_number": "2", "data_type": "str",
     "lifecycle_node_names": "['/x']", "transition_ids": "[1]",
+    "target_driver": "None", "nodes_to_start": "[]", "driver_node": "None",
     "composable_node_descriptions": "[]", "target_container": "'/container'",
     "filename": "PARAMS", "src": "'/a'", "dst": "'/b'", "new_log_dir": "'log'",
     "plugin": "'demo_nodes_cpp::Talker'", "param_file": "PARAMS", "entities": "[]",
