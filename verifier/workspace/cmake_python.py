@@ -32,11 +32,9 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from launchverify.workspace.cmake_words import Argument, Command, commands
+from launchverify.workspace.cmake_words import Argument, Command, read_cmake
 from launchverify.workspace.paths import resolved
-from launchverify.workspace.reading import read_file
 
-MAX_CMAKE_BYTES = 512 * 1024
 MAX_SUBDIRECTORIES = 32  # add_subdirectory followed per package, in all
 MAX_SUBDIRECTORY_DEPTH = 4
 # What a destination expands to: the Python folder of the install prefix, and the prefix.
@@ -83,17 +81,6 @@ def _builtins(folder: Path) -> dict[str, str]:
     return {"CMAKE_CURRENT_SOURCE_DIR": text, "CMAKE_CURRENT_LIST_DIR": text,
             "PROJECT_SOURCE_DIR": text, "CMAKE_SOURCE_DIR": text,
             "CMAKE_INSTALL_PREFIX": PREFIX, "PYTHON_INSTALL_DIR": PYTHON_DIR}
-
-
-def read_cmake(path: Path) -> list[Command] | None:
-    """Return the commands of a ``CMakeLists.txt``; ``None`` if unreadable, too large or bad."""
-    try:
-        data = read_file(path, prefix=MAX_CMAKE_BYTES + 1)
-    except OSError:
-        return None
-    if len(data) > MAX_CMAKE_BYTES:
-        return None  # a truncated file would be read wrong
-    return commands(data.decode("utf-8", "replace"))
 
 
 @dataclass
