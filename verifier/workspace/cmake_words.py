@@ -12,6 +12,11 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass
+from pathlib import Path
+
+from launchverify.workspace.reading import read_file
+
+MAX_CMAKE_BYTES = 512 * 1024
 
 _IDENTIFIER = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _OPEN_BRACKET = re.compile(r"\[(=*)\[")
@@ -35,6 +40,17 @@ class Command:
     name: str
     arguments: tuple[Argument, ...]
     line: int
+
+
+def read_cmake(path: Path) -> list[Command] | None:
+    """Return the commands of a CMake file; ``None`` if unreadable, too large or malformed."""
+    try:
+        data = read_file(path, prefix=MAX_CMAKE_BYTES + 1)
+    except OSError:
+        return None
+    if len(data) > MAX_CMAKE_BYTES:
+        return None  # a truncated file would be read wrong
+    return commands(data.decode("utf-8", "replace"))
 
 
 class _Malformed(Exception):
@@ -62,6 +78,7 @@ class _Reader:
     def __init__(self, text: str) -> None:
         self.text = text
         self.at = 0
+        self.line, self.counted = 1, 0  # the line at ``counted``, counted once
 
     def read(self) -> list[Command]:
         out: list[Command] = []
@@ -72,7 +89,8 @@ class _Reader:
             match = _IDENTIFIER.match(self.text, self.at)
             if match is None:
                 raise _Malformed
-            line = self.text.count("\n", 0, self.at) + 1
+            self.line += self.text.count("\n", self.counted, self.at)
+            self.counted, line = self.at, self.line
             self.at = match.end()
             while self.at < len(self.text) and self.text[self.at] in " \t":
                 self.at += 1

@@ -18,7 +18,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from launchverify.workspace.cmake_python import MAX_CMAKE_BYTES, PythonModule, python_modules
+from launchverify.workspace.cmake_python import PythonModule, python_modules
+from launchverify.workspace.cmake_words import MAX_CMAKE_BYTES
 from launchverify.workspace.paths import link_inside, resolved
 from launchverify.workspace.reading import read_file
 
