@@ -108,24 +108,25 @@ class EnvironmentText(str):
 
     __hash__ = str.__hash__
 
-    def _same(self, name: str) -> Callable[..., str]:
-        def cased(*args: Any) -> str:
-            text = getattr(str, name)(str(self), *args)
-            return EnvironmentText(text, getattr(str, name)(self.default, *args))
-        return cased
-
-    def __getattribute__(self, name: str) -> Any:
-        if name in _SAME_VALUE:  # what changes the default's case or spaces keeps it
-            return object.__getattribute__(self, "_same")(name)
-        return super().__getattribute__(name)
-
     def __reduce__(self) -> tuple[Any, ...]:
         return EnvironmentText, (str(self), self.default)
 
 
+def _keeping_default(name: str) -> Callable[..., str]:
+    """Return ``str.<name>`` for an environment text: the default changes with the text."""
+    method = getattr(str, name)
+
+    def kept(self: EnvironmentText, *args: Any) -> str:
+        return EnvironmentText(method(str(self), *args), method(self.default, *args))
+
+    kept.__name__ = name
+    return kept
+
+
 # methods after which an environment variable's text still compares as its default would
-_SAME_VALUE = frozenset({"lower", "upper", "casefold", "strip", "lstrip", "rstrip",
-                         "title", "capitalize"})
+for _name in ("lower", "upper", "casefold", "strip", "lstrip", "rstrip", "title",
+              "capitalize"):
+    setattr(EnvironmentText, _name, _keeping_default(_name))
 
 
 def has_placeholder(text: str) -> bool:
@@ -210,21 +211,25 @@ class UnknownMapping(dict):  # type: ignore[type-arg]
 
     # which keys it holds no run can say (a loop over them runs no round in either world)
     def __iter__(self) -> Iterator[Any]:
-        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        _keys_asked()
         return super().__iter__()
 
     def __len__(self) -> int:
-        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        _keys_asked()
         return super().__len__()
 
     def keys(self) -> Any:
-        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        _keys_asked()
         return super().keys()
 
     def values(self) -> Any:
-        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        _keys_asked()
         return super().values()
 
     def items(self) -> Any:
-        assumed(None, None, "which keys a file only the robot has holds", fixed=True)
+        _keys_asked()
         return super().items()
+
+
+def _keys_asked() -> None:
+    assumed(None, None, "which keys a file only the robot has holds", fixed=True)

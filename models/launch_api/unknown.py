@@ -486,6 +486,13 @@ LAUNCH_BUILTINS = {
 }
 
 
+def launch_builtins() -> dict[str, Any]:
+    """Return the builtins a launch file's code (and the workspace's Python) runs with."""
+    import builtins
+
+    return {**vars(builtins), **LAUNCH_BUILTINS}
+
+
 class OpaqueModule(types.ModuleType):
     """A module we cannot see into: every attribute is an opaque value."""
 

@@ -51,7 +51,7 @@ from launchverify.models.launch_api.placeholders import (
     read,
 )
 from launchverify.models.launch_api.runtime import blamable
-from launchverify.models.launch_api.unknown import LAUNCH_BUILTINS, Opaque, handed
+from launchverify.models.launch_api.unknown import Opaque, handed, launch_builtins
 from launchverify.own_code import for_launchverify, is_own_file
 from launchverify.problems import Problem, ProblemSink
 from launchverify.span import Span
@@ -337,8 +337,7 @@ class _Session:
                                    message, span), context=context)
 
     def _builtins(self) -> dict[str, Any]:
-        namespace = dict(vars(builtins))
-        namespace.update(LAUNCH_BUILTINS)
+        namespace = launch_builtins()
         namespace["open"] = self._open
         if self.frontend.absent_modules:
             namespace["__import__"] = absent_import(self.module_unmodeled)

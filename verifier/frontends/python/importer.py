@@ -32,7 +32,7 @@ from typing import Any
 
 from launchverify.frontends.python.rewrite import compile_launch_file
 from launchverify.models.launch_api import MODULES, QUIET_ROOTS, exports_for, is_modelled
-from launchverify.models.launch_api.unknown import LAUNCH_BUILTINS, Opaque, OpaqueModule
+from launchverify.models.launch_api.unknown import Opaque, OpaqueModule, launch_builtins
 from launchverify.own_code import is_own_file
 from launchverify.workspace.packages import PackageIndex
 
@@ -132,9 +132,7 @@ class UserCodeLoader(importlib.machinery.SourceFileLoader):
         return compile_launch_file(self.get_data(self.path), self.path)
 
     def exec_module(self, module: types.ModuleType) -> None:
-        namespace = dict(vars(builtins))
-        namespace.update(LAUNCH_BUILTINS)
-        module.__dict__["__builtins__"] = namespace
+        module.__dict__["__builtins__"] = launch_builtins()
         super().exec_module(module)
 
 
