@@ -491,6 +491,20 @@ def generate_launch_description():
     assert not findings(path)
 
 
+def test_what_the_user_types_at_a_prompt_is_unknown(tmp_path: Path) -> None:
+    # A vendor's helper asks whether to install its simulator; launchverify's own standard
+    # input is not the answer (in CI it may hold a file given with ``check -``).
+    path = write(tmp_path, "prompt.launch.py", """
+def generate_launch_description():
+    if input('Install the simulator? [y/N] ').lower() != 'y':
+        raise SystemExit('the simulator is missing')
+    return LaunchDescription([Node(package='demo_nodes_cpp', executable='talker')])
+""")
+    found = findings(path)
+    assert [code for code, _, _ in found] == ["LV003"]
+    assert "what the user types at the prompt" in found[0][2]
+
+
 def test_a_variable_the_check_was_not_given_reads_as_unset(tmp_path: Path) -> None:
     # ``NAME in os.environ`` answers no, as a default is read: the branch of a machine
     # that does not set it is the graph's; one given with --env is set.

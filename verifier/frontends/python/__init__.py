@@ -265,10 +265,11 @@ class _Session:
         self.namespace = {
             "__name__": "__launchverify_launch_file__",
             "__file__": str(self.path),
-            "__builtins__": self._builtins(),
         }
         try:
             with self.environment():
+                # taken here: the machine's stand-ins (``input``) are in place
+                self.namespace["__builtins__"] = self._builtins()
                 exec(code, self.namespace)
                 entry = next((self.namespace[n] for n in ENTRY_POINTS if n in self.namespace),
                              None)
