@@ -202,6 +202,9 @@ class ConfigRead:
     found: bool
     has_default: bool
     written: Span | None = None  # where the name is written verbatim (for a fix)
+    # what it reads where that is set on some paths only (a ``Select`` with an unset
+    # branch): whether the arguments as given take one of them is LV201's to ask
+    value: Sub | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -451,6 +454,9 @@ class LaunchGraph:
     root_arguments: tuple[StaticArgument, ...] = ()
     opaque_files: set[Path] = field(default_factory=set)
     complete: bool = True  # False when part of the launch could not be seen into
+    # ... and that part may be where the arguments as given go (not known off their path):
+    # without it, what runs with them is all seen
+    unseen_as_given: bool = False
     # OpaqueFunctions stopped at a configuration nobody set (name, where): their reads before
     # that point are known (LV201 judges them), what they would read or start after is not.
     stops: list[tuple[str, Origin]] = field(default_factory=list)

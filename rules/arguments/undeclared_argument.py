@@ -4,7 +4,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from launchverify.evaluate.values import performs_unset
 from launchverify.graph import LaunchGraph
+from launchverify.ir.subst import Sub, walk
+from launchverify.ir.symbolic import Select, rests_on_unknowns
 from launchverify.rule import Finding, Rule, RuleContext, Severity, rename
 from launchverify.smt import reasoner_for
 from launchverify.suggest import typos
@@ -22,7 +25,14 @@ class UndeclaredArgument(Rule):
     read one or two edits away from a declared name (a typo) is reported.
 
     A read under a condition false with the default arguments is reported with arguments
-    that make it true, as launch reads it only then.
+    that make it true, as launch reads it only then. A configuration set only on paths the
+    arguments as given do not take (declared under a condition false with them) is
+    reported where it is read with them.
+
+    An include's arguments are read at the include: launch sets them as configurations
+    before the included file runs, so a value that reads a configuration nothing sets
+    fails there, and the included file runs only with arguments that set it (nothing in
+    it is judged on a value it never gets).
 
     ## Why it matters
     ros2 launch stops with `launch configuration 'name' does not exist`. Usually the name
@@ -48,19 +58,27 @@ class UndeclaredArgument(Rule):
     message = "launch configuration {name!r} is read but never declared or set{hint}"
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
-        if not graph.complete:
-            return  # a part we cannot see may set it
+        seen: set[tuple[object, ...]] = set()
+        alone = graph.launchable_alone()
+        # a part we cannot see may set it; off the path the arguments as given take, it does
+        # not with them
+        as_given = graph.complete or not graph.unseen_as_given
+        if not as_given:
+            return
+        if alone:
+            yield from self.unset_as_given(graph, seen)
         known = frozenset(graph.declared_names() | set(graph.pinned))
         declared_in = {(arg.name, arg.action.span.file) for arg in graph.arguments}
         unset = [r for r in graph.reads if not r.found and not r.has_default]
-        alone = graph.launchable_alone()
-        seen: set[tuple[object, ...]] = set()
         for read in unset:
             key = (read.name, read.origin.span)
             if key in seen:
                 continue
             witness = None
-            if graph.runs(read.origin) is False:  # read only under a condition false now
+            runs = graph.runs(read.origin)
+            if runs is not True and not graph.complete:
+                continue  # other arguments may take it where launchverify does not see
+            if runs is False:  # read only under a condition false now
                 witness = reasoner_for(graph).reachable(read.origin.path)
                 if witness is None or not witness.values:
                     continue  # launch never reads it: no argument values make it true
@@ -79,3 +97,29 @@ class UndeclaredArgument(Rule):
             yield self.finding(read.origin, name=read.name, hint=hint, fix=fix,
                                witness=None if witness is None else witness.values)
 
+    def unset_as_given(self, graph: LaunchGraph, seen: set[tuple[object, ...]]
+                       ) -> Iterator[Finding]:
+        """Reads of a configuration set on other paths only than the arguments as given take.
+
+        (Declared under a condition false with them, say.) Only where the read runs with
+        them and no guard that decides it rests on what launchverify cannot know.
+        """
+        for read in graph.reads:
+            if read.value is None or read.has_default or (read.name, read.origin.span) in seen:
+                continue
+            if graph.runs(read.origin) is not True or decided_by_unknowns(read.value):
+                continue
+            if performs_unset(graph.as_facts(read.value)) is not True:
+                continue
+            seen.add((read.name, read.origin.span))
+            yield self.finding(read.origin, name=read.name, hint=AS_GIVEN)
+
+
+AS_GIVEN = (" with the arguments as given (it is set only where other argument values "
+            "lead)")
+
+
+def decided_by_unknowns(value: Sub) -> bool:
+    """Return whether a guard of a path-dependent value rests on unknowns (the machine)."""
+    return any(rests_on_unknowns(guard) for part in walk(value) if isinstance(part, Select)
+               for guard in part.guards)

@@ -106,13 +106,17 @@ class ScopeReducer(_Located, Reducer):
     def config(self, name: str, default: s.Sub | None, where: Span | None = None,
                written: Span | None = None) -> s.Sub:
         value = self.walker.scopes.get(name)
-        self.walker.record_read(name, self._origin(where), value is not None,
-                                default is not None, written)
+        current = None if value is None else self.decided(value)
+        # set on another path only (``Select``'s other branch): here, nothing set it
+        found = current is not None and not isinstance(current, Unset)
+        maybe = current if current is not None and found and is_unset(current) else None
+        self.walker.record_read(name, self._origin(where), found, default is not None, written,
+                                maybe)
         if value is None:
             return Unset(name) if default is None else self.reduce(default)
         if default is not None and is_unset(value):
             return fill_unset(value, self.reduce(default))
-        return self.decided(value)
+        return current if current is not None else value
 
     def decided(self, value: s.Sub) -> s.Sub:
         """Pick the branch of a path-dependent value that the current path decides.

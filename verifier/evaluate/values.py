@@ -74,6 +74,45 @@ def is_unset(sub: s.Sub) -> bool:
     return _summary(sub)[0]
 
 
+# What launch performs whole: every part of these is performed when they are (``$(if)``
+# performs its condition, then one branch).
+_STRICT_PARTS = (s.Concat, s.PythonExpr, s.NotSub, s.AndSub, s.OrSub, s.AnySub, s.AllSub,
+                 s.EqualsSub, s.NotEqualsSub, s.StringJoin, s.PathJoin, s.AsBool, NsPrefix,
+                 CommandOutput)
+
+
+def performs_unset(sub: s.Sub) -> bool | None:
+    """Return whether performing a value reads a configuration nobody set (launch raises).
+
+    ``True`` when an unset read is a part launch performs whatever the path; ``None`` when
+    only some path, branch or argument value reaches one (a ``Select`` with an unset
+    branch, an ``$(if)``'s branch, the default of an argument the user may give).
+
+    Examples:
+        >>> performs_unset(s.Concat((Unset("cfg"), s.Text(".yaml"))))
+        True
+        >>> performs_unset(s.Text("a.yaml"))
+        False
+    """
+    if not is_unset(sub):
+        return False
+    return True if unset_read(sub) is not None else None
+
+
+def unset_read(sub: s.Sub) -> Unset | None:
+    """Return an unset configuration that performing ``sub`` surely reads, if any."""
+    stack = [sub]
+    while stack:
+        item = stack.pop()
+        if isinstance(item, Unset):
+            return item
+        if isinstance(item, s.IfElse):
+            stack.append(item.condition)
+        elif isinstance(item, _STRICT_PARTS):
+            stack.extend(reversed(item.children()))
+    return None
+
+
 def argument_names(sub: s.Sub) -> frozenset[str]:
     """Return the names of the launch arguments a value is (or includes)."""
     return _summary(sub)[1]
@@ -223,9 +262,7 @@ class Reducer:
         if isinstance(guard, StrEquals):
             left = self.reduce(guard.left)
             if guard.right is None:
-                result: bool | None = isinstance(left, Unset) or (
-                    None if is_unset(left) else False
-                )
+                result: bool | None = performs_unset(left)
             else:
                 left_text, right_text = text_of(left), self.text(guard.right)
                 result = None if left_text is None or right_text is None else (
@@ -651,7 +688,9 @@ __all__ = [
     "is_unset",
     "machine_dependent",
     "ns_prefix",
+    "performs_unset",
     "text_of",
+    "unset_read",
 ]
 
 

@@ -41,6 +41,7 @@ from launchverify.evaluate.values import (
     machine_dependent,
     ns_prefix,
     text_of,
+    unset_read,
 )
 from launchverify.events import loop_closing_reruns
 from launchverify.frontends import LoadedFile
@@ -120,6 +121,8 @@ class Walker:
         self.executed_processes: dict[tuple[object, ...], int | None] = {}
         self.file_stack: list[tuple[Path, tuple[tuple[str | None, str], ...]]] = []
         self.incomplete = False  # something before this point was not understood
+        # action lists being visited whose code other answers would have built otherwise
+        self.built_otherwise = 0
         # the container actions that ran, by id, with their full names (LoadComposableNodes)
         self.container_names: dict[int, tuple[a.Action, s.Sub | None]] = {}
         self.budget = ExpansionBudget()  # what this root may expand (``budget.py``)
@@ -156,7 +159,7 @@ class Walker:
         self.graph.problems.append(ProblemRecord(Problem(kind, message, span, contextual, rule),
                                                  chain, ctx.path if ctx else ()))
         if kind is ProblemKind.UNMODELED and not harmless:
-            self.mark_incomplete()
+            self.mark_incomplete(None if ctx is None else ctx.origin(span))
 
     def may_fail(self, value: s.Sub, span: Span, ctx: Ctx) -> None:
         """Keep a value over arguments evaluated off the default path (see ``probe``).
@@ -171,17 +174,27 @@ class Walker:
             Problem(ProblemKind.CONDITIONAL, f"{value.describe()} may raise", span),
             ctx.chain, ctx.path, value))
 
-    def mark_incomplete(self) -> None:
-        """Note that the includes being walked contain something not understood."""
+    def mark_incomplete(self, where: Origin | None = None) -> None:
+        """Note that the includes being walked contain something not understood (``where``).
+
+        Not understood where the arguments as given do not go, what it hides is not there
+        with them either.
+        """
         self.incomplete = True
+        if not self.graph.unseen_as_given:
+            self.graph.unseen_as_given = (where is None or not where.path
+                                          or self.graph.runs(where) is not False)
         self.graph.complete = False
         for record in self.include_stack:
             record.complete = False
 
     def record_read(self, name: str, origin: Origin, found: bool, has_default: bool,
-                    written: Span | None = None) -> None:
-        """Record a configuration read (its name written verbatim at ``written``)."""
-        self.graph.reads.append(ConfigRead(name, origin, found, has_default, written))
+                    written: Span | None = None, value: s.Sub | None = None) -> None:
+        """Record a configuration read (its name written verbatim at ``written``).
+
+        ``value``: what it reads, when that is set on some paths only.
+        """
+        self.graph.reads.append(ConfigRead(name, origin, found, has_default, written, value))
         for record in self.include_stack:
             record.reads.add(name)
 
@@ -319,8 +332,15 @@ class Walker:
 
     def visit_all(self, actions: tuple[a.Action, ...], ctx: Ctx) -> None:
         """Visit actions in order."""
-        for action in actions:
-            self.visit(action, ctx)
+        # code that built them branched on unknowns: other answers may have built more,
+        # before any of them (a declaration, say)
+        others = any(isinstance(x, a.OpaqueAction) and x.anywhere for x in actions)
+        self.built_otherwise += others
+        try:
+            for action in actions:
+                self.visit(action, ctx)
+        finally:
+            self.built_otherwise -= others
 
     def visit(self, action: a.Action, ctx: Ctx) -> None:
         """Visit one action: evaluate its condition, then execute it (within the budget)."""
@@ -647,6 +667,9 @@ class Walker:
         # launch sets the current file before the arguments are evaluated: $(dirname) in an
         # include argument is the included file's folder.
         self.current_file = target  # and never restores it (before rolling 3.9.6)
+        # Whether a configuration nothing set here is unset when launch gets here: not when
+        # what launchverify does not see may have set it.
+        seen_all = not self.graph.unseen_as_given and not self.built_otherwise
         arguments = []
         for argument in action.arguments:  # one after another: later ones see earlier ones
             arg_reducer = self.reducer.at(ctx, argument.span)
@@ -654,11 +677,22 @@ class Walker:
             name = text_of(name_value)
             record.unknown_names |= name is None and depends_on_unknowns(name_value)
             value = arg_reducer.reduce(argument.value)
+            if not seen_all and is_unset(value):
+                value = set_elsewhere(value)
             arguments.append((name, value, argument.span))
             if name is not None:
                 self.scopes.set(name, value, ctx.path)
                 self.scopes.overrides.pop(name, None)  # what the includer passes counts
         record.arguments = tuple(arguments)
+        # launch sets the arguments as configurations (SetLaunchConfiguration) before the
+        # file's actions run: a value that reads a configuration nothing set raises there,
+        # at this include (LV201 reports the read), and the file runs only where every value
+        # is set: with a value given for that configuration (ros2 launch's name:=value sets
+        # any), as a condition false with the arguments as given. Its code never runs on a
+        # value it would not get.
+        for _name, value, span in arguments:
+            if is_unset(value):
+                inner = inner.guarded(StrEquals(value, None, negate=True, where=span))
         # Re-entering a file with the same arguments can only recurse forever; with other
         # arguments it may terminate (a recursion guarded by a condition), up to a depth.
         key = (target, tuple(sorted(((name, value.describe()) for name, value, _ in arguments),
@@ -965,7 +999,7 @@ class Walker:
             if problem.kind is ProblemKind.EVALUATION and not self.at_shutdown:
                 # the body stopped at an exception: what it would have read and started
                 # is unknown, so absence rules (unused arguments...) must not judge
-                self.mark_incomplete()
+                self.mark_incomplete(ctx.origin(action.span))
         self.visit_all(result.actions, ctx)
 
     def concrete_configurations(self) -> dict[str, Any]:
@@ -980,8 +1014,8 @@ class Walker:
             if name == GLOBAL_PARAMS:  # launch_ros keeps (name, value) pairs and file paths
                 out[name] = [self.concrete_param(p) for p in value]
                 continue
-            if not isinstance(value, s.Sub):
-                continue  # launch_ros's other lists
+            if not isinstance(value, s.Sub) or isinstance(value, Unset):
+                continue  # launch_ros's other lists; one nothing sets here (launch has none)
             text = self.graph.base(value)
             if text is None and choices.get(name):
                 text = choices[name][0]
@@ -1002,7 +1036,7 @@ class Walker:
 
     def do_OpaqueAction(self, action: a.OpaqueAction, ctx: Ctx) -> None:
         """Something the frontend could not see into (it already said so)."""
-        self.mark_incomplete()
+        self.mark_incomplete(ctx.origin(action.span))
         self.graph.opaque_files.add(ctx.file)
 
     # ------------------------------------------------------------------ processes and nodes
@@ -1085,6 +1119,20 @@ class Walker:
         text = text_of(value)
         if text is not None:
             self.graph.names.append(NameRecord(kind, text, origin))
+
+
+def set_elsewhere(value: s.Sub) -> s.Sub:
+    """Return a value with what nothing set here as unknown: set where launchverify does not see.
+
+    (By an includer of the file, or by code launchverify cannot see.) Never a text an
+    included file's code or defaults would put in its place.
+    """
+    read = unset_read(value) or next(
+        (part for part in s.walk(value) if isinstance(part, Unset)), None)
+    unknown = Unknown(f"configuration {read.name if read else '?'}, set where launchverify "
+                      "does not see")
+    value = fill_unset(value, unknown)
+    return unknown if is_unset(value) else value
 
 
 def _guard_env(ctx: Ctx, value: s.Sub, old: s.Sub | None, name: str) -> s.Sub:

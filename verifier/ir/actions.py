@@ -521,9 +521,14 @@ class OpaqueFunction(Action):
 
 @dataclass(frozen=True, eq=False, kw_only=True)
 class OpaqueAction(Action):
-    """Something launchverify cannot see into (``OpaqueFunction``, an unknown class)."""
+    """Something launchverify cannot see into (``OpaqueFunction``, an unknown class).
+
+    ``anywhere``: it stands for what the code may have built anywhere in its list (other
+    answers about unknown values), not for something done at its place.
+    """
 
     description: str
+    anywhere: bool = False
     kind = "opaque"
 
 

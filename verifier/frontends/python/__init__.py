@@ -442,7 +442,8 @@ def _assumed(span: Span) -> a.Action:
     or less, so no rule may claim what the description lacks.
     """
     return a.OpaqueAction(span=span, description="what the code builds with other answers "
-                                                 "about values launchverify cannot know")
+                                                 "about values launchverify cannot know",
+                          anywhere=True)
 
 
 def _problems(result: a.OpaqueResult) -> list[Problem]:
