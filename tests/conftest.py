@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import atexit
 import os
+import shutil
 import tempfile
 from collections.abc import Iterator
 
@@ -31,7 +33,10 @@ def pytest_configure() -> None:
     os.environ["LAUNCHVERIFY_NO_CACHE"] = "1"
     # the results cache's secret (``findings/sealed.py``) is made in a folder of the
     # session's, never in the home of whoever runs the tests
-    os.environ.setdefault("XDG_STATE_HOME", tempfile.mkdtemp(prefix="launchverify-state-"))
+    if "XDG_STATE_HOME" not in os.environ:
+        state = tempfile.mkdtemp(prefix="launchverify-state-")
+        os.environ["XDG_STATE_HOME"] = state
+        atexit.register(shutil.rmtree, state, ignore_errors=True)
 
 
 @pytest.fixture(autouse=True)

@@ -167,3 +167,22 @@ def test_cmake_variables_lists_and_branches(tmp_path: Path) -> None:
     found = executables(Package("tools", source=source))
     assert found is not None and found.complete
     assert found.names == {"a_node", "b_node", "c_node"}
+
+
+def test_a_name_defined_twice_is_the_copy_nearest_to_what_is_checked(tmp_path: Path) -> None:
+    """Each repository's own copy wins for its files (an overlay over the other's)."""
+    first = make_package(tmp_path / "repo_a", "shared", folder="api/shared")
+    second = make_package(tmp_path / "repo_b", "shared", folder="system/shared")
+    checked_b = tmp_path / "repo_b" / "launch" / "robot.launch.xml"
+    checked_a = tmp_path / "repo_a" / "launch"
+    plain = PackageIndex([tmp_path]).find("shared")
+    assert plain is not None and plain.source is not None
+    scanned_first = plain.source
+    assert scanned_first in {first.resolve(), second.resolve()}
+    near_b = PackageIndex([tmp_path], near=[checked_b]).find("shared")
+    near_a = PackageIndex([tmp_path], near=[checked_a]).find("shared")
+    assert near_b is not None and near_b.source == second.resolve()
+    assert near_a is not None and near_a.source == first.resolve()
+    # the whole workspace checked: both copies are as near, the first scanned stays
+    tie = PackageIndex([tmp_path], near=[tmp_path]).find("shared")
+    assert tie is not None and tie.source == scanned_first

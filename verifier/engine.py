@@ -219,7 +219,7 @@ def build_index(paths: list[Path], workspace: Path | None,
     ``share/ament_index``) as installed packages, any other folder as sources.
     """
     root, sources, prefixes = package_folders(paths, workspace, extra)
-    return root, PackageIndex.from_environment(sources, prefixes)
+    return root, PackageIndex.from_environment(sources, prefixes, near=paths)
 
 
 def confine_reads(index: PackageIndex, workspace: Path, paths: Iterable[Path]
@@ -341,7 +341,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         from launchverify.isolation.zygote import start_ahead
 
         start_ahead()  # its interpreter imports the models while the index is built
-    index = PackageIndex.from_environment(sources, prefixes)
+    index = PackageIndex.from_environment(sources, prefixes, near=options.paths)
     readable = confine_reads(index, workspace, options.paths)
     if not found and not (options.launch_files_only or options.affected):  # pre-commit: quiet
         given = ", ".join(str(p) for p in options.paths)

@@ -20,7 +20,9 @@ class DuplicatePackage(Rule):
     ## Why it matters
     colcon refuses to build a workspace with duplicate package names, and until it is
     built nobody can tell which copy `ros2 launch` would use. launchverify resolves the
-    name to the first folder it finds, so its findings may concern the other copy.
+    name to the copy nearest to the files checked (the one sharing the most folders with
+    them, as an overlay wins over an underlay; among equally near ones, the first it
+    finds), so its findings may concern the other copy.
 
     ## Example
     ```text

@@ -155,6 +155,16 @@ def scan_sources(root: Path, within: Iterable[Path] = ()) -> Iterator[tuple[str,
         pending.extend(reversed(dirs))
 
 
+def _shared_parts(one: Path, other: Path) -> int:
+    """Return how many leading path parts two paths share."""
+    shared = 0
+    for mine, theirs in zip(one.parts, other.parts, strict=False):
+        if mine != theirs:
+            break
+        shared += 1
+    return shared
+
+
 def scan_prefix(prefix: Path) -> Iterator[str]:
     """Yield the package names registered in one install prefix's ament index."""
     marker_dir = prefix / "share" / "ament_index" / "resource_index" / "packages"
@@ -181,7 +191,8 @@ def workspace_prefixes(workspace: Path) -> list[Path]:
 class PackageIndex:
     """Every package launchverify can see, by name."""
 
-    def __init__(self, workspaces: Iterable[Path] = (), prefixes: Iterable[Path] = ()) -> None:
+    def __init__(self, workspaces: Iterable[Path] = (), prefixes: Iterable[Path] = (),
+                 near: Iterable[Path] = ()) -> None:
         self._packages: dict[str, Package] = {}
         self._roots: dict[Path, Package] | None = None  # share/source folder -> package
         self._located: dict[Path, Path | None] = {}
@@ -209,14 +220,34 @@ class PackageIndex:
                 if folder not in folders:
                     folders.append(folder)
                 self._add(Package(name, source=folder))
+        self._prefer_near([resolved(p) for p in near])
 
     @classmethod
-    def from_environment(cls, workspaces: Iterable[Path],
-                         prefixes: Iterable[Path] = ()) -> PackageIndex:
+    def from_environment(cls, workspaces: Iterable[Path], prefixes: Iterable[Path] = (),
+                         near: Iterable[Path] = ()) -> PackageIndex:
         """Build the index for these workspaces and prefixes plus ``AMENT_PREFIX_PATH``."""
         raw = os.environ.get("AMENT_PREFIX_PATH", "")
         found = [*prefixes, *(Path(p) for p in raw.split(os.pathsep) if p)]
-        return cls(workspaces, found)
+        return cls(workspaces, found, near)
+
+    def _prefer_near(self, near: list[Path]) -> None:
+        """Give a name defined twice the copy nearest to what is checked.
+
+        What a user checks is the tree they build: its copy of a package overlays another
+        repository's copy in the same workspace, as an overlay does an underlay (and as
+        the real library finds it where the user builds). Nearest is the copy sharing the
+        most leading folders with a checked path; a tie keeps the first one scanned.
+        """
+        if not near:
+            return
+        for name, folders in self.sources.items():
+            if len(folders) < 2:
+                continue
+            best = max(folders, key=lambda folder: max(
+                _shared_parts(folder, path) for path in near))  # max keeps the first of a tie
+            known = self._packages[name]
+            if best != known.source:
+                self._packages[name] = Package(name, source=best, prefix=known.prefix)
 
     def _add(self, package: Package) -> None:
         known = self._packages.get(package.name)
