@@ -40,8 +40,14 @@ def test_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
     code, out, _ = run(capsys, "check", str(DUPLICATE), "--format", "json")
     document = json.loads(out)
     assert document["tool"] == {"name": "launchverify", "version": __version__}
+    assert set(document) == {"tool", "workspace", "findings", "not_judged", "summary"}
+    assert set(document["workspace"]) == {"path", "how"}
+    assert DUPLICATE.is_relative_to(Path(document["workspace"]["path"]).resolve())
     assert set(document["summary"]) == {"files", "errors", "warnings", "infos", "seconds",
-                                           "cached"}
+                                           "cached", "not_followed"}
+    # the example's nodes come from demo packages, which no underlay provides here
+    assert document["summary"]["not_followed"] == {
+        "includes": 0, "packages": 2, "package_names": ["demo_nodes_cpp", "demo_nodes_py"]}
     assert document["not_judged"] == []
     finding = document["findings"][0]
     assert set(finding) == {"code", "slug", "severity", "message", "file", "line", "column",

@@ -545,7 +545,7 @@ def test_the_verdict_comes_from_launchverify(outcome: Outcome) -> None:
     assert outcome.report is not None, outcome.stdout[:2000] + outcome.stderr[-2000:]
     assert outcome.status == 1, outcome.stderr[-2000:]
     assert "\"forged\": true" not in outcome.stdout and "forged on stderr" not in outcome.stderr
-    assert set(outcome.report) == {"tool", "findings", "not_judged", "summary"}
+    assert set(outcome.report) == {"tool", "workspace", "findings", "not_judged", "summary"}
     assert outcome.stdout.count('"tool"') == 1
 
 

@@ -46,6 +46,7 @@ from launchverify.engine import (
     after_end_of_options,
     build_index,
     canonical,
+    check_workspace,
     confine_reads,
     parse_arguments,
     parse_environment,
@@ -65,7 +66,7 @@ from launchverify.suggest import did_you_mean_any
 from launchverify.topology import command as topology_command
 from launchverify.workspace import reading
 from launchverify.workspace.includers import Includers
-from launchverify.workspace.packages import find_workspace
+from launchverify.workspace.packages import discover_workspace, find_workspace
 from launchverify.workspace.paths import display_path
 
 if TYPE_CHECKING:
@@ -522,8 +523,7 @@ def _confined(config: Config, paths: list[str], args: argparse.Namespace) -> Con
     package folders the user named are added.
     """
     confirmed = confirmed_package_paths(args.package_path)
-    workspace = args.workspace if args.workspace is not None else find_workspace(
-        Path(paths[0]))
+    workspace = check_workspace([Path(p) for p in paths], args.workspace).folder
     config, notes = confined(config, [Path(p) for p in paths], workspace, confirmed)
     for note in notes:
         print(inert(f"launchverify: note: {note}"), file=sys.stderr)
@@ -581,7 +581,7 @@ def _checked_trees(args: argparse.Namespace) -> tuple[Path, ...]:
     stdin = getattr(args, "stdin_filename", None)
     starts = dict.fromkeys(path if path.is_dir() else path.parent
                            for path in [*(paths or [Path()]), *([stdin] if stdin else [])])
-    trees = [find_workspace(start) for start in starts]
+    trees = [discover_workspace(starts).folder, *(find_workspace(start) for start in starts)]
     return tuple(dict.fromkeys([*trees, *([args.workspace] if args.workspace else [])]))
 
 
@@ -621,6 +621,7 @@ def _check(args: argparse.Namespace) -> int:
             color = False
         _render(args, report, report_out, color=color)
     sys.stdout.flush()
+    _say_workspace(report, args.verbose, args.quiet)
     _say_protections(report, args.verbose)
     return _exit_status(report, args, config)
 
@@ -735,6 +736,17 @@ def _result_cache(args: argparse.Namespace) -> ResultCache | None:
     return ResultCache(args.cache_dir or default_cache_dir(), named=args.cache_dir is not None)
 
 
+def _say_workspace(report: Report, verbose: bool, quiet: bool) -> None:
+    """Say where packages were found (``-v``), and a choice the user may not expect."""
+    found = report.workspace
+    if found is None:
+        return
+    if verbose:
+        print(inert(f"launchverify: workspace {found.folder} ({found.how})"), file=sys.stderr)
+    if found.note and not quiet:
+        print(inert(f"launchverify: note: {found.note}"), file=sys.stderr)
+
+
 def _say_protections(report: Report, verbose: bool) -> None:
     """Say once how Python launch files were confined: always when a layer was missing."""
     if not report.python_files or report.protections is None:
@@ -795,6 +807,7 @@ def _report(args: argparse.Namespace) -> int:
     inside = _writable_outputs(args, args.output)
     options, config = check_options(args, progress=sys.stderr.isatty())
     report = run_check(options)
+    _say_workspace(report, args.verbose, quiet=False)
     _say_protections(report, args.verbose)
     _, index = build_index(options.paths, options.workspace, options.config.package_paths)
     page = io.StringIO()

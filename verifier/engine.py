@@ -28,11 +28,17 @@ from launchverify.findings.cache import (
     settled,
     stamps_of,
 )
+from launchverify.problems import NotFollowed
 from launchverify.process.collector import collector_paused
 from launchverify.rule import Finding, Rule, RuleContext, Severity
 from launchverify.span import Span
 from launchverify.workspace import reading
-from launchverify.workspace.packages import PackageIndex, find_workspace, workspace_prefixes
+from launchverify.workspace.packages import (
+    PackageIndex,
+    Workspace,
+    discover_workspace,
+    workspace_prefixes,
+)
 from launchverify.workspace.paths import display_path, relative_file
 
 if TYPE_CHECKING:
@@ -110,6 +116,10 @@ class Report:
     cached: bool = False  # read from the cache between runs, not checked again
     kept: Kept | None = None  # what the next check may keep of this one (not stored with it)
     packages: PackageIndex | None = None  # the index the check built (not stored with it)
+    workspace: Workspace | None = None  # where packages were found, and why there
+    unfollowed: list[NotFollowed] | None = None  # kept as ``unseen`` is (``not_followed``)
+    sourced: bool = False  # an underlay was sourced (AMENT_PREFIX_PATH was set)
+    distro: str | None = None  # the distribution checked for (``--distro``), if one
 
     def display_path(self, path: Path) -> str:
         """Return a path as the user gave it, else relative to the working directory."""
@@ -138,6 +148,7 @@ class Report:
         findings = [dataclasses.replace(f, path=()) if f.path else f for f in self.findings]
         return dataclasses.replace(self, findings=findings, graphs=[],
                                    unseen=self.not_judged(), queries=self.solver_queries(),
+                                   unfollowed=self.not_followed(),
                                    loaded=self.loaded_files(), kept=None, packages=None,
                                    readable=reading.confined_to())
 
@@ -156,6 +167,35 @@ class Report:
                     seen.add((reason, span.file, span.line))
                     out.append((reason, span))
         return out
+
+    def not_followed(self) -> list[NotFollowed]:
+        """Return the includes and package references found in no workspace or underlay."""
+        if self.unfollowed is not None:
+            return self.unfollowed
+        return list(dict.fromkeys(item for graph in self.graphs
+                                  for item in graph.not_followed()))
+
+    def coverage(self) -> Coverage:
+        """Return how much of the launch was not followed, for the summary."""
+        items = self.not_followed()
+        uses: dict[str, int] = {}
+        for item in items:
+            if item.kind == "package":
+                uses[item.package] = uses.get(item.package, 0) + 1
+        ranked = sorted(uses.items(), key=lambda pair: (-pair[1], pair[0]))
+        return Coverage(sum(1 for item in items if item.kind == "include"), tuple(ranked))
+
+
+@dataclass(frozen=True)
+class Coverage:
+    """What a check did not follow: not found in the workspace or any underlay."""
+
+    includes: int  # includes whose package is found nowhere (each place once)
+    packages: tuple[tuple[str, int], ...]  # packages found nowhere, how many places name
+    # each, most named first
+
+    def __bool__(self) -> bool:
+        return bool(self.includes or self.packages)
 
 
 END_OF_OPTIONS = "--"
@@ -218,8 +258,8 @@ def build_index(paths: list[Path], workspace: Path | None,
     ``extra`` folders are searched for packages too: an install prefix (with
     ``share/ament_index``) as installed packages, any other folder as sources.
     """
-    root, sources, prefixes = package_folders(paths, workspace, extra)
-    return root, PackageIndex.from_environment(sources, prefixes, near=paths)
+    found, sources, prefixes = package_folders(paths, workspace, extra)
+    return found.folder, PackageIndex.from_environment(sources, prefixes, near=paths)
 
 
 def confine_reads(index: PackageIndex, workspace: Path, paths: Iterable[Path]
@@ -238,15 +278,20 @@ def confine_reads(index: PackageIndex, workspace: Path, paths: Iterable[Path]
     return readable
 
 
-def package_folders(paths: list[Path], workspace: Path | None, extra: list[Path] | None = None
-                    ) -> tuple[Path, list[Path], list[Path]]:
-    """Return the workspace, the folders of package sources and the install prefixes."""
+def check_workspace(paths: list[Path], workspace: Path | None) -> Workspace:
+    """Return the one workspace every path of a check shares (``workspace``: as given)."""
     if workspace is not None:
         if not workspace.is_dir():
             raise UsageError(f"workspace {str(workspace)!r} is not a folder")
-        root = canonical(workspace)
-    else:
-        root = find_workspace(paths[0])
+        return Workspace(canonical(workspace), "as given")
+    return discover_workspace(paths)
+
+
+def package_folders(paths: list[Path], workspace: Path | None, extra: list[Path] | None = None
+                    ) -> tuple[Workspace, list[Path], list[Path]]:
+    """Return the workspace, the folders of package sources and the install prefixes."""
+    found = check_workspace(paths, workspace)
+    root = found.folder
     sources, prefixes = [root], []
     for folder in extra or ():
         if not folder.is_dir():
@@ -255,7 +300,7 @@ def package_folders(paths: list[Path], workspace: Path | None, extra: list[Path]
             prefixes.append(canonical(folder))
         else:
             sources.append(canonical(folder))
-    return root, sources, prefixes
+    return found, sources, prefixes
 
 
 def _require_paths(options: CheckOptions) -> None:
@@ -289,9 +334,9 @@ def run_check(options: CheckOptions, stored: tuple[Entry, Kept] | None = None,
     includers_in = partial(_unrecorded, Includers.of_workspace)
     with collector_paused(), reading.recording(other_reads if incremental.on else None):
         tree = ConfigTree(config, nested=options.nested_configs)
-        workspace, sources, prefixes = package_folders(options.paths, options.workspace,
-                                                       config.package_paths)
-        folders = (workspace, sources, prefixes)
+        found, sources, prefixes = package_folders(options.paths, options.workspace,
+                                                   config.package_paths)
+        folders = (found, sources, prefixes)
         if options.affected:  # pre-commit: what the changed files may break, or nothing
             includers = includers_in(sources)
             return _check_files(options, tree, folders, lambda: includers, started,
@@ -313,7 +358,7 @@ def _unrecorded(function: Callable[..., T], *args: object) -> T:
 
 
 def _check_files(options: CheckOptions, tree: ConfigTree,
-                 folders: tuple[Path, list[Path], list[Path]],
+                 folders: tuple[Workspace, list[Path], list[Path]],
                  includers_of: Callable[[], Includers], started: float,
                  found: list[Path], incremental: Incremental) -> Report:
     """Check the launch files found (the workspace's includers may be read meanwhile).
@@ -336,7 +381,8 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     from launchverify.workspace.interfaces import Interfaces
 
     config = options.config
-    workspace, sources, prefixes = folders
+    found_workspace, sources, prefixes = folders
+    workspace = found_workspace.folder
     ahead = any(launch_format(f) == "python" for f in found)
     if ahead:
         from launchverify.isolation.zygote import start_ahead
@@ -357,7 +403,8 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     files = [Path(shown) for shown in display.values()]
     if not files:
         selection.rules()  # a selection that names no rule is still an error
-        return Report([], 0, time.perf_counter() - started, display)
+        return Report([], 0, time.perf_counter() - started, display,
+                      workspace=found_workspace)
     limits = Limits(seconds=options.time_limit)
     roots = [canonical(f) for f in files]
     rules = selection.rules()
@@ -450,7 +497,8 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         report, findings=sorted(findings, key=Finding.sort_key), files=len(loaded),
         seconds=time.perf_counter() - started, display=display, checked=scope_roots,
         suppressed=suppressed, baselined=baselined, python_files=evaluations,
-        protections=protections, packages=index)
+        protections=protections, packages=index, workspace=found_workspace,
+        sourced=bool(os.environ.get("AMENT_PREFIX_PATH")), distro=options.distro)
 
 
 def _in_scope(findings: list[Finding], paths: list[Path], scope_roots: list[Path],
@@ -544,8 +592,7 @@ def _inputs(options: CheckOptions) -> tuple[list[str], list[str]]:
     workspace's and ``AMENT_PREFIX_PATH``'s) only the ament index, whose folder changes
     when a package is installed or removed; the baseline and configuration files.
     """
-    workspace = (canonical(options.workspace) if options.workspace is not None
-                 else find_workspace(options.paths[0]))  # as build_index finds it
+    workspace = check_workspace(options.paths, options.workspace).folder  # as the check
     folders = [workspace, *(canonical(p) for p in options.config.package_paths)]
     files: list[Path] = []
     for path in options.paths:

@@ -17,10 +17,17 @@ from launchverify.frontends import LoadedFile
 from launchverify.frontends.param_file import ParamFile
 from launchverify.ir import actions as a
 from launchverify.ir.conditions import Condition
-from launchverify.ir.subst import Sub, Text
-from launchverify.ir.symbolic import Guard, PathCondition, StrEquals, Truthy, describe_path
+from launchverify.ir.subst import Sub, Text, walk
+from launchverify.ir.symbolic import (
+    Guard,
+    PackageFolder,
+    PathCondition,
+    StrEquals,
+    Truthy,
+    describe_path,
+)
 from launchverify.ir.walk import configuration_names
-from launchverify.problems import Problem, ProblemKind
+from launchverify.problems import NotFollowed, Problem, ProblemKind
 from launchverify.span import Span
 
 
@@ -590,6 +597,24 @@ class LaunchGraph:
                 if record.problem.kind is ProblemKind.UNMODELED]
         out += [(f"an OpaqueFunction stopped at configuration {name!r}, which nothing sets "
                  "here", origin.span) for name, origin in self.stops]
+        return list(dict.fromkeys(out))
+
+    def not_followed(self) -> list[NotFollowed]:
+        """Return the includes and package references the workspace and underlays lack.
+
+        Each once, as met. An include counts when its path names a package found nowhere
+        (``$(find-pkg-share nav2_bringup)/launch/...``); one whose path rests on an argument
+        or the environment is only in ``unseen``.
+        """
+        out = [NotFollowed("package", ref.name, ref.origin.span)
+               for ref in self.packages if not ref.found]
+        for include in self.includes:
+            if include.status not in ("unresolved", "external"):
+                continue
+            named = next((leaf.package for leaf in walk(include.location)
+                          if isinstance(leaf, PackageFolder)), None)
+            if named is not None:
+                out.append(NotFollowed("include", named, include.origin.span))
         return list(dict.fromkeys(out))
 
     def complete_as_given(self) -> bool:

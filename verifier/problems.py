@@ -41,6 +41,20 @@ class Problem:
     rule: str | None = None
 
 
+@dataclass(frozen=True, slots=True)
+class NotFollowed:
+    """What a check could not follow, found neither in the workspace nor in an underlay.
+
+    ``kind``: ``"include"`` (a file not read: the package its path names is found
+    nowhere) or ``"package"`` (a reference to a package found nowhere: its files,
+    executables and sources are not read).
+    """
+
+    kind: str
+    package: str
+    span: Span
+
+
 class ProblemSink:
     """Collects problems while a file is parsed or evaluated."""
 

@@ -20,6 +20,7 @@ from launchverify.ir import subst as s
 from launchverify.ir.symbolic import (
     ExecutablePath,
     Guard,
+    PackageFolder,
     PathCondition,
     Select,
     StrEquals,
@@ -148,7 +149,7 @@ class ScopeReducer(_Located, Reducer):
     def package_share(self, name: str, written: Span | None = None) -> s.Sub:
         package = self.walker.index.find(name)
         self.walker.record_package(name, self._origin(), package is not None, "share", written)
-        return Unknown(f"share folder of {name}") if package is None else s.Text(
+        return PackageFolder(f"share folder of {name}", name) if package is None else s.Text(
             str(package.share)
         )
 
@@ -157,7 +158,7 @@ class ScopeReducer(_Located, Reducer):
         self.walker.record_package(name, self._origin(), package is not None, "prefix",
                                    written)
         if package is None or package.prefix is None:
-            return Unknown(f"install prefix of {name}")
+            return PackageFolder(f"install prefix of {name}", name)
         return s.Text(str(package.prefix))
 
     def executable_path(self, executable: str, package: str,

@@ -223,6 +223,9 @@ def _defaults(graph: LaunchGraph) -> dict[str, str]:
 
 
 def _workspace_of(report: Report) -> Path | None:
+    """Return the check's workspace (its ``install/`` holds what the run starts)."""
+    if report.workspace is not None:
+        return report.workspace.folder
     from launchverify.workspace.packages import find_workspace
 
     return find_workspace(report.graphs[0].root) if report.graphs else None

@@ -33,6 +33,7 @@ from typing import TYPE_CHECKING
 from launchverify.findings.cache import Kept
 from launchverify.findings.verdicts import Verdicts
 from launchverify.frontends import launch_format
+from launchverify.problems import NotFollowed
 from launchverify.rule import Finding, Rule
 from launchverify.span import Span
 from launchverify.workspace.paths import real_path
@@ -56,6 +57,7 @@ class RootResult:
     picked: Picked  # what ``Interfaces.picked_by_name`` reads of it
     unseen: list[tuple[str, Span]] = field(default_factory=list)
     queries: int = 0
+    unfollowed: list[NotFollowed] = field(default_factory=list)
 
 
 @dataclass
@@ -244,6 +246,8 @@ class Incremental:
                     seen.add((reason, span.file, span.line))
                     unseen.append((reason, span))
         report.unseen = unseen
+        report.unfollowed = list(dict.fromkeys(item for result in results.values()
+                                               for item in result.unfollowed))
         report.queries = sum(result.queries for result in results.values())
         report.loaded = {path for result in results.values() for path in result.verdicts.files}
         report.kept = Kept(dict(results), tuple(rule.code for rule in rules),
@@ -272,4 +276,4 @@ class Incremental:
             verdicts, self.reads.get(graph.root),
             frozenset(t for inc in graph.includes if (t := inc.target) is not None),
             graph.included_elsewhere, interface_of(graph), picks_of(graph),
-            list(graph.unseen()), solver_queries([graph]))
+            list(graph.unseen()), solver_queries([graph]), graph.not_followed())

@@ -494,6 +494,13 @@ class Opaque(Sub):
 
 
 @dataclass(frozen=True, slots=True)
+class PackageLookup(Opaque):
+    """A folder of a package Python code looked up and nothing found (``package``)."""
+
+    package: str = ""
+
+
+@dataclass(frozen=True, slots=True)
 class Raises(Sub):
     """A value launch raises on when it performs it, not before (``error`` says what).
 

@@ -82,6 +82,13 @@ class ExecutablePath(Unknown):
 
 
 @dataclass(frozen=True, slots=True)
+class PackageFolder(Unknown):
+    """A folder of a package found nowhere (its share or prefix): which package is known."""
+
+    package: str = ""
+
+
+@dataclass(frozen=True, slots=True)
 class Unset(Sub):
     """No value: a configuration not set on some path (reading it fails at run time)."""
 

@@ -20,6 +20,7 @@ from launchverify.engine import UsageError, canonical, run_check
 from launchverify.graph import LaunchGraph
 from launchverify.registry import RegistryError
 from launchverify.rule import Finding
+from launchverify.workspace.packages import colcon_root
 from launchverify.workspace.reading import unsaved_buffers
 from launchverify.workspace.sources import source_lines
 
@@ -79,7 +80,9 @@ def _check_group(paths: list[Path], folders: list[Path], checked: Checked) -> No
     options, config = check_options(args)
     if config.workspace is None:
         folder = next((f for f in folders if paths[0].is_relative_to(canonical(f))), None)
-        options.workspace = folder
+        # a repository opened from a colcon workspace's src/: its packages are all there
+        colcon = colcon_root(canonical(folder)) if folder is not None else None
+        options.workspace = colcon[0] if colcon is not None else folder
     report = run_check(options)
     checked.findings.extend(report.findings)
     checked.graphs.extend(report.graphs)

@@ -13,6 +13,7 @@ from launchverify.engine import Report
 from launchverify.render.encodable import write_json
 from launchverify.render.links import rule_url
 from launchverify.rule import Finding, Fix, Severity
+from launchverify.workspace.paths import display_path
 
 
 def finding_dict(finding: Finding, report: Report) -> dict[str, Any]:
@@ -71,8 +72,12 @@ def not_judged(report: Report) -> list[dict[str, Any]]:
 def render_json(report: Report, out: TextIO) -> None:
     """Write the report as one JSON object."""
     counts = {s: sum(1 for f in report.findings if f.severity is s) for s in Severity}
+    coverage = report.coverage()
+    found = report.workspace
     document = {
         "tool": {"name": "launchverify", "version": __version__},
+        "workspace": None if found is None else {"path": display_path(found.folder),
+                                                 "how": found.how},
         "findings": [finding_dict(f, report) for f in report.findings],
         "not_judged": not_judged(report),
         "summary": {
@@ -82,6 +87,11 @@ def render_json(report: Report, out: TextIO) -> None:
             "infos": counts[Severity.INFO],
             "seconds": round(report.seconds, 3),
             "cached": report.cached,
+            "not_followed": {
+                "includes": coverage.includes,
+                "packages": len(coverage.packages),
+                "package_names": [name for name, _ in coverage.packages],
+            },
         },
     }
     write_json(document, out)

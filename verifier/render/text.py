@@ -12,7 +12,9 @@ finding on its own.
 
 from __future__ import annotations
 
+import contextlib
 import os
+from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
 
 from launchverify.engine import Report
@@ -20,6 +22,7 @@ from launchverify.findings.fixes import applicable, fixable, hidden
 from launchverify.render import links
 from launchverify.render.inert import inert
 from launchverify.rule import Finding, Severity
+from launchverify.workspace.paths import display_path
 from launchverify.workspace.sources import source_line, source_lines
 
 if TYPE_CHECKING:
@@ -112,6 +115,9 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
     unsafe fixes count as fixable (``--unsafe-fixes``).
     """
     line = Lines(out, color)
+    shown = workspace_line(report)
+    if shown and not quiet:
+        line(shown, style="dim")
     groups = _groups(report.findings)
     for finding in report.findings:
         same = groups[_sameness(finding)]
@@ -214,12 +220,49 @@ def summary_line(report: Report) -> str:
     files = f"{report.files} file{'s' if report.files != 1 else ''}"
     took = f"{report.seconds:.2f}s{', unchanged since the cached run' if report.cached else ''}"
     if not report.findings:
-        return f"No findings in {files} ({took})."
+        return f"No findings in {files} ({took}){coverage_text(report)}."
     parts = [f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity
              if counts[s]]
     total = len(report.findings)
     return (f"Found {total} finding{'s' if total != 1 else ''} ({', '.join(parts)}) in "
-            f"{files} ({took}).")
+            f"{files} ({took}){coverage_text(report)}.")
+
+
+def coverage_text(report: Report) -> str:
+    """Return what the summary adds when includes or packages were not followed, or ''.
+
+    ``; not followed: 15 includes and 2 packages (turtlebot3_gazebo, ...)``, and how to
+    add them: the underlay's setup script, else ``--package-path``.
+    """
+    coverage = report.coverage()
+    if not coverage:
+        return ""
+    counted = []
+    if coverage.includes:
+        counted.append(f"{coverage.includes} include{'s' if coverage.includes != 1 else ''}")
+    names = [name for name, _ in coverage.packages]
+    if names:
+        counted.append(f"{len(names)} package{'s' if len(names) != 1 else ''}")
+        more = f", {len(names) - 3} more" if len(names) > 3 else ""
+        counted[-1] += f" ({', '.join(names[:3])}{more})"
+    if report.sourced:
+        how = "found in neither the workspace nor AMENT_PREFIX_PATH: --package-path DIR"
+    else:
+        how = ("found in neither the workspace nor an underlay: "
+               f"`source /opt/ros/{report.distro or '<distro>'}/setup.bash` (then "
+               "AMENT_PREFIX_PATH lists the underlay) or --package-path DIR")
+    return f"; not followed: {' and '.join(counted)}, {how} adds them"
+
+
+def workspace_line(report: Report) -> str:
+    """Return ``workspace: DIR (why)`` when the workspace is not the working folder."""
+    found = report.workspace
+    if found is None:
+        return ""
+    with contextlib.suppress(OSError):
+        if found.folder == Path(os.path.realpath(Path.cwd())):
+            return ""
+    return f"workspace: {display_path(found.folder)} ({found.how})"
 
 
 def docs_line(report: Report) -> str:

@@ -617,24 +617,123 @@ def _by_name(found: list[Path], relative: Path) -> Path | None:
     return matches[0]
 
 
-def find_workspace(start: Path) -> Path:
-    """Return the nearest colcon workspace or git root above ``start``.
+COLCON_MARKERS = ("build", "install", "log", "colcon.meta", ".colcon")
 
-    Falls back to the folder above the outermost package containing ``start``, or to
-    ``start``'s own folder.
+
+@dataclass(frozen=True, slots=True)
+class Workspace:
+    """The workspace of a check: the folder packages are found in, and why it was chosen.
+
+    ``note``: a choice the user may not expect, said on standard error.
     """
-    start = resolved(start)
-    folder = start if start.is_dir() else start.parent
+
+    folder: Path
+    how: str
+    note: str = ""
+
+
+def colcon_marker(folder: Path) -> str | None:
+    """Return the colcon marker that makes ``folder`` a workspace root, if one does.
+
+    A colcon workspace holds ``src/`` and what colcon leaves beside it (``build/``,
+    ``install/``, ``log/``, ``colcon.meta``, ``.colcon``); a package (its own
+    ``package.xml``: a C++ package with ``src/`` and an in-source ``build/``) is none.
+    """
+    try:
+        if not (folder / "src").is_dir() or (folder / "package.xml").is_file():
+            return None
+        return next((m for m in COLCON_MARKERS if (folder / m).exists()), None)
+    except OSError:
+        return None
+
+
+def colcon_root(folder: Path) -> tuple[Path, str] | None:
+    """Return the colcon workspace at or above ``folder`` and its marker, if any.
+
+    The nearest, unless it lies in a farther one's ``src/``: a repository cloned there
+    (``vcs import``) that looks like a workspace itself is one of its sources.
+    """
+    found = [(c, m) for c in (folder, *folder.parents) if (m := colcon_marker(c))]
+    if not found:
+        return None
+    chosen = found[0]
+    for other in found[1:]:
+        if chosen[0].is_relative_to(other[0] / "src"):
+            chosen = other
+    return chosen
+
+
+def _colcon_how(marker: str) -> str:
+    """Return why a colcon workspace is one: ``colcon workspace: src/ and log/``."""
+    return f"colcon workspace: src/ and {marker}{'' if marker == 'colcon.meta' else '/'}"
+
+
+def _own_root(folder: Path) -> tuple[Path, str]:
+    """Return the workspace of one folder alone, and why: colcon, git, or its packages."""
+    colcon = colcon_root(folder)
+    if colcon is not None:
+        return colcon[0], _colcon_how(colcon[1])
     outermost_package: Path | None = None
     for candidate in (folder, *folder.parents):
-        if (candidate / "src").is_dir() and any(
-            (candidate / marker).exists() for marker in ("install", "build", "log", ".colcon")
-        ):
-            return candidate
         if (candidate / ".git").exists():
-            return candidate
+            return candidate, "git root"
         if (candidate / "package.xml").is_file():
             outermost_package = candidate
     if outermost_package is not None:
-        return outermost_package.parent
-    return folder
+        return outermost_package.parent, "the folder above the outermost package"
+    return folder, "the folder checked"
+
+
+def sensible_workspace(folder: Path) -> bool:
+    """Return whether a folder is one a user would call a workspace when paths share it.
+
+    Not the file system's root, a folder right below it (``/home``, ``/tmp``, ``/opt``),
+    nor the home folder or a folder above it: walking those reads far more than asked.
+    """
+    if len(folder.parts) <= 2:
+        return False
+    with contextlib.suppress(RuntimeError, KeyError, OSError):
+        home = resolved(Path.home())
+        if home.is_relative_to(folder):
+            return False
+    return True
+
+
+def discover_workspace(paths: Iterable[Path]) -> Workspace:
+    """Return the one workspace of a check of ``paths``, found the way colcon lays it out.
+
+    1. the nearest colcon workspace (``src/`` and a colcon marker) above every path;
+    2. else, when the paths' own workspaces (each one's colcon workspace, git root or the
+       folder above its outermost package) are one folder, that one;
+    3. else the folder that holds them all, when it is a sensible one (see
+       ``sensible_workspace``);
+    4. else the first path's own workspace, with a note saying so.
+
+    A repository cloned into a workspace's ``src/`` never becomes the workspace while a
+    colcon workspace is above it, so every path order gives the same workspace.
+    """
+    folders: list[Path] = []
+    for path in paths:
+        real = resolved(path)
+        folders.append(real if real.is_dir() else real.parent)
+    folders = list(dict.fromkeys(folders)) or [resolved(Path())]
+    common = Path(os.path.commonpath(folders))
+    colcon = colcon_root(common)
+    if colcon is not None:
+        return Workspace(colcon[0], _colcon_how(colcon[1]))
+    roots = dict(_own_root(folder) for folder in folders)
+    if len(roots) == 1:
+        (root, how), = roots.items()
+        return Workspace(root, how)
+    shared = Path(os.path.commonpath(list(roots)))
+    if sensible_workspace(shared):
+        return Workspace(shared, f"the folder holding the paths' {len(roots)} workspaces")
+    first, how = next(iter(roots.items()))
+    return Workspace(first, f"the first path's {how}", note=(
+        f"the paths share no workspace (only {shared}): packages are searched in the first "
+        f"path's {how}, {first}; --workspace DIR or --package-path DIR reads the others"))
+
+
+def find_workspace(start: Path) -> Path:
+    """Return the workspace of a check of ``start`` alone (``discover_workspace``)."""
+    return discover_workspace([start]).folder

@@ -47,7 +47,7 @@ def placeholder_sub(text: str) -> s.Sub:
             parts.append(s.EnvVar(s.Text(variable), s.Text(default) if equals else None))
         elif kind in ("pkg", "prefix"):  # the lookup itself was recorded where it was made
             folder = "share folder" if kind == "pkg" else "install prefix"
-            parts.append(s.Opaque(f"{folder} of {name}"))
+            parts.append(s.PackageLookup(f"{folder} of {name}", name))
         elif kind == "arg":
             parts.append(s.LaunchConfig(s.Text(name)))
         else:
