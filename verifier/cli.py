@@ -47,6 +47,7 @@ from launchverify.engine import (
     build_index,
     canonical,
     confine_reads,
+    output_file,
     parse_arguments,
     parse_environment,
     run_check,
@@ -212,8 +213,9 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--format", "--output-format", dest="format", choices=FORMATS,
                        default="text", help="how findings are written (default: text; "
                        "--output-format is ruff's spelling)")
-    check.add_argument("-o", "--output", type=Path, metavar="FILE",
-                       help="write the report to FILE instead of standard output")
+    check.add_argument("-o", "--output", type=output_file, metavar="FILE",
+                       help="write the report to FILE instead of standard output ('-': "
+                       "standard output)")
     check.add_argument("--color", choices=("auto", "always", "never"), default="auto",
                        help="color the text output (default: auto, on a terminal unless "
                        "NO_COLOR is set)")
@@ -254,9 +256,10 @@ def build_parser() -> argparse.ArgumentParser:
         "findings with code frames, include trees and a picture of the launched system.",
     )
     _add_check_options(report)
-    report.add_argument("-o", "--output", type=Path, default=Path("launchverify-report.html"),
-                        metavar="FILE", help="where to write it "
-                        "(default: launchverify-report.html)")
+    report.add_argument("-o", "--output", type=output_file,
+                        default=Path("launchverify-report.html"), metavar="FILE",
+                        help="where to write it (default: launchverify-report.html; '-': "
+                        "standard output)")
 
     graph = commands.add_parser(
         "graph", help="print what a launch file would start",
@@ -799,8 +802,14 @@ def _report(args: argparse.Namespace) -> int:
     _, index = build_index(options.paths, options.workspace, options.config.package_paths)
     page = io.StringIO()
     render_html(report, page, interfaces=WorkspaceInterfaces(index))
-    write_file(args.output, page.getvalue(), inside=inside)
-    print(f"wrote {args.output} ({len(report.findings)} findings in {report.files} files)",
+    if args.output is None:  # -o -
+        sys.stdout.write(page.getvalue())
+        sys.stdout.flush()
+        where = "wrote the report to standard output"
+    else:
+        write_file(args.output, page.getvalue(), inside=inside)
+        where = f"wrote {args.output}"
+    print(f"{where} ({len(report.findings)} findings in {report.files} files)",
           file=sys.stderr)
     return _exit_status(report, args, config)
 

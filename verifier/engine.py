@@ -206,6 +206,14 @@ def parse_environment(pairs: list[str]) -> dict[str, str]:
     return environment
 
 
+def output_file(text: str) -> Path | None:
+    """Read ``-o FILE``: ``-`` is standard output (``None``).
+
+    As ``check -`` reads standard input; a file named ``-`` is written ``./-``.
+    """
+    return None if text == "-" else Path(text)
+
+
 def canonical(path: Path) -> Path:
     """Return the identity used for a file: absolute, with symlinks resolved."""
     return Path(os.path.realpath(path))
