@@ -74,6 +74,7 @@ if TYPE_CHECKING:
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 EXIT_READER_GONE = 128 + 13  # as a shell shows a tool stopped by SIGPIPE (`cmd | head`)
+EXIT_INTERRUPTED = 128 + 2  # as a shell shows a tool stopped by SIGINT (Ctrl-C)
 
 
 FORMATS = ("text", "concise", "json", "sarif", "junit", "github")
@@ -362,11 +363,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         with paused:
             return _until_reader_leaves(handlers[args.command], args)
-    except (UsageError, RegistryError, ConfigError, BaselineError) as error:
+    except UsageError as error:
+        print(f"launchverify: error: {error.shown()}", file=sys.stderr)
+        return EXIT_ERROR
+    except (RegistryError, ConfigError, BaselineError) as error:
         print(inert(f"launchverify: error: {error}"), file=sys.stderr)
         return EXIT_ERROR
-    except KeyboardInterrupt:
-        return EXIT_ERROR
+    except KeyboardInterrupt:  # Ctrl-C: what was being written was never written half
+        return EXIT_INTERRUPTED
     except Exception as error:  # a bug of ours: say so plainly, never a traceback
         print(inert(f"launchverify: internal error: {type(error).__name__}: {error}") + "\n"
               "Please report this with the launch file that caused it.", file=sys.stderr)

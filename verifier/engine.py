@@ -51,7 +51,23 @@ T = TypeVar("T")
 
 
 class UsageError(Exception):
-    """Bad input from the user (exit status 2)."""
+    """Bad input from the user (exit status 2).
+
+    Its message is made inert whole when shown (``shown``): a line break in a name from a
+    checked file must not forge another line. ``lines``: the message is launchverify's own
+    lines, whatever it quotes of the checked files made inert already (their line breaks
+    are kept).
+    """
+
+    def __init__(self, message: str = "", *, lines: bool = False) -> None:
+        super().__init__(message)
+        self.lines = lines
+
+    def shown(self) -> str:
+        """Return the message for a terminal, its control characters shown visibly."""
+        from launchverify.render.inert import inert, inert_block
+
+        return inert_block(str(self)) if self.lines else inert(str(self))
 
 
 class NoLaunchFiles(UsageError):
