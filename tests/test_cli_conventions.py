@@ -22,6 +22,11 @@ from launchverify.cli import main
 
 ROOT = Path(__file__).resolve().parent.parent
 DUPLICATE = ROOT / "corpus" / "naming" / "duplicate_same_scope" / "dup.launch.xml"
+PACKAGE_XML = ('<?xml version="1.0"?>\n<package format="3">\n  <name>{name}</name>\n'
+               "  <version>0.0.1</version>\n  <description>d</description>\n"
+               '  <maintainer email="a@b.c">a</maintainer>\n  <license>MIT</license>\n'
+               "  <export><build_type>ament_cmake</build_type></export>\n</package>\n")
+
 
 @pytest.fixture(autouse=True)
 def _no_ros(monkeypatch: pytest.MonkeyPatch) -> None:
@@ -33,6 +38,77 @@ def run(capsys: pytest.CaptureFixture[str], *argv: str) -> tuple[int, str, str]:
     code = main(list(argv))
     out, err = capsys.readouterr()
     return code, out, err
+
+
+def _workspace(root: Path) -> Path:
+    """Write a colcon workspace (``src/``, ``build/``, one git repository): its root.
+
+    ``robot_bringup`` has a launch file loading ``config/controllers.yaml``, whose list
+    mixes types (LV401), a README, a C++ source and a parameter file no launch file loads.
+    """
+    package = root / "src" / "robot_bringup"
+    for folder in ("launch", "config", "src"):
+        (package / folder).mkdir(parents=True)
+    (root / "build").mkdir()
+    (package / "package.xml").write_text(PACKAGE_XML.format(name="robot_bringup"))
+    (package / "launch" / "control.launch.xml").write_text(
+        '<launch>\n  <node pkg="demo_nodes_cpp" exec="talker" name="controller_manager">\n'
+        '    <param from="$(find-pkg-share robot_bringup)/config/controllers.yaml"/>\n'
+        "  </node>\n</launch>\n")
+    (package / "config" / "controllers.yaml").write_text(
+        "controller_manager:\n  ros__parameters:\n    update_rate: 100\n"
+        "    gains: [1.0, 0]\n")
+    (package / "config" / "unused.yaml").write_text(
+        "nobody:\n  ros__parameters:\n    rate: 1.0\n")
+    (package / "config" / "notes.yaml").write_text("- a list, not parameters\n")
+    (package / "README.md").write_text("# robot_bringup\n\nusage: ros2 launch ...\n")
+    (package / "src" / "talker.cpp").write_text("int main() { return 0; }\n")
+    subprocess.run(["git", "init", "--quiet", str(root)], check=True)
+    return root
+
+
+# 3. a file given by name is read for what it is
+
+
+def test_a_parameter_file_given_by_name_is_checked_through_its_launch_files(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(_workspace(tmp_path / "ws"))
+    code, out, err = run(capsys, "check", "src/robot_bringup/config/controllers.yaml")
+    assert code == 1, err
+    assert "src/robot_bringup/config/controllers.yaml:4:" in out
+    assert "LV401" in out and "LV001" not in out, out
+
+
+@pytest.mark.parametrize("name", ["README.md", "src/talker.cpp", "config/notes.yaml",
+                                  "package.xml"])
+def test_a_file_that_is_not_for_launchverify_is_a_usage_error(
+        name: str, tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(_workspace(tmp_path / "ws") / "src" / "robot_bringup")
+    code, out, err = run(capsys, "check", name)
+    assert code == 2 and out == ""
+    assert f"'{name}' is neither a launch file nor a parameter file" in err
+    assert "*.launch.py" in err and "parameter files" in err
+    assert "LV001" not in err and "Traceback" not in err
+
+
+def test_a_parameter_file_no_launch_file_loads_is_said(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(_workspace(tmp_path / "ws"))
+    code, _, err = run(capsys, "check", "src/robot_bringup/config/unused.yaml")
+    assert code == 2
+    assert "no launch file of the workspace loads" in err and "unused.yaml" in err
+
+
+def test_files_a_folder_walk_finds_are_judged_as_before(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.chdir(_workspace(tmp_path / "ws"))
+    code, out, err = run(capsys, "check", "src")  # a README, C++, YAML notes below
+    assert code == 1, err
+    assert "LV401" in out and "LV001" not in out and "neither" not in err
 
 
 # 4. Ctrl-C
@@ -92,6 +168,29 @@ def test_output_dash_is_standard_output(tmp_path: Path, capsys: pytest.CaptureFi
     assert list(tmp_path.iterdir()) == [other]  # no file named '-'
     code, _, _ = run(capsys, "check", str(DUPLICATE), "-o", "./-")  # one named so
     assert code == 1 and (tmp_path / "-").read_text().startswith(str(DUPLICATE))
+
+
+# 6. --affected shows paths as every other check does
+
+
+@pytest.mark.parametrize("argv", [
+    ["check", "--affected", "src/robot_bringup/config/controllers.yaml"],
+    ["check", "--affected", "--", "src/robot_bringup/config/controllers.yaml"],  # the hook
+])
+def test_affected_paths_are_relative_to_the_current_folder(
+        argv: list[str], tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    workspace = _workspace(tmp_path / "ws")
+    launch = workspace / "src" / "robot_bringup" / "launch" / "control.launch.xml"
+    launch.write_text(launch.read_text().replace("</launch>",
+                                                 '  <node pkg="demo_nodes_cpp" exec="talker"'
+                                                 ' name="controller_manager"/>\n</launch>'))
+    monkeypatch.chdir(workspace)
+    code, out, _ = run(capsys, *argv)
+    assert code == 1
+    assert "src/robot_bringup/launch/control.launch.xml:5:" in out  # LV101, found by name
+    assert "src/robot_bringup/config/controllers.yaml:4:" in out
+    assert str(workspace) not in out, out
 
 
 # 7. run's own text keeps its line breaks; what it quotes stays inert

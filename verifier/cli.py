@@ -481,6 +481,7 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         raise UsageError("--affected needs the changed files")
     paths = paths or ["."]  # as ruff: the working folder
     refuse_unknown_selectors(args)
+    parameter_files = [] if args.affected or args.launch_files_only else _named_files(paths)
     config = Config()
     if not args.isolated:
         found = args.config or find_config(Path(paths[0]))
@@ -499,6 +500,7 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         command_ignore=option_codes(args.ignore) or [],
         nested_configs=not args.isolated and args.config is None,
         affected=args.affected,
+        parameter_files=parameter_files,
         environment={**config.environment, **parse_environment(args.env)},
         config=config,
         exclude=[*args.exclude, *excluded_by_ament()],
@@ -511,6 +513,31 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         progress=_progress_bar() if progress else None,
     )
     return options, config
+
+
+def _named_files(paths: list[str]) -> list[Path]:
+    """Return the parameter files among the files given; refuse what is neither kind.
+
+    A file given by name is read for what it is: a launch file, or a parameter file
+    (checked through the launch files that load it, as ``--affected`` does); a README or
+    a C++ source is a usage error, not a launch file that fails to parse. What a folder's
+    walk finds is judged by the walk.
+    """
+    from launchverify.workspace.discover import WHAT_IS_READ, named_kind
+
+    parameters = []
+    for text in paths:
+        path = Path(text)
+        if not path.is_file():  # a folder, or missing (said by the check)
+            continue
+        kind = named_kind(path)
+        if kind is None:
+            raise UsageError(f"{text!r} is neither a launch file nor a parameter file: "
+                             f"{WHAT_IS_READ}; --affected checks the launch files any "
+                             "changed file may break (a URDF, a package.xml)")
+        if kind == "parameters":
+            parameters.append(path)
+    return parameters
 
 
 def refuse_unknown_selectors(args: argparse.Namespace) -> None:

@@ -100,6 +100,9 @@ class CheckOptions:
     command_ignore: list[str] = field(default_factory=list)
     nested_configs: bool = False
     affected: bool = False  # paths are changed files: check the launch files they affect
+    # Parameter files among the paths: checked through the launch files that load them,
+    # as ``affected`` checks a changed one.
+    parameter_files: list[Path] = field(default_factory=list)
 
 
 @dataclass
@@ -318,16 +321,40 @@ def run_check(options: CheckOptions, stored: tuple[Entry, Kept] | None = None,
         folders = (workspace, sources, prefixes)
         if options.affected:  # pre-commit: what the changed files may break, or nothing
             includers = includers_in(sources)
-            return _check_files(options, tree, folders, lambda: includers, started,
-                                affected_launch_files(options.paths, includers), incremental)
+            found = _as_given(affected_launch_files(options.paths, includers), options.paths)
+            return _check_files(options, tree, folders, lambda: includers, started, found,
+                                incremental)
         # the scan starts before the index is built: small trees waited for it (it reads
         # every launch file of the workspace)
+        parameters = set(options.parameter_files)
         with Background(partial(includers_in, sources)) as scan:
-            return _check_files(options, tree, folders, scan.result, started,
-                                _unrecorded(partial(discover,
-                                                    filter_files=options.launch_files_only),
-                                            options.paths),
+            found = _unrecorded(partial(discover, filter_files=options.launch_files_only),
+                                [path for path in options.paths if path not in parameters])
+            if parameters:  # the launch files that load them, as --affected finds them
+                loading = affected_launch_files(options.parameter_files, scan.result())
+                if not found and not loading:
+                    raise NoLaunchFiles(_unloaded(options.parameter_files))
+                found += _as_given(loading, options.paths)
+            return _check_files(options, tree, folders, scan.result, started, found,
                                 incremental)
+
+
+def _unloaded(parameter_files: list[Path]) -> str:
+    """Say that no launch file loads the parameter files given (nothing to check them in)."""
+    named = ", ".join(repr(str(path)) for path in parameter_files)
+    return (f"no launch file of the workspace loads {named}: a parameter file is checked "
+            "through the launch files that load it (give the workspace with --workspace, "
+            "or check the launch file)")
+
+
+def _as_given(files: Iterable[Path], given: Iterable[Path]) -> list[Path]:
+    """Return launch files found for the paths given (real paths) as the output shows them.
+
+    A file given is named as it was given; another one relative to the working folder
+    when it is below it (``display_path``), as a folder's walk names what it finds.
+    """
+    named = {canonical(path): path for path in given}
+    return [named.get(file) or Path(display_path(file)) for file in files]
 
 
 def _unrecorded(function: Callable[..., T], *args: object) -> T:
