@@ -4,7 +4,8 @@ Exit status: 0 when no finding at or above ``--fail-on`` (default: error), 1 whe
 one, 2 for a usage error or an internal failure (never a traceback on the user's screen),
 141 when the reader of the output went away before the end (``launchverify check | head``:
 the command stops quietly, as other tools do; 141 is what a shell shows for a tool that
-SIGPIPE stopped, so ``set -o pipefail`` scripts see the same as with ``cat``). A launch
+SIGPIPE stopped, so ``set -o pipefail`` scripts see the same as with ``cat``), 130 on
+Ctrl-C (as for a tool SIGINT stopped; every output is written whole or not at all). A launch
 started by ``run`` is the exception: it goes on as ros2 launch's would, its output kept in
 the run folder's logs, and its own status is the exit status.
 """
