@@ -4,7 +4,8 @@ Exit status: 0 when no finding at or above ``--fail-on`` (default: error), 1 whe
 one, 2 for a usage error or an internal failure (never a traceback on the user's screen),
 141 when the reader of the output went away before the end (``launchverify check | head``:
 the command stops quietly, as other tools do; 141 is what a shell shows for a tool that
-SIGPIPE stopped, so ``set -o pipefail`` scripts see the same as with ``cat``). A launch
+SIGPIPE stopped, so ``set -o pipefail`` scripts see the same as with ``cat``), 130 on
+Ctrl-C (as for a tool SIGINT stopped; every output is written whole or not at all). A launch
 started by ``run`` is the exception: it goes on as ros2 launch's would, its output kept in
 the run folder's logs, and its own status is the exit status.
 """
@@ -48,6 +49,7 @@ from launchverify.engine import (
     canonical,
     check_workspace,
     confine_reads,
+    output_file,
     parse_arguments,
     parse_environment,
     run_check,
@@ -74,6 +76,7 @@ if TYPE_CHECKING:
 
 EXIT_OK, EXIT_FINDINGS, EXIT_ERROR = 0, 1, 2
 EXIT_READER_GONE = 128 + 13  # as a shell shows a tool stopped by SIGPIPE (`cmd | head`)
+EXIT_INTERRUPTED = 128 + 2  # as a shell shows a tool stopped by SIGINT (Ctrl-C)
 
 
 FORMATS = ("text", "concise", "json", "sarif", "junit", "github")
@@ -213,8 +216,9 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--format", "--output-format", dest="format", choices=FORMATS,
                        default="text", help="how findings are written (default: text; "
                        "--output-format is ruff's spelling)")
-    check.add_argument("-o", "--output", type=Path, metavar="FILE",
-                       help="write the report to FILE instead of standard output")
+    check.add_argument("-o", "--output", type=output_file, metavar="FILE",
+                       help="write the report to FILE instead of standard output ('-': "
+                       "standard output)")
     check.add_argument("--color", choices=("auto", "always", "never"), default="auto",
                        help="color the text output (default: auto, on a terminal unless "
                        "NO_COLOR is set)")
@@ -255,9 +259,10 @@ def build_parser() -> argparse.ArgumentParser:
         "findings with code frames, include trees and a picture of the launched system.",
     )
     _add_check_options(report)
-    report.add_argument("-o", "--output", type=Path, default=Path("launchverify-report.html"),
-                        metavar="FILE", help="where to write it "
-                        "(default: launchverify-report.html)")
+    report.add_argument("-o", "--output", type=output_file,
+                        default=Path("launchverify-report.html"), metavar="FILE",
+                        help="where to write it (default: launchverify-report.html; '-': "
+                        "standard output)")
 
     graph = commands.add_parser(
         "graph", help="print what a launch file would start",
@@ -360,11 +365,14 @@ def main(argv: Sequence[str] | None = None) -> int:
     try:
         with paused:
             return _until_reader_leaves(handlers[args.command], args)
-    except (UsageError, RegistryError, ConfigError, BaselineError) as error:
+    except UsageError as error:
+        print(f"launchverify: error: {error.shown()}", file=sys.stderr)
+        return EXIT_ERROR
+    except (RegistryError, ConfigError, BaselineError) as error:
         print(inert(f"launchverify: error: {error}"), file=sys.stderr)
         return EXIT_ERROR
-    except KeyboardInterrupt:
-        return EXIT_ERROR
+    except KeyboardInterrupt:  # Ctrl-C: what was being written was never written half
+        return EXIT_INTERRUPTED
     except Exception as error:  # a bug of ours: say so plainly, never a traceback
         print(inert(f"launchverify: internal error: {type(error).__name__}: {error}") + "\n"
               "Please report this with the launch file that caused it.", file=sys.stderr)
@@ -475,6 +483,7 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         raise UsageError("--affected needs the changed files")
     paths = paths or ["."]  # as ruff: the working folder
     refuse_unknown_selectors(args)
+    parameter_files = [] if args.affected or args.launch_files_only else _named_files(paths)
     config = Config()
     if not args.isolated:
         found = args.config or find_config(Path(paths[0]))
@@ -493,6 +502,7 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         command_ignore=option_codes(args.ignore) or [],
         nested_configs=not args.isolated and args.config is None,
         affected=args.affected,
+        parameter_files=parameter_files,
         environment={**config.environment, **parse_environment(args.env)},
         config=config,
         exclude=[*args.exclude, *excluded_by_ament()],
@@ -505,6 +515,31 @@ def check_options(args: argparse.Namespace, *, progress: bool = False
         progress=_progress_bar() if progress else None,
     )
     return options, config
+
+
+def _named_files(paths: list[str]) -> list[Path]:
+    """Return the parameter files among the files given; refuse what is neither kind.
+
+    A file given by name is read for what it is: a launch file, or a parameter file
+    (checked through the launch files that load it, as ``--affected`` does); a README or
+    a C++ source is a usage error, not a launch file that fails to parse. What a folder's
+    walk finds is judged by the walk.
+    """
+    from launchverify.workspace.discover import WHAT_IS_READ, named_kind
+
+    parameters = []
+    for text in paths:
+        path = Path(text)
+        if not path.is_file():  # a folder, or missing (said by the check)
+            continue
+        kind = named_kind(path)
+        if kind is None:
+            raise UsageError(f"{text!r} is neither a launch file nor a parameter file: "
+                             f"{WHAT_IS_READ}; --affected checks the launch files any "
+                             "changed file may break (a URDF, a package.xml)")
+        if kind == "parameters":
+            parameters.append(path)
+    return parameters
 
 
 def refuse_unknown_selectors(args: argparse.Namespace) -> None:
@@ -812,8 +847,14 @@ def _report(args: argparse.Namespace) -> int:
     _, index = build_index(options.paths, options.workspace, options.config.package_paths)
     page = io.StringIO()
     render_html(report, page, interfaces=WorkspaceInterfaces(index))
-    write_file(args.output, page.getvalue(), inside=inside)
-    print(f"wrote {args.output} ({len(report.findings)} findings in {report.files} files)",
+    if args.output is None:  # -o -
+        sys.stdout.write(page.getvalue())
+        sys.stdout.flush()
+        where = "wrote the report to standard output"
+    else:
+        write_file(args.output, page.getvalue(), inside=inside)
+        where = f"wrote {args.output}"
+    print(f"{where} ({len(report.findings)} findings in {report.files} files)",
           file=sys.stderr)
     return _exit_status(report, args, config)
 

@@ -57,7 +57,23 @@ T = TypeVar("T")
 
 
 class UsageError(Exception):
-    """Bad input from the user (exit status 2)."""
+    """Bad input from the user (exit status 2).
+
+    Its message is made inert whole when shown (``shown``): a line break in a name from a
+    checked file must not forge another line. ``lines``: the message is launchverify's own
+    lines, whatever it quotes of the checked files made inert already (their line breaks
+    are kept).
+    """
+
+    def __init__(self, message: str = "", *, lines: bool = False) -> None:
+        super().__init__(message)
+        self.lines = lines
+
+    def shown(self) -> str:
+        """Return the message for a terminal, its control characters shown visibly."""
+        from launchverify.render.inert import inert, inert_block
+
+        return inert_block(str(self)) if self.lines else inert(str(self))
 
 
 class NoLaunchFiles(UsageError):
@@ -90,6 +106,9 @@ class CheckOptions:
     command_ignore: list[str] = field(default_factory=list)
     nested_configs: bool = False
     affected: bool = False  # paths are changed files: check the launch files they affect
+    # Parameter files among the paths: checked through the launch files that load them,
+    # as ``affected`` checks a changed one.
+    parameter_files: list[Path] = field(default_factory=list)
 
 
 @dataclass
@@ -246,6 +265,14 @@ def parse_environment(pairs: list[str]) -> dict[str, str]:
     return environment
 
 
+def output_file(text: str) -> Path | None:
+    """Read ``-o FILE``: ``-`` is standard output (``None``).
+
+    As ``check -`` reads standard input; a file named ``-`` is written ``./-``.
+    """
+    return None if text == "-" else Path(text)
+
+
 def canonical(path: Path) -> Path:
     """Return the identity used for a file: absolute, with symlinks resolved."""
     return Path(os.path.realpath(path))
@@ -339,16 +366,40 @@ def run_check(options: CheckOptions, stored: tuple[Entry, Kept] | None = None,
         folders = (found, sources, prefixes)
         if options.affected:  # pre-commit: what the changed files may break, or nothing
             includers = includers_in(sources)
-            return _check_files(options, tree, folders, lambda: includers, started,
-                                affected_launch_files(options.paths, includers), incremental)
+            found = _as_given(affected_launch_files(options.paths, includers), options.paths)
+            return _check_files(options, tree, folders, lambda: includers, started, found,
+                                incremental)
         # the scan starts before the index is built: small trees waited for it (it reads
         # every launch file of the workspace)
+        parameters = set(options.parameter_files)
         with Background(partial(includers_in, sources)) as scan:
-            return _check_files(options, tree, folders, scan.result, started,
-                                _unrecorded(partial(discover,
-                                                    filter_files=options.launch_files_only),
-                                            options.paths),
+            found = _unrecorded(partial(discover, filter_files=options.launch_files_only),
+                                [path for path in options.paths if path not in parameters])
+            if parameters:  # the launch files that load them, as --affected finds them
+                loading = affected_launch_files(options.parameter_files, scan.result())
+                if not found and not loading:
+                    raise NoLaunchFiles(_unloaded(options.parameter_files))
+                found += _as_given(loading, options.paths)
+            return _check_files(options, tree, folders, scan.result, started, found,
                                 incremental)
+
+
+def _unloaded(parameter_files: list[Path]) -> str:
+    """Say that no launch file loads the parameter files given (nothing to check them in)."""
+    named = ", ".join(repr(str(path)) for path in parameter_files)
+    return (f"no launch file of the workspace loads {named}: a parameter file is checked "
+            "through the launch files that load it (give the workspace with --workspace, "
+            "or check the launch file)")
+
+
+def _as_given(files: Iterable[Path], given: Iterable[Path]) -> list[Path]:
+    """Return launch files found for the paths given (real paths) as the output shows them.
+
+    A file given is named as it was given; another one relative to the working folder
+    when it is below it (``display_path``), as a folder's walk names what it finds.
+    """
+    named = {canonical(path): path for path in given}
+    return [named.get(file) or Path(display_path(file)) for file in files]
 
 
 def _unrecorded(function: Callable[..., T], *args: object) -> T:

@@ -22,6 +22,7 @@ from typing import Any, TextIO
 from launchverify.engine import (
     UsageError,
     after_end_of_options,
+    output_file,
     parse_arguments,
     parse_environment,
 )
@@ -50,8 +51,9 @@ def add_parser(commands: Any) -> None:
                          default="text", help="text for people (default), json for "
                          "programs, markdown for a pull-request comment, github for "
                          "annotations on changed lines")
-    command.add_argument("-o", "--output", type=Path, metavar="FILE",
-                         help="write to FILE instead of standard output")
+    command.add_argument("-o", "--output", type=output_file, metavar="FILE",
+                         help="write to FILE instead of standard output ('-': standard "
+                         "output)")
     command.add_argument("--json", type=Path, metavar="FILE", dest="json_file",
                          help="also write the diff as JSON to FILE (one run for a comment "
                          "and a program)")

@@ -18,12 +18,21 @@ from launchverify.executor.command import Command, CommandBuilder, CommandError,
 from launchverify.graph import HandlerRecord, LaunchGraph, LaunchRecord, TransitionRequest
 from launchverify.ir import actions as a
 from launchverify.models import lifecycle as lc
+from launchverify.render.inert import inert
 
 OUTPUTS = ("screen", "log", "both")
 
 
 class PlanError(Exception):
-    """A launch that cannot be run as evaluated."""
+    """A launch that cannot be run as evaluated.
+
+    Its message is lines of launchverify's own, each made inert where it quotes the
+    checked files (names, paths): shown as it is, line breaks and all.
+    """
+
+    def lines(self) -> list[str]:
+        """Return the message's lines."""
+        return str(self).split("\n")
 
 
 @dataclass
@@ -99,7 +108,7 @@ def build_plan(graph: LaunchGraph, prefixes: list[Path], params_dir: Path, *,
         blocks[record.within].append((record.delay, index))
     if undecided:
         raise PlanError("conditions not known before run time (pin the arguments they "
-                        f"read with name:=value): {', '.join(undecided[:5])}")
+                        f"read with name:=value): {inert(', '.join(undecided[:5]))}")
     builder = CommandBuilder(graph, prefixes, params_dir, strict=strict)
     processes: dict[int, Process] = {}
     errors = []
@@ -111,7 +120,7 @@ def build_plan(graph: LaunchGraph, prefixes: list[Path], params_dir: Path, *,
         except CommandError as error:
             errors.append(f"{launch.origin.span.short()}: {error}")
     if errors:
-        raise PlanError("cannot start:\n  " + "\n  ".join(errors))
+        raise PlanError("cannot start:\n  " + "\n  ".join(inert(error) for error in errors))
     registers: dict[int, list[int]] = defaultdict(list)
     for number, handler in enumerate(graph.handlers):
         if handler.execution is not None:

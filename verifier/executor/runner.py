@@ -117,7 +117,7 @@ def prepare(options: RunOptions, report: Report) -> Start:
         plan = build_plan(root, install_prefixes(workspace), run_dir / "params",
                           strict=not options.dry_run)
     except PlanError as error:
-        raise UsageError(str(error)) from error
+        raise UsageError(str(error), lines=True) from error
     return Embedded(plan, run_dir, workspace, options.check.paths)
 
 
@@ -160,7 +160,9 @@ class Ros2Launch:
             plan = build_plan(self.root, install_prefixes(self.workspace),
                               Path("<parameter files of ros2 launch>"), strict=False)
         except PlanError as error:
-            return [handover, f"note: what it starts is known only when it runs: {error}"]
+            first, *more = error.lines()
+            return [handover, f"note: what it starts is known only when it runs: {first}",
+                    *more]
         return [handover, *describe(plan, _locate(self.paths, self.workspace)),
                 "note: ros2 launch evaluates the file itself (its Python unconfined) and "
                 "builds its own commands: those above are the check's evaluation of them"]

@@ -57,6 +57,44 @@ def _looks_like_launch(path: str) -> bool:
     return pattern.search(_head(path, 8192)) is not None
 
 
+# A parameter file, as rcl reads one: node keys over ``ros__parameters`` blocks.
+_PARAMETERS = re.compile(rb"^\s*ros__parameters\s*:", re.MULTILINE)
+# A file named otherwise is sniffed as ros2 launch reads any file: a launch file when it
+# begins with its root (comments, an XML declaration or a YAML document start before it).
+_STARTS_AS_LAUNCH = re.compile(
+    rb"(?:\s|<\?xml[^>]*\?>|<!--.*?-->|#[^\n]*|---)*(?:<launch[\s>/]|launch\s*:)", re.DOTALL)
+ROS1_SUFFIX = ".launch"  # roslaunch's files: checked to say so (LV003)
+WHAT_IS_READ = ("launchverify reads launch files (*.launch.py, *.launch.xml, *.launch.yaml; "
+                "a .py file defining generate_launch_description, an .xml or .yaml file whose "
+                "root is launch) and parameter files (.yaml with ros__parameters)")
+
+
+def named_kind(path: Path) -> str | None:
+    """Return what a file given by name is to a check: ``launch``, ``parameters`` or None.
+
+    Looser than a folder's walk (``is_launch_file``), as ``ros2 launch FILE`` is: any file
+    named for launch, a ``.py`` file defining ``generate_launch_description`` wherever it
+    is, an ``.xml``/``.yaml`` file whose root is ``launch``. A ``.yaml`` file with
+    ``ros__parameters`` is a parameter file, checked through the launch files that load
+    it. A file of any other name is a launch file when it begins with the root ``<launch>``
+    or ``launch:``. Anything else (a README, C++ source, a URDF) is not for ``check`` to
+    read as a launch file.
+    """
+    lowered = path.name.lower()
+    if lowered.endswith((*LAUNCH_SUFFIXES, PYTHON_SUFFIX, ROS1_SUFFIX)):
+        return "launch"
+    if lowered.endswith(".py"):
+        return "launch" if _PYTHON_ENTRY.search(_head(str(path), 256 * 1024)) else None
+    if lowered.endswith(".xml"):
+        return "launch" if _XML_ROOT.search(_head(str(path), 8192)) else None
+    if lowered.endswith((".yaml", ".yml")):
+        head = _head(str(path), 256 * 1024)
+        if _YAML_ROOT.search(head):
+            return "launch"
+        return "parameters" if _PARAMETERS.search(head) else None
+    return "launch" if _STARTS_AS_LAUNCH.match(_head(str(path), 8192)) else None
+
+
 def _in_launch_folder(folder: str) -> bool:
     """Return whether a folder is (or is just below) one named for launch files."""
     parent, _, own = folder.rpartition(os.sep)
