@@ -361,9 +361,9 @@ def run_check(options: CheckOptions, stored: tuple[Entry, Kept] | None = None,
     includers_in = partial(_unrecorded, Includers.of_workspace)
     with collector_paused(), reading.recording(other_reads if incremental.on else None):
         tree = ConfigTree(config, nested=options.nested_configs)
-        found, sources, prefixes = package_folders(options.paths, options.workspace,
-                                                   config.package_paths)
-        folders = (found, sources, prefixes)
+        workspace, sources, prefixes = package_folders(options.paths, options.workspace,
+                                                       config.package_paths)
+        folders = (workspace, sources, prefixes)
         if options.affected:  # pre-commit: what the changed files may break, or nothing
             includers = includers_in(sources)
             found = _as_given(affected_launch_files(options.paths, includers), options.paths)
