@@ -96,6 +96,11 @@ class PythonConverter:
             return placeholder_sub(os.fspath(value))
         if isinstance(value, (list, tuple)):
             return s.concat([self.sub(item) for item in value])
+        if isinstance(value, (set, frozenset)):  # launch iterates it as a list would be
+            items = list(value)
+            if len(items) == 1:  # ``{path}``: the path
+                return self.sub(items[0])
+            return s.Opaque("<the items of a set, in an order no run fixes>")
         if isinstance(value, bool):
             return s.Text("true" if value else "false")
         if isinstance(value, (int, float)):
