@@ -42,7 +42,7 @@ from launchverify.workspace.packages import (
 from launchverify.workspace.paths import display_path, relative_file
 
 if TYPE_CHECKING:
-    from launchverify.findings.incremental import Incremental, RootResult
+    from launchverify.findings.incremental import Incremental
     from launchverify.findings.verdicts import Verdicts
     from launchverify.graph import LaunchGraph
     from launchverify.ir.symbolic import PathCondition
@@ -422,7 +422,6 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     from launchverify.findings.bounds import bounded
     from launchverify.findings.fixes import within
     from launchverify.findings.incremental import settled_places
-    from launchverify.findings.scope import context_roots
     from launchverify.findings.verdicts import merge
     from launchverify.frontends import launch_format
     from launchverify.isolation.confine import Limits
@@ -488,15 +487,6 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     with distros.checking(options.distro), reading.size_limit(options.max_file_size):
         evaluate_roots([root for root in roots if root not in kept])
         includers = includers_of()
-        scope_roots = roots
-        if not options.affected:  # (affected: the includers are among the files already)
-            context = context_roots(roots, includers, lambda f: tree.nearest(f).excludes(f)
-                                    or _excluded(f, options.exclude))
-            if context:
-                roots = [*roots, *context]
-                if incremental.plan is not None:
-                    kept.update(incremental.plan.kept(context))
-                evaluate_roots([root for root in context if root not in kept])
         while True:  # roots another root's edit concerns: who includes them, their family
             targets = {target for g in graphs.values() for inc in g.includes
                        if (target := inc.target) is not None}
@@ -534,10 +524,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         if incremental.plan is not None:  # every rule concludes from the verdicts alone
             instance = lambda r: rules[r]()  # noqa: E731
         findings = merge(everyone, rules, ctx, instance, _isolated)
-        if not options.affected:
-            findings = _in_scope(findings, options.paths, scope_roots, roots, graphs,
-                                 kept, rules, includers)
-    report = incremental.report(scope_roots, graphs, judged, kept, rules)
+    report = incremental.report(roots, graphs, judged, kept, rules)
     loaded = report.loaded_files()
     findings, suppressed = _unrecorded(_suppress, [bounded(f) for f in findings], loaded, rules)
     findings = within(_configured(findings, tree, selection), workspace)  # fixes: ours only
@@ -546,30 +533,10 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         findings, baselined = apply_baseline(options.baseline, findings)
     return dataclasses.replace(
         report, findings=sorted(findings, key=Finding.sort_key), files=len(loaded),
-        seconds=time.perf_counter() - started, display=display, checked=scope_roots,
+        seconds=time.perf_counter() - started, display=display, checked=roots,
         suppressed=suppressed, baselined=baselined, python_files=evaluations,
         protections=protections, packages=index, workspace=found_workspace,
         sourced=bool(os.environ.get("AMENT_PREFIX_PATH")), distro=options.distro)
-
-
-def _in_scope(findings: list[Finding], paths: list[Path], scope_roots: list[Path],
-              roots: list[Path], graphs: dict[Path, LaunchGraph],
-              kept: dict[Path, RootResult], rules: list[type[Rule]],
-              includers: Includers) -> list[Finding]:
-    """Keep the findings of the paths' files, whoever's context (``findings/scope.py``)."""
-    from launchverify.findings.scope import consensus, in_scope
-
-    def files_of(root: Path) -> set[Path]:
-        if root in graphs:
-            return {*graphs[root].files, *graphs[root].param_files}
-        return set(kept[root].verdicts.files) if root in kept else set()
-
-    reached = {f for root in scope_roots for f in files_of(root)}
-    context_only = {f for root in roots[len(scope_roots):] for f in files_of(root)} - reached
-    evaluated = set(roots)
-    return in_scope(findings, paths, reached, context_only,
-                    {rule.code for rule in rules if consensus(rule)},
-                    lambda file: bool(includers.naming(file) - evaluated))
 
 
 def rule_options(config: Config, arguments: dict[str, str] | None = None
