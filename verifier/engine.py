@@ -11,6 +11,7 @@ from __future__ import annotations
 import dataclasses
 import os
 import time
+from collections import Counter
 from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from functools import partial
@@ -197,10 +198,7 @@ class Report:
     def coverage(self) -> Coverage:
         """Return how much of the launch was not followed, for the summary."""
         items = self.not_followed()
-        uses: dict[str, int] = {}
-        for item in items:
-            if item.kind == "package":
-                uses[item.package] = uses.get(item.package, 0) + 1
+        uses = Counter(item.package for item in items if item.kind == "package")
         ranked = sorted(uses.items(), key=lambda pair: (-pair[1], pair[0]))
         return Coverage(sum(1 for item in items if item.kind == "include"), tuple(ranked))
 

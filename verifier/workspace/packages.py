@@ -156,13 +156,8 @@ def scan_sources(root: Path, within: Iterable[Path] = ()) -> Iterator[tuple[str,
 
 
 def _shared_parts(one: Path, other: Path) -> int:
-    """Return how many leading path parts two paths share."""
-    shared = 0
-    for mine, theirs in zip(one.parts, other.parts, strict=False):
-        if mine != theirs:
-            break
-        shared += 1
-    return shared
+    """Return how many leading path parts two absolute paths share."""
+    return len(Path(os.path.commonpath([one, other])).parts)
 
 
 def scan_prefix(prefix: Path) -> Iterator[str]:
