@@ -186,3 +186,21 @@ def test_a_name_defined_twice_is_the_copy_nearest_to_what_is_checked(tmp_path: P
     # the whole workspace checked: both copies are as near, the first scanned stays
     tie = PackageIndex([tmp_path], near=[tmp_path]).find("shared")
     assert tie is not None and tie.source == scanned_first
+
+
+def test_an_installed_copy_is_as_near_as_its_source(tmp_path: Path) -> None:
+    """A repository's emulated install (``share/<name>``, the same manifest) is its copy.
+
+    Of the two, the first scanned stays, as before any preference: the installed one
+    holds what the build generates (a ``gz_sim.launch.py`` made from a ``.in``).
+    """
+    make_package(tmp_path / "repo_a", "shared", folder="api/shared")
+    source = make_package(tmp_path / "repo_b", "shared", folder="system/shared")
+    installed = tmp_path / "_install" / "repo_b" / "share" / "shared"
+    installed.mkdir(parents=True)
+    (installed / "package.xml").write_bytes((source / "package.xml").read_bytes())
+    index = PackageIndex([tmp_path], near=[tmp_path / "repo_b" / "launch"])
+    twins = [f for f in index.sources["shared"] if f in {source.resolve(), installed.resolve()}]
+    found = index.find("shared")
+    assert found is not None and found.source == twins[0]
+    assert twins[0] == installed.resolve()  # '_install' is walked before 'repo_b'

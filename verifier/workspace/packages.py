@@ -231,15 +231,24 @@ class PackageIndex:
         What a user checks is the tree they build: its copy of a package overlays another
         repository's copy in the same workspace, as an overlay does an underlay (and as
         the real library finds it where the user builds). Nearest is the copy sharing the
-        most leading folders with a checked path; a tie keeps the first one scanned.
+        most leading folders with a checked path; an installed copy (``share/<name>``)
+        whose manifest holds a source copy's bytes is that source's install, as near as it
+        (``canonical`` says the same of its files). A tie keeps the first one scanned.
         """
         if not near:
             return
         for name, folders in self.sources.items():
             if len(folders) < 2:
                 continue
-            best = max(folders, key=lambda folder: max(
-                _shared_parts(folder, path) for path in near))  # max keeps the first of a tie
+            own = {folder: max(_shared_parts(folder, path) for path in near)
+                   for folder in folders}
+            nearness = dict(own)
+            for folder in folders:
+                if _installed_layout(folder / "package.xml", name):
+                    nearness[folder] = max([own[folder], *(
+                        own[source] for source in folders if source != folder
+                        and _same_bytes(source / "package.xml", folder / "package.xml"))])
+            best = max(folders, key=nearness.__getitem__)  # max keeps the first of a tie
             known = self._packages[name]
             if best != known.source:
                 self._packages[name] = Package(name, source=best, prefix=known.prefix)
