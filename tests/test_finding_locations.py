@@ -34,12 +34,14 @@ def test_a_suppression_on_the_call_still_covers_a_finding_inside_it(tmp_path: Pa
     launch = tmp_path / "talker.launch.py"
     launch.write_text(
         "from launch import LaunchDescription\n"
+        "from launch.actions import DeclareLaunchArgument\n"
         "from launch.substitutions import LaunchConfiguration\n"
         "from launch_ros.actions import Node\n\n\n"
         "def generate_launch_description():\n"
         "    return LaunchDescription([\n"
+        "        DeclareLaunchArgument('name', default_value='talker'),\n"
         "        Node(package='demo_nodes_cpp', executable='talker',"
-        "  # launchverify: ignore[LV201]\n"
+        " name=LaunchConfiguration('name'),  # launchverify: ignore[LV201]\n"
         "             parameters=[{'rate': LaunchConfiguration('rate')}]),\n"
         "    ])\n")
     report = run_check(CheckOptions(paths=[launch], workspace=tmp_path))

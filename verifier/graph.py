@@ -652,9 +652,17 @@ class LaunchGraph:
         One that no file names is an entry point, launched directly, and what ``ros2
         launch`` would fail on is reported there, reads of configurations it never
         declares included; but arguments without defaults are the user's to give, and
-        what they would fix is not reported.
+        what they would fix is not reported. One that declares no argument at all yet
+        itself reads configurations nothing sets is a building block (nav2's old
+        fragments): its reads are its interface, which only an includer (or the command
+        line) gives. (One that only includes files reading them is an entry point that
+        forgot to pass them.)
         """
         if self.included_elsewhere:
+            return False
+        if not self.root_arguments and any(
+                not r.found and not r.has_default and r.origin.span.file == self.root
+                for r in self.reads):
             return False
         return not any(not a.has_default and not a.conditional and a.name not in self.pinned
                        for a in self.root_arguments)

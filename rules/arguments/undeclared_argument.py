@@ -20,9 +20,12 @@ class UndeclaredArgument(Rule):
     Follows the launch in execution order and reports `$(var name)` (or
     `LaunchConfiguration('name')`) without a default where no `<arg>`, `<let>`, include
     argument or command-line value has set `name` before. A file that others include,
-    that declares arguments without defaults, or that reads configurations it never
-    declares is meant to be included: its includers must set them, so on its own only a
-    read one or two edits away from a declared name (a typo) is reported.
+    that declares arguments without defaults, or that declares no argument at all yet
+    reads configurations (a building block, as nav2's old fragments are written) is meant
+    to be included: its includers must set them, so on its own only a read one or two
+    edits away from a declared name (a typo) is reported. A file that declares its
+    arguments and is included by nothing is an entry point: every read it never declares
+    is reported.
 
     A read under a condition false with the default arguments is reported with arguments
     that make it true, as launch reads it only then. A configuration set only on paths the

@@ -22,7 +22,10 @@ class MissingFile(Rule):
     Resolves include paths and parameter file paths (`<param from=...>`,
     `set_parameters_from_file`, `$(file-content)`) against the workspace, finding files
     written through a package's install folder in its sources. Paths outside the workspace
-    belong to the machine and are not checked.
+    belong to the machine and are not checked. An empty path given to a node's
+    `parameters` names no file (an argument's `default=''` placeholder): launch_ros skips
+    it and starts the node without it. A composable node's loader opens it and fails, so
+    there it is reported.
 
     ## Why it matters
     A missing include stops ros2 launch (`FileNotFoundError`). A missing parameter file is

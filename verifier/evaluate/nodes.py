@@ -70,7 +70,8 @@ class NodeBuilder:
         if exec_name is not None:
             reducer.reduce(exec_name)
         remaps = (*self.scope_remaps(ctx), *self.own_remaps(action.remappings, ctx))
-        params = (*self.scope_params(ctx), *self.own_params(action.parameters, ctx))
+        params = (*self.scope_params(ctx),
+                  *self.own_params(action.parameters, ctx, empty_is_none=True))
         settings = self.walker.visit_process_options(action.process, action.span, ctx, action)
         autostart = None
         if isinstance(action, a.LifecycleNode):
@@ -166,15 +167,21 @@ class NodeBuilder:
             records.append(known[1])
         return records
 
-    def own_params(self, entries: tuple[a.ParamEntry, ...], ctx: Ctx) -> list[ParamRecord]:
-        """Evaluate a node's own parameters: files are checked, values reduced."""
+    def own_params(self, entries: tuple[a.ParamEntry, ...], ctx: Ctx,
+                   empty_is_none: bool = False) -> list[ParamRecord]:
+        """Evaluate a node's own parameters: files are checked, values reduced.
+
+        ``empty_is_none``: an empty path names no file (a process node's placeholder,
+        ``default=''``): launch_ros skips it and starts the node without it, where a
+        composable node's loader opens it and fails.
+        """
         out = []
         for entry in entries:
             reducer = self.walker.reducer.at(ctx, entry.span)
             if isinstance(entry, a.ParamFile):
                 location = reducer.reduce(entry.path)
                 self.check_file(file_source(location), ctx.origin(entry.span),
-                                "parameter file", ctx, entry.path)
+                                "parameter file", ctx, entry.path, empty_is_none)
                 out.append(ParamRecord(ctx.origin(entry.span), file=location,
                                        source=self.read_param_file(location)))
                 if self.allows_substitutions(entry, ctx):
@@ -238,10 +245,11 @@ class NodeBuilder:
         return located
 
     def check_file(self, location: s.Sub, origin: Origin, what: str, ctx: Ctx,
-                   expression: s.Sub | None = None) -> None:
+                   expression: s.Sub | None = None, empty_is_none: bool = False) -> None:
         """Record whether a file the launch needs exists (when its path is known).
 
         ``expression``: the path as written, to locate the file's name in it (for a fix).
+        ``empty_is_none``: an empty path means no file, not a missing one.
         """
         text = text_of(location)
         if text is None and machine_dependent(location):
@@ -251,6 +259,8 @@ class NodeBuilder:
         if text is None:
             return
         if not text.strip():
+            if empty_is_none:
+                return
             empty = FileRef(text, origin, False, what, "the path is empty")
             self.walker.graph.file_refs.append(empty)
             return

@@ -2,7 +2,7 @@
 # evaluates to, are unknown (not "perform() needs a LaunchContext", LV002), and the rest
 # of the file is evaluated.
 from launch import LaunchDescription
-from launch.actions import LogInfo
+from launch.actions import DeclareLaunchArgument, LogInfo
 from launch.conditions import IfCondition
 from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node
@@ -14,6 +14,7 @@ def generate_launch_description():
     simulated = IfCondition('true').evaluate(launch_context)  # expect-not: LV002
     return LaunchDescription([
         LogInfo(msg=[robot, ' simulated: ', str(simulated)]),
-        Node(package='demo_nodes_cpp', executable='talker',
+        DeclareLaunchArgument('robot_name', default_value='r1'),  # an entry point
+        Node(package='demo_nodes_cpp', executable='talker', name=LaunchConfiguration('robot_name'),
              namespace=LaunchConfiguration('robot_id')),  # expect: LV201
     ])

@@ -2,6 +2,7 @@
 # default is no failure (an LV003 that stopped the evaluation before), and the rest of
 # the file is evaluated.
 from launch import LaunchDescription
+from launch.actions import DeclareLaunchArgument
 from launch.substitutions import LaunchConfiguration
 from launch_ros.actions import Node
 from moveit_configs_utils import MoveItConfigsBuilder
@@ -14,6 +15,7 @@ def generate_launch_description():
     return LaunchDescription([
         Node(package='moveit_ros_move_group', executable='move_group',
              parameters=[config.to_dict()]),
-        Node(package='demo_nodes_cpp', executable='talker',
+        DeclareLaunchArgument('robot_name', default_value='r1'),  # an entry point
+        Node(package='demo_nodes_cpp', executable='talker', name=LaunchConfiguration('robot_name'),
              namespace=LaunchConfiguration('robot_id')),  # expect: LV201
     ])

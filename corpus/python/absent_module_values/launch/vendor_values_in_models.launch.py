@@ -3,7 +3,7 @@
 # unknown, none a failure (LV002, or an LV003 that stops the evaluation), and the real
 # mistake after them is still found.
 from launch import LaunchDescription
-from launch.actions import EmitEvent, OpaqueFunction
+from launch.actions import DeclareLaunchArgument, EmitEvent, OpaqueFunction
 from launch.events import matches_action
 from launch.substitutions import LaunchConfiguration
 from launch.utilities import perform_typed_substitution
@@ -33,6 +33,7 @@ def generate_launch_description():
         EmitEvent(event=ChangeState(lifecycle_node_matcher=matches_action(driver),  # expect-not: LV002
                                     transition_id=vendor_helpers.CONFIGURE)),
         OpaqueFunction(function=setup),  # expect-not: LV201
-        Node(package='demo_nodes_cpp', executable='talker',
+        DeclareLaunchArgument('robot_name', default_value='r1'),  # an entry point
+        Node(package='demo_nodes_cpp', executable='talker', name=LaunchConfiguration('robot_name'),
              namespace=LaunchConfiguration('robot_id')),  # expect: LV201
     ])
