@@ -1,7 +1,7 @@
 """Human-readable output: ``file:line:col: severity CODE [slug] message`` and a code frame.
 
-A finding ``--fix`` would mend has ``[*]`` before its code (as ruff marks them), and the
-summary says how many are fixable.
+A finding ``--fix`` would mend has ``[*]`` after its code (``error LV304 [*] [slug] ...``,
+where the concise format has it too), and the summary says how many are fixable.
 
 Findings that say the same thing (one code, severity, message and argument values) at
 several places, as one per node loading a file or one per parameter block, are grouped:
@@ -125,9 +125,9 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
             continue  # printed under the first of its group
         span = finding.span
         where = f"{report.display_path(span.file)}:{span.line}:{span.column}"
-        marker = "[*] " if applicable(finding.fix, unsafe_fixes) else ""
+        marker = " [*]" if applicable(finding.fix, unsafe_fixes) else ""
         line((where, "bold"), ": ", (finding.severity.value, STYLES[finding.severity]), " ",
-             marker, (finding.code, "bold"), f" [{finding.slug}] {finding.message}")
+             (finding.code, "bold"), marker, f" [{finding.slug}] {finding.message}")
         for frame in _frame(finding):
             line(frame, style="dim" if "|" in frame[:8] else None)
         for other in same[1:]:
