@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
 from pathlib import Path
 
@@ -252,6 +253,32 @@ def test_baseline_survives_moved_lines_and_catches_new_findings(
         "</launch>", '  <node pkg="demo_nodes_cpp" exec="listener" name="talker"/>\n</launch>'))
     status, found = codes(capsys, str(tmp_path / "tree"), "--baseline", str(baseline))
     assert status == 1 and len(found) == 1
+
+
+def test_the_summary_says_how_many_findings_the_baseline_hides(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A clean run with a baseline says what it rests on: text, concise and JSON."""
+    shutil.copytree(DUPLICATE, tmp_path / "tree")
+    tree, baseline = str(tmp_path / "tree"), str(tmp_path / "baseline.json")
+    assert main(["check", tree, "--write-baseline", baseline, "-q", "--no-cache"]) == 1
+    capsys.readouterr()
+    assert main(["check", tree, "--baseline", baseline, "--no-cache"]) == 0
+    summary = capsys.readouterr().out.splitlines()[-1]
+    # (then what was not followed: the demo packages are in no underlay here)
+    assert re.match(r"No findings in 1 file \(\d+\.\d\ds\); 2 hidden by the baseline[;.]",
+                    summary), summary
+    launch = tmp_path / "tree" / "dup.launch.xml"
+    launch.write_text(launch.read_text().replace(
+        "</launch>", '  <node pkg="demo_nodes_cpp" exec="listener" name="talker"/>\n</launch>'))
+    assert main(["check", tree, "--baseline", baseline, "--no-cache", "--format",
+                 "concise"]) == 1
+    summary = capsys.readouterr().out.splitlines()[-1]
+    assert summary.startswith("Found 1 finding (1 error) in 1 file (")
+    assert re.search(r"s\); 2 hidden by the baseline[;.]", summary), summary
+    main(["check", tree, "--baseline", baseline, "--no-cache", "--format", "json"])
+    assert json.loads(capsys.readouterr().out)["summary"]["baselined"] == 2
+    main(["check", tree, "--no-cache"])
+    assert "baseline" not in capsys.readouterr().out  # none given: nothing said
 
 
 def test_baseline_holds_from_another_working_directory(
