@@ -652,3 +652,21 @@ def test_an_edited_line_that_keeps_its_mistake_is_neither(
     findings = diff(capsys, "new", "--against", "old")["findings"]
     assert findings == {"introduced": [], "fixed": [], "changed": []}
 
+
+def test_markdown_cuts_a_long_message_at_a_word_with_an_ellipsis(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    long = "/the_planner_output_topic_with_rather_long_name"  # 120 characters: in "(the"
+    _sides(tmp_path, "<launch/>\n", REMAPS.replace("/chat_b", long))
+    monkeypatch.chdir(tmp_path)
+    messages = [f["message"] for f in
+                diff(capsys, "new", "--against", "old")["findings"]["introduced"]]
+    message = next(m for m in messages if long in m)
+    assert len(message) > 120
+    assert main(["diff", "new", "--against", "old", "--format", "markdown", "-j", "1"]) == 0
+    line = next(text for text in capsys.readouterr().out.splitlines()
+                if text.startswith("- ") and "never applies" in text)
+    shown = line.rsplit(" `", 1)[1].rstrip("`")
+    assert shown.endswith("…") and len(shown) <= 120, shown
+    kept = shown[:-1]
+    assert message.startswith(kept) and message[len(kept)] in " ,;:", (kept, message)

@@ -170,8 +170,17 @@ def _ends(ends: Data, first: str, second: str) -> str:
 
 
 def _v(value: object) -> str:
+    """Return a value to show, cut to ``MAX_VALUE`` characters at a word's end with ``…``.
+
+    A value with no space in its second half (a long path or name) is cut inside it.
+    """
     text = "(unknown)" if value is None else str(value)
-    return text if len(text) <= MAX_VALUE else text[:MAX_VALUE - 1] + "…"
+    if len(text) <= MAX_VALUE:
+        return text
+    end = text.rfind(" ", 0, MAX_VALUE)  # the ellipsis takes the space's place
+    if end < MAX_VALUE // 2:
+        end = MAX_VALUE - 1
+    return text[:end].rstrip(" ,;:") + "…"
 
 
 def _when(node: Data) -> str:
