@@ -11,6 +11,7 @@ import os
 import re
 import subprocess
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -623,7 +624,7 @@ def test_a_finding_whose_message_changed_is_changed_not_introduced_and_fixed(
     _sides(tmp_path, REMAPS, REMAPS.replace('to="/chat"/>\n    <remap from="chatter"',
                                             'to="/chat2"/>\n    <remap from="chatter"'))
     monkeypatch.chdir(tmp_path)
-    found = diff(capsys, "new", "--against", "old")
+    found: Any = diff(capsys, "new", "--against", "old")
     findings = found["findings"]
     assert findings["introduced"] == []  # was: 1 introduced, 2 fixed
     assert [(f["code"], f["line"]) for f in findings["fixed"]] == [("LV103", 5)]
@@ -659,8 +660,8 @@ def test_markdown_cuts_a_long_message_at_a_word_with_an_ellipsis(
     long = "/the_planner_output_topic_with_rather_long_name"  # 120 characters: in "(the"
     _sides(tmp_path, "<launch/>\n", REMAPS.replace("/chat_b", long))
     monkeypatch.chdir(tmp_path)
-    messages = [f["message"] for f in
-                diff(capsys, "new", "--against", "old")["findings"]["introduced"]]
+    found: Any = diff(capsys, "new", "--against", "old")
+    messages = [f["message"] for f in found["findings"]["introduced"]]
     message = next(m for m in messages if long in m)
     assert len(message) > 120
     assert main(["diff", "new", "--against", "old", "--format", "markdown", "-j", "1"]) == 0
