@@ -44,7 +44,7 @@ def test_json_contract(capsys: pytest.CaptureFixture[str]) -> None:
     assert set(document["workspace"]) == {"path", "how"}
     assert DUPLICATE.is_relative_to(Path(document["workspace"]["path"]).resolve())
     assert set(document["summary"]) == {"files", "errors", "warnings", "infos", "seconds",
-                                           "cached", "not_followed"}
+                                           "cached", "baselined", "not_followed"}
     # the example's nodes come from demo packages, which no underlay provides here
     assert document["summary"]["not_followed"] == {
         "includes": 0, "packages": 2, "package_names": ["demo_nodes_cpp", "demo_nodes_py"]}

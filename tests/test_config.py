@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
 from pathlib import Path
 
@@ -113,9 +114,10 @@ def test_configured_arguments_are_pinned(tmp_path: Path,
     ("select = [", "launchverify.toml:1: invalid TOML: Invalid value"),
     ("# ours\n\nselcet = ['LV1']", "launchverify.toml:3: unknown key 'selcet' "
      "(did you mean 'select'?)"),
-    ("jobs = 2\nfoo = 1\nbar = 2", "launchverify.toml:2: unknown key 'foo' (known: "
-     "arguments, distro, "),
-    ("jobs = 2\nfoo = 1\nbar = 2", "; also unknown: 'bar'"),
+    ("jobs = 2\nfoo = 1", "launchverify.toml:2: unknown key 'foo' (known: arguments, "
+     "distro, "),
+    ("jobs = 2\nfoo = 1\nbar = 2", "launchverify.toml: 2 problems:\n  "),
+    ("jobs = 2\nfoo = 1\nbar = 2", "launchverify.toml:3: unknown key 'bar'\n  (known keys: "),
     ("jobs = 2\nseverity = {LV101 = 'fatal'}", "launchverify.toml:2: severity of LV101 "
      "must be one of"),
     ("[severity]\nLV404 = 'error'\nLV101 = 'fatal'", "launchverify.toml:3: severity of "
@@ -141,6 +143,41 @@ def test_bad_configuration_is_a_clear_error(project: Path, text: str, message: s
     err = capsys.readouterr().err
     assert message in err and f"{project.resolve()}{os.sep}launchverify.toml:" in err
     assert "Traceback" not in err
+
+
+def test_every_wrong_key_of_a_configuration_is_named_at_once(
+        project: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A user fixing a file meets all its mistakes in one run, each with a close key."""
+    (project / "launchverify.toml").write_text(
+        'selct = ["LV1"]\nignore = ["LV404"]\nper-file-ignore = {"test/**" = ["LV101"]}\n'
+        'fail_on = "warning"\nfrobnicate = 3\njobs = "four"\n'
+        'severity = {LV9999 = "error", LV101 = "fatal"}\ndistro = "jazy"\n')
+    assert main(["check", str(project)]) == 2
+    err = capsys.readouterr().err
+    file = f"{project.resolve()}{os.sep}launchverify.toml"
+    assert err.splitlines() == [
+        f"launchverify: error: {file}: 8 problems:",
+        f"  {file}:1: unknown key 'selct' (did you mean 'select'?)",
+        f"  {file}:3: unknown key 'per-file-ignore' (did you mean 'per-file-ignores'?)",
+        f"  {file}:4: unknown key 'fail_on' (did you mean 'fail-on'?)",
+        f"  {file}:5: unknown key 'frobnicate'",
+        f"  {file}:6: jobs must be a positive whole number",
+        f"  {file}:7: severity of LV101 must be one of error, warning, info, not 'fatal'",
+        f"  {file}:7: severity: no rule is called 'LV9999' (`launchverify rules` lists "
+        "every rule)",
+        f"  {file}:8: distro must be one of humble, iron, jazzy, kilted, rolling (did you "
+        "mean 'jazzy'?)",
+        "  (known keys: arguments, distro, environment, exclude, external-names, fail-on, "
+        "ignore, jobs, max-file-size, package-paths, per-file-ignores, select, severity, "
+        "single-writer-topics, time-limit, workspace)"]
+
+
+def test_a_line_break_in_a_wrong_key_forges_no_line(
+        project: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    (project / "launchverify.toml").write_text('"a\\nb" = 1\nfoo = 2\n')
+    assert main(["check", str(project)]) == 2
+    err = capsys.readouterr().err
+    assert "unknown key 'a\\nb'" in err and len(err.splitlines()) == 4, err
 
 
 @pytest.mark.parametrize(("text", "message"), [
@@ -216,6 +253,32 @@ def test_baseline_survives_moved_lines_and_catches_new_findings(
         "</launch>", '  <node pkg="demo_nodes_cpp" exec="listener" name="talker"/>\n</launch>'))
     status, found = codes(capsys, str(tmp_path / "tree"), "--baseline", str(baseline))
     assert status == 1 and len(found) == 1
+
+
+def test_the_summary_says_how_many_findings_the_baseline_hides(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    """A clean run with a baseline says what it rests on: text, concise and JSON."""
+    shutil.copytree(DUPLICATE, tmp_path / "tree")
+    tree, baseline = str(tmp_path / "tree"), str(tmp_path / "baseline.json")
+    assert main(["check", tree, "--write-baseline", baseline, "-q", "--no-cache"]) == 1
+    capsys.readouterr()
+    assert main(["check", tree, "--baseline", baseline, "--no-cache"]) == 0
+    summary = capsys.readouterr().out.splitlines()[-1]
+    # (then what was not followed: the demo packages are in no underlay here)
+    assert re.match(r"No findings in 1 file \(\d+\.\d\ds\); 2 hidden by the baseline[;.]",
+                    summary), summary
+    launch = tmp_path / "tree" / "dup.launch.xml"
+    launch.write_text(launch.read_text().replace(
+        "</launch>", '  <node pkg="demo_nodes_cpp" exec="listener" name="talker"/>\n</launch>'))
+    assert main(["check", tree, "--baseline", baseline, "--no-cache", "--format",
+                 "concise"]) == 1
+    summary = capsys.readouterr().out.splitlines()[-1]
+    assert summary.startswith("Found 1 finding (1 error) in 1 file (")
+    assert re.search(r"s\); 2 hidden by the baseline[;.]", summary), summary
+    main(["check", tree, "--baseline", baseline, "--no-cache", "--format", "json"])
+    assert json.loads(capsys.readouterr().out)["summary"]["baselined"] == 2
+    main(["check", tree, "--no-cache"])
+    assert "baseline" not in capsys.readouterr().out  # none given: nothing said
 
 
 def test_baseline_holds_from_another_working_directory(

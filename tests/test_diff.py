@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import subprocess
 from pathlib import Path
+from typing import Any
 
 import pytest
 
@@ -436,6 +438,7 @@ def test_a_node_for_other_argument_values_wired_otherwise(
 
 REWRITTEN = """\
 import os
+import re
 from launch import LaunchDescription
 from launch_ros.actions import Node
 from launch_ros.descriptions import ParameterFile
@@ -592,3 +595,79 @@ def test_a_long_chain_fails_as_the_kernel_does_and_costs_its_length() -> None:
     kept = _inside(["f"], links)
     assert sorted(kept, key=lambda name: int(name[1:])) == [
         f"c{i}" for i in range(20_001 - MAX_FOLLOWS, 20_001)]
+
+
+REMAPS = """\
+<launch>
+  <node pkg="demo_nodes_cpp" exec="talker" name="talker">
+    <remap from="chatter" to="/chat"/>
+    <remap from="chatter" to="/chat_b"/>
+    <remap from="other" to="/chat"/>
+  </node>
+</launch>
+"""
+
+
+def _sides(root: Path, base: str, head: str) -> None:
+    """Write two folders, ``old`` and ``new``, each a package with one launch file."""
+    for side, text in (("old", base), ("new", head)):
+        (root / side / "launch").mkdir(parents=True)
+        (root / side / "package.xml").write_text(PACKAGE)
+        (root / side / "launch" / "bringup.launch.xml").write_text(text)
+
+
+def test_a_finding_whose_message_changed_is_changed_not_introduced_and_fixed(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    # the first rule for chatter now names /chat2: line 4's remap still never applies
+    # (its message names the new winner), line 5's no longer merges two names
+    _sides(tmp_path, REMAPS, REMAPS.replace('to="/chat"/>\n    <remap from="chatter"',
+                                            'to="/chat2"/>\n    <remap from="chatter"'))
+    monkeypatch.chdir(tmp_path)
+    found: Any = diff(capsys, "new", "--against", "old")
+    findings = found["findings"]
+    assert findings["introduced"] == []  # was: 1 introduced, 2 fixed
+    assert [(f["code"], f["line"]) for f in findings["fixed"]] == [("LV103", 5)]
+    [changed] = findings["changed"]
+    assert (changed["code"], changed["line"], changed["base"]["line"]) == ("LV103", 4, 4)
+    assert changed["message"].endswith("already remapped to /chat2 (the first rule wins)")
+    assert changed["base"]["message"].endswith("already remapped to /chat (the first rule "
+                                               "wins)")
+    assert (found["summary"]["findings_introduced"], found["summary"]["findings_fixed"],
+            found["summary"]["findings_changed"]) == (0, 1, 1)
+    assert main(["diff", "new", "--against", "old", "-j", "1"]) == 0
+    text = capsys.readouterr().out
+    assert "findings: 0 introduced, 1 fixed, 1 changed" in text
+    assert re.search(r"~ warning LV103 launch/bringup\.launch\.xml:4 remap chatter -> "
+                     r"/chat_b never applies: .*/chat2 .*\(was: remap chatter -> /chat_b "
+                     r"never applies: .*/chat \(the first rule wins\)\)", text), text
+
+
+def test_an_edited_line_that_keeps_its_mistake_is_neither(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    # line 5's text changes (an attribute added), its finding and message stay
+    _sides(tmp_path, REMAPS, REMAPS.replace('<remap from="other" to="/chat"/>',
+                                            '<remap from="other" to="/chat" />'))
+    monkeypatch.chdir(tmp_path)
+    findings = diff(capsys, "new", "--against", "old")["findings"]
+    assert findings == {"introduced": [], "fixed": [], "changed": []}
+
+
+def test_markdown_cuts_a_long_message_at_a_word_with_an_ellipsis(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    long = "/the_planner_output_topic_with_rather_long_name"  # 120 characters: in "(the"
+    _sides(tmp_path, "<launch/>\n", REMAPS.replace("/chat_b", long))
+    monkeypatch.chdir(tmp_path)
+    found: Any = diff(capsys, "new", "--against", "old")
+    messages = [f["message"] for f in found["findings"]["introduced"]]
+    message = next(m for m in messages if long in m)
+    assert len(message) > 120
+    assert main(["diff", "new", "--against", "old", "--format", "markdown", "-j", "1"]) == 0
+    line = next(text for text in capsys.readouterr().out.splitlines()
+                if text.startswith("- ") and "never applies" in text)
+    shown = line.rsplit(" `", 1)[1].rstrip("`")
+    assert shown.endswith("…") and len(shown) <= 120, shown
+    kept = shown[:-1]
+    assert message.startswith(kept) and message[len(kept)] in " ,;:", (kept, message)

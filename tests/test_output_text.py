@@ -46,6 +46,18 @@ def test_a_fixable_finding_is_marked_in_concise(capsys: pytest.CaptureFixture[st
     assert re.search(r"top\.launch\.xml:3:5: error LV204 \[\*\] argument 'use_sim_tme'", out)
 
 
+def test_the_fixable_mark_stands_after_the_code_in_text_and_concise(
+        capsys: pytest.CaptureFixture[str]) -> None:
+    # one convention: ``severity CODE [*]`` in both formats (text once had ``[*] CODE``)
+    tree = str(CORPUS / "arguments" / "unknown_include_argument")
+    text = _check(capsys, tree)[1]
+    assert re.search(r"top\.launch\.xml:3:5: error LV204 \[\*\] \[[a-z-]+\] argument "
+                     r"'use_sim_tme'", text), text
+    assert "[*] LV204" not in text
+    concise = _check(capsys, tree, "--format", "concise")[1]
+    assert "error LV204 [*] argument 'use_sim_tme'" in concise
+
+
 def test_repeats_are_grouped_under_the_first(tmp_path: Path,
                                              capsys: pytest.CaptureFixture[str]) -> None:
     launch = tmp_path / "many.launch.xml"

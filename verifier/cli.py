@@ -368,7 +368,10 @@ def main(argv: Sequence[str] | None = None) -> int:
     except UsageError as error:
         print(f"launchverify: error: {error.shown()}", file=sys.stderr)
         return EXIT_ERROR
-    except (RegistryError, ConfigError, BaselineError) as error:
+    except ConfigError as error:  # every problem of the file, one a line
+        print(f"launchverify: error: {error.shown()}", file=sys.stderr)
+        return EXIT_ERROR
+    except (RegistryError, BaselineError) as error:
         print(inert(f"launchverify: error: {error}"), file=sys.stderr)
         return EXIT_ERROR
     except KeyboardInterrupt:  # Ctrl-C: what was being written was never written half

@@ -33,7 +33,8 @@ and its ``jobs`` is at most the machine's cores; see ``confined``. Any configura
 file is read as launch files are (``reading.read_file``): a regular file of at most the
 size limit, never a FIFO, a device or a system file (a ``launchverify.toml`` linked to
 ``/dev/zero`` is an error at once), and TOML nested too deeply for the parser is an
-error, not a crash.
+error, not a crash. A file with mistakes is one error naming all of them, each at its
+line with the known key or rule it may misspell (``_Problems``).
 """
 
 from __future__ import annotations
@@ -65,7 +66,21 @@ KNOWN_KEYS = frozenset({
 
 
 class ConfigError(ValueError):
-    """A configuration file launchverify cannot use (exit status 2)."""
+    """A configuration file launchverify cannot use (exit status 2).
+
+    ``lines``: the message is launchverify's own lines (every problem of the file, one a
+    line), each made inert already; else it is one line, made inert whole when shown.
+    """
+
+    def __init__(self, message: str = "", *, lines: bool = False) -> None:
+        super().__init__(message)
+        self.lines = lines
+
+    def shown(self) -> str:
+        """Return the message for a terminal, its control characters shown visibly."""
+        from launchverify.render.inert import inert, inert_block
+
+        return inert_block(str(self)) if self.lines else inert(str(self))
 
 
 @dataclass
@@ -257,6 +272,43 @@ def _line_count(text: str) -> int:
     return text.rstrip("\n").count("\n") + 1
 
 
+class _Problems:
+    """What is wrong in one configuration file, gathered so that all are said at once.
+
+    A user fixing a file should not meet its mistakes one run at a time: each problem is
+    kept with its line, and ``raise_any`` reports them together, in the file's order.
+    """
+
+    def __init__(self, lines: _Lines) -> None:
+        self.lines = lines
+        self.found: list[tuple[int, str, str]] = []  # line (0: unknown), where, message
+        self.unplaced_keys = False  # an unknown key close to no known one
+
+    def add(self, message: str, *keys: str, value: str | None = None) -> None:
+        """Record a problem found at a key path (and a string value under it)."""
+        line = self.lines.line(*keys, value=value) if keys else None
+        where = f"{self.lines.path}:{line}" if line is not None else str(self.lines.path)
+        self.found.append((line or 0, where, message))
+
+    def raise_any(self) -> None:
+        """Raise one ``ConfigError`` naming every problem (one line alone when one)."""
+        if not self.found:
+            return
+        known = ", ".join(sorted(KNOWN_KEYS))
+        problems = sorted(self.found, key=lambda problem: problem[0])  # stable: found order
+        if len(problems) == 1:
+            _, where, message = problems[0]
+            tail = f" (known: {known})" if self.unplaced_keys else ""
+            raise ConfigError(f"{where}: {message}{tail}")
+        from launchverify.render.inert import inert
+
+        shown = [inert(f"{self.lines.path}: {len(problems)} problems:"),
+                 *(inert(f"  {where}: {message}") for _, where, message in problems)]
+        if self.unplaced_keys:
+            shown.append(f"  (known keys: {known})")
+        raise ConfigError("\n".join(shown), lines=True)
+
+
 class _Lines:
     """Where keys and values are written in a configuration file.
 
@@ -310,8 +362,9 @@ def load_config(path: Path) -> Config:
     if not isinstance(data, dict):
         raise ConfigError(f"{lines.where('launchverify')}: [tool.launchverify] must be a "
                           "table")
-    _refuse_unknown_keys(data, lines)
-    reader = _Reader(lines, data)
+    problems = _Problems(lines)
+    _unknown_keys(data, problems)
+    reader = _Reader(problems, data)
     base = path.parent
     workspace = reader.text("workspace")
     config = Config(
@@ -335,27 +388,31 @@ def load_config(path: Path) -> Config:
     )
     for code, level in config.severity.items():
         if level not in SEVERITIES:
-            raise ConfigError(f"{lines.where('severity', code)}: severity of {code} must be "
-                              f"one of {', '.join(SEVERITIES)}, not {level!r}")
+            problems.add(f"severity of {code} must be one of {', '.join(SEVERITIES)}, "
+                         f"not {level!r}", "severity", code)
     if config.distro is not None and config.distro not in DISTROS:
-        raise ConfigError(f"{lines.where('distro')}: distro must be one of "
-                          f"{', '.join(DISTROS)}{did_you_mean(config.distro, DISTROS)}")
+        problems.add(f"distro must be one of {', '.join(DISTROS)}"
+                     f"{did_you_mean(config.distro, DISTROS)}", "distro")
     if config.fail_on is not None and config.fail_on not in SEVERITIES:
-        raise ConfigError(f"{lines.where('fail-on')}: fail-on must be one of "
-                          f"{', '.join(SEVERITIES)}")
-    _refuse_unknown_rules(config, lines)
+        problems.add(f"fail-on must be one of {', '.join(SEVERITIES)}"
+                     f"{did_you_mean(config.fail_on, SEVERITIES)}", "fail-on")
+    _unknown_rules(config, problems)
+    problems.raise_any()
     return config
 
 
-def _refuse_unknown_keys(data: dict[str, Any], lines: _Lines) -> None:
-    """Name the first unknown key where it is written, with the known key it may misspell."""
-    unknown = sorted(set(data) - KNOWN_KEYS, key=lambda key: (lines.line(key) or 0, key))
-    if not unknown:
-        return
-    key = unknown[0]
-    hint = did_you_mean(key, KNOWN_KEYS) or f" (known: {', '.join(sorted(KNOWN_KEYS))})"
-    more = f"; also unknown: {', '.join(map(repr, unknown[1:]))}" if unknown[1:] else ""
-    raise ConfigError(f"{lines.where(key)}: unknown key {key!r}{hint}{more}")
+def _unknown_keys(data: dict[str, Any], problems: _Problems) -> None:
+    """Name each unknown key where it is written, with the known key it may misspell.
+
+    ``fail_on`` or ``Select`` is the known key written another way; else the closest
+    known key, if one is close.
+    """
+    for key in sorted(set(data) - KNOWN_KEYS):
+        respelt = key.lower().replace("_", "-")
+        hint = (f" (did you mean {respelt!r}?)" if respelt in KNOWN_KEYS
+                else did_you_mean(key, KNOWN_KEYS))
+        problems.unplaced_keys |= not hint
+        problems.add(f"unknown key {key!r}{hint}", key)
 
 
 def unknown_selector(selector: str) -> str | None:
@@ -376,8 +433,8 @@ def unknown_selector(selector: str) -> str | None:
     return None
 
 
-def _refuse_unknown_rules(config: Config, lines: _Lines) -> None:
-    """Refuse a selector that names no rule, where it is written (not at check time)."""
+def _unknown_rules(config: Config, problems: _Problems) -> None:
+    """Name each selector that names no rule, where it is written (not at check time)."""
     places = [*((("select",), s) for s in config.select or []),
               *((("ignore",), s) for s in config.ignore),
               *((("per-file-ignores", pattern), s)
@@ -386,27 +443,31 @@ def _refuse_unknown_rules(config: Config, lines: _Lines) -> None:
     for keys, selector in places:
         problem = unknown_selector(selector if selector is not None else keys[-1])
         if problem is not None:
-            raise ConfigError(f"{lines.where(*keys, value=selector)}: {'.'.join(keys[:1])}: "
-                              f"{problem}")
+            problems.add(f"{keys[0]}: {problem}", *keys, value=selector)
 
 
 class _Reader:
-    """Typed access to a configuration table, with errors that name the key and its line."""
+    """Typed access to a configuration table.
 
-    def __init__(self, lines: _Lines, data: dict[str, Any]) -> None:
-        self.lines = lines
+    A value of the wrong type is a problem (naming the key and its line) and reads as
+    unset, so that the rest of the file is still read and every problem said at once.
+    """
+
+    def __init__(self, problems: _Problems, data: dict[str, Any]) -> None:
+        self.problems = problems
         self.data = data
 
-    def fail(self, key: str, wanted: str, *, under: str | None = None) -> ConfigError:
-        """Return the error of a value that is not what ``key`` wants (``under.key``)."""
+    def fail(self, key: str, wanted: str, *, under: str | None = None) -> None:
+        """Record that a value is not what ``key`` wants (``under.key``)."""
         keys = (key,) if under is None else (under, key)
         shown = key if under is None else f"{under}.{key if '.' not in key else repr(key)}"
-        return ConfigError(f"{self.lines.where(*keys)}: {shown} must be {wanted}")
+        self.problems.add(f"{shown} must be {wanted}", *keys)
 
     def text(self, key: str) -> str | None:
         value = self.data.get(key)
         if value is not None and not isinstance(value, str):
-            raise self.fail(key, "a string")
+            self.fail(key, "a string")
+            return None
         return value
 
     def number(self, key: str, *, integer: bool = False) -> float | None:
@@ -415,7 +476,8 @@ class _Reader:
             return None
         kinds = (int,) if integer else (int, float)
         if isinstance(value, bool) or not isinstance(value, kinds) or not 0 < value < 1e9:
-            raise self.fail(key, "a positive whole number" if integer else "a positive number")
+            self.fail(key, "a positive whole number" if integer else "a positive number")
+            return None
         return value
 
     def texts(self, key: str) -> list[str] | None:
@@ -425,7 +487,8 @@ class _Reader:
         if isinstance(value, str):
             return [value]
         if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
-            raise self.fail(key, "a list of strings")
+            self.fail(key, "a list of strings")
+            return None
         return list(value)
 
     def names(self, key: str) -> list[str] | None:
@@ -433,32 +496,37 @@ class _Reader:
         value = self.texts(key)
         if value is not None and any(not v.strip() or any(c.isspace() for c in v)
                                      for v in value):
-            raise self.fail(key, "a list of name globs (no blanks, no spaces)")
+            self.fail(key, "a list of name globs (no blanks, no spaces)")
+            return None
         return value
 
     def table(self, key: str) -> dict[str, str]:
         value = self.data.get(key, {})
         if not isinstance(value, dict):
-            raise self.fail(key, "a table")
+            self.fail(key, "a table")
+            return {}
         out = {}
         for name, item in value.items():
             if isinstance(item, bool):
                 item = "true" if item else "false"
             if not isinstance(item, (str, int, float)):
-                raise self.fail(str(name), "a string", under=key)
+                self.fail(str(name), "a string", under=key)
+                continue
             out[str(name)] = str(item)
         return out
 
     def table_of_texts(self, key: str) -> dict[str, list[str]]:
         value = self.data.get(key, {})
         if not isinstance(value, dict):
-            raise self.fail(key, "a table of lists of codes")
+            self.fail(key, "a table of lists of codes")
+            return {}
         out = {}
         for pattern, codes in value.items():
             if isinstance(codes, str):
                 codes = [codes]
             if not isinstance(codes, list) or not all(isinstance(c, str) for c in codes):
-                raise self.fail(str(pattern), "a list of codes", under=key)
+                self.fail(str(pattern), "a list of codes", under=key)
+                continue
             out[str(pattern)] = list(codes)
         return out
 

@@ -38,9 +38,9 @@ def add_parser(commands: Any) -> None:
         description="Evaluate the launch files of two revisions (or two folders) and "
         "show what differs in what they start: nodes added, removed or renamed, "
         "parameter values (wherever they are set), remappings, arguments, lifecycle "
-        "bring-ups, and the findings introduced or fixed. BASE defaults to the merge base "
-        "with the default branch, HEAD to the working tree; revisions are read from git "
-        "without checking anything out.")
+        "bring-ups, and the findings introduced, fixed or changed. BASE defaults to the "
+        "merge base with the default branch, HEAD to the working tree; revisions are read "
+        "from git without checking anything out.")
     command.add_argument("targets", nargs="*", metavar="BASE|HEAD|PATH|name:=value",
                          help="up to two revisions first, then launch files or folders "
                          "(default: the whole repository), then launch arguments")
@@ -127,7 +127,7 @@ def run(args: argparse.Namespace) -> int:
     _write(diff, args, inside)
     summary = diff["summary"]
     changed = summary["launches_changed"] or summary["findings_introduced"] \
-        or summary["findings_fixed"]
+        or summary["findings_fixed"] or summary["findings_changed"]
     if summary["errors_introduced"] or (args.fail_on_change and changed):
         return EXIT_CHANGED
     return EXIT_OK

@@ -7,12 +7,14 @@ each parameter ends up with (and where it is given), their parameter files, rema
 and what they run. Includes compare by target, the computation graph by name (what
 appears, goes, or loses an end), nodes that start only for other argument values by
 their condition and wiring as written, arguments by name, lifecycle managers by the
-nodes they bring up, findings by fingerprint. The result is plain data, documented in
-docs/output.md.
+nodes they bring up, findings by fingerprint, then by where they are (``_findings``).
+The result is plain data, documented in docs/output.md.
 """
 
 from __future__ import annotations
 
+import bisect
+from collections.abc import Callable
 from typing import Any
 
 from launchverify.diff.snapshot import Launch, Snapshot
@@ -46,35 +48,80 @@ def compare(base: Snapshot, head: Snapshot, renamed: dict[str, str]) -> Data:
         found = compare_launch(base.launches[file], None)
         if found is not None:
             launches.append({"file": file, "base_file": file, **found})
-    introduced, fixed = _findings(base.findings, head.findings, renamed)
+    introduced, fixed, changed = _findings(base, head, renamed)
     return {"launches": launches, "unchanged": unchanged, "inputs_only": unseen,
-            "findings": {"introduced": introduced, "fixed": fixed},
-            "summary": _summary(launches, introduced, fixed)}
+            "findings": {"introduced": introduced, "fixed": fixed, "changed": changed},
+            "summary": _summary(launches, introduced, fixed, changed)}
 
 
-def _findings(base: dict[str, Data], head: dict[str, Data], renamed: dict[str, str]
-              ) -> tuple[list[Data], list[Data]]:
-    """Return the findings only the head side has, and those only the base side has.
+Key = Callable[[Data, str], tuple[str, ...] | None]  # a finding, its anchor -> its key
+# How findings without a twin fingerprint pair, in turn: the same message at the same
+# line text (another occurrence number: an identical finding came or went before it);
+# the same message (an edited line that keeps its mistake); the same line text and
+# severity (the same finding, its message changed: a remap whose first rule now names
+# another target). Each within one rule and file (renames followed).
+_PAIRINGS: tuple[Key, ...] = (
+    lambda finding, anchor: (finding["message"], anchor),
+    lambda finding, anchor: (finding["message"],),
+    lambda finding, anchor: (anchor, finding["severity"]) if anchor else None,
+)
 
-    Fingerprints pair most (they hold no line number). A finding whose line was edited
-    has another fingerprint; it still pairs with one of the same rule, file (renamed
-    files followed) and message, so an edited line that keeps its mistake is neither.
+
+def _findings(base: Snapshot, head: Snapshot, renamed: dict[str, str]
+              ) -> tuple[list[Data], list[Data], list[Data]]:
+    """Return the findings only the head side has, only the base side has, and changed.
+
+    Fingerprints pair most (they hold no line number). The others pair by what they
+    still share (``_PAIRINGS``), each with the candidate nearest its line; one paired
+    with another message is ``changed`` (the head side's, its ``base`` the other's),
+    not one finding introduced and one fixed.
     """
-    only_head = {f: head[f] for f in head if f not in base}
-    only_base = {f: base[f] for f in base if f not in head}
-    unpaired: dict[tuple[str, str, str], list[str]] = {}
-    for print_, finding in only_base.items():
-        key = (finding["code"], renamed.get(finding["file"]) or finding["file"],
-               finding["message"])
-        unpaired.setdefault(key, []).append(print_)
-    introduced = []
-    for print_, finding in only_head.items():
-        twins = unpaired.get((finding["code"], finding["file"], finding["message"]))
-        if twins:
-            del only_base[twins.pop(0)]
-            continue
-        introduced.append(finding | {"fingerprint": print_})
-    return introduced, [finding | {"fingerprint": f} for f, finding in only_base.items()]
+    only_base = [f for f in base.findings if f not in head.findings]
+    only_head = [f for f in head.findings if f not in base.findings]
+    pairs: list[tuple[str, str]] = []  # base fingerprint, head fingerprint
+    for key in _PAIRINGS:
+        candidates: dict[tuple[str, ...], tuple[list[int], list[str]]] = {}
+        for print_ in only_base:
+            finding = base.findings[print_]
+            found = key(finding, base.anchors.get(print_, ""))
+            if found is not None:
+                lines, prints = candidates.setdefault(
+                    (finding["code"], renamed.get(finding["file"]) or finding["file"],
+                     *found), ([], []))
+                at = bisect.bisect(lines, finding["line"])
+                lines.insert(at, finding["line"])
+                prints.insert(at, print_)
+        left = []
+        for print_ in only_head:
+            finding = head.findings[print_]
+            found = key(finding, head.anchors.get(print_, ""))
+            bucket = None if found is None else candidates.get(
+                (finding["code"], finding["file"], *found))
+            if not bucket or not bucket[0]:
+                left.append(print_)
+                continue
+            pairs.append((_nearest(bucket, finding["line"]), print_))
+        paired = {was for was, _ in pairs}
+        only_base = [print_ for print_ in only_base if print_ not in paired]
+        only_head = left
+    twin = {now: was for was, now in pairs}
+    changed = [finding | {"fingerprint": now, "base": {
+                   key: base.findings[twin[now]][key] for key in ("file", "line", "message")}
+                   | {"fingerprint": twin[now]}}
+               for now, finding in head.findings.items()
+               if now in twin and base.findings[twin[now]]["message"] != finding["message"]]
+    return ([head.findings[f] | {"fingerprint": f} for f in only_head],
+            [base.findings[f] | {"fingerprint": f} for f in only_base], changed)
+
+
+def _nearest(bucket: tuple[list[int], list[str]], line: int) -> str:
+    """Take the candidate nearest a line out of a bucket (lines sorted) and return it."""
+    lines, prints = bucket
+    at = bisect.bisect(lines, line)
+    if at == len(lines) or (at > 0 and line - lines[at - 1] <= lines[at] - line):
+        at -= 1
+    del lines[at]
+    return prints.pop(at)
 
 
 def compare_launch(before: Launch | None, after: Launch | None) -> Data | None:
@@ -242,7 +289,8 @@ def _arguments(old: dict[str, Data], new: dict[str, Data]) -> Data:
     }
 
 
-def _summary(launches: list[Data], introduced: list[Data], fixed: list[Data]) -> Data:
+def _summary(launches: list[Data], introduced: list[Data], fixed: list[Data],
+             changed: list[Data]) -> Data:
     def count(key: str, part: str | None = None) -> int:
         return sum(len(launch[key][part] if part else launch[key]) for launch in launches)
 
@@ -259,5 +307,6 @@ def _summary(launches: list[Data], introduced: list[Data], fixed: list[Data]) ->
                                  for part in ("added", "removed", "changed")),
         "lifecycle_changed": count("lifecycle"),
         "findings_introduced": len(introduced), "findings_fixed": len(fixed),
+        "findings_changed": len(changed),
         "errors_introduced": sum(f["severity"] == "error" for f in introduced),
     }

@@ -170,8 +170,17 @@ def _ends(ends: Data, first: str, second: str) -> str:
 
 
 def _v(value: object) -> str:
+    """Return a value to show, cut to ``MAX_VALUE`` characters at a word's end with ``…``.
+
+    A value with no space in its second half (a long path or name) is cut inside it.
+    """
     text = "(unknown)" if value is None else str(value)
-    return text if len(text) <= MAX_VALUE else text[:MAX_VALUE - 1] + "…"
+    if len(text) <= MAX_VALUE:
+        return text
+    end = text.rfind(" ", 0, MAX_VALUE)  # the ellipsis takes the space's place
+    if end < MAX_VALUE // 2:
+        end = MAX_VALUE - 1
+    return text[:end].rstrip(" ,;:") + "…"
 
 
 def _when(node: Data) -> str:
@@ -214,12 +223,13 @@ def render_text(diff: Data, out: TextIO, *, colour: bool = False) -> None:
     if diff["inputs_only"]:
         out.write("\n" + paint("?", inert(_unseen(diff["inputs_only"]))) + "\n")
     findings = diff["findings"]
-    if findings["introduced"] or findings["fixed"]:
+    if _any_finding(findings):
         out.write("\nfindings: " + _counted(findings) + "\n")
-        for mark, group in (("+", findings["introduced"]), ("-", findings["fixed"])):
+        for mark, group in (("+", findings["introduced"]), ("-", findings["fixed"]),
+                            ("~", findings.get("changed", []))):
             for finding in group:
                 text = f"{mark} {finding['severity']} {finding['code']} {finding['file']}:" \
-                       f"{finding['line']} {finding['message']}"
+                       f"{finding['line']} {finding['message']}{_was(finding)}"
                 out.write("  " + paint("!" if mark == "+" and finding["severity"] == "error"
                                        else mark, inert(text)) + "\n")
     for assignment in diff.get("assignments", []):
@@ -254,9 +264,25 @@ def _side(side: Data) -> str:
 
 def _counted(findings: Data) -> str:
     errors = sum(f["severity"] == "error" for f in findings["introduced"])
+    changed = len(findings.get("changed", []))
     return (f"{len(findings['introduced'])} introduced"
             + (f" ({errors} error{'s' if errors != 1 else ''})" if errors else "")
-            + f", {len(findings['fixed'])} fixed")
+            + f", {len(findings['fixed'])} fixed"
+            + (f", {changed} changed" if changed else ""))
+
+
+def _any_finding(findings: Data) -> bool:
+    return bool(findings["introduced"] or findings["fixed"] or findings.get("changed"))
+
+
+def _was(finding: Data) -> str:
+    """Return what a changed finding said on the base side (and where, if elsewhere)."""
+    before = finding.get("base")
+    if before is None:
+        return ""
+    moved = (before["file"], before["line"]) != (finding["file"], finding["line"])
+    return f" (was: {before['message']}" + (
+        f" at {before['file']}:{before['line']})" if moved else ")")
 
 
 # ------------------------------------------------------------------ Markdown
@@ -299,8 +325,7 @@ def _markdown(diff: Data, out: TextIO, max_items: int) -> None:
     summary = diff["summary"]
     out.write(f"### launchverify diff: {code(_side(diff['base']))} → "
               f"{code(_side(diff['head']))}\n\n")
-    if not diff["launches"] and not diff["findings"]["introduced"] \
-            and not diff["findings"]["fixed"]:
+    if not diff["launches"] and not _any_finding(diff["findings"]):
         out.write(f"No change in what the {diff['unchanged'] + len(diff['inputs_only'])} "
                   "launch file(s) start, as far as launchverify sees.\n")
         if diff["inputs_only"]:
@@ -336,21 +361,25 @@ def _markdown(diff: Data, out: TextIO, max_items: int) -> None:
     if diff["inputs_only"]:
         out.write(f"\n{_MARKS['?']} {code(_unseen(diff['inputs_only']))}\n")
     findings = diff["findings"]
-    if findings["introduced"] or findings["fixed"]:
+    if _any_finding(findings):
         out.write(f"\n**Findings**: {_counted(findings)}\n")
         shown = 0
         for mark, group in ((_MARKS["+"], findings["introduced"]),
-                            (_MARKS["-"], findings["fixed"])):
+                            (_MARKS["-"], findings["fixed"]),
+                            (_MARKS["~"], findings.get("changed", []))):
             for finding in group:
                 if shown == max_items:
                     break
                 shown += 1
                 alarm = group is findings["introduced"] and finding["severity"] == "error"
+                was = f" (was {code(finding['base']['message'])})" if "base" in finding \
+                    else ""
                 out.write(f"- {_MARKS['!'] if alarm else mark} {finding['severity']} "
                           f"{code(finding['code'])} "
                           f"{code(finding['file'] + ':' + str(finding['line']))} "
-                          f"{code(finding['message'])}\n")
-        total = len(findings["introduced"]) + len(findings["fixed"])
+                          f"{code(finding['message'])}{was}\n")
+        total = len(findings["introduced"]) + len(findings["fixed"]) + \
+            len(findings.get("changed", []))
         if total > shown:
             out.write(f"- …and {total - shown} more\n")
     for launch in diff["launches"][:max_items]:

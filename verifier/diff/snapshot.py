@@ -30,6 +30,7 @@ from launchverify.smt import reasoner_for
 from launchverify.topology.compose import WorkspaceInterfaces
 from launchverify.workspace.paths import relative_file
 from launchverify.workspace.reading import read_file
+from launchverify.workspace.sources import source_line
 
 
 @dataclass
@@ -63,6 +64,9 @@ class Snapshot:
 
     launches: dict[str, Launch] = field(default_factory=dict)
     findings: dict[str, dict[str, Any]] = field(default_factory=dict)
+    # each finding's anchor, by fingerprint: the text of the line it points at, stripped
+    # ('' when unreadable), as the fingerprint hashes it; findings pair by it (not shown)
+    anchors: dict[str, str] = field(default_factory=dict)
     seconds: float = 0.0
 
 
@@ -123,6 +127,7 @@ def take(root: Path, request: Request) -> Snapshot:
             "code": finding.code, "slug": finding.slug, "severity": finding.severity.value,
             "file": relative_file(finding.span.file, root), "line": finding.span.line,
             "message": local.value(finding.message)}
+        snapshot.anchors[print_] = source_line(finding.span.file, finding.span.line)
     snapshot.seconds = time.perf_counter() - started
     return snapshot
 

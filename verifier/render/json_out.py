@@ -87,6 +87,7 @@ def render_json(report: Report, out: TextIO) -> None:
             "infos": counts[Severity.INFO],
             "seconds": round(report.seconds, 3),
             "cached": report.cached,
+            "baselined": report.baselined,
             "not_followed": {
                 "includes": coverage.includes,
                 "packages": len(coverage.packages),

@@ -1,7 +1,7 @@
 """Human-readable output: ``file:line:col: severity CODE [slug] message`` and a code frame.
 
-A finding ``--fix`` would mend has ``[*]`` before its code (as ruff marks them), and the
-summary says how many are fixable.
+A finding ``--fix`` would mend has ``[*]`` after its code (``error LV304 [*] [slug] ...``,
+where the concise format has it too), and the summary says how many are fixable.
 
 Findings that say the same thing (one code, severity, message and argument values) at
 several places, as one per node loading a file or one per parameter block, are grouped:
@@ -125,9 +125,9 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
             continue  # printed under the first of its group
         span = finding.span
         where = f"{report.display_path(span.file)}:{span.line}:{span.column}"
-        marker = "[*] " if applicable(finding.fix, unsafe_fixes) else ""
+        marker = " [*]" if applicable(finding.fix, unsafe_fixes) else ""
         line((where, "bold"), ": ", (finding.severity.value, STYLES[finding.severity]), " ",
-             marker, (finding.code, "bold"), f" [{finding.slug}] {finding.message}")
+             (finding.code, "bold"), marker, f" [{finding.slug}] {finding.message}")
         for frame in _frame(finding):
             line(frame, style="dim" if "|" in frame[:8] else None)
         for other in same[1:]:
@@ -215,17 +215,22 @@ def _unjudged(line: Lines, report: Report) -> None:
 
 
 def summary_line(report: Report) -> str:
-    """Return the one-line summary."""
+    """Return the one-line summary.
+
+    ``No findings in 12 files (0.30s); 4 hidden by the baseline.``: what a baseline
+    drops is counted, so a clean run says how much it rests on.
+    """
     counts = {s: sum(1 for f in report.findings if f.severity is s) for s in Severity}
     files = f"{report.files} file{'s' if report.files != 1 else ''}"
     took = f"{report.seconds:.2f}s{', unchanged since the cached run' if report.cached else ''}"
+    hidden = f"; {report.baselined} hidden by the baseline" if report.baselined else ""
     if not report.findings:
-        return f"No findings in {files} ({took}){coverage_text(report)}."
+        return f"No findings in {files} ({took}){hidden}{coverage_text(report)}."
     parts = [f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity
              if counts[s]]
     total = len(report.findings)
     return (f"Found {total} finding{'s' if total != 1 else ''} ({', '.join(parts)}) in "
-            f"{files} ({took}){coverage_text(report)}.")
+            f"{files} ({took}){hidden}{coverage_text(report)}.")
 
 
 def coverage_text(report: Report) -> str:
