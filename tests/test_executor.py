@@ -231,6 +231,58 @@ def test_a_rewritten_parameter_file_is_written_as_nav2_writes_it(
     assert Path(line.split("--params-file ")[1].split()[0]).read_text() == expected
 
 
+SPAWNER = """\
+import os
+from launch import LaunchDescription
+from launch_ros.actions import Node
+from nav2_common.launch import RewrittenYaml
+
+
+def generate_launch_description():
+    controllers = RewrittenYaml(
+        source_file=os.path.join(os.path.dirname(__file__), 'controllers.yaml'),
+        param_rewrites={'wheel_separation': '0.5'}, convert_types=True)
+    return LaunchDescription([
+        Node(package='fake_robot', executable='worker', name='spawner', output='screen',
+             arguments=['spawner', '--finish-after', '0.2', '--param-file', controllers],
+             parameters=[{'use_sim_time': True}]),
+    ])
+"""
+
+
+def test_a_dry_run_says_which_parameter_files_the_run_would_write_and_where(
+        capsys: pytest.CaptureFixture[str], tmp_path: Path,
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """A spawner's --param-file and parameters: the files are the run's, in its folder."""
+    monkeypatch.setenv("AMENT_PREFIX_PATH", str(install_prefix(tmp_path)))
+    launch = tmp_path / "spawn.launch.py"
+    launch.write_text(SPAWNER)
+    (tmp_path / "controllers.yaml").write_text(
+        "diff_drive_controller:\n  ros__parameters:\n    wheel_separation: 0.4\n")
+    logs = tmp_path / "logs"
+    assert main(["run", str(launch), "--dry-run", "--log-dir", str(logs)]) == 0
+    plan = capsys.readouterr().out
+    assert not logs.exists()  # nothing written
+    folder = f"{logs}/launchverify-<start time>-<pid>"
+    # the rewritten file, as the run writes it: not its source, nor a folder of this process
+    assert f"--param-file '{folder}/params/params_1.yaml'" in plan
+    assert f"would write {folder}/params/params_1.yaml first:" in plan
+    assert "wheel_separation: 0.5" in plan
+    assert f"--params-file '{folder}/params/params_2.yaml'" in plan
+    assert f"would write {folder}/params/params_2.yaml first:" in plan
+    assert f"note: the run makes its folder {folder} when it starts" in plan
+    assert "  writes " not in plan
+    code, _, out = run(capsys, logs, launch)
+    assert code == 0
+    line = next(x for x in out.splitlines() if x.startswith("[worker-1] ready spawner"))
+    (run_folder,) = logs.glob("launchverify-*")
+    given = Path(line.split("--param-file ")[1].split()[0])
+    assert given == run_folder / "params" / "params_1.yaml"
+    assert "wheel_separation: 0.5" in given.read_text()
+    assert Path(line.split("--params-file ")[1].split()[0]).read_text().startswith(
+        "/**:\n  ros__parameters:\n    use_sim_time: true")
+
+
 def test_lifecycle_without_ros2_says_so(capsys: pytest.CaptureFixture[str],
                                         tmp_path: Path) -> None:
     launch = tmp_path / "lc.launch.py"

@@ -92,3 +92,46 @@ def test_located_keys_are_where_the_text_says(tmp_path: Path, keys: list[str], i
     for key, span in found.items():
         assert span.end_column is not None
         assert lines[span.line - 1][span.column - 1:span.end_column - 1] == f"'{key}'"
+
+
+def test_remappings_point_at_their_tuple(tmp_path: Path) -> None:
+    """Each rule of ``remappings=[...]`` is at its pair, as XML's ``<remap>`` at its tag."""
+    launch = tmp_path / "remaps.launch.py"
+    launch.write_text(
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    rules = [('scan', 'a'), ('/scan', 'b')]\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='demo_nodes_cpp', executable='listener', name='a',\n"
+        "             remappings=[('cmd_vel', 'x'),\n"
+        "                         ('cmd_vel', 'y')]),\n"
+        "        Node(package='demo_nodes_cpp', executable='listener', name='b',\n"
+        "             remappings=rules),\n"
+        "        Node(package='demo_nodes_cpp', executable='listener', name='c',\n"
+        "             remappings=list(reversed(rules))),\n"
+        "    ])\n")
+    report = run_check(CheckOptions(paths=[launch], workspace=tmp_path))
+    found = sorted((f.span.line, f.span.column, f.span.end_column,
+                    [(r.message, r.span.line) for r in f.related])
+                   for f in report.findings if f.code == "LV103")
+    assert found == [
+        (6, 29, 43, [("/scan -> /a wins", 6), (IN_CALL, 11)]),  # in the list bound to rules
+        (10, 26, 42, [("/cmd_vel -> /x wins", 9), (IN_CALL, 8)]),  # the tuple in the call
+        (13, 9, 47, [("/scan -> /b wins", 13)]),  # built at run time: the call (to 14:47)
+    ]
+
+
+def test_a_suppression_on_the_call_still_covers_a_remap_inside_it(tmp_path: Path) -> None:
+    launch = tmp_path / "remaps.launch.py"
+    launch.write_text(
+        "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([\n"
+        "        Node(package='demo_nodes_cpp', executable='listener',"
+        "  # launchverify: ignore[LV103]\n"
+        "             remappings=[('cmd_vel', 'x'), ('cmd_vel', 'y')]),\n"
+        "    ])\n")
+    report = run_check(CheckOptions(paths=[launch], workspace=tmp_path))
+    assert not [f for f in report.findings if f.code in ("LV103", "LV004")]

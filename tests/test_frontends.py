@@ -424,6 +424,47 @@ def test_refused_content_is_a_parse_problem(
     assert any(fragment in m for m in messages), messages
 
 
+SPELLINGS = [
+    ("xml", '<launch><node pkg="p" exec="e" nmae="x"/></launch>',
+     ["unexpected attribute `nmae` in `node` (ros2 launch refuses it); did you mean `name`?"]),
+    ("yaml", "launch:\n- node: {pkg: p, exec: e, nmae: x}\n",
+     ["unexpected attribute `nmae` in `node` (ros2 launch refuses it); did you mean `name`?"]),
+    ("xml", '<launch><arg name="a" defualt="1"/></launch>',
+     ["unexpected attribute `defualt` in `arg` (ros2 launch refuses it); "
+      "did you mean `default`?"]),
+    ("xml", '<launch><node pkg="p" exec="e"><parm name="a" value="1"/></node></launch>',
+     ["unexpected nested tag `parm` in `node` (ros2 launch refuses it); "
+      "did you mean `param`?"]),
+    # in YAML a list of mappings and an attribute are both keys: either may be meant
+    ("yaml", "launch:\n- node: {pkg: p, exec: e, parm: [{name: a, value: 1}]}\n",
+     ["unexpected key `parm` in `node` (ros2 launch refuses it); did you mean `param`?"]),
+    ("xml", '<launch><node pkg="p" exec="e" name="n" colour="red"/></launch>',
+     ["unexpected attribute `colour` in `node` (ros2 launch refuses it)"]),
+    # a name already written is not suggested again
+    ("xml", '<launch><node pkg="p" exec="e" name="n" nmae="m"/></launch>',
+     ["unexpected attribute `nmae` in `node` (ros2 launch refuses it)"]),
+    # `node-name` is refused with its own message, never suggested
+    ("xml", '<launch><node pkg="p" exec="e" node_name="n"/></launch>',
+     ["unexpected attribute `node_name` in `node` (ros2 launch refuses it)"]),
+    # launch stops at the attribute missing: the others are not reported, a misspelt one
+    # is named
+    ("xml", '<launch><node pkg="p" exce="e" nmae="x"/></launch>',
+     ["`node` requires the attribute `exec`; `exce` may misspell it"]),
+    ("xml", '<launch><node pkg="p" exec="e"><remap form="a" to="b"/></node></launch>',
+     ["`remap` requires the attribute `from`; `form` may misspell it"]),
+    ("yaml", "launch:\n- node: {pkg: p, exec: e, remap: [{form: a, to: b}]}\n",
+     ["`remap` requires the attribute `from`; `form` may misspell it"]),
+]
+
+
+@pytest.mark.parametrize(("fmt", "text", "expected"), SPELLINGS,
+                         ids=[f"{r[0]}-{r[1]}" for r in SPELLINGS])
+def test_an_unexpected_name_suggests_the_one_it_misspells(
+    fmt: str, text: str, expected: list[str], tmp_path: Path
+) -> None:
+    assert parse_problems(load(tmp_path, f"r.launch.{fmt}", text)) == expected
+
+
 def test_missing_file_is_a_parse_problem(tmp_path: Path) -> None:
     loaded = load_launch_file(tmp_path / "absent.launch.xml")
     assert loaded.launch is None

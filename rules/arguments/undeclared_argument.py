@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from launchverify.evaluate.values import performs_unset
-from launchverify.graph import LaunchGraph
+from launchverify.graph import ConfigRead, LaunchGraph
 from launchverify.ir.subst import Sub, walk
 from launchverify.ir.symbolic import Select, rests_on_unknowns
 from launchverify.rule import Finding, Rule, RuleContext, Severity, rename
@@ -70,7 +70,7 @@ class UndeclaredArgument(Rule):
             return
         if alone:
             yield from self.unset_as_given(graph, seen)
-        known = frozenset(graph.declared_names() | set(graph.pinned))
+        known = known_names(graph)
         declared_in = {(arg.name, arg.action.span.file) for arg in graph.arguments}
         unset = [r for r in graph.reads if not r.found and not r.has_default]
         for read in unset:
@@ -126,3 +126,27 @@ def decided_by_unknowns(value: Sub) -> bool:
     """Return whether a guard of a path-dependent value rests on unknowns (the machine)."""
     return any(rests_on_unknowns(guard) for part in walk(value) if isinstance(part, Select)
                for guard in part.guards)
+
+
+def known_names(graph: LaunchGraph) -> frozenset[str]:
+    """Return the names a read may misspell: the declared arguments and the pinned ones."""
+    return frozenset(graph.declared_names() | set(graph.pinned))
+
+
+def misspelt_reads(graph: LaunchGraph, *, with_default: bool = False
+                   ) -> dict[str, ConfigRead]:
+    """Return the names LV201's did-you-mean points at, each with its first read.
+
+    The reads of a configuration nothing sets, whose closest typo is a known name (what
+    LV201 suggests); ``with_default``: those read with a default instead, which LV201
+    does not report.
+    """
+    known = known_names(graph)
+    meant: dict[str, ConfigRead] = {}
+    for read in graph.reads:
+        if read.found or read.has_default is not with_default:
+            continue
+        close = typos(read.name, known)
+        if close:
+            meant.setdefault(close[0], read)
+    return meant

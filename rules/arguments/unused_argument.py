@@ -9,6 +9,8 @@ from pathlib import Path
 from launchverify.graph import LaunchGraph
 from launchverify.problems import ProblemKind
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+from launchverify.rules.arguments.undeclared_argument import misspelt_reads
+from launchverify.suggest import numbered_alike
 
 # Configurations launch and launch_ros read by themselves, without a $(var).
 IMPLICIT_READS = frozenset({
@@ -24,7 +26,10 @@ class UnusedArgument(Rule):
     Reports an `<arg>` (`DeclareLaunchArgument`) whose name is read nowhere: not by
     `$(var)` in the file, nor in any file it includes or that includes it, nor implicitly
     by launch (`launch-prefix`, `emulate_tty`, ...). A file that is included from several
-    places is reported only when no includer reads the argument either.
+    places is reported only when no includer reads the argument either. An argument a read
+    misspells (`$(var gu1)` for `gui`) is meant to be used: LV201 reports the read, with
+    the name it misspells, and LV202 stays quiet; a misspelt read with a default (which
+    LV201 does not report) is named here.
 
     ## Why it matters
     Users pass `name:=value` and nothing changes: the argument is a leftover, or the place
@@ -58,6 +63,7 @@ class UnusedArgument(Rule):
     picked = ("; {includer} picks this file by an argument's value and passes it: every "
               "file it may pick declares it")
     no_node = "; no ROS node starts here to take it"
+    misspelt = "; {read!r}, read with a default, may misspell it"
     every_context = True
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
@@ -66,6 +72,8 @@ class UnusedArgument(Rule):
         if any(r.problem.kind is ProblemKind.PARSE for r in graph.problems):
             return  # reads may sit in what could not be parsed
         used = set(IMPLICIT_READS) | graph.read_names() | graph.mentioned_names()
+        used |= misspelt_reads(graph).keys()  # LV201 names them: the read is what is wrong
+        defaulted = misspelt_reads(graph, with_default=True)
         reported: set[object] = set()
         for argument in graph.arguments:
             span = argument.action.span
@@ -83,6 +91,13 @@ class UnusedArgument(Rule):
                                        note=self.picked.format(includer=passed.file.name),
                                        related=(Related(passed, "passed here"),))
                 yield dataclasses.replace(finding, severity=Severity.INFO)
+                continue
+            read = defaulted.get(argument.name)
+            if other is None and read is not None and not numbered_alike(read.name,
+                                                                          argument.name):
+                yield self.finding(argument.origin, name=argument.name,
+                                   note=self.misspelt.format(read=read.name),
+                                   related=(Related(read.origin.span, "read here"),))
                 continue
             if other is None:
                 yield self.finding(argument.origin, name=argument.name, note="")

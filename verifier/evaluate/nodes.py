@@ -144,7 +144,7 @@ class NodeBuilder:
         for remap in remaps:
             reducer = self.walker.reducer.at(ctx, remap.span)
             src, dst = reducer.reduce(remap.src), reducer.reduce(remap.dst)
-            origin = ctx.origin(remap.span)
+            origin = Origin(remap.span, ctx.chain, ctx.path, call=remap.call)
             self.walker.record_name("remap", src, origin)
             self.walker.record_name("remap", dst, origin)
             out.append(RemapRecord(src, dst, origin))

@@ -166,7 +166,9 @@ class CommandBuilder:
                 program = f"<lib/{package}/{executable}: not found>"
         else:
             program = self.program(executable)
-        argv = [program, *(self.text(a, "an argument") for a in launch.arguments)]
+        # a RewrittenYaml given as an argument (a spawner's --param-file) is the file it writes
+        argv = [program, *(self.parameter_file(a) if rewritten_yaml.rewrite_of(a) is not None
+                           else self.text(a, "an argument") for a in launch.arguments)]
         if launch.ros_arguments:
             argv += ["--ros-args", *(self.text(a, "a ROS argument") for a in launch.ros_arguments)]
         argv.append("--ros-args")

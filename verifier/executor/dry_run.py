@@ -68,7 +68,7 @@ def _block(plan: Plan, within: int | None, title: str, lines: list[str],
                 entries.append("      env replaced by: " + " ".join(
                     f"{k}={v}" for k, v in command.replace_env.items()))
             for path, text in command.files.items():
-                entries.append(f"      writes {path}:")
+                entries.append(f"      would write {path} first:")
                 entries.extend(f"        {line}" for line in text.splitlines())
             extras = [f"output={process.output}"]
             if process.respawn:

@@ -92,6 +92,10 @@ def run(options: RunOptions, out: TextIO, err: TextIO) -> tuple[int, Report]:
     return start.start(out, err), report
 
 
+DRY_RUN_STAMP, DRY_RUN_PID = "<start time>", "<pid>"  # the run folder's parts a dry run
+# cannot know
+
+
 class Start(Protocol):
     """What a run will start, decided in full; ``start`` is the only way to a process."""
 
@@ -111,8 +115,11 @@ def prepare(options: RunOptions, report: Report) -> Start:
     workspace = options.check.workspace or _workspace_of(report)
     if options.engine == "ros2":
         return Ros2Launch(_ros2_argv(options), root, workspace, options.check.paths)
-    stamp = time.strftime("%Y-%m-%d-%H-%M-%S")
-    run_dir = (options.log_dir or log_root()) / f"launchverify-{stamp}-{os.getpid()}"
+    # a dry run names the folder the run would make by its pattern: its time and process
+    # id are the run's, not known before it starts (and nothing is made now)
+    stamp, pid = ((DRY_RUN_STAMP, DRY_RUN_PID) if options.dry_run
+                  else (time.strftime("%Y-%m-%d-%H-%M-%S"), str(os.getpid())))
+    run_dir = (options.log_dir or log_root()) / f"launchverify-{stamp}-{pid}"
     try:
         plan = build_plan(root, install_prefixes(workspace), run_dir / "params",
                           strict=not options.dry_run)
@@ -131,7 +138,12 @@ class Embedded:
     paths: list[Path]
 
     def describe(self) -> list[str]:
-        return describe(self.plan, _locate(self.paths, self.workspace))
+        lines = describe(self.plan, _locate(self.paths, self.workspace))
+        if any(process.command.files for process in self.plan.processes.values()):
+            lines.append(f"note: the run makes its folder {self.run_dir} when it starts "
+                         f"({DRY_RUN_STAMP} and {DRY_RUN_PID} its own) and writes each "
+                         "parameter file there before the process that reads it")
+        return lines
 
     def start(self, out: TextIO, err: TextIO) -> int:
         self.run_dir.mkdir(parents=True, exist_ok=True)

@@ -38,9 +38,15 @@ class Entity:
     nested: dict[str, list[Entity]] = field(default_factory=dict)
     child_list: list[Entity] | None = None
     read: set[str] = field(default_factory=set)
+    # every name a handler asked for, written or not: what the tag takes, for the spelling
+    # an unread attribute or nested tag may miss
+    asked: set[str] = field(default_factory=set)
+    asked_nested: set[str] = field(default_factory=set)
+    missing: bool = False  # a required attribute is not written (launch stops there)
 
     def get(self, name: str) -> Attr | None:
         """Return an attribute and mark it read."""
+        self.asked.add(name)
         attr = self.attrs.get(name)
         if attr is not None:
             self.read.add(name)
@@ -48,6 +54,7 @@ class Entity:
 
     def get_nested(self, name: str) -> list[Entity] | None:
         """Return the nested entities written under ``name`` and mark them read."""
+        self.asked_nested.add(name)
         items = self.nested.get(name)
         if items is not None:
             self.read.add(name)
@@ -67,3 +74,13 @@ class Entity:
     def unread_nested(self) -> list[str]:
         """Return nested tags never read."""
         return [n for n in self.nested if n not in self.read]
+
+    def unwritten(self, *, nested: bool) -> set[str]:
+        """Return the attribute (or nested tag) names asked for but not written.
+
+        In YAML both are keys of one mapping, so either kind may misspell the other.
+        """
+        names = self.asked_nested if nested else self.asked
+        if self.format == "yaml":
+            names = self.asked | self.asked_nested
+        return names - self.attrs.keys() - self.nested.keys()

@@ -24,6 +24,7 @@ from launchverify.ir import subst as s
 from launchverify.ir.conditions import Condition, IfCondition, UnlessCondition
 from launchverify.problems import ProblemSink
 from launchverify.span import Span
+from launchverify.suggest import edit_distance, typos
 
 
 class MissingAttribute(Exception):
@@ -185,10 +186,16 @@ class EntityReader:
         return {name: attr.span for name, attr in entity.attrs.items()}
 
     def finish(self, entity: Entity) -> None:
-        """Report attributes and nested tags that no handler read, as launch does."""
+        """Report attributes and nested tags that no handler read, as launch does.
+
+        Not after a required attribute was missing: launch stops there.
+        """
+        if entity.missing:
+            return
         for name in entity.unread_attributes():
             self.sink.parse(
-                f"unexpected attribute `{name}` in `{entity.tag}` (ros2 launch refuses it)",
+                f"unexpected attribute `{name}` in `{entity.tag}` (ros2 launch refuses it)"
+                f"{_spelling(name, entity.unwritten(nested=False))}",
                 entity.attrs[name].span,
             )
         for name in entity.unread_nested():
@@ -197,7 +204,8 @@ class EntityReader:
             first = entity.nested[name][0]
             word = "nested tag" if entity.format == "xml" else "key"
             self.sink.parse(
-                f"unexpected {word} `{name}` in `{entity.tag}` (ros2 launch refuses it)",
+                f"unexpected {word} `{name}` in `{entity.tag}` (ros2 launch refuses it)"
+                f"{_spelling(name, entity.unwritten(nested=True))}",
                 first.span,
             )
         if entity.child_list and "children" not in entity.read and entity.format == "yaml":
@@ -208,7 +216,14 @@ class EntityReader:
     def _attr(self, entity: Entity, name: str, required: bool) -> Attr | None:
         attr = entity.get(name)
         if attr is None and required:
-            self.sink.parse(f"`{entity.tag}` requires the attribute `{name}`", entity.span)
+            # launch stops at the first attribute missing: the unread ones go unreported,
+            # and one that misspells it is named here
+            entity.missing = True
+            written = [other for other in entity.attrs
+                       if other not in entity.read and misspelt(other, {name})]
+            hint = f"; `{written[0]}` may misspell it" if written else ""
+            self.sink.parse(f"`{entity.tag}` requires the attribute `{name}`{hint}",
+                            entity.span)
             raise MissingAttribute(name)
         return attr
 
@@ -226,6 +241,29 @@ class EntityReader:
             f"got {got} {attr.value!r}{hint}",
             attr.span,
         )
+
+
+def misspelt(name: str, known: set[str]) -> list[str]:
+    """Return the names of a tag that ``name`` may misspell, likeliest first.
+
+    ``typos``' candidates, and any one edit away: a tag takes a handful of names, so a
+    swap of neighbours in a short one (``nmae``), which ``typos`` leaves out, is meant too.
+
+    Examples:
+        >>> misspelt("nmae", {"name", "namespace", "exec"}), misspelt("colour", {"name"})
+        (['name'], [])
+    """
+    found = typos(name, known)
+    found += sorted(c for c in known - set(found) if edit_distance(name, c, 1) <= 1)
+    return found
+
+
+def _spelling(name: str, known: set[str]) -> str:
+    """Return ``"; did you mean `x`?"`` for the names ``name`` may misspell, or nothing."""
+    found = misspelt(name, known)
+    if not found:
+        return ""
+    return f"; did you mean {' or '.join(f'`{candidate}`' for candidate in found[:3])}?"
 
 
 def _locator(written: Span) -> Callable[[int, int], Span]:

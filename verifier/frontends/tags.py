@@ -262,7 +262,8 @@ class TagParser(EntityReader):
 
     def node_fields(self, entity: Entity) -> NodeFields:
         """Read everything ``<node>`` and its variants share."""
-        if entity.get("node-name") is not None:
+        if "node-name" in entity.attrs:  # refused here, so no spelling to suggest
+            entity.read.add("node-name")
             self.sink.parse(
                 "`node-name` is read by the parser but Node() has no such argument; use `name`",
                 entity.attrs["node-name"].span,

@@ -317,11 +317,16 @@ ParamEntry = ParamDict | ParamFile
 
 @dataclass(frozen=True, eq=False, kw_only=True)
 class Remap:
-    """One ``<remap from to>`` rule of a node."""
+    """One ``<remap from to>`` rule of a node.
+
+    ``call``: the action the rule is written inside when ``span`` is a piece of it (a
+    Python tuple in ``Node(remappings=[...])``); findings show it as related.
+    """
 
     src: Sub
     dst: Sub
     span: Span
+    call: Span | None = None
 
 
 # ----------------------------------------------------------------------------- processes

@@ -14,11 +14,11 @@ def generate_launch_description():
         GroupAction([
             PushRosNamespace('9lives'),  # expect: LV102
         ]),
-        # remap rules are plain tuples: the finding points at the Node( line
-        Node(  # expect: LV102
+        # a remap rule's finding points at its tuple, as XML's at its <remap>
+        Node(  # expect-not: LV102
             package='demo_nodes_cpp', executable='listener', name='listener',
             remappings=[
-                ('chatter', '/robot/2chatter'),
+                ('chatter', '/robot/2chatter'),  # expect: LV102
                 ('~/status', 'status_out'),  # fine: private name
                 ('{node}/in', '/out'),
             ],

@@ -11,7 +11,7 @@ def generate_launch_description():
     return LaunchDescription([
         DeclareLaunchArgument('mode', default_value='mapping', choices=['mapping', 'localization']),
         DeclareLaunchArgument('rate', default_value='10'),
-        DeclareLaunchArgument('bag_name', default_value='run'),  # expect: LV202
+        DeclareLaunchArgument('bag_name', default_value='run'),  # expect-not: LV202 (read as bag_nme)
         Node(package='slam_toolbox', executable='sync_slam_toolbox_node', name='slam',
              condition=IfCondition(PythonExpression(["'", mode, "' == 'mapping'"]))),
         Node(package='slam_toolbox', executable='localization_slam_toolbox_node',  # expect-not: LV101

@@ -306,14 +306,24 @@ class PythonConverter:
         return a.ParamValue(value=text)
 
     def remaps(self, value: Any, span: Span) -> tuple[a.Remap, ...]:
+        """Return the rules of ``remappings=``, each at its own pair where the list is written.
+
+        ``remappings=[('/scan', 'scan_raw')]`` puts the rule at the tuple, as XML's
+        ``<remap>`` has its own line; a list built at run time leaves them at the call.
+        """
+        pairs = list(value or [])
+        written = [where for where, _ in self._locator.keyword_items(span, "remappings")]
+        if len(written) != len(pairs):
+            written = [span] * len(pairs)
         out = []
-        for pair in value or []:
+        for pair, where in zip(pairs, written, strict=True):
             try:
                 src, dst = pair
             except (TypeError, ValueError):
-                self._unmodeled(f"remapping {pair!r} is not a (from, to) pair", span)
+                self._unmodeled(f"remapping {pair!r} is not a (from, to) pair", where)
                 continue
-            out.append(a.Remap(src=self.sub(src), dst=self.sub(dst), span=span))
+            out.append(a.Remap(src=self.sub(src), dst=self.sub(dst), span=where,
+                               call=None if where == span else span))
         return tuple(out)
 
     def unmodeled(self, what: str, span: Span) -> None:
