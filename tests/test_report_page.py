@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 
 import pytest
@@ -42,3 +43,81 @@ def test_a_long_name_keeps_both_ends() -> None:
     assert components != interfaces and len(components) <= 25
     assert components.endswith("components") and interfaces.endswith("interfaces")
     assert _fit("/scan", 150, 6.0) == "/scan"
+
+
+# ------------------------------------------------------------------ one name per node
+
+SERVER = """#include "rclcpp/rclcpp.hpp"
+#include "std_msgs/msg/string.hpp"
+
+class Server : public rclcpp::Node
+{
+public:
+  Server()
+  : Node("add_two_ints_server")
+  {
+    pub_ = create_publisher<std_msgs::msg::String>("status", 10);
+  }
+
+private:
+  rclcpp::Publisher<std_msgs::msg::String>::SharedPtr pub_;
+};
+
+int main(int argc, char ** argv)
+{
+  rclcpp::init(argc, argv);
+  rclcpp::spin(std::make_shared<Server>());
+  return 0;
+}
+"""
+
+
+def package(folder: Path, name: str, executables: dict[str, str] | None = None) -> Path:
+    """Write a package: its manifest, and C++ sources built into ``executables``."""
+    folder.mkdir(parents=True)
+    (folder / "package.xml").write_text(
+        f'<?xml version="1.0"?>\n<package format="3"><name>{name}</name>'
+        "<version>0.1.0</version><description>a fixture</description>"
+        '<maintainer email="dev@example.com">dev</maintainer><license>MIT</license>'
+        "<buildtool_depend>ament_cmake</buildtool_depend><depend>rclcpp</depend>"
+        "</package>\n")
+    if executables:
+        (folder / "src").mkdir()
+        lines = [f"cmake_minimum_required(VERSION 3.8)\nproject({name})"]
+        for executable, source in executables.items():
+            (folder / "src" / f"{executable}.cpp").write_text(source)
+            lines.append(f"add_executable({executable} src/{executable}.cpp)\n"
+                         f"install(TARGETS {executable} DESTINATION lib/${{PROJECT_NAME}})")
+        (folder / "CMakeLists.txt").write_text("\n".join([*lines, "ament_package()"]) + "\n")
+    return folder
+
+
+def report_of(tree: Path, out: Path) -> str:
+    links.project_urls.cache_clear()
+    main(["report", str(tree), "--workspace", str(tree), "-o", str(out)])
+    return out.read_text(encoding="utf-8")
+
+
+def test_a_node_has_one_name_across_the_page(tmp_path: Path) -> None:
+    demo = package(tmp_path / "ws" / "src" / "svc_demo", "svc_demo", {"server": SERVER})
+    (demo / "launch").mkdir()
+    (demo / "launch" / "svc.launch.xml").write_text(
+        '<launch>\n  <node pkg="svc_demo" exec="server"/>\n'
+        '  <node pkg="nowhere_pkg" exec="mystery"/>\n</launch>\n')
+    page = report_of(tmp_path / "ws", tmp_path / "report.html")
+    picture = page[page.index('<svg class="system"'):]
+    picture = picture[:picture.index("</svg>")]
+    flow = page[page.index('<svg class="flow-svg"'):]
+    flow = flow[:flow.index("</svg>")]
+    # the launch gives no name, the code does: the picture, the graph and the table agree
+    assert 'data-fqn="/add_two_ints_server"' in picture
+    assert 'data-fqn="/add_two_ints_server"' in flow
+    cell = re.search(r"<td><code>/add_two_ints_server</code>.*?</td>", page, re.S)
+    assert cell is not None and cell.group(0).endswith(
+        "<small>named by its sources (the launch gives no name)</small></td>")
+    assert "unnamed server" not in page
+    # nothing knows the other's name: one spelling, wherever it is named
+    unnamed = 'data-fqn="&lt;unnamed mystery&gt;"><title>&lt;unnamed mystery&gt;\n'
+    assert unnamed in picture and unnamed in flow
+    assert "<td><code>&lt;unnamed mystery&gt;</code>" in page
+

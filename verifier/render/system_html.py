@@ -13,7 +13,12 @@ from typing import TYPE_CHECKING, Any
 from launchverify.engine import Report
 from launchverify.graph import IncludeRecord, LaunchGraph
 from launchverify.render.html_text import clip, esc, short_place, where
-from launchverify.render.system_model import SystemModel, SystemNode, build_model
+from launchverify.render.system_model import (
+    NAMED_BY_CODE,
+    SystemModel,
+    SystemNode,
+    build_model,
+)
 from launchverify.render.system_svg import render_system_svg
 from launchverify.span import Span
 
@@ -55,7 +60,13 @@ def render_system_section(report: Report, graph: LaunchGraph, number: int,
 
     With ``interfaces`` (where node interfaces come from), the computation graph too.
     """
-    model = build_model(report, graph, anchors)
+    composition = None
+    if interfaces is not None:
+        from launchverify.render.flow_html import compose_system
+
+        composition = compose_system(graph, interfaces)
+    model = build_model(report, graph, anchors,
+                        composition.names() if composition is not None else None)
     anchor = f"sys{number}-node"
     root_name = report.display_path(graph.root)
     parts = [f'<section class="system-section" id="system-{number}">'
@@ -66,10 +77,10 @@ def render_system_section(report: Report, graph: LaunchGraph, number: int,
                      "file or package, or a construct launchverify does not model): the "
                      "picture may lack nodes.</p>")
     parts.append(f'<div class="picture">{render_system_svg(model, anchor)}</div>')
-    if interfaces is not None:
+    if composition is not None:
         from launchverify.render.flow_html import computation_graph
 
-        parts.append(computation_graph(model, graph, interfaces, number, anchor))
+        parts.append(computation_graph(model, composition, number, anchor))
     parts.append(_lifecycle(model.lifecycle))
     parts.append(_node_table(model, anchor))
     parts.append(render_include_tree(report, graph))
@@ -162,6 +173,8 @@ def _node_row(node: SystemNode, anchor: str) -> str:
     marks = "".join(f' <a class="sev sev-{m.severity.value}" href="#{esc(m.anchor)}">'
                     f"{esc(m.code)}</a>" for m in node.marks)
     condition = f"<br><small>when {esc(node.condition)}</small>" if node.condition else ""
+    if node.named_by_code:
+        condition = f"<br><small>{NAMED_BY_CODE}</small>{condition}"
     return (f'<tr id="{esc(anchor)}-{node.index}"><td><code>{esc(node.fqn)}</code>{marks}'
             f"{condition}</td><td>{kind}</td><td>{esc(node.executable)}</td><td>{state}</td>"
             f'<td><ul class="plain">{remaps}</ul></td><td><ul class="plain">{params}</ul></td>'

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from launchverify.render.html_text import clip, esc
-from launchverify.render.system_model import Namespace, SystemModel, SystemNode
+from launchverify.render.system_model import NAMED_BY_CODE, Namespace, SystemModel, SystemNode
 
 NODE_H = 19  # height of a node box
 GAP = 3  # between node boxes
@@ -330,6 +330,8 @@ def _draw_processes(canvas: Canvas, processes: list[dict[str, Any]], box: Placed
 def tooltip(node: SystemNode) -> str:
     """Return the plain text shown when the pointer rests on a node (escaped by callers)."""
     lines = [node.fqn, f"{node.executable or '?'}  ({node.kind.replace('_', ' ')})"]
+    if node.named_by_code:
+        lines.append(NAMED_BY_CODE)
     if node.condition:
         lines.append(f"when {node.condition}")
     if node.manager is not None:
