@@ -10,6 +10,7 @@ import pytest
 from launchverify.cli import main
 from launchverify.render import links
 from launchverify.render.flow_svg import _fit
+from launchverify.render.html_text import distinct_tails
 
 FLEET = Path(__file__).resolve().parent.parent / "corpus" / "realistic" / "fleet_report"
 
@@ -120,4 +121,38 @@ def test_a_node_has_one_name_across_the_page(tmp_path: Path) -> None:
     unnamed = 'data-fqn="&lt;unnamed mystery&gt;"><title>&lt;unnamed mystery&gt;\n'
     assert unnamed in picture and unnamed in flow
     assert "<td><code>&lt;unnamed mystery&gt;</code>" in page
+
+
+# ------------------------------------------------------------------ the index's places
+
+
+def test_the_index_tells_files_of_one_name_apart(tmp_path: Path) -> None:
+    duplicate = ('<launch>\n  <node pkg="demo_nodes_cpp" exec="talker" name="talker"/>\n'
+                 '  <node pkg="demo_nodes_py" exec="talker" name="talker"/>\n</launch>\n')
+    for name in ("example_1", "example_5"):
+        test = package(tmp_path / "ws" / "src" / name, name) / "test"
+        test.mkdir()
+        (test / "test_joint_trajectory_controller.launch.xml").write_text(duplicate)
+    page = report_of(tmp_path / "ws", tmp_path / "report.html")
+    index = page[page.index('<section id="by-rule">'):]
+    index = index[:index.index("</section>")]
+    places = re.findall(r'<td class="where"><a href="#finding-\d+" title="([^"]*)">'
+                        r'<span class="loc">([^<]*)</span>', index)
+    assert len(places) == 2
+    shown = {text for _, text in places}
+    assert shown == {"\u2026/example_1/test/test_joint_trajectory_controller.launch.xml:3",
+                     "\u2026/example_5/test/test_joint_trajectory_controller.launch.xml:3"}
+    for full, text in places:  # the whole path on hover
+        assert full.endswith(text.removeprefix("\u2026/")) and "src/" in full
+
+
+def test_distinct_tails() -> None:
+    tails = distinct_tails(["src/a/launch/robot.launch.xml", "src/b/launch/robot.launch.xml",
+                            "src/a/launch/only.launch.xml", "robot.launch.xml",
+                            "src\\c\\sim\\robot.launch.xml"])
+    assert tails == {"src/a/launch/robot.launch.xml": "\u2026/a/launch/robot.launch.xml",
+                     "src/b/launch/robot.launch.xml": "\u2026/b/launch/robot.launch.xml",
+                     "src/a/launch/only.launch.xml": "only.launch.xml",
+                     "robot.launch.xml": "robot.launch.xml",  # all of the others' ending
+                     "src\\c\\sim\\robot.launch.xml": "\u2026/sim/robot.launch.xml"}
 
