@@ -180,6 +180,10 @@ def test_filter_narrows_the_computation_graph(chromium: str, pages: dict[str, Pa
     assert '<svg class="flow-svg" id="flow1-svg"' in dom  # nothing filtered
     box = re.search(r'<input type="search" class="flow-filter"[^>]*>', dom)
     assert box is not None and "hidden" not in box.group(0)  # the script shows it
+    suggestions = re.search(r'<datalist id="flow1-names">(.*?)</datalist>', dom, re.S)
+    assert suggestions is not None  # and lists every node's name, once, in order
+    names = re.findall(r'<option value="([^"]*)">', suggestions.group(1))
+    assert len(names) == 201 and names == sorted(set(names))
     page = tmp_path / "filtered.html"
     page.write_text(source.replace('class="flow-filter" ',
                                    'class="flow-filter" value="/robot3/localizer" '),

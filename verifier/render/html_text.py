@@ -26,6 +26,12 @@ def esc(value: object) -> str:
     return html.escape(inert_block(str(value)), quote=True)
 
 
+def num(value: float) -> str:
+    """Return a coordinate for SVG: one decimal, none when it is whole (``12``, ``12.5``)."""
+    text = f"{value:.1f}"
+    return text[:-2] if text.endswith(".0") else text
+
+
 def clip(text: str, limit: int) -> str:
     """Return ``text`` cut to ``limit`` characters, marked with an ellipsis when cut."""
     return text if len(text) <= limit else text[: max(limit - 1, 0)] + "\u2026"
