@@ -10,6 +10,7 @@ from __future__ import annotations
 from launchverify.graph import LaunchGraph
 from launchverify.render.flow_model import Composition, FlowGraph, assemble, compose_view
 from launchverify.render.flow_svg import render_flow
+from launchverify.render.html_shared import Shared
 from launchverify.render.system_model import SystemModel
 from launchverify.topology.compose import InterfaceSource
 
@@ -27,8 +28,11 @@ def compose_system(graph: LaunchGraph, interfaces: InterfaceSource) -> Compositi
 
 
 def computation_graph(model: SystemModel, composition: Composition, number: int,
-                      anchor: str) -> str:
-    """Return the computation graph of system ``number`` (node links: ``#{anchor}-N``)."""
+                      anchor: str, shared: Shared | None = None) -> str:
+    """Return the computation graph of system ``number`` (node links: ``#{anchor}-N``).
+
+    ``shared``: what earlier systems drew; a graph one of them drew is linked to.
+    """
     if composition.reason is not None:
         flow = FlowGraph({}, {}, [], reason=composition.reason)
     else:
@@ -36,7 +40,7 @@ def computation_graph(model: SystemModel, composition: Composition, number: int,
             flow = assemble(model.nodes, composition.nodes)
         except Exception as error:  # likewise
             flow = FlowGraph({}, {}, [], reason=_failed(error))
-    return render_flow(flow, number, anchor)
+    return render_flow(flow, number, anchor, shared)
 
 
 def _failed(error: Exception) -> str:

@@ -12,6 +12,7 @@ from __future__ import annotations
 from launchverify.render.flow_layout import CHAR_W as NODE_CHAR_W
 from launchverify.render.flow_layout import TOPIC_CHAR_W, Box, FlowLayout, label_of, layout
 from launchverify.render.flow_model import FlowEdge, FlowGraph, FlowNode, FlowTopic
+from launchverify.render.html_shared import First, Shared
 from launchverify.render.html_text import clip, esc, num
 
 CONDITION_LIMIT = 400  # characters of a path condition in a tooltip
@@ -44,10 +45,12 @@ FLOW_LEGEND = (
 )
 
 
-def render_flow(flow: FlowGraph, number: int, anchor: str) -> str:
+def render_flow(flow: FlowGraph, number: int, anchor: str, shared: Shared | None = None,
+                ) -> str:
     """Return the computation graph section of system ``number``.
 
-    Node boxes link to ``#{anchor}-{index}``, the node's row in the table below.
+    Node boxes link to ``#{anchor}-{index}``, the node's row in the table below. A graph
+    an earlier system drew (``shared``) is not drawn again: the section links to it.
     """
     summary = f"Computation graph: {_summary(flow)}"
     if flow.reason is not None:
@@ -56,6 +59,15 @@ def render_flow(flow: FlowGraph, number: int, anchor: str) -> str:
     if not flow.nodes:
         return ""
     ident = f"flow{number}"
+    if shared is not None:
+        # the picture is drawn from these alone (and the anchors): equal data, equal picture
+        key = "flow:" + repr((flow.nodes, flow.topics, flow.edges, flow.containers))
+        seen = shared.earlier(key, First(f"{ident}-svg", f"{ident}-svg", "", number))
+        if seen is not None:
+            return (f'<details class="flow-section" open><summary>{summary}</summary>'
+                    f'<p class="same">The same computation graph as <a href="#{seen.href}">'
+                    f"system {seen.system}'s</a> (its boxes lead to the nodes there, the "
+                    "same nodes as here).</p></details>")
     placed = layout(flow)
     has_tf = any(e.tf for e in flow.edges)
     tools = (f'<div class="flow-tools"><input type="search" class="flow-filter" '
