@@ -118,6 +118,33 @@ def test_link_into_node_table_opens_it(chromium: str, pages: dict[str, Path],
     assert '<details class="nodes" open="">' in dom
 
 
+def _cells(table: str, row: str) -> list[str]:
+    """Return the cells of a node's row but the first (its name), without their ids."""
+    found = re.search(rf'<tr id="{row}">(.*?)</tr>', table, re.S)
+    assert found is not None, row
+    cells = re.findall(r"<td\b[^>]*>.*?</td>", found.group(1), re.S)
+    return [re.sub(r' id="[^"]*"', "", cell) for cell in cells[1:]]
+
+
+def test_repeated_rows_are_filled_in(chromium: str, pages: dict[str, Path],
+                                     tmp_path: Path) -> None:
+    # six robots start the same nodes: a row seen before is written as a reference to
+    # it, which the script fills with a copy when the table opens
+    source = pages["fleet"].read_text(encoding="utf-8")
+    references = re.findall(r'<tr id="(sys1-node-\d+)"><td>(?:(?!</tr>).)*?'
+                            r'<td colspan="6" class="same" data-same="([^"]+)">', source, re.S)
+    assert len(references) > 50
+    dom = dump_dom(chromium, tmp_path / "profile", pages["fleet"].as_uri() + "#sys1-node-40")
+    table = dom[dom.index('<details class="nodes" open="">'):]
+    table = table[:table.index("</details>")]
+    assert 'class="same"' not in table
+    for row, first in references:
+        cells = _cells(table, row)
+        assert len(cells) == 6 and cells == _cells(table, first)
+    # as many as when every row was written whole
+    assert table.count("max_particles</code> = <code>2000") == 4
+
+
 def test_policy_lets_only_the_report_script_run(chromium: str, pages: dict[str, Path],
                                                 tmp_path: Path) -> None:
     # a script slipped into the page (as if escaping had failed) is refused
@@ -180,6 +207,10 @@ def test_filter_narrows_the_computation_graph(chromium: str, pages: dict[str, Pa
     assert '<svg class="flow-svg" id="flow1-svg"' in dom  # nothing filtered
     box = re.search(r'<input type="search" class="flow-filter"[^>]*>', dom)
     assert box is not None and "hidden" not in box.group(0)  # the script shows it
+    suggestions = re.search(r'<datalist id="flow1-names">(.*?)</datalist>', dom, re.S)
+    assert suggestions is not None  # and lists every node's name, once, in order
+    names = re.findall(r'<option value="([^"]*)">', suggestions.group(1))
+    assert len(names) == 201 and names == sorted(set(names))
     page = tmp_path / "filtered.html"
     page.write_text(source.replace('class="flow-filter" ',
                                    'class="flow-filter" value="/robot3/localizer" '),

@@ -8,18 +8,40 @@ this part of the page only (said in its place), never the report.
 from __future__ import annotations
 
 from launchverify.graph import LaunchGraph
-from launchverify.render.flow_model import FlowGraph, build_flow
+from launchverify.render.flow_model import Composition, FlowGraph, assemble, compose_view
 from launchverify.render.flow_svg import render_flow
+from launchverify.render.html_shared import Shared
 from launchverify.render.system_model import SystemModel
 from launchverify.topology.compose import InterfaceSource
 
 
-def computation_graph(model: SystemModel, graph: LaunchGraph, interfaces: InterfaceSource,
-                      number: int, anchor: str) -> str:
-    """Return the computation graph of system ``number`` (node links: ``#{anchor}-N``)."""
+def compose_system(graph: LaunchGraph, interfaces: InterfaceSource) -> Composition:
+    """Return the nodes of one root composed with their sources (never raises).
+
+    Composed once per section: the picture takes the names the sources give unnamed
+    nodes from it, the computation graph everything else.
+    """
     try:
-        flow = build_flow(model, graph, interfaces)
+        return compose_view(graph, interfaces)
     except Exception as error:  # a bug of ours must not cost the whole report
-        flow = FlowGraph({}, {}, [], reason=f"composing the nodes with their sources "
-                         f"failed ({type(error).__name__}: {error})")
-    return render_flow(flow, number, anchor)
+        return Composition([], _failed(error))
+
+
+def computation_graph(model: SystemModel, composition: Composition, number: int,
+                      anchor: str, shared: Shared | None = None) -> str:
+    """Return the computation graph of system ``number`` (node links: ``#{anchor}-N``).
+
+    ``shared``: what earlier systems drew; a graph one of them drew is linked to.
+    """
+    if composition.reason is not None:
+        flow = FlowGraph({}, {}, [], reason=composition.reason)
+    else:
+        try:
+            flow = assemble(model.nodes, composition.nodes)
+        except Exception as error:  # likewise
+            flow = FlowGraph({}, {}, [], reason=_failed(error))
+    return render_flow(flow, number, anchor, shared)
+
+
+def _failed(error: Exception) -> str:
+    return f"composing the nodes with their sources failed ({type(error).__name__}: {error})"

@@ -149,13 +149,42 @@ def parsers_missing() -> str | None:
     return None
 
 
-def build_flow(model: SystemModel, graph: LaunchGraph, source: InterfaceSource) -> FlowGraph:
-    """Return the computation graph of one root: its nodes composed with their sources."""
+@dataclass
+class Composition:
+    """A root's nodes composed with their sources, or why they could not be."""
+
+    nodes: list[NodeEndpoints]
+    reason: str | None = None
+
+    def names(self) -> dict[int, str]:
+        """Return the names the sources give nodes, by the id of their launch record.
+
+        A launch that does not name a node leaves it the name its code (or a shipped
+        model) gives: the one the computation graph shows.
+        """
+        return {id(c.node): c.fqn for c in self.nodes if c.spawner is None and c.fqn}
+
+
+def compose_view(graph: LaunchGraph, source: InterfaceSource) -> Composition:
+    """Return the nodes of one root (under the given arguments) with their sources."""
     missing = parsers_missing()
     if missing is not None:
-        return FlowGraph({}, {}, [], reason=missing)
-    composed = Composer(graph, source, symbolic=False).compose()
-    return assemble(model.nodes, composed)
+        return Composition([], missing)
+    return Composition(Composer(graph, source, symbolic=False).compose())
+
+
+def build_flow(model: SystemModel, graph: LaunchGraph, source: InterfaceSource,
+               composition: Composition | None = None) -> FlowGraph:
+    """Return the computation graph of one root: its nodes composed with their sources.
+
+    ``composition``: the composed nodes when already at hand (the picture named its
+    nodes from them).
+    """
+    if composition is None:
+        composition = compose_view(graph, source)
+    if composition.reason is not None:
+        return FlowGraph({}, {}, [], reason=composition.reason)
+    return assemble(model.nodes, composition.nodes)
 
 
 def assemble(system: Sequence[SystemNode], composed: Sequence[NodeEndpoints]) -> FlowGraph:
@@ -192,7 +221,7 @@ def assemble(system: Sequence[SystemNode], composed: Sequence[NodeEndpoints]) ->
         for connection in grouped[section]:
             _add(topics, edges, connection, keys, nodes)
     namespaces = {n.namespace for n in nodes.values()}
-    unnamed = _unnamed(c for c in composed if id(c.node) in keys)
+    unnamed = _unnamed([c for c in composed if id(c.node) in keys], keys, nodes)
     for topic in topics.values():
         topic.sources = sorted(set(topic.sources), key=natural)
         topic.sinks = sorted(set(topic.sinks), key=natural)
@@ -255,15 +284,17 @@ def _node(entry: SystemNode, endpoints: NodeEndpoints) -> FlowNode:
     return node
 
 
-def _unnamed(composed: Iterable[NodeEndpoints]) -> list[tuple[str, str, str | None, str]]:
+def _unnamed(composed: Iterable[NodeEndpoints], keys: dict[int, str],
+             nodes: dict[str, FlowNode]) -> list[tuple[str, str, str | None, str]]:
     """Return the endpoints whose name is not known: section, role, type, node.
 
+    The node is named as its box is (``<unnamed talker>`` when nothing knows its name).
     A controller whose interface is not known (its type is not) may be on any name
     (``*``): the picture never says "nobody publishes" on the strength of it.
     """
     found: list[tuple[str, str, str | None, str]] = []
     for node in composed:
-        who = node.fqn or node.node.executable_label()
+        who = nodes[keys[id(node.node)]].fqn
         if node.spawner is not None and node.interface is None:
             found.append(("*", "*", None, who))
         found += [(*ROLES[end.endpoint.kind], end.endpoint.type, who)

@@ -12,7 +12,8 @@ from __future__ import annotations
 from launchverify.render.flow_layout import CHAR_W as NODE_CHAR_W
 from launchverify.render.flow_layout import TOPIC_CHAR_W, Box, FlowLayout, label_of, layout
 from launchverify.render.flow_model import FlowEdge, FlowGraph, FlowNode, FlowTopic
-from launchverify.render.html_text import clip, esc
+from launchverify.render.html_shared import First, Shared
+from launchverify.render.html_text import clip, esc, num
 
 CONDITION_LIMIT = 400  # characters of a path condition in a tooltip
 NAMES_LIMIT = 10  # names listed per role in a tooltip
@@ -44,10 +45,12 @@ FLOW_LEGEND = (
 )
 
 
-def render_flow(flow: FlowGraph, number: int, anchor: str) -> str:
+def render_flow(flow: FlowGraph, number: int, anchor: str, shared: Shared | None = None,
+                ) -> str:
     """Return the computation graph section of system ``number``.
 
-    Node boxes link to ``#{anchor}-{index}``, the node's row in the table below.
+    Node boxes link to ``#{anchor}-{index}``, the node's row in the table below. A graph
+    an earlier system drew (``shared``) is not drawn again: the section links to it.
     """
     summary = f"Computation graph: {_summary(flow)}"
     if flow.reason is not None:
@@ -55,8 +58,17 @@ def render_flow(flow: FlowGraph, number: int, anchor: str) -> str:
                 f'<p class="note">Not drawn: {esc(flow.reason)}.</p></details>')
     if not flow.nodes:
         return ""
-    placed = layout(flow)
     ident = f"flow{number}"
+    if shared is not None:
+        # the picture is drawn from these alone (and the anchors): equal data, equal picture
+        key = "flow:" + repr((flow.nodes, flow.topics, flow.edges, flow.containers))
+        seen = shared.earlier(key, First(f"{ident}-svg", f"{ident}-svg", "", number))
+        if seen is not None:
+            return (f'<details class="flow-section" open><summary>{summary}</summary>'
+                    f'<p class="same">The same computation graph as <a href="#{seen.href}">'
+                    f"system {seen.system}'s</a> (its boxes lead to the nodes there, the "
+                    "same nodes as here).</p></details>")
+    placed = layout(flow)
     has_tf = any(e.tf for e in flow.edges)
     tools = (f'<div class="flow-tools"><input type="search" class="flow-filter" '
              f'data-flow="{ident}-svg" list="{ident}-names" '
@@ -66,11 +78,10 @@ def render_flow(flow: FlowGraph, number: int, anchor: str) -> str:
     if has_tf:  # a checkbox before the picture: CSS shows the tf arrows, no script needed
         tools += (f'<input type="checkbox" class="tf-toggle" id="{ident}-tf">'
                   f'<label class="tf-label" for="{ident}-tf">show the /tf arrows</label>')
-    names = "".join(f'<option value="{esc(n.fqn)}"></option>'
-                    for n in sorted(flow.nodes.values(), key=lambda n: n.fqn))
+    # the filter's suggestions (the nodes' names) are the script's to list: the box is
+    # hidden without it
     return (f'<details class="flow-section" open><summary>{summary}</summary>'
             f'<div class="flow">{tools}'
-            f'<datalist id="{ident}-names">{names}</datalist>'
             f'<div class="picture">{render_flow_svg(flow, placed, ident, anchor)}</div>'
             "</div></details>")
 
@@ -99,12 +110,12 @@ def render_flow_svg(flow: FlowGraph, placed: FlowLayout, ident: str, anchor: str
              f'{len(flow.nodes)} nodes, {len(flow.topics)} topics, services and actions">']
     for cluster in placed.clusters:
         count = len(cluster.members())
-        parts.append(f'<g class="fc"><rect x="{cluster.x:.1f}" y="{cluster.y:.1f}" '
-                     f'width="{cluster.width:.1f}" height="{cluster.height:.1f}" rx="5"/>'
-                     f'<text class="nsl" x="{cluster.x + 8:.1f}" y="{cluster.y + 14:.1f}">'
+        parts.append(f'<g class="fc"><rect x="{num(cluster.x)}" y="{num(cluster.y)}" '
+                     f'width="{num(cluster.width)}" height="{num(cluster.height)}" rx="5"/>'
+                     f'<text class="nsl" x="{num(cluster.x + 8)}" y="{num(cluster.y + 14)}">'
                      f"{esc(cluster.namespace)}</text>"
-                     f'<text class="nsc" x="{cluster.x + cluster.width - 8:.1f}" '
-                     f'y="{cluster.y + 14:.1f}">{count}</text></g>')
+                     f'<text class="nsc" x="{num(cluster.x + cluster.width - 8)}" '
+                     f'y="{num(cluster.y + 14)}">{count}</text></g>')
     parts += [_edge(flow, placed, edge) for edge in flow.edges]
     for cluster in placed.clusters:
         for key in cluster.members():
@@ -126,9 +137,9 @@ def _edge(flow: FlowGraph, placed: FlowLayout, edge: FlowEdge) -> str:
     if edge.tf:
         classes.append("e-tf")
     return (f'<g class="{" ".join(classes)}" data-a="{esc(edge.source)}" '
-            f'data-b="{esc(edge.target)}"><path class="el" d="M{sx:.1f} {sy:.1f} '
-            f"C{sx + reach:.1f} {sy:.1f} {end - reach:.1f} {ty:.1f} {end:.1f} {ty:.1f}\"/>"
-            f'<path class="ah" d="M{tx:.1f} {ty:.1f}l-{ARROW} -3.5v7z"/></g>')
+            f'data-b="{esc(edge.target)}"><path class="el" d="M{num(sx)} {num(sy)} '
+            f"C{num(sx + reach)} {num(sy)} {num(end - reach)} {num(ty)} {num(end)} {num(ty)}\"/>"
+            f'<path class="ah" d="M{num(tx)} {num(ty)}l-{ARROW} -3.5v7z"/></g>')
 
 
 def _fit(text: str, room: float, char_w: float) -> str:
@@ -155,14 +166,14 @@ def _node(node: FlowNode, box: Box, namespace: str, anchor: str, flow: FlowGraph
         tag = "?"
     label = label_of(flow, node.key, namespace)
     room = box.width - 10 - (16 if tag else 0)
-    badge = (f'<text class="tag" x="{box.x + box.width - 9:.1f}" y="{box.y + 14:.1f}">'
+    badge = (f'<text class="tag" x="{num(box.x + box.width - 9)}" y="{num(box.y + 14)}">'
              f"{tag}</text>") if tag else ""
     return (f'<a href="#{esc(anchor)}-{node.index}" class="{" ".join(classes)}" '
             f'data-key="{node.key}" data-fqn="{esc(node.fqn)}">'
             f"<title>{esc(node_tooltip(node))}</title>"
-            f'<rect x="{box.x:.1f}" y="{box.y:.1f}" width="{box.width:.1f}" '
-            f'height="{box.height:.1f}" rx="3"/>'
-            f'<text class="nl" x="{box.x + 5:.1f}" y="{box.y + 14:.1f}">'
+            f'<rect x="{num(box.x)}" y="{num(box.y)}" width="{num(box.width)}" '
+            f'height="{num(box.height)}" rx="3"/>'
+            f'<text class="nl" x="{num(box.x + 5)}" y="{num(box.y + 14)}">'
             f"{esc(_fit(label, room, NODE_CHAR_W))}</text>{badge}</a>")
 
 
@@ -175,12 +186,12 @@ def _topic(topic: FlowTopic, box: Box, namespace: str, flow: FlowGraph) -> str:
     if topic.ref is not None:
         classes.append("ref")
     label = label_of(flow, topic.key, namespace)
-    return (f'<g class="{" ".join(classes)}" data-key="{esc(topic.key)}" '
-            f'data-topic="{esc(topic.topic)}">'
+    original = f' data-topic="{esc(topic.ref)}"' if topic.ref is not None else ""
+    return (f'<g class="{" ".join(classes)}" data-key="{esc(topic.key)}"{original}>'
             f"<title>{esc(topic_tooltip(topic, flow))}</title>"
-            f'<rect x="{box.x:.1f}" y="{box.y:.1f}" width="{box.width:.1f}" '
-            f'height="{box.height:.1f}" rx="{box.height / 2:.1f}"/>'
-            f'<text class="tl" x="{box.x + 7:.1f}" y="{box.y + 11.5:.1f}">'
+            f'<rect x="{num(box.x)}" y="{num(box.y)}" width="{num(box.width)}" '
+            f'height="{num(box.height)}" rx="{num(box.height / 2)}"/>'
+            f'<text class="tl" x="{num(box.x + 7)}" y="{num(box.y + 11.5)}">'
             f"{esc(_fit(label, box.width - 12, TOPIC_CHAR_W))}</text></g>")
 
 

@@ -267,6 +267,15 @@ def render_graph_json(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
     write_json(GraphView(graph, symbolic, interfaces).document(), out)
 
 
+def unnamed_label(executable: object) -> str:
+    """Return how a node is called when neither the launch nor its sources name it.
+
+    One spelling for every output (the listing, the report's picture, its computation
+    graph and tooltips): ``<unnamed talker>``.
+    """
+    return f"<unnamed {executable or 'node'}>"
+
+
 def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False,
                       interfaces: InterfaceSource | None = None) -> None:
     """Write the graph as an indented listing."""
@@ -274,7 +283,7 @@ def render_graph_text(graph: LaunchGraph, out: TextIO, *, symbolic: bool = False
     out.write(f"{'launched directly' if doc['view']['launched_directly'] else 'included'}: "
               f"{doc['view']['why']}\n")
     for node in doc["nodes"]:
-        label = node["fqn"] or f"<unnamed {node['executable']}>"
+        label = node["fqn"] or unnamed_label(node["executable"])
         kind = "" if node["kind"] == "node" else f" [{node['kind']}]"
         out.write(f"{label}{kind}  {node['package']}/{node['executable']}  "
                   f"({node['file']}:{node['line']})\n")

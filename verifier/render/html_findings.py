@@ -15,7 +15,7 @@ from functools import cache
 from launchverify.engine import Report
 from launchverify.findings.fixes import fix_note
 from launchverify.render import links
-from launchverify.render.html_text import clip, esc, place
+from launchverify.render.html_text import clip, distinct_tails, esc, place
 from launchverify.rule import Finding, Severity
 from launchverify.span import Span
 from launchverify.workspace.sources import source_line, source_lines
@@ -41,6 +41,8 @@ def render_rule_index(report: Report) -> str:
     by_rule: dict[str, list[int]] = defaultdict(list)
     for index, finding in enumerate(report.findings):
         by_rule[finding.code].append(index)
+    # each file as briefly as tells it from the others (two packages' files of one name)
+    tails = distinct_tails(report.display_path(f.span.file) for f in report.findings)
     parts = ['<section id="by-rule"><h2>Findings by rule</h2><table class="index">'
              "<thead><tr><th>Rule</th><th>Where</th><th>Message</th></tr></thead>"]
     for code in sorted(by_rule):
@@ -57,7 +59,7 @@ def render_rule_index(report: Report) -> str:
             parts.append(
                 f'<tr>{rule}<td class="where"><a href="#{finding_id(index)}" '
                 f'title="{esc(path)}:{span.line}"><span class="loc">'
-                f"{esc(span.file.name)}:{span.line}</span></a></td>"
+                f"{esc(tails[path])}:{span.line}</span></a></td>"
                 f"<td>{esc(finding.message)}</td></tr>")
             rule = ""
         parts.append("</tbody>")

@@ -2,8 +2,13 @@
 
 The page works offline and without JavaScript: styles are inline, the picture of the
 launched system is SVG written here, and the only script (opening a collapsed table when
-a link points into it) is optional. Every piece of text from a launch file or a path is
-escaped (``html_text.esc``), and a content security policy lets only that script run.
+a link points into it, filling a reference to a block written earlier with a copy of it,
+the computation graph's filter) is optional. Every piece of text from a launch file or a
+path is escaped (``html_text.esc``), and a content security policy lets only that script
+run.
+
+What the page repeats it writes once (``html_shared``): the systems of a workspace mostly
+start the same stacks, and writing them out again for each made most of the page.
 """
 
 from __future__ import annotations
@@ -20,6 +25,7 @@ from launchverify.render.html_findings import (
     render_rule_index,
     severity_badge,
 )
+from launchverify.render.html_shared import Shared
 from launchverify.render.html_style import CONTENT_SECURITY_POLICY, SCRIPT, STYLE
 from launchverify.render.html_text import esc
 from launchverify.render.system_html import LEGEND, render_system_section, roots_to_show
@@ -40,7 +46,8 @@ def render_html(report: Report, out: TextIO, *, title: str = "launchverify repor
     """
     anchors = {id(f): finding_id(i) for i, f in enumerate(report.findings)}
     roots = roots_to_show(report)
-    systems = [render_system_section(report, graph, number, anchors, interfaces)
+    shared = Shared()  # what one section wrote, the next ones refer back to
+    systems = [render_system_section(report, graph, number, anchors, interfaces, shared)
                for number, graph in enumerate(roots, 1)]
     out.write("<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
               '<meta http-equiv="Content-Security-Policy" '

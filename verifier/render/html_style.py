@@ -182,10 +182,16 @@ ul.tree li{border-left:1px solid var(--line);padding-left:8px;margin:2px 0}
 .status.bad{color:#fff;background:var(--err);border-color:var(--err)}
 .status.off{color:var(--muted)}
 .args code{font-size:11px;color:var(--muted);margin-right:8px}
+.same{color:var(--muted);font-size:12px}
+ul.plain li.from{margin-top:3px}
+small.at{color:var(--muted)}
 @media print{header.top{position:static}}
 """
 
-# Optional: follow a link into a collapsed <details> (a node's row) by opening it; the
+# Optional: follow a link into a collapsed <details> (a node's row) by opening it; fill
+# each reference to a block written earlier (html_shared) with a copy of it once it can
+# be seen (its <details> open), so a page that says a thing once reads as if whole (a
+# reference cell of a node's row takes the cells of the row it names but the first); the
 # computation graph's filter box (shown only when this runs): the nodes whose name holds
 # the text, the topics they use (with their copies in other namespaces), who publishes
 # what they read and who reads what they publish (services: clients and servers), not
@@ -194,14 +200,30 @@ SCRIPT = (
     "(function(){function show(){var id=decodeURIComponent(location.hash.slice(1));"
     "var t=id&&document.getElementById(id);if(!t)return;"
     "for(var e=t.parentElement;e;e=e.parentElement){if(e.tagName==='DETAILS')e.open=true;}"
-    "t.scrollIntoView();}window.addEventListener('hashchange',show);show();"
+    "fill(document);t.scrollIntoView();}"
     "function each(l,f){for(var i=0;i<l.length;i++)f(l[i]);}"
+    "function seen(e){for(var p=e.parentElement;p;p=p.parentElement){"
+    "if(p.tagName==='DETAILS'&&!p.open)return false;}return true;}"
+    "function fill(root){each(root.querySelectorAll('.same[data-same]'),function(e){"
+    "if(!e.parentNode||!seen(e))return;"
+    "var t=document.getElementById(e.getAttribute('data-same'));if(!t)return;"
+    "var up=e.parentNode,parts=t.tagName==='TR'?[].slice.call(t.cells,1):[t];"
+    "each(parts,function(p){var c=p.cloneNode(true);c.removeAttribute('id');"
+    "each(c.querySelectorAll('[id]'),function(x){x.removeAttribute('id');});"
+    "up.insertBefore(c,e);});up.removeChild(e);fill(up);});}"
+    "document.addEventListener('toggle',function(v){if(v.target.open)fill(v.target);},true);"
+    "fill(document);window.addEventListener('hashchange',show);show();"
     "function filter(box){var svg=document.getElementById(box.getAttribute('data-flow'));"
     "if(!svg)return;var status=box.parentElement.querySelector('.flow-status');"
     "var parts=svg.querySelectorAll('[data-key]'),edges=svg.querySelectorAll('.fedge');"
     "var full=svg.getAttribute('data-box').split(' '),byKey={};box.hidden=false;"
     "each(parts,function(p){byKey[p.getAttribute('data-key')]=p;});"
-    "function topic(k){return byKey[k]&&byKey[k].getAttribute('data-topic');}"
+    "var list=document.createElement('datalist'),names={},sorted=[];"
+    "list.id=box.getAttribute('list');each(svg.querySelectorAll('.fnode'),function(p){"
+    "var f=p.getAttribute('data-fqn');if(!names[f]){names[f]=1;sorted.push(f);}});"
+    "sorted.sort();each(sorted,function(f){var o=document.createElement('option');"
+    "o.value=f;list.appendChild(o);});box.parentElement.appendChild(list);"
+    "function topic(k){return byKey[k]&&(byKey[k].getAttribute('data-topic')||k);}"
     "function size(b){svg.setAttribute('viewBox',b.join(' '));"
     "svg.setAttribute('width',b[2]);svg.setAttribute('height',b[3]);}"
     "function apply(){var q=box.value.trim();svg.classList.remove('focus');"

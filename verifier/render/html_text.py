@@ -8,6 +8,8 @@ browser is concerned.
 from __future__ import annotations
 
 import html
+from collections import Counter
+from collections.abc import Iterable
 from pathlib import Path
 
 from launchverify.engine import Report
@@ -22,6 +24,12 @@ def esc(value: object) -> str:
     could reorder what a reviewer reads.
     """
     return html.escape(inert_block(str(value)), quote=True)
+
+
+def num(value: float) -> str:
+    """Return a coordinate for SVG: one decimal, none when it is whole (``12``, ``12.5``)."""
+    text = f"{value:.1f}"
+    return text[:-2] if text.endswith(".0") else text
 
 
 def clip(text: str, limit: int) -> str:
@@ -53,3 +61,24 @@ def short_place(text: str, parts: int = 3) -> str:
     if len(pieces) > parts:
         short = "\u2026/" + short
     return f'<span class="loc" title="{esc(text)}">{esc(short)}</span>'
+
+
+def distinct_tails(paths: Iterable[str]) -> dict[str, str]:
+    """Return each path's shortest ending no other of ``paths`` shares (plain text).
+
+    A file name alone when it tells the file apart, else as many folders before it as
+    that takes (``…/example_1/test/test_robot.launch.py``): two packages' files of one
+    name never look the same, and a column of them stays narrow. A path that is all of
+    another's ending is shown whole.
+    """
+    split = {p: p.replace("\\", "/").split("/") for p in dict.fromkeys(paths)}
+    longest = max((len(parts) for parts in split.values()), default=0)
+    counts = [Counter("/".join(parts[-k:]) for parts in split.values())
+              for k in range(longest + 1)]
+    shown = {}
+    for path, parts in split.items():
+        k = next((k for k in range(1, len(parts) + 1)
+                  if counts[k]["/".join(parts[-k:])] == 1), len(parts))
+        tail = "/".join(parts[-k:])
+        shown[path] = tail if k == 1 or k == len(parts) else "\u2026/" + tail
+    return shown

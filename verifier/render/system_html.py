@@ -2,18 +2,27 @@
 
 The legend of the pictures (``LEGEND``) is written once, before the first section.
 
-Kept apart from the page skeleton so that a report with several roots simply repeats it.
+Kept apart from the page skeleton so that a report with several roots simply repeats it;
+what an earlier section wrote the same (a node's row, its parameters, the includes below
+an include) is a reference to it (``html_shared``).
 """
 
 from __future__ import annotations
 
 from collections import defaultdict
+from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 from launchverify.engine import Report
 from launchverify.graph import IncludeRecord, LaunchGraph
+from launchverify.render.html_shared import SHARE_ABOVE, First, Shared
 from launchverify.render.html_text import clip, esc, short_place, where
-from launchverify.render.system_model import SystemModel, SystemNode, build_model
+from launchverify.render.system_model import (
+    NAMED_BY_CODE,
+    SystemModel,
+    SystemNode,
+    build_model,
+)
 from launchverify.render.system_svg import render_system_svg
 from launchverify.span import Span
 
@@ -50,12 +59,21 @@ def roots_to_show(report: Report) -> list[LaunchGraph]:
 
 def render_system_section(report: Report, graph: LaunchGraph, number: int,
                           anchors: dict[int, str],
-                          interfaces: InterfaceSource | None = None) -> str:
+                          interfaces: InterfaceSource | None = None,
+                          shared: Shared | None = None) -> str:
     """Return the section of one root: summary line, pictures, tables, include tree.
 
     With ``interfaces`` (where node interfaces come from), the computation graph too.
+    ``shared``: the blocks earlier sections wrote, which this one refers back to.
     """
-    model = build_model(report, graph, anchors)
+    shared = Shared() if shared is None else shared
+    composition = None
+    if interfaces is not None:
+        from launchverify.render.flow_html import compose_system
+
+        composition = compose_system(graph, interfaces)
+    model = build_model(report, graph, anchors,
+                        composition.names() if composition is not None else None)
     anchor = f"sys{number}-node"
     root_name = report.display_path(graph.root)
     parts = [f'<section class="system-section" id="system-{number}">'
@@ -66,13 +84,13 @@ def render_system_section(report: Report, graph: LaunchGraph, number: int,
                      "file or package, or a construct launchverify does not model): the "
                      "picture may lack nodes.</p>")
     parts.append(f'<div class="picture">{render_system_svg(model, anchor)}</div>')
-    if interfaces is not None:
+    if composition is not None:
         from launchverify.render.flow_html import computation_graph
 
-        parts.append(computation_graph(model, graph, interfaces, number, anchor))
+        parts.append(computation_graph(model, composition, number, anchor, shared))
     parts.append(_lifecycle(model.lifecycle))
-    parts.append(_node_table(model, anchor))
-    parts.append(render_include_tree(report, graph))
+    parts.append(_node_table(model, anchor, number, shared))
+    parts.append(render_include_tree(report, graph, number, shared))
     parts.append("</section>")
     return "".join(parts)
 
@@ -132,8 +150,8 @@ def _lifecycle(lifecycle: dict[str, Any] | None) -> str:
             f"{note}{table}</details>")
 
 
-def _node_table(model: SystemModel, anchor: str) -> str:
-    rows = [_node_row(node, anchor) for node in model.nodes]
+def _node_table(model: SystemModel, anchor: str, number: int, shared: Shared) -> str:
+    rows = [_node_row(node, anchor, number, shared) for node in model.nodes]
     return (f'<details class="nodes"><summary>All {len(model.nodes)} nodes: parameters, '
             'remaps, lifecycle states</summary><table class="nodes"><thead><tr><th>Node</th>'
             "<th>Kind</th>"
@@ -142,7 +160,29 @@ def _node_table(model: SystemModel, anchor: str) -> str:
             + "</tbody></table></details>")
 
 
-def _node_row(node: SystemNode, anchor: str) -> str:
+def _parameters(parameters: list[tuple[str, str, str]]) -> str:
+    """Return a node's parameters, under the file each comes from (named once).
+
+    A node's parameters mostly come from one or two files: the file is written once,
+    then each parameter with its line only.
+    """
+    by_file: dict[str, list[tuple[str, str, str]]] = defaultdict(list)
+    for name, value, source in parameters:
+        file, _, line = source.rpartition(":")
+        if not line.isdigit():
+            file, line = source, ""
+        by_file[file].append((name, value, line))
+    parts = []
+    for file, entries in by_file.items():
+        items = "".join(f"<li><code>{esc(n)}</code> = <code>{esc(v)}</code>"
+                        + (f' <small class="at">:{line}</small>' if line else "") + "</li>"
+                        for n, v, line in entries)
+        head = f'<li class="from">{short_place(file)}</li>' if file else ""
+        parts.append(f'<ul class="plain">{head}{items}</ul>')
+    return "".join(parts)
+
+
+def _node_row(node: SystemNode, anchor: str, number: int, shared: Shared) -> str:
     kind = node.kind.replace("_", " ")
     if node.container:
         kind += f"<br><small>in {esc(node.container)}</small>"
@@ -156,28 +196,49 @@ def _node_row(node: SystemNode, anchor: str) -> str:
         state = ""
     remaps = "".join(f"<li><code>{esc(s)}</code> \u2192 <code>{esc(d)}</code></li>"
                      for s, d in node.remappings)
-    params = "".join(f'<li><code>{esc(n)}</code> = <code>{esc(v)}</code>'
-                     + (f" <small>{short_place(w)}</small>" if w else "") + "</li>"
-                     for n, v, w in node.parameters)
     marks = "".join(f' <a class="sev sev-{m.severity.value}" href="#{esc(m.anchor)}">'
                     f"{esc(m.code)}</a>" for m in node.marks)
     condition = f"<br><small>when {esc(node.condition)}</small>" if node.condition else ""
-    return (f'<tr id="{esc(anchor)}-{node.index}"><td><code>{esc(node.fqn)}</code>{marks}'
-            f"{condition}</td><td>{kind}</td><td>{esc(node.executable)}</td><td>{state}</td>"
-            f'<td><ul class="plain">{remaps}</ul></td><td><ul class="plain">{params}</ul></td>'
-            f"<td>{short_place(node.where)}</td></tr>")
+    if node.named_by_code:
+        condition = f"<br><small>{NAMED_BY_CODE}</small>{condition}"
+    row = f"{anchor}-{node.index}"
+    head = (f'<tr id="{esc(row)}"><td><code>{esc(node.fqn)}</code>{marks}{condition}</td>')
+    params = _parameters(node.parameters)
+    before = (f"<td>{kind}</td><td>{esc(node.executable)}</td><td>{state}</td>"
+              f'<td><ul class="plain">{remaps}</ul></td><td>')
+    after = f"</td><td>{short_place(node.where)}</td></tr>"
+    label = f"<code>{esc(node.fqn)}</code>"
+    if len(before) + len(params) + len(after) > SHARE_ABOVE:  # the same node elsewhere
+        seen = shared.earlier("row:" + before + params + after, First(row, row, label, number))
+        if seen is not None:
+            return (f'{head}<td colspan="6" class="same" data-same="{esc(seen.href)}">'
+                    f'the same as <a href="#{esc(seen.href)}">{seen.label}'
+                    f"{shared.where(seen, number)}</a></td></tr>")
+    if params:
+        count = len(node.parameters)
+        params = shared.block(
+            params, ident=f"{row}-p", href=row, label=label, system=number,
+            what=f"the same {count} parameter{'s' if count != 1 else ''} as",
+            classes="params")
+    return head + before + params + after
 
 
 # ------------------------------------------------------------------ include tree
 
 
-def render_include_tree(report: Report, graph: LaunchGraph) -> str:
-    """Return the includes of one root as a nested list, in the order they run."""
+def render_include_tree(report: Report, graph: LaunchGraph, number: int = 1,
+                        shared: Shared | None = None) -> str:
+    """Return the includes of one root as a nested list, in the order they run.
+
+    The includes below an include that an earlier tree (``shared``) listed the same are
+    a link to those (most roots of a workspace include the same bring-up).
+    """
     children: dict[tuple[Span, ...], list[IncludeRecord]] = defaultdict(list)
     for record in graph.includes:
         children[record.origin.chain].append(record)
     root = report.display_path(graph.root)
-    body = _include_items(report, graph, children, ())
+    tree = _Tree(report, graph, children, number, Shared() if shared is None else shared)
+    body = tree.items(())
     count = len(graph.includes)
     return (f'<details class="includes" open><summary>Include tree '
             f'({count or "no"} include{"" if count == 1 else "s"})</summary>'
@@ -185,30 +246,50 @@ def render_include_tree(report: Report, graph: LaunchGraph) -> str:
             "</ul></details>")
 
 
-def _include_items(report: Report, graph: LaunchGraph,
-                   children: dict[tuple[Span, ...], list[IncludeRecord]],
-                   chain: tuple[Span, ...]) -> str:
-    records = children.get(chain, [])
-    if not records:
-        return ""
-    items = []
-    for record in records:
-        target = (report.display_path(record.target) if record.target is not None
-                  else graph.display(record.location) or "?")
-        status = "" if record.status == "loaded" else \
-            f' <span class="status bad">{esc(record.status)}</span>'
-        runs = graph.runs(record.origin)
-        skipped = ' <span class="status off">not under these arguments</span>' \
-            if runs is False else ""
-        condition = record.origin.condition_text()
-        when = f' <small>when {esc(condition)}</small>' if condition else ""
-        arguments = " ".join(
-            f"<code>{esc(name)}:={esc(clip(graph.display(value) or '', ARGUMENT_LIMIT))}</code>"
-            for name, value, _span in record.arguments if name is not None)
-        nested = _include_items(report, graph, children, (*chain, record.origin.span))
-        at = short_place(where(report, record.origin.span))
-        items.append(f"<li><code>{esc(target)}</code>{status}{skipped} <small>at {at}"
-                     f"</small>{when}"
-                     + (f'<div class="args">{arguments}</div>' if arguments else "")
-                     + f"{nested}</li>")
-    return "<ul>" + "".join(items) + "</ul>"
+@dataclass
+class _Tree:
+    """One root's include tree being written."""
+
+    report: Report
+    graph: LaunchGraph
+    children: dict[tuple[Span, ...], list[IncludeRecord]]
+    number: int
+    shared: Shared
+    blocks: int = 0
+
+    def items(self, chain: tuple[Span, ...]) -> str:
+        """Return the includes made at the end of ``chain``, with theirs below them."""
+        records = self.children.get(chain, [])
+        if not records:
+            return ""
+        report, graph = self.report, self.graph
+        items = []
+        for record in records:
+            target = (report.display_path(record.target) if record.target is not None
+                      else graph.display(record.location) or "?")
+            status = "" if record.status == "loaded" else \
+                f' <span class="status bad">{esc(record.status)}</span>'
+            runs = graph.runs(record.origin)
+            skipped = ' <span class="status off">not under these arguments</span>' \
+                if runs is False else ""
+            condition = record.origin.condition_text()
+            when = f' <small>when {esc(condition)}</small>' if condition else ""
+            arguments = " ".join(
+                f"<code>{esc(name)}:={esc(clip(graph.display(value) or '', ARGUMENT_LIMIT))}"
+                "</code>" for name, value, _span in record.arguments if name is not None)
+            below = (*chain, record.origin.span)
+            nested = self.items(below)
+            if nested:
+                self.blocks += 1
+                count = sum(len(v) for k, v in self.children.items() if k[:len(below)] == below)
+                nested = self.shared.block(
+                    nested, ident=f"sys{self.number}-inc-{self.blocks}",
+                    href=f"sys{self.number}-inc-{self.blocks}",
+                    label=f"<code>{esc(target)}</code>", system=self.number,
+                    what=f"the same {count} include{'s' if count != 1 else ''} as under")
+            at = short_place(where(report, record.origin.span))
+            items.append(f"<li><code>{esc(target)}</code>{status}{skipped} <small>at {at}"
+                         f"</small>{when}"
+                         + (f'<div class="args">{arguments}</div>' if arguments else "")
+                         + f"{nested}</li>")
+        return "<ul>" + "".join(items) + "</ul>"

@@ -15,13 +15,14 @@ from typing import Any
 from launchverify.dds.discovery import CALLER
 from launchverify.engine import Report
 from launchverify.graph import LaunchGraph
-from launchverify.render.graph_out import GraphView
+from launchverify.render.graph_out import GraphView, unnamed_label
 from launchverify.rule import Finding, Severity
 from launchverify.span import Span
 
 # The states a managed node can rest in, best first: the picture shows the best reachable.
 RESTING = ("active", "inactive", "unconfigured", "finalized")
 PARAMETER_VALUE_LIMIT = 160
+NAMED_BY_CODE = "named by its sources (the launch gives no name)"
 
 
 @dataclass
@@ -53,6 +54,7 @@ class SystemNode:
     remappings: list[tuple[str, str]]
     parameters: list[tuple[str, str, str]]  # name, value, where it comes from
     domain: str | None = None  # its DDS domain, as ``graph`` gives it
+    named_by_code: bool = False  # the launch gives no name: its sources (or model) do
     marks: list[Mark] = field(default_factory=list)
     components: list[SystemNode] = field(default_factory=list)
 
@@ -104,9 +106,15 @@ class SystemModel:
         return walk(self.root)
 
 
-def build_model(report: Report, graph: LaunchGraph,
-                anchors: dict[int, str]) -> SystemModel:
-    """Return the picture's data for one graph; ``anchors`` maps finding ids to anchors."""
+def build_model(report: Report, graph: LaunchGraph, anchors: dict[int, str],
+                names: dict[int, str] | None = None) -> SystemModel:
+    """Return the picture's data for one graph; ``anchors`` maps finding ids to anchors.
+
+    ``names``: the fully qualified names the sources give nodes the launch leaves
+    unnamed, by the id of their record (``Composition.names``), so that a node has the
+    name the computation graph beside the picture gives it.
+    """
+    names = names or {}
     view = GraphView(graph, symbolic=False)
     document = view.document()
     records = [n for n in graph.nodes if view.shown(n.origin)]
@@ -116,7 +124,8 @@ def build_model(report: Report, graph: LaunchGraph,
     marks = _marks(report, records, anchors)
     nodes = []
     for index, (entry, record) in enumerate(zip(document["nodes"], records, strict=True)):
-        fqn = entry["fqn"] or f"<unnamed {entry['executable'] or 'node'}>"
+        code_name = names.get(id(record)) if entry["fqn"] is None else None
+        fqn = entry["fqn"] or code_name or unnamed_label(entry["executable"])
         nodes.append(SystemNode(
             index=index, fqn=fqn, name=entry["name"] or fqn.rsplit("/", 1)[-1],
             namespace=_namespace_of(entry, fqn), kind=entry["kind"],
@@ -129,7 +138,7 @@ def build_model(report: Report, graph: LaunchGraph,
             container=entry["container"],
             remappings=[(str(s), str(d)) for s, d in entry["remappings"]],
             parameters=_parameters(entry), marks=marks.get(index, []),
-            domain=(entry["dds"] or {}).get("domain")))
+            domain=(entry["dds"] or {}).get("domain"), named_by_code=code_name is not None))
     return SystemModel(_by_domain(nodes), nodes, document["processes"], lifecycle)
 
 

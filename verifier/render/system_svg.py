@@ -14,8 +14,8 @@ import re
 from dataclasses import dataclass, field
 from typing import Any
 
-from launchverify.render.html_text import clip, esc
-from launchverify.render.system_model import Namespace, SystemModel, SystemNode
+from launchverify.render.html_text import clip, esc, num
+from launchverify.render.system_model import NAMED_BY_CODE, Namespace, SystemModel, SystemNode
 
 NODE_H = 19  # height of a node box
 GAP = 3  # between node boxes
@@ -197,13 +197,13 @@ def _draw_namespace(canvas: Canvas, namespace: Namespace, label: str, x: float, 
                     width: float, depth: int) -> None:
     height = _namespace_height(namespace, width)
     title = namespace.label if namespace.kept else f"namespace {namespace.path}"
-    canvas.add(f'<g class="ns d{min(depth, 3)}"><rect x="{x:.1f}" y="{y:.1f}" '
-               f'width="{width:.1f}" height="{height:.1f}" rx="5"/>')
+    canvas.add(f'<g class="ns d{min(depth, 3)}"><rect x="{num(x)}" y="{num(y)}" '
+               f'width="{num(width)}" height="{num(height)}" rx="5"/>')
     count = f"{namespace.count()}"
     room = width - 2 * PAD - len(count) * 7 - 8
-    canvas.add(f'<text class="nsl" x="{x + PAD:.1f}" y="{y + 15:.1f}">'
+    canvas.add(f'<text class="nsl" x="{num(x + PAD)}" y="{num(y + 15)}">'
                f"{_fit(label, room, 7.2)}</text>"
-               f'<text class="nsc" x="{x + width - PAD:.1f}" y="{y + 15:.1f}">{count}</text>'
+               f'<text class="nsc" x="{num(x + width - PAD)}" y="{num(y + 15)}">{count}</text>'
                "<title>" + esc(f"{title}: {count} nodes") + "</title></g>")
     inner = width - 2 * PAD
     cursor = y + HEADER
@@ -235,8 +235,8 @@ def _draw_grid(canvas: Canvas, nodes: list[SystemNode], x: float, y: float, widt
 def _draw_container(canvas: Canvas, host: SystemNode, x: float, y: float,
                     width: float) -> None:
     height = _container_height(host, width)
-    canvas.add(f'<rect class="ct" x="{x:.1f}" y="{y:.1f}" width="{width:.1f}" '
-               f'height="{height:.1f}" rx="4"/>')
+    canvas.add(f'<rect class="ct" x="{num(x)}" y="{num(y)}" width="{num(width)}" '
+               f'height="{num(height)}" rx="4"/>')
     _draw_node(canvas, host, x, y, width, host.name, extra=f"{len(host.components)} comp.")
     _draw_grid(canvas, host.components, x + PAD, y + NODE_H + GAP, width - 2 * PAD, host)
 
@@ -266,28 +266,28 @@ def _draw_node(canvas: Canvas, node: SystemNode, x: float, y: float, width: floa
                label: str, extra: str = "") -> None:
     canvas.add(f'<a href="#{esc(canvas.anchor)}-{node.index}" class="{_node_classes(node)}" '
                f'data-fqn="{esc(node.fqn)}"><title>{esc(tooltip(node))}</title>'
-               f'<rect x="{x:.1f}" y="{y:.1f}" width="{width:.1f}" height="{NODE_H}" rx="3"/>')
+               f'<rect x="{num(x)}" y="{num(y)}" width="{num(width)}" height="{NODE_H}" rx="3"/>')
     right = x + width - 4
     if node.manager is not None:
         state = "done" if node.manager["completes"] else "blocked"
         cx, cy = right - 5, y + NODE_H / 2
-        canvas.add(f'<path class="mgr-{state}" d="M{cx:.1f} {cy - 6:.1f} l6 6 l-6 6 l-6 -6 z"/>')
+        canvas.add(f'<path class="mgr-{state}" d="M{num(cx)} {num(cy - 6)} l6 6 l-6 6 l-6 -6 z"/>')
         right -= DOT_W
     elif node.resting is not None:
-        canvas.add(f'<circle class="st-{node.resting}" cx="{right - 5:.1f}" '
-                   f'cy="{y + NODE_H / 2:.1f}" r="5"/>')
+        canvas.add(f'<circle class="st-{node.resting}" cx="{num(right - 5)}" '
+                   f'cy="{num(y + NODE_H / 2)}" r="5"/>')
         right -= DOT_W
     for mark in node.marks[:2]:
-        canvas.add(f'<rect class="badge b-{mark.severity.value}" x="{right - BADGE_W:.1f}" '
-                   f'y="{y + 3:.1f}" width="{BADGE_W - 2}" height="{NODE_H - 6}" rx="2"/>'
-                   f'<text class="bt" x="{right - BADGE_W / 2 - 1:.1f}" y="{y + 13:.1f}">'
+        canvas.add(f'<rect class="badge b-{mark.severity.value}" x="{num(right - BADGE_W)}" '
+                   f'y="{num(y + 3)}" width="{BADGE_W - 2}" height="{NODE_H - 6}" rx="2"/>'
+                   f'<text class="bt" x="{num(right - BADGE_W / 2 - 1)}" y="{num(y + 13)}">'
                    f"{esc(mark.code)}</text>")
         right -= BADGE_W
     if extra:
-        canvas.add(f'<text class="extra" x="{right - 2:.1f}" y="{y + 13.5:.1f}">'
+        canvas.add(f'<text class="extra" x="{num(right - 2)}" y="{num(y + 13.5)}">'
                    f"{esc(extra)}</text>")
         right -= len(extra) * 6 + 6
-    canvas.add(f'<text class="nl" x="{x + 6:.1f}" y="{y + 13.5:.1f}"'
+    canvas.add(f'<text class="nl" x="{num(x + 6)}" y="{num(y + 13.5)}"'
                f"{_fit_attributes(label, right - x - 8)}>{esc(_fit_text(label, right - x - 8))}"
                "</text></a>")
 
@@ -302,7 +302,7 @@ def _fit_attributes(label: str, room: float, char_w: float = CHAR_W) -> str:
     shown = _fit_text(label, room, char_w)
     if len(shown) * char_w <= room or room <= 0:
         return ""
-    return f' textLength="{room:.1f}" lengthAdjust="spacingAndGlyphs"'
+    return f' textLength="{num(room)}" lengthAdjust="spacingAndGlyphs"'
 
 
 def _fit(label: str, room: float, char_w: float) -> str:
@@ -310,9 +310,9 @@ def _fit(label: str, room: float, char_w: float) -> str:
 
 
 def _draw_processes(canvas: Canvas, processes: list[dict[str, Any]], box: Placed) -> None:
-    canvas.add(f'<g class="ns procs"><rect x="{box.x:.1f}" y="{box.y:.1f}" '
-               f'width="{box.width:.1f}" height="{box.height:.1f}" rx="5"/>'
-               f'<text class="nsl" x="{box.x + PAD:.1f}" y="{box.y + 15:.1f}">processes</text>'
+    canvas.add(f'<g class="ns procs"><rect x="{num(box.x)}" y="{num(box.y)}" '
+               f'width="{num(box.width)}" height="{num(box.height)}" rx="5"/>'
+               f'<text class="nsl" x="{num(box.x + PAD)}" y="{num(box.y + 15)}">processes</text>'
                "</g>")
     for index, process in enumerate(processes):
         command = " ".join(str(c) for c in process["cmd"])
@@ -321,15 +321,17 @@ def _draw_processes(canvas: Canvas, processes: list[dict[str, Any]], box: Placed
         room = box.width - 2 * PAD - 8
         canvas.add(f'<g class="node process"><title>{esc(command)}\n'
                    f'{esc(process["file"])}:{process["line"]}</title>'
-                   f'<rect x="{box.x + PAD:.1f}" y="{y:.1f}" width="{box.width - 2 * PAD:.1f}" '
-                   f'height="{NODE_H}" rx="3"/><text class="nl" x="{box.x + PAD + 6:.1f}" '
-                   f'y="{y + 13.5:.1f}"{_fit_attributes(label, room)}>'
+                   f'<rect x="{num(box.x + PAD)}" y="{num(y)}" width="{num(box.width - 2 * PAD)}" '
+                   f'height="{NODE_H}" rx="3"/><text class="nl" x="{num(box.x + PAD + 6)}" '
+                   f'y="{num(y + 13.5)}"{_fit_attributes(label, room)}>'
                    f"{esc(_fit_text(label, room))}</text></g>")
 
 
 def tooltip(node: SystemNode) -> str:
     """Return the plain text shown when the pointer rests on a node (escaped by callers)."""
     lines = [node.fqn, f"{node.executable or '?'}  ({node.kind.replace('_', ' ')})"]
+    if node.named_by_code:
+        lines.append(NAMED_BY_CODE)
     if node.condition:
         lines.append(f"when {node.condition}")
     if node.manager is not None:
