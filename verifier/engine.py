@@ -43,7 +43,7 @@ from launchverify.workspace.packages import (
 from launchverify.workspace.paths import display_path, relative_file
 
 if TYPE_CHECKING:
-    from launchverify.findings.incremental import Incremental
+    from launchverify.findings.incremental import Incremental, RootResult
     from launchverify.findings.verdicts import Verdicts
     from launchverify.graph import LaunchGraph
     from launchverify.ir.symbolic import PathCondition
@@ -478,13 +478,19 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
                                         environment=options.environment, loader=loader)
                 incremental.evaluated(graphs[root], loader.asked, python.reads)
                 if options.progress is not None:  # (kept roots count as done)
-                    options.progress(len(graphs) + len(kept), len(roots))
+                    done = len(graphs) + len(kept)  # (contexts are counted as they come)
+                    options.progress(done, max(done, len(roots)))
             evaluations += python.evaluated
             protections = protections or python.protections
 
     with distros.checking(options.distro), reading.size_limit(options.max_file_size):
         evaluate_roots([root for root in roots if root not in kept])
         includers = includers_of()
+        scope_roots = roots
+        contexts = [] if options.affected else _contexts(  # (affected: they are checked)
+            roots, includers, lambda f: tree.nearest(f).excludes(f)
+            or _excluded(f, options.exclude), graphs, kept, incremental, evaluate_roots)
+        roots = [*roots, *contexts]
         while True:  # roots another root's edit concerns: who includes them, their family
             targets = {target for g in graphs.values() for inc in g.includes
                        if (target := inc.target) is not None}
@@ -522,7 +528,14 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         if incremental.plan is not None:  # every rule concludes from the verdicts alone
             instance = lambda r: rules[r]()  # noqa: E731
         findings = merge(everyone, rules, ctx, instance, _isolated)
-    report = incremental.report(roots, graphs, judged, kept, rules)
+        if not options.affected:
+            findings = _in_scope(findings, options.paths, scope_roots, contexts, graphs,
+                                 kept, rules, includers)
+    for context in contexts:  # what the next check keeps is its paths' own
+        graphs.pop(context, None)
+        judged.pop(context, None)
+        kept.pop(context, None)
+    report = incremental.report(scope_roots, graphs, judged, kept, rules)
     loaded = report.loaded_files()
     findings, suppressed = _unrecorded(_suppress, [bounded(f) for f in findings], loaded, rules)
     findings = within(_configured(findings, tree, selection), workspace)  # fixes: ours only
@@ -531,10 +544,60 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         findings, baselined = apply_baseline(options.baseline, findings)
     return dataclasses.replace(
         report, findings=sorted(findings, key=Finding.sort_key), files=len(loaded),
-        seconds=time.perf_counter() - started, display=display, checked=roots,
+        seconds=time.perf_counter() - started, display=display, checked=scope_roots,
         suppressed=suppressed, baselined=baselined, python_files=evaluations,
         protections=protections, packages=index, workspace=found_workspace,
         sourced=bool(os.environ.get("AMENT_PREFIX_PATH")), distro=options.distro)
+
+
+def _contexts(roots: list[Path], includers: Includers, excluded: Callable[[Path], bool],
+            graphs: dict[Path, LaunchGraph], kept: dict[Path, RootResult],
+            incremental: Incremental, evaluate_roots: Callable[[list[Path]], None]
+            ) -> list[Path]:
+    """Evaluate the launch files that include the roots; return those that do.
+
+    They are the roots' contexts (``findings/scope.py``). One whose evaluation did not
+    load a root (an includer of another file of that name) is dropped.
+    """
+    from launchverify.findings.scope import confirmed, context_roots
+
+    context = context_roots(roots, includers, excluded)
+    if not context:
+        return []
+    if incremental.plan is not None:
+        kept.update(incremental.plan.kept(context))
+    evaluate_roots([root for root in context if root not in kept])
+    reached = {root: frozenset(graphs[root].files) if root in graphs
+               else kept[root].verdicts.files for root in context
+               if root in graphs or root in kept}
+    contexts = confirmed(context, roots, reached)
+    for root in set(context) - set(contexts):
+        graphs.pop(root, None)
+        kept.pop(root, None)
+    return contexts
+
+
+def _in_scope(findings: list[Finding], paths: list[Path], scope_roots: list[Path],
+              contexts: list[Path], graphs: dict[Path, LaunchGraph],
+              kept: dict[Path, RootResult], rules: list[type[Rule]],
+              includers: Includers) -> list[Finding]:
+    """Keep the findings of the paths' launches (``findings/scope.py``)."""
+    from launchverify.findings.scope import consensus, in_scope
+
+    def files_of(root: Path) -> set[Path]:
+        """The launch and parameter files a root's evaluation read."""
+        if root in graphs:
+            return {*graphs[root].files, *graphs[root].param_files}
+        if root in kept:
+            return {*kept[root].verdicts.files, *map(Path, kept[root].reads or ())}
+        return set()
+
+    reached = {f for root in scope_roots for f in files_of(root)}
+    context_only = {f for root in contexts for f in files_of(root)} - reached
+    evaluated = {*scope_roots, *contexts}
+    return in_scope(findings, paths, reached, context_only,
+                    {rule.code for rule in rules if consensus(rule)},
+                    lambda file: bool(includers.naming(file) - evaluated))
 
 
 def rule_options(config: Config, arguments: dict[str, str] | None = None
