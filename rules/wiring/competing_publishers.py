@@ -61,7 +61,9 @@ class CompetingPublishers(PollingRule):
         Asked by place (the node's launch, the publisher in the code), so that an
         evaluation where the node does not run abstains (an includer that starts the
         file's other branch), one where an includer's namespaces set the two apart says
-        no, and one instance meeting another (a robot of a fleet) is enough for a yes.
+        no, and one instance meeting another (a robot of a fleet) is enough for a yes. One
+        where an earlier node publishes a topic whose name is unknown there (from a
+        parameter file given by an environment variable) cannot say no: it abstains.
         """
         from launchverify.topology.wiring import (
             globs_option,
@@ -93,9 +95,8 @@ class CompetingPublishers(PollingRule):
 
         # in the order of their places, the same in every evaluation: "earlier" must not
         # depend on which root walked the nodes first
-        publishers = sorted(publishers, key=lambda e: (
-            str(e.node.origin.span.file), e.node.origin.span.line, e.node.origin.span.column,
-            str(e.endpoint.span.file), e.endpoint.span.line))
+        publishers = sorted(publishers, key=_place)
+        unnamed = view.unresolved.get(("topics", "publishers"), [])
         for index, end in enumerate(publishers):
             before = publishers[:index]
             if any(earlier.node is end.node for earlier in before):
@@ -114,4 +115,13 @@ class CompetingPublishers(PollingRule):
                     witness=witness.values or None, node=describe_node(view, end.node),
                     name=end.name, peer=peer, why=why)
                 break
+            if met is None and any(_place(e) < _place(end) and e.node is not end.node
+                                   for e in unnamed):
+                continue  # an earlier node publishes a topic unknown here: it may be this
             yield end, met
+
+
+def _place(end: ComposedEndpoint) -> tuple[str, int, int, str, int]:
+    """Where a publisher's node is launched and where its code publishes: its order."""
+    return (str(end.node.origin.span.file), end.node.origin.span.line,
+            end.node.origin.span.column, str(end.endpoint.span.file), end.endpoint.span.line)
