@@ -9,6 +9,8 @@ Everything runs through the command line, as a user types it.
 
 from __future__ import annotations
 
+import re
+
 import json
 import subprocess
 import time
@@ -289,12 +291,13 @@ def test_the_summary_says_what_was_not_followed(
 """)
     monkeypatch.chdir(tmp_path / "ws")
     code, out, _ = check(capsys)
-    summary = out.splitlines()[-1]
-    assert summary.startswith("No findings in 1 file (")
-    assert ("; not followed: 3 includes and 4 packages (nav2_bringup, slam_toolbox, "
-            "ros_gz_sim, 1 more), found in neither the workspace nor an underlay: "
-            "`source /opt/ros/<distro>/setup.bash` (then AMENT_PREFIX_PATH lists the "
-            "underlay) or --package-path DIR adds them.") in summary
+    summary, coverage = out.splitlines()[-2:]
+    assert re.fullmatch(r"No findings in 1 file \(\d+\.\d\ds\)\.", summary), summary
+    assert coverage == (
+        "Not followed: 3 includes and 4 packages (nav2_bringup, slam_toolbox, "
+        "ros_gz_sim, 1 more), found in neither the workspace nor an underlay: "
+        "`source /opt/ros/<distro>/setup.bash` (then AMENT_PREFIX_PATH lists the "
+        "underlay) or --package-path DIR adds them.")
     assert code == 0
     _, out, _ = check(capsys, "--distro", "jazzy")
     assert "`source /opt/ros/jazzy/setup.bash`" in out
@@ -315,7 +318,7 @@ def test_a_package_path_follows_what_was_not(
         workspace: Path, capsys: pytest.CaptureFixture[str]) -> None:
     a, b = workspace / "src" / "a", workspace / "src" / "b"
     _, out, _ = check(capsys, str(a), "--workspace", str(a))
-    assert "not followed: 1 include and 1 package (beta_robot)" in out
+    assert "Not followed: 1 include and 1 package (beta_robot)" in out
     _, out, _ = check(capsys, str(a), "--workspace", str(a), "--package-path", str(b))
     assert "not followed" not in out and "LV204" in out
 
@@ -331,10 +334,10 @@ def test_a_cached_report_keeps_what_was_not_followed(
     outputs = []
     for _ in range(2):
         main(argv)
-        outputs.append(capsys.readouterr().out.splitlines()[-1])
+        outputs.append("\n".join(capsys.readouterr().out.splitlines()[-2:]))
         time.sleep(0.02)  # (what the check stamped is older than the next check)
     assert "unchanged since the cached run" in outputs[1]
-    assert all("not followed: 1 include and 1 package (beta_robot)" in o for o in outputs)
+    assert all("Not followed: 1 include and 1 package (beta_robot)" in o for o in outputs)
 
 
 def test_the_language_server_sees_the_repositories_beside_the_opened_one(

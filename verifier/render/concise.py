@@ -12,7 +12,7 @@ from typing import TextIO
 
 from launchverify.engine import Report
 from launchverify.findings.fixes import applicable
-from launchverify.render.text import STYLES, Lines, fixes_line, summary_line
+from launchverify.render.text import STYLES, Lines, coverage_line, fixes_line, summary_line
 
 
 def render_concise(report: Report, out: TextIO, *, color: bool | None = None,
@@ -27,6 +27,9 @@ def render_concise(report: Report, out: TextIO, *, color: bool | None = None,
              (finding.code, "bold"), marker, f" {finding.message}")
     if not quiet:
         line(summary_line(report))
+        coverage = coverage_line(report)
+        if coverage:
+            line(coverage, style="dim")
         footer = fixes_line(report, unsafe_fixes)
         if footer:
             line(footer)

@@ -165,6 +165,9 @@ def render_text(report: Report, out: TextIO, *, color: bool | None = None,
         if report.findings and not explain:
             line(docs_line(report), style="dim")
         line(summary_line(report))
+        coverage = coverage_line(report)
+        if coverage:
+            line(coverage, style="dim")
         footer = fixes_line(report, unsafe_fixes)
         if footer:
             line(footer)
@@ -225,18 +228,18 @@ def summary_line(report: Report) -> str:
     took = f"{report.seconds:.2f}s{', unchanged since the cached run' if report.cached else ''}"
     hidden = f"; {report.baselined} hidden by the baseline" if report.baselined else ""
     if not report.findings:
-        return f"No findings in {files} ({took}){hidden}{coverage_text(report)}."
+        return f"No findings in {files} ({took}){hidden}."
     parts = [f"{counts[s]} {s.value}{'s' if counts[s] != 1 else ''}" for s in Severity
              if counts[s]]
     total = len(report.findings)
     return (f"Found {total} finding{'s' if total != 1 else ''} ({', '.join(parts)}) in "
-            f"{files} ({took}){hidden}{coverage_text(report)}.")
+            f"{files} ({took}){hidden}.")
 
 
-def coverage_text(report: Report) -> str:
-    """Return what the summary adds when includes or packages were not followed, or ''.
+def coverage_line(report: Report) -> str:
+    """Return the line after the summary when includes or packages were not followed, or ''.
 
-    ``; not followed: 15 includes and 2 packages (turtlebot3_gazebo, ...)``, and how to
+    ``Not followed: 15 includes and 2 packages (turtlebot3_gazebo, ...)``, and how to
     add them: the underlay's setup script, else ``--package-path``.
     """
     coverage = report.coverage()
@@ -256,7 +259,7 @@ def coverage_text(report: Report) -> str:
         how = ("found in neither the workspace nor an underlay: "
                f"`source /opt/ros/{report.distro or '<distro>'}/setup.bash` (then "
                "AMENT_PREFIX_PATH lists the underlay) or --package-path DIR")
-    return f"; not followed: {' and '.join(counted)}, {how} adds them"
+    return f"Not followed: {' and '.join(counted)}, {how} adds them."
 
 
 def workspace_line(report: Report) -> str:
@@ -304,3 +307,6 @@ def render_statistics(report: Report, out: TextIO, *, quiet: bool = False) -> No
         out.write(f"solver: {report.solver_queries()} z3 queries (the rest settled "
                   "by concrete search)\n")
         out.write(summary_line(report) + "\n")
+        coverage = coverage_line(report)
+        if coverage:
+            out.write(coverage + "\n")
