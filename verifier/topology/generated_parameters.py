@@ -5,7 +5,7 @@ A package names its definitions in ``CMakeLists.txt``
 "my_params.hpp"``) or ``setup.py`` (``generate_parameter_module("my_params", "...yaml")``,
 then ``import``). The YAML nests parameter names under one top-level key; a mapping with
 a ``type`` is a parameter: its ``default_value`` (none: required, the generated listener
-throws at start), ``read_only``, and ``validation`` (``bounds<>``, ``gt<>``, ``one_of<>``).
+throws at start; ``type: none`` is documentation, never required), ``read_only``, and ``validation`` (``bounds<>``, ``gt<>``, ``one_of<>``).
 ``__map_<other>`` keys stand for names taken from another parameter's values at run time.
 """
 
@@ -89,8 +89,9 @@ def _parameter(path: Path, name: str, node: yaml.MappingNode,
     value = _plain(default) if default is not None else None
     limits = _limits(fields.get("validation"))
     read_only = _plain(fields["read_only"]) is True if "read_only" in fields else False
+    # ``type: none`` is documentation only: nothing is generated, so nothing is required
     return Parameter(name, kind, span_of(path, node), value, dynamic=kind is None,
-                     required=default is None, read_only=read_only,
+                     required=default is None and written != "none", read_only=read_only,
                      limits=limits, via=VIA)
 
 
