@@ -32,7 +32,9 @@ class UnknownPackage(Rule):
       quiet;
     - an unreleased package within one or two edits of a workspace package, or one edit
       of a released package, is a typo: an error (not one that differs only in its
-      numbers, `example_1` beside `example_10`: a sibling that is not here); two edits
+      numbers, `example_1` beside `example_10`: a sibling that is not here; nor one that
+      differs from a released package in its first word only, a vendor's prefix:
+      neobotix's `neo_gz_worlds` beside LeoRover's `leo_gz_worlds`); two edits
       from a released package only is a warning (a package built from source outside
       the workspace may have that name: `kobuki_node` beside the released `kobuki_core`);
     - another unreleased package whose name is close to a workspace package's (shares
@@ -131,7 +133,10 @@ class UnknownPackage(Rule):
     def _typo(self, name: str, local: frozenset[str]) -> tuple[str | None, bool]:
         """Return the package ``name`` misspells, if any, and whether it is the only one."""
         if name not in self._typos:
-            close = typos(name, local) or typos(name, released_packages())
+            # a released name that differs in its first word only is another vendor's
+            # package: neobotix's neo_gz_worlds beside LeoRover's leo_gz_worlds
+            close = typos(name, local) or [c for c in typos(name, released_packages())
+                                           if not _vendor_twin(name, c)]
             # numbered siblings (example_1 beside example_10, ur5 beside ur10) are other
             # packages, not misspellings
             close = [c for c in close if _digitless(c) != _digitless(name)]
@@ -148,6 +153,16 @@ class UnknownPackage(Rule):
 def _one_edit(name: str, other: str) -> bool:
     """Return whether two names are one insertion, deletion or substitution apart."""
     return Levenshtein.distance(name, other, score_cutoff=1) <= 1
+
+
+def _vendor_twin(name: str, other: str) -> bool:
+    """Return whether two names differ in their first word (a vendor's prefix) only.
+
+    (Numbers aside: ``neo_teleop2`` beside ``leo_teleop``.)
+    """
+    first, _, rest = name.partition("_")
+    other_first, _, other_rest = other.partition("_")
+    return bool(rest) and first != other_first and _digitless(rest) == _digitless(other_rest)
 
 
 def _digitless(name: str) -> str:

@@ -23,4 +23,9 @@ def generate_launch_description():
         Node(package='rviz2', executable='rviz2', name='rviz'),  # expect-not: LV303
         # A numbered sibling of a workspace package (acme_arm_10): another arm, not a typo.
         Node(package='acme_arm_1', executable='driver', name='arm'),  # expect-info: LV303
+        # Another vendor's package beside a released one: neobotix's neo_gz_worlds is one
+        # letter from LeoRover's leo_gz_worlds, in its vendor prefix: not a typo.
+        Node(package='neo_gz_worlds', executable='world', name='neo'),  # expect-info: LV303
+        # One letter from a released package elsewhere in the name: a typo.
+        Node(package='leo_gz_world', executable='world', name='leo'),  # expect-error: LV303
     ])
