@@ -9,9 +9,8 @@ Everything runs through the command line, as a user types it.
 
 from __future__ import annotations
 
-import re
-
 import json
+import re
 import subprocess
 import time
 from pathlib import Path
