@@ -85,6 +85,8 @@ def test_typos_are_errors_close_names_warn_names_like_nothing_inform(
         ("sim.launch.py", 16): (Severity.WARNING, "'acme_simulation'"),
         ("sim.launch.py", 17): (Severity.INFO, ""),
         ("sim.launch.py", 25): (Severity.INFO, ""),  # a numbered sibling, not a typo
+        ("sim.launch.py", 28): (Severity.INFO, ""),  # another vendor's prefix, not a typo
+        ("sim.launch.py", 30): (Severity.ERROR, "'leo_gz_worlds'"),
     }
 
 

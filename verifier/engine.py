@@ -527,7 +527,8 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         everyone = [judged[r] if r in judged else kept[r].verdicts for r in roots]
         if incremental.plan is not None:  # every rule concludes from the verdicts alone
             instance = lambda r: rules[r]()  # noqa: E731
-        findings = merge(everyone, rules, ctx, instance, _isolated)
+        findings = merge(everyone, rules, ctx, instance, _isolated, frozenset(contexts),
+                         _inside(options.paths))
         if not options.affected:
             findings = _in_scope(findings, options.paths, scope_roots, contexts, graphs,
                                  kept, rules, includers)
@@ -575,6 +576,12 @@ def _contexts(roots: list[Path], includers: Includers, excluded: Callable[[Path]
         graphs.pop(root, None)
         kept.pop(root, None)
     return contexts
+
+
+def _inside(paths: list[Path]) -> Callable[[Finding], bool]:
+    """Return whether a finding is on a file below one of the paths (real paths)."""
+    folders = [Path(os.path.realpath(path)) for path in paths]
+    return lambda finding: any(finding.span.file.is_relative_to(f) for f in folders)
 
 
 def _in_scope(findings: list[Finding], paths: list[Path], scope_roots: list[Path],

@@ -71,11 +71,16 @@ def order(rule: type[Rule], among: list[int], size: Callable[[int], int]) -> lis
 
 
 def merge(verdicts: list[Verdicts], rules: list[type[Rule]], ctx: RuleContext,
-          instance: Callable[[int], Rule], isolate: Isolate) -> list[Finding]:
+          instance: Callable[[int], Rule], isolate: Isolate,
+          contexts: frozenset[Path] = frozenset(),
+          own: Callable[[Finding], bool] = lambda finding: True) -> list[Finding]:
     """Return the check's findings from every graph's verdicts, in the check's order.
 
     ``instance(r)``: the rule object whose ``finish`` concludes (for a rule with a
-    ``finish`` of its own, the one that judged every graph).
+    ``finish`` of its own, the one that judged every graph). ``contexts``: roots
+    evaluated as the checked files' includers (``findings/scope.py``): they agree or
+    deny everywhere, but what they alone find counts only where ``own`` says the check
+    speaks (the paths' files).
     """
     from launchverify.parallel.fanout import gathers, polled
 
@@ -85,6 +90,7 @@ def merge(verdicts: list[Verdicts], rules: list[type[Rule]], ctx: RuleContext,
     for verdict in verdicts:
         for path in verdict.files:
             reach[path] += 1
+    context = {g for g, verdict in enumerate(verdicts) if verdict.root in contexts}
     unanimous = {rule.code for rule in rules if getattr(rule, "every_context", False)}
     first = verdicts[0].root if verdicts else None
     for r, rule_class in enumerate(rules):
@@ -95,14 +101,21 @@ def merge(verdicts: list[Verdicts], rules: list[type[Rule]], ctx: RuleContext,
             for finding in verdicts[g].findings.get(code, ()):
                 key = finding.key()
                 votes[key].add(g)
+                if g in context and not own(finding):
+                    continue  # an includer's say elsewhere: it votes, it does not claim
                 known = merged.get(key)
                 if known is None or len(finding.chain) < len(known.chain):
                     merged[key] = finding
         rule = instance(r)
         if polled(rule_class):  # the answers its checks gathered, wherever they ran
             poll = Poll(ctx, code)
+            asked = {question for g in visits if g not in context
+                     for question, _ in verdicts[g].answers.get(code, ())}
             for g in visits:
                 for question, answer in verdicts[g].answers.get(code, ()):
+                    if (g in context and question not in asked and answer is not None
+                            and not own(answer)):
+                        continue  # a question only an includer asks, not the check's
                     poll.answer(question, answer)
         elif gathers(rule_class):
             ctx.memo_for(code)["gathered"] = [verdicts[g].gathered[code] for g in visits

@@ -5,7 +5,8 @@ A package names its definitions in ``CMakeLists.txt``
 "my_params.hpp"``) or ``setup.py`` (``generate_parameter_module("my_params", "...yaml")``,
 then ``import``). The YAML nests parameter names under one top-level key; a mapping with
 a ``type`` is a parameter: its ``default_value`` (none: required, the generated listener
-throws at start; ``type: none`` is documentation, never required), ``read_only``, and ``validation`` (``bounds<>``, ``gt<>``, ``one_of<>``).
+throws at start; ``type: none`` is documentation, never required), ``read_only``, and
+``validation`` (``bounds<>``, ``gt<>``, ``one_of<>``).
 ``__map_<other>`` keys stand for names taken from another parameter's values at run time.
 """
 
