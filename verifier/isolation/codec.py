@@ -13,7 +13,9 @@ tuple, ``["#l", ...]`` a list, ``["#d", k, v, ...]`` a dict with string keys, ``
 text]`` a path, ``["#e", enum, value]``, ``["#f", id]`` a callback that runs in the
 worker, ``["#r", n]`` the n-th record again
 (actions are compared by identity: an event handler's target is the same object as the
-action in the list), and ``[ClassName, field...]`` a record with its fields in order.
+action in the list; a file's encoder and decoder live on across its OpaqueFunctions'
+answers, so a node made before one ran is that node in its answer too), and
+``[ClassName, field...]`` a record with its fields in order.
 """
 
 from __future__ import annotations
@@ -75,6 +77,11 @@ class Encoder:
         self._seen: dict[int, int] = {}
         self._spans: dict[Span, int] = {}  # equal places are sent once (a loop's calls)
         self._keep: list[object] = []  # ids stay unique while the encoding runs
+
+    @property
+    def sent(self) -> int:
+        """Return how many records this encoder has sent (the next one's number)."""
+        return len(self._keep)
 
     def encode(self, value: object, depth: int = 0) -> object:
         kind = type(value)
@@ -144,6 +151,11 @@ class Decoder:
         self.span = span  # may move a place the parent does not accept
         self._records: list[object | None] = []
         self._paths: dict[str, Path] = {}  # each file named once (its spans name it often)
+
+    @property
+    def received(self) -> int:
+        """Return how many records this decoder has rebuilt (the next one's number)."""
+        return len(self._records)
 
     def decode(self, data: object, depth: int = 0) -> object:
         if data is None or data.__class__ in _SCALARS:

@@ -74,6 +74,10 @@ class _Worker:
     spent: float = 0.0  # seconds its file's requests took: the time limit is for all of them
     repository: Path | None = None  # the files it may take after this one (``reuse``)
     reused: bool = False  # it evaluated another file before this one
+    # the decoder of its file's answers, kept for the next: they may name records of
+    # earlier ones (``codec``); ``None`` once an answer broke off (they no longer match)
+    decoder: Decoder | None = None
+    collected: list[_Callback] = field(default_factory=list)  # the answer's callbacks
 
     @property
     def number(self) -> int:
@@ -447,8 +451,8 @@ class IsolatedPython:
             return
         if self.protections is None:
             self.protections = str(reply.get("protections", ""))
-        callbacks: list[_Callback] = []
-        decoder = self._decoder(worker, callbacks)
+        callbacks = worker.collected = []
+        decoder = worker.decoder = self._decoder(worker)
         try:
             first = reply.get("first", 0)
             if not isinstance(first, int) or isinstance(first, bool) or first < 0:
@@ -516,6 +520,15 @@ class IsolatedPython:
             return "made other OpaqueFunctions when it was evaluated again"
         worker.process, worker.first, worker.recycled = fresh.process, 0, False
         fresh.process.holders.append(worker)
+        # its answers now build on the fresh evaluation's records: read them (the walk
+        # keeps the first evaluation's, so identity across the two is lost there)
+        worker.decoder, collected = self._decoder(worker), worker.collected
+        try:
+            worker.decoder.decode(reply.get("data"))
+        except (CodecError, ValueError, TypeError):
+            worker.decoder = None
+        finally:
+            worker.collected = collected
         return None
 
     def call(self, worker: _Worker, number: int, configurations: Mapping[str, Any],
@@ -559,13 +572,18 @@ class IsolatedPython:
             where = self._where(worker.path, reply.get("where")) if reply.get("where") else span
             return _failed(where, f"running this OpaqueFunction failed: "
                            f"{str(reply.get('message', ''))[:300]}", ProblemKind.EVALUATION)
-        callbacks: list[_Callback] = []
-        decoder = self._decoder(worker, callbacks)
+        callbacks = worker.collected = []
+        base = reply.get("base", 0)
+        decoder = worker.decoder if base else self._decoder(worker)
         try:
+            if decoder is None or decoder.received != base:
+                raise CodecError("it names records of answers launchverify does not have")
+            worker.decoder = None  # (again only once this answer is whole)
             result = decoder.decode(reply.get("data"))
             if not isinstance(result, a.OpaqueResult) or not all(
                     isinstance(p, Problem) for p in result.problems):
                 raise CodecError("not the result of an OpaqueFunction")
+            worker.decoder = decoder
         except TooLarge as error:
             return _failed(span, f"this OpaqueFunction is not checked: {error}",
                            ProblemKind.UNMODELED)
@@ -575,11 +593,11 @@ class IsolatedPython:
         _place_callbacks(result, callbacks)
         return result
 
-    def _decoder(self, worker: _Worker, callbacks: list[_Callback]) -> Decoder:
-        """Return a decoder for ``worker``'s answers, collecting the callbacks it names."""
+    def _decoder(self, worker: _Worker) -> Decoder:
+        """Return a decoder for ``worker``'s answers, collecting the callbacks each names."""
         def callback(number: int) -> _Callback:
-            callbacks.append(_Callback(self, worker, number - worker.first))
-            return callbacks[-1]
+            worker.collected.append(_Callback(self, worker, number - worker.first))
+            return worker.collected[-1]
 
         return Decoder(callback, span=lambda found: self._own_span(worker.path, found))
 

@@ -80,6 +80,9 @@ class _Worker:
         self.protections = protections
         self.scratch = scratch
         self.callbacks: list[Callable[..., Any]] = []
+        # each file's encoder, kept for its OpaqueFunctions' answers: a record sent before
+        # is sent as a reference to it (the parent keeps the matching decoder)
+        self.encoders: dict[str, Encoder] = {}
         self.owners: list[str] = []  # the file each callback belongs to
         self.variables: dict[str, dict[str, str]] = {}  # each file's os.environ, as it left it
         self.serving = ""  # the file of the request being answered, or answered last
@@ -184,7 +187,7 @@ class _Worker:
                                   absent_modules=self.setting.absent_modules)
         first = len(self.callbacks)
         launch = frontend.load(path, sink)
-        encoder = Encoder(self.register)
+        encoder = self.encoders[self.serving] = Encoder(self.register)
         data = encoder.encode((launch, tuple(sink.problems)))
         return {"op": "loaded", "protections": self.protections, "data": data,
                 "callbacks": len(self.callbacks) - first, "first": first}
@@ -197,7 +200,15 @@ class _Worker:
         if not isinstance(arguments, tuple) or len(arguments) != 2:
             return {"op": "error", "message": "malformed call", "where": None}
         result = self.callbacks[number](arguments[0], Path(str(arguments[1])))
-        return {"op": "result", "data": Encoder(self.register).encode(result)}
+        owner = self.owners[number]
+        encoder = self.encoders.get(owner) or Encoder(self.register)
+        base = encoder.sent
+        try:
+            data = encoder.encode(result)
+        except BaseException:
+            self.encoders.pop(owner, None)  # half sent: the next answer starts afresh
+            raise
+        return {"op": "result", "data": data, "base": base}
 
 
 def _clear(scratch: str) -> None:

@@ -24,7 +24,7 @@ from typing import Any
 
 from launchverify.frontends.python.assumptions import checked
 from launchverify.frontends.python.concrete import SubstitutionFailure
-from launchverify.frontends.python.convert import BLAMED, PythonConverter
+from launchverify.frontends.python.convert import BLAMED, Converted, PythonConverter
 from launchverify.frontends.python.importer import absent_import, import_context
 from launchverify.frontends.python.machine import robot_machine
 from launchverify.frontends.python.mentions import mentioned_strings
@@ -138,6 +138,10 @@ class _Session:
         self.handed_names: set[str] = set()  # configurations handed to unknown code
         self.failed_read: tuple[str, Span] | None = None  # OpaqueFunction read of nothing
         self.fallback: Span | None = None  # the running OpaqueFunction's line
+        # one object, one record, whichever conversion meets it: an OpaqueFunction's
+        # handler may target a node made before it ran (``RegisterEventHandler(
+        # OnProcessExit(target_action=jsb))``, jsb in the description)
+        self.converted = Converted()
 
     # ------------------------------------------------------------------ reporting
 
@@ -335,7 +339,7 @@ class _Session:
         """Return a converter reporting into this session (``context``: an OpaqueFunction's)."""
         return PythonConverter(self.unmodeled, self.opaque_function, Span.of_file(self.path),
                                fail=lambda message, span: self.sink.evaluation(  # noqa: PLW0108
-                                   message, span), context=context)
+                                   message, span), context=context, converted=self.converted)
 
     def _builtins(self) -> dict[str, Any]:
         namespace = launch_builtins()

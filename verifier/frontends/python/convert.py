@@ -67,19 +67,34 @@ def _known(text: str) -> s.Sub:
 BLAMED = "_launchverify_blamed_span"
 
 
+class Converted:
+    """The records model objects became, by the object's id (kept alive while they count).
+
+    Shared by the conversions of one launch file (its description, each OpaqueFunction's
+    result): an object met again is its record again, as launch compares actions by
+    identity (an event handler's target).
+    """
+
+    def __init__(self) -> None:
+        self.records: dict[int, a.Action | None] = {}
+        self.kept: list[Any] = []  # the objects whose ids are keys
+
+
 class PythonConverter:
     """Implements ``launch_api.base.Converter`` for one launch file."""
 
     def __init__(self, unmodeled: Unmodeled, opaque_function: Callable[[Any], a.Action],
-                 fallback: Span, fail: Unmodeled | None = None, context: Any = None) -> None:
+                 fallback: Span, fail: Unmodeled | None = None, context: Any = None,
+                 converted: Converted | None = None) -> None:
         self._unmodeled = unmodeled
         self.context = context  # the concrete LaunchContext, inside an OpaqueFunction
         self._fail = fail or unmodeled
         self._fallback = fallback  # where to point when an object knows no line
         self._claimed: set[int] = set()  # description sources already used by an include
         self._opaque_function = opaque_function
-        self._memo: dict[int, a.Action | None] = {}
-        self._keep: list[Any] = []  # keep converted objects alive while their id is a key
+        converted = converted or Converted()
+        self._memo = converted.records
+        self._keep = converted.kept  # keep converted objects alive while their id is a key
         self._locator = CallLocator()
         self.handed: list[a.Action] = []  # actions given to code launchverify cannot see
 
@@ -179,6 +194,7 @@ class PythonConverter:
             try:
                 result = entity.to_ir(self)
             except Exception as error:  # launch rejects a value: blame the action's line
+                del self._memo[key]  # (another conversion may meet it again)
                 span = getattr(entity, "_span", None)
                 if isinstance(span, Span) and not hasattr(error, BLAMED):
                     setattr(error, BLAMED, span)
