@@ -239,3 +239,20 @@ def test_a_folder_is_judged_by_its_real_name_whatever_the_path_given(
     above = sorted(path.relative_to(tmp_path).as_posix()
                    for path in discover([tmp_path / "pkg"]))
     assert set(names) <= set(above)
+
+
+def test_a_ros2_file_named_the_roslaunch_way_is_found_a_ros1_file_is_not(
+        tmp_path: Path) -> None:
+    """ros_deep_learning's ``*.ros2.launch``: ROS 2 XML under roslaunch's file name."""
+    launch = tmp_path / "launch"
+    launch.mkdir()
+    (launch / "video_viewer.ros2.launch").write_text(
+        '<launch>\n  <arg name="input" default="csi://0"/>\n'
+        '  <node pkg="ros_deep_learning" exec="video_source" output="screen">\n'
+        '    <param name="resource" value="$(var input)"/>\n  </node>\n</launch>\n')
+    (launch / "video_viewer.ros1.launch").write_text(
+        '<launch>\n  <arg name="input" default="csi://0"/>\n'
+        '  <node pkg="ros_deep_learning" type="video_source" name="video_source">\n'
+        '    <param name="resource" value="$(arg input)"/>\n  </node>\n</launch>\n')
+    (launch / "notes.launch").write_text("not XML at all, $(var x)\n")
+    assert [p.name for p in discover([tmp_path])] == ["video_viewer.ros2.launch"]

@@ -36,7 +36,10 @@ def is_launch_file(path: Path) -> bool:
     ``generate_launch_description`` (what ``ros2 launch`` runs, whatever the file's name;
     outside ``*launch.py`` only a module-level definition counts, and launch tests are
     left to ``launch_test``); other ``.xml``/``.yaml`` files count when
-    they sit in a ``launch`` folder and their root is ``launch``.
+    they sit in a ``launch`` folder and their root is ``launch``. A ``.launch`` file (a
+    roslaunch name) counts when it is XML with a ``launch`` root and ROS 2's spelling
+    (``$(var)``, ``$(find-pkg-share)``, ``<node exec=>``, ``<let>``...): ROS 1 files stay
+    out of a folder's walk.
     """
     return _looks_like_launch(os.fspath(path))
 
@@ -49,6 +52,10 @@ def _looks_like_launch(path: str) -> bool:
         return True
     if lowered.endswith(PYTHON_SUFFIX):
         return _PYTHON_ENTRY.search(_head(path, 256 * 1024)) is not None
+    if lowered.endswith(ROS1_SUFFIX):  # roslaunch's name: ROS 2 only by what it says
+        head = _head(path, 256 * 1024)
+        return _XML_ROOT.search(head[:8192]) is not None and \
+            _ROS2_SPELLING.search(head) is not None
     if lowered.endswith(".py") and _in_launch_folder(folder):
         return _MODULE_ENTRY.search(_head(path, 256 * 1024)) is not None
     if not lowered.endswith(FRONTEND_SUFFIXES) or "launch" not in _name(folder).lower():
@@ -64,6 +71,12 @@ _PARAMETERS = re.compile(rb"^\s*ros__parameters\s*:", re.MULTILINE)
 _STARTS_AS_LAUNCH = re.compile(
     rb"(?:\s|<\?xml[^>]*\?>|<!--.*?-->|#[^\n]*|---)*(?:<launch[\s>/]|launch\s*:)", re.DOTALL)
 ROS1_SUFFIX = ".launch"  # roslaunch's files: checked to say so (LV003)
+# What only ROS 2 writes in XML: a ``.launch`` file (roslaunch's name) with one of these
+# is a ROS 2 launch file named the old way (ros_deep_learning's ``*.ros2.launch``).
+_ROS2_SPELLING = re.compile(
+    rb"\$\((?:var|find-pkg-share|find-pkg-prefix|exec-in-pkg)\s|<node\b[^>]*\sexec\s*="
+    rb"|<(?:let|set_parameter|set-parameter|executable|push_ros_namespace|"
+    rb"push-ros-namespace|node_container|node-container)\b")
 WHAT_IS_READ = ("launchverify reads launch files (*.launch.py, *.launch.xml, *.launch.yaml; "
                 "a .py file defining generate_launch_description, an .xml or .yaml file whose "
                 "root is launch) and parameter files (.yaml with ros__parameters)")
