@@ -420,6 +420,7 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
     from launchverify.findings.bounds import bounded
     from launchverify.findings.fixes import within
     from launchverify.findings.incremental import settled_places
+    from launchverify.findings.scope import below
     from launchverify.findings.verdicts import merge
     from launchverify.frontends import launch_format
     from launchverify.isolation.confine import Limits
@@ -527,11 +528,12 @@ def _check_files(options: CheckOptions, tree: ConfigTree,
         everyone = [judged[r] if r in judged else kept[r].verdicts for r in roots]
         if incremental.plan is not None:  # every rule concludes from the verdicts alone
             instance = lambda r: rules[r]()  # noqa: E731
+        inside = below(options.paths)
         findings = merge(everyone, rules, ctx, instance, _isolated, frozenset(contexts),
-                         _inside(options.paths))
+                         lambda finding: inside(finding.span.file))
         if not options.affected:
-            findings = _in_scope(findings, options.paths, scope_roots, contexts, graphs,
-                                 kept, rules, includers)
+            findings = _in_scope(findings, inside, scope_roots, contexts, graphs, kept,
+                                 rules, includers)
     for context in contexts:  # what the next check keeps is its paths' own
         graphs.pop(context, None)
         judged.pop(context, None)
@@ -560,7 +562,7 @@ def _contexts(roots: list[Path], includers: Includers, excluded: Callable[[Path]
     They are the roots' contexts (``findings/scope.py``). One whose evaluation did not
     load a root (an includer of another file of that name) is dropped.
     """
-    from launchverify.findings.scope import confirmed, context_roots
+    from launchverify.findings.scope import confirmed, context_roots, files_of
 
     context = context_roots(roots, includers, excluded)
     if not context:
@@ -568,41 +570,24 @@ def _contexts(roots: list[Path], includers: Includers, excluded: Callable[[Path]
     if incremental.plan is not None:
         kept.update(incremental.plan.kept(context))
     evaluate_roots([root for root in context if root not in kept])
-    reached = {root: frozenset(graphs[root].files) if root in graphs
-               else kept[root].verdicts.files for root in context
-               if root in graphs or root in kept}
-    contexts = confirmed(context, roots, reached)
+    contexts = confirmed(context, roots, lambda root: files_of(root, graphs, kept))
     for root in set(context) - set(contexts):
         graphs.pop(root, None)
         kept.pop(root, None)
     return contexts
 
 
-def _inside(paths: list[Path]) -> Callable[[Finding], bool]:
-    """Return whether a finding is on a file below one of the paths (real paths)."""
-    folders = [Path(os.path.realpath(path)) for path in paths]
-    return lambda finding: any(finding.span.file.is_relative_to(f) for f in folders)
-
-
-def _in_scope(findings: list[Finding], paths: list[Path], scope_roots: list[Path],
-              contexts: list[Path], graphs: dict[Path, LaunchGraph],
-              kept: dict[Path, RootResult], rules: list[type[Rule]],
-              includers: Includers) -> list[Finding]:
+def _in_scope(findings: list[Finding], inside: Callable[[Path], bool],
+              scope_roots: list[Path], contexts: list[Path],
+              graphs: dict[Path, LaunchGraph], kept: dict[Path, RootResult],
+              rules: list[type[Rule]], includers: Includers) -> list[Finding]:
     """Keep the findings of the paths' launches (``findings/scope.py``)."""
-    from launchverify.findings.scope import consensus, in_scope
+    from launchverify.findings.scope import consensus, files_of, in_scope
 
-    def files_of(root: Path) -> set[Path]:
-        """The launch and parameter files a root's evaluation read."""
-        if root in graphs:
-            return {*graphs[root].files, *graphs[root].param_files}
-        if root in kept:
-            return {*kept[root].verdicts.files, *map(Path, kept[root].reads or ())}
-        return set()
-
-    reached = {f for root in scope_roots for f in files_of(root)}
-    context_only = {f for root in contexts for f in files_of(root)} - reached
+    reached = {f for root in scope_roots for f in files_of(root, graphs, kept)}
+    context_only = {f for root in contexts for f in files_of(root, graphs, kept)} - reached
     evaluated = {*scope_roots, *contexts}
-    return in_scope(findings, paths, reached, context_only,
+    return in_scope(findings, inside, context_only,
                     {rule.code for rule in rules if consensus(rule)},
                     lambda file: bool(includers.naming(file) - evaluated))
 

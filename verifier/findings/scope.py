@@ -24,10 +24,15 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from launchverify.rule import Finding, PollingRule, Rule
 from launchverify.workspace.affected import affected_launch_files
 from launchverify.workspace.includers import Includers
+
+if TYPE_CHECKING:
+    from launchverify.findings.incremental import RootResult
+    from launchverify.graph import LaunchGraph
 
 
 def context_roots(roots: list[Path], includers: Includers,
@@ -39,10 +44,26 @@ def context_roots(roots: list[Path], includers: Includers,
 
 
 def confirmed(context: Iterable[Path], roots: Iterable[Path],
-              reached: Mapping[Path, frozenset[Path]]) -> list[Path]:
+              reached: Callable[[Path], set[Path]]) -> list[Path]:
     """Return the context roots whose evaluation loaded one of ``roots`` (``reached``)."""
     wanted = set(roots)
-    return [root for root in context if wanted & reached.get(root, frozenset())]
+    return [root for root in context if wanted & reached(root)]
+
+
+def below(paths: Iterable[Path]) -> Callable[[Path], bool]:
+    """Return whether a file lies below one of the paths (by their real paths)."""
+    folders = [Path(os.path.realpath(path)) for path in paths]
+    return lambda file: any(file.is_relative_to(folder) for folder in folders)
+
+
+def files_of(root: Path, graphs: Mapping[Path, LaunchGraph],
+             kept: Mapping[Path, RootResult]) -> set[Path]:
+    """Return the launch and parameter files a root's evaluation read (or the kept one's)."""
+    if root in graphs:
+        return {*graphs[root].files, *graphs[root].param_files}
+    if root in kept:
+        return {*kept[root].verdicts.files, *map(Path, kept[root].reads or ())}
+    return set()
 
 
 def consensus(rule: type[Rule]) -> bool:
@@ -50,20 +71,16 @@ def consensus(rule: type[Rule]) -> bool:
     return bool(getattr(rule, "every_context", False)) or issubclass(rule, PollingRule)
 
 
-def in_scope(findings: Iterable[Finding], paths: Iterable[Path], reached: set[Path],
+def in_scope(findings: Iterable[Finding], inside: Callable[[Path], bool],
              context_only: set[Path], consensus_codes: set[str],
              unheard: Callable[[Path], bool]) -> list[Finding]:
     """Return the findings this check reports.
 
-    ``reached``: the files the paths' own launches reached; ``context_only``: those only
-    their includers reached (what is said of them is theirs, not this check's);
-    ``unheard(file)``: whether a launch file this check did not evaluate includes it.
+    ``inside(file)``: whether a file is below the paths (``below``); ``context_only``:
+    the files only their includers reached (what is said of them is theirs, not this
+    check's); ``unheard(file)``: whether a launch file this check did not evaluate
+    includes it.
     """
-    folders = [Path(os.path.realpath(path)) for path in paths]
-
-    def inside(file: Path) -> bool:
-        return any(file.is_relative_to(folder) for folder in folders)
-
     kept = []
     for finding in findings:
         file = finding.span.file
