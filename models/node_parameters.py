@@ -33,5 +33,7 @@ LIBRARY_PARAMETERS: dict[str, tuple[str, ...] | None] = {
     "nav2_ros_common": None,
     "nav2_costmap_2d": None,
     "nav2_core": None,
-    "controller_interface": None,  # a controller's node is the manager's to parameterise
+    # ControllerInterfaceBase::init (controller_interface_base.cpp): humble declares
+    # update_rate; jazzy and rolling also is_async and thread_priority
+    "controller_interface": ("update_rate", "is_async", "thread_priority"),
 }

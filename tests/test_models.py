@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import json
 import re
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -20,12 +21,15 @@ from launchverify.cli import main
 from launchverify.topology.compose import WorkspaceInterfaces
 from launchverify.topology.model import EndpointKind
 from launchverify.topology.nodes import package_interfaces
+from launchverify.topology.releases import MODEL_DISTROS
 from launchverify.topology.shipped import (
     ModelError,
     ModelSource,
+    _shipped,
     dump_model,
     model_document,
     read_model,
+    released_model,
     shipped_model,
     shipped_packages,
 )
@@ -44,6 +48,19 @@ WANTED = {"robot_state_publisher", "joint_state_publisher", "joy", "teleop_twist
           "nav2_route", "controller_manager", "joint_state_broadcaster",
           "diff_drive_controller", "joint_trajectory_controller",
           "forward_command_controller"}
+# And issue 45 (every distribution's release, realsense, the image pipeline, every
+# controller of ros2_controllers)
+WANTED_IN_EVERY_DISTRO = WANTED - {"nav2_route"} | {
+    "realsense2_camera", "stereo_image_proc", "image_rotate", "image_view",
+    "ackermann_steering_controller", "admittance_controller", "pid_controller",
+    "imu_sensor_broadcaster", "force_torque_sensor_broadcaster", "tricycle_controller",
+    "range_sensor_broadcaster", "pose_broadcaster", "gpio_controllers",
+    "mecanum_drive_controller", "bicycle_steering_controller"}
+MODEL_FILES = sorted((ROOT / "models" / "interfaces").glob("*/*.json"))
+
+
+def _model_id(path: Path) -> str:
+    return f"{path.parent.name}/{path.stem}"
 
 
 # --------------------------------------------------------------------------- shipped files
@@ -53,9 +70,16 @@ def test_the_wanted_packages_are_shipped() -> None:
     assert set(shipped_packages()) >= WANTED
 
 
-@pytest.mark.parametrize("package", shipped_packages())
-def test_every_shipped_model_parses_and_names_its_source_commit(package: str) -> None:
-    path = ROOT / "models" / "interfaces" / f"{package}.json"
+@pytest.mark.parametrize("distro", MODEL_DISTROS)
+def test_every_distribution_has_its_release_of_the_wanted_packages(distro: str) -> None:
+    shipped = {path.stem for path in MODEL_FILES if path.parent.name == distro}
+    assert shipped >= WANTED_IN_EVERY_DISTRO, sorted(WANTED_IN_EVERY_DISTRO - shipped)
+    assert {path.parent.name for path in MODEL_FILES} == set(MODEL_DISTROS)
+
+
+@pytest.mark.parametrize("path", MODEL_FILES, ids=_model_id)
+def test_every_shipped_model_parses_and_names_its_source_commit(path: Path) -> None:
+    package, distro = path.stem, path.parent.name
     document = json.loads(path.read_text())
     model = read_model(document)
     assert model.package == package
@@ -64,6 +88,8 @@ def test_every_shipped_model_parses_and_names_its_source_commit(package: str) ->
     assert model.source.branch
     assert model.extracted_with.startswith("launchverify ")
     assert model.interfaces, "a model of no executable is no use"
+    released = released_model(package, distro)
+    assert released is not None and all(i.distro == distro for i in released.interfaces)
     for interface in model.interfaces:
         assert interface.package == package
         assert interface.model is not None and model.source.commit[:12] in interface.model
@@ -80,8 +106,9 @@ def test_shipped_models_are_data_not_code() -> None:
                "note", "unresolved", "at"}
     parameter_keys = {"name", "type", "default", "dynamic", "required", "strict", "read_only",
                       "limits", "via", "at"}
-    for package in shipped_packages():
-        document = json.loads((ROOT / "models" / "interfaces" / f"{package}.json").read_text())
+    for path in MODEL_FILES:
+        package = path.stem
+        document = json.loads(path.read_text())
         assert set(document) == {"format", "package", "source", "extracted_with",
                                  "interfaces"}
         for interface in document["interfaces"]:
@@ -127,11 +154,13 @@ def test_nav2_servers_as_checked_against_their_sources() -> None:
 
 
 def test_loading_is_lazy_one_package_at_a_time() -> None:
-    shipped_model.cache_clear()
+    _shipped.cache_clear()
+    released_model.cache_clear()
     reader = WorkspaceInterfaces(PackageIndex())
     interface, _ = reader.interface("joy", "joy_node", False)
     assert interface is not None
-    assert shipped_model.cache_info().currsize == 1
+    assert _shipped.cache_info().currsize == 1
+    assert released_model.cache_info().currsize == len(MODEL_DISTROS)
     assert shipped_model("not_a_package") is None
     assert shipped_model("../pyproject") is None  # not a package name: no file is opened
 
@@ -151,7 +180,7 @@ def test_pyproject_ships_the_models_in_the_wheel() -> None:
     else:  # pragma: no cover
         import tomli as tomllib
     config = tomllib.loads((ROOT / "pyproject.toml").read_text())
-    assert "interfaces/*.json" in config["tool"]["setuptools"]["package-data"][
+    assert "interfaces/*/*.json" in config["tool"]["setuptools"]["package-data"][
         "launchverify.models"]
 
 
@@ -328,3 +357,61 @@ def test_a_model_that_creates_nothing_is_not_taken_for_a_silent_node() -> None:
     assert model is not None
     empty = [i for i in model.interfaces if not i.endpoints]
     assert empty and all(i.problems == (EMPTY_MODEL,) for i in empty)
+
+
+# --------------------------------------------------------------------------- distributions
+
+
+def _diffbot(tmp_path: Path, block: str) -> Path:
+    """Return a workspace starting diff_drive_controller (no sources) with ``block``."""
+    package = tmp_path / "ws" / "bot"
+    shutil.copytree(ROOT / "corpus" / "parameters" / "released_contracts" / "diffbot", package)
+    config = package / "config" / "controllers.yaml"
+    config.write_text(config.read_text().replace("    publish_rate: 50.0  # expect-not: LV405",
+                                                 block))
+    return tmp_path / "ws"
+
+
+def _codes_at(capsys: pytest.CaptureFixture[str], *args: str) -> set[tuple[str, str]]:
+    """Return the findings on rear_controller's last line (the block ``_diffbot`` wrote)."""
+    main(["check", "--no-cache", "--format", "json", *args])
+    report = json.loads(capsys.readouterr().out)
+    config = Path(args[0]) / "bot" / "config" / "controllers.yaml"
+    last = len(config.read_text().splitlines())
+    return {(f["code"], f["severity"]) for f in report["findings"]
+            if f["file"].endswith("controllers.yaml") and f["line"] == last}
+
+
+def test_a_name_one_release_declares_is_judged_by_the_distribution(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """diff_drive_controller's use_stamped_vel is humble's alone (jazzy dropped it)."""
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    ws = _diffbot(tmp_path, "    use_stamped_vel: false")
+    assert _codes_at(capsys, str(ws), "--distro", "humble") == set()
+    assert _codes_at(capsys, str(ws), "--distro", "jazzy") == {("LV405", "warning")}
+    assert _codes_at(capsys, str(ws)) == set()  # any distribution: one release takes it
+    assert _codes_at(capsys, str(ws), "--distro", "kilted") == set()  # no model: merged
+
+
+def test_a_typo_is_an_error_for_every_distribution(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    ws = _diffbot(tmp_path, "    cmd_vel_timout: 0.5")
+    for distro in ([], ["--distro", "humble"], ["--distro", "rolling"]):
+        assert _codes_at(capsys, str(ws), *distro) == {("LV405", "error")}
+
+
+def test_the_merge_keeps_only_what_every_release_agrees_on() -> None:
+    merged = shipped_model("diff_drive_controller")
+    humble = released_model("diff_drive_controller", "humble")
+    assert merged is not None and humble is not None
+    (interface,) = merged.interfaces
+    names = {p.name: p for p in interface.parameters}
+    assert "use_stamped_vel" in names  # humble's alone: taken
+    humble_only = {p.name for p in humble.interfaces[0].parameters} - {
+        p.name for p in released_model("diff_drive_controller", "jazzy").interfaces[0].parameters}
+    assert all(not names[n].required and not names[n].limits for n in humble_only)
+    assert interface.distro is None and humble.interfaces[0].distro == "humble"
+    assert shipped_model("diff_drive_controller", "iron") == merged

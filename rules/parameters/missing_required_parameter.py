@@ -6,6 +6,8 @@ from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
+from launchverify.topology.limits import allowed, failed_check
+from launchverify.topology.model import Parameter
 
 
 class MissingRequiredParameter(Rule):
@@ -22,13 +24,16 @@ class MissingRequiredParameter(Rule):
     line. A parameter declared with a type alone (`rclcpp::PARAMETER_STRING`,
     `Parameter.Type.STRING`) is declared unset; whether that fails depends on how the code
     reads it (`get_parameter(name, value)` just returns `false`), so it is not reported.
+    A parameter whose default its own validation rejects is required too
+    (diff_drive_controller's `wheel_separation`: default 0.0, must be greater than 0.0).
 
     ## Why it matters
     rclcpp's `declare_parameter<T>(name)` throws
     `UninitializedStaticallyTypedParameterException` (`Statically typed parameter 'x'
     must be initialized`) at start (humble to rolling); a generated parameter listener
     throws for a definition without a default; nav2's helper throws
-    `InvalidParameterValueException`. The node dies before doing anything.
+    `InvalidParameterValueException`; a default that fails validation throws `Invalid value
+    set during initialization`. The node dies before doing anything.
 
     ## Example
     ```python
@@ -44,7 +49,7 @@ class MissingRequiredParameter(Rule):
     slug = "missing-required-parameter"
     severity = Severity.ERROR
     every_context = True
-    message = ("{node} requires parameter '{name}' ({kind}, declared without a default), "
+    message = ("{node} requires parameter '{name}' ({kind}, {why}), "
                "and the launch never sets it: the node throws at start")
 
     def check(self, graph: LaunchGraph, ctx: RuleContext) -> Iterator[Finding]:
@@ -59,14 +64,32 @@ class MissingRequiredParameter(Rule):
             if not contract.values_known:
                 continue
             required = {p.name: p for p in contract.declared
-                        if p.required and "*" not in p.name}
+                        if _required(p) is not None and "*" not in p.name}
             for name, declared in sorted(required.items()):
                 if contract.received.values.get(name) or any(
-                        not p.required for p in contract.declarations(name)):
+                        _required(p) is None for p in contract.declarations(name)):
                     continue
                 finding = self.finding(
                     contract.composed.node.origin,
                     node=describe_node(view, contract.composed.node), name=name,
-                    kind=declared.type or "typed",
+                    kind=declared.type or "typed", why=_required(declared),
                     related=(Related(declared.span, f"'{name}' is declared here"),))
                 yield finding
+
+
+def _required(declared: Parameter) -> str | None:
+    """Return why a declaration needs a value from the launch, ``None`` when it does not.
+
+    Declared without a default, or with a default its own validation rejects: the
+    generated listener (and rclcpp, for a descriptor's range) checks the initial value
+    and throws (diff_drive_controller's ``wheel_separation`` defaults to 0.0 and must be
+    greater than 0.0).
+    """
+    if declared.required:
+        return "declared without a default"
+    if declared.default is None or not declared.limits:
+        return None
+    failed = failed_check(declared.limits, declared.default)
+    if failed is None:
+        return None
+    return f"its default {declared.default!r} is not {allowed(failed)}"

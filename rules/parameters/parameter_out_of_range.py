@@ -6,9 +6,7 @@ from collections.abc import Iterator
 
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
-
-_WORDS = {"bounds": "within [{0}, {1}]", "gt": "greater than {0}", "gt_eq": "at least {0}",
-          "lt": "less than {0}", "lt_eq": "at most {0}", "one_of": "one of {0}"}
+from launchverify.topology.limits import allowed, failed_check
 
 
 class ParameterOutOfRange(Rule):
@@ -61,49 +59,14 @@ class ParameterOutOfRange(Rule):
                 winner = contract.received.winner(declared.name) if declared.limits else None
                 if winner is None or winner.value is None:
                     continue
-                failed = next((limit for limit in declared.limits
-                               if violates(limit, winner.value)), None)
+                failed = failed_check(declared.limits, winner.value)
                 if failed is None:
                     continue
-                check, arguments = failed
                 yield self.finding(
                     winner.span, node=describe_node(view, contract.composed.node),
                     name=declared.name, value=_shown(winner.value),
-                    allowed=_WORDS[check].format(*arguments, "", ""),
+                    allowed=allowed(failed),
                     related=(Related(declared.span, f"'{declared.name}' is validated here"),))
-
-
-def violates(limit: tuple[str, tuple[object, ...]], value: object) -> bool:
-    """Return whether a value surely fails a check (``False`` when it cannot be told).
-
-    Examples:
-        >>> violates(("bounds", (0.0, 1.0)), 2.5), violates(("bounds", (0.0, 1.0)), 0.5)
-        (True, False)
-        >>> violates(("one_of", (["a", "b"],)), "c"), violates(("gt", (0,)), [1])
-        (True, False)
-    """
-    check, arguments = limit
-    if check == "one_of":
-        choices = arguments[0] if arguments else None
-        return isinstance(choices, list) and isinstance(value, (str, int, float)) and \
-            value not in choices
-    number = _number(value)
-    limits = [_number(a) for a in arguments]
-    if number is None or not limits or any(x is None for x in limits):
-        return False
-    if check == "bounds" and len(limits) == 2:
-        low, high = limits
-        return not (low <= number <= high)  # type: ignore[operator]
-    bound = limits[0]
-    assert bound is not None
-    return {"gt": number <= bound, "gt_eq": number < bound, "lt": number >= bound,
-            "lt_eq": number > bound}.get(check, False)
-
-
-def _number(value: object) -> float | None:
-    if isinstance(value, bool) or not isinstance(value, (int, float)):
-        return None
-    return float(value)
 
 
 def _shown(value: object) -> str:

@@ -36,9 +36,12 @@ class UnknownParameter(Rule):
     names of their own), when it uses a library known to declare parameters on it
     (nav2_util), or when its class derives from a node class whose code is not in the
     workspace. Names built at run time keep their literal parts (`plugin_name +
-    ".max_vel"` covers `FollowPath.max_vel`). For a released package known from the model
-    shipped with launchverify (extracted from one release), only a name that misspells a
-    declared one is reported: another release may declare more. Values given to every
+    ".max_vel"` covers `FollowPath.max_vel`). A released package without sources here is
+    judged by the model shipped with launchverify, extracted from the release of the
+    distribution checked for (`--distro` or `ROS_DISTRO`: humble, jazzy, rolling); for
+    any other distribution, or none, by what every release declares, and then only a
+    name that misspells a declared one is reported (a name one release takes is no
+    mistake). Values given to every
     node (`/**` blocks, `SetParameter`) are meant for whichever nodes use them and are not
     judged, nor rcl's own parameters (`use_sim_time`, `qos_overrides.*`).
 
@@ -94,7 +97,8 @@ class UnknownParameter(Rule):
                     if takers.get(_source(contribution, name), 0) > 0:
                         continue  # one value given to several nodes: another one takes it
                     typo = sole_spelling(name, known)
-                    if typo is None and modelled:
+                    if typo is None and modelled and interface is not None \
+                            and interface.distro is None:
                         continue  # another release of the package may declare it
                     finding = self.finding(
                         span, node=describe_node(view, contract.composed.node), name=name,

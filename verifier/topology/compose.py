@@ -126,12 +126,13 @@ class WorkspaceInterfaces:
     def _modelled(self, package: str, executable: str, component: bool,
                   missing: bool) -> tuple[NodeInterface | None, str | None]:
         """Return the interface the shipped model of a package without sources gives."""
+        from launchverify.models import distros
         from launchverify.topology.shipped import ModelError, shipped_model
 
         why = (f"package {package} is not found" if missing else
                f"package {package} has no C++ or Python sources in the workspace")
         try:
-            model = shipped_model(package) if self.models else None
+            model = shipped_model(package, distros.current()) if self.models else None
         except ModelError as error:
             return None, f"{why}, and its shipped interface model is broken: {error}"
         if model is None:

@@ -188,3 +188,5 @@ class NodeInterface:
     parameters_open: str | None = "its parameter declarations were not read"
     # the node option that declares any parameter given (then types are not fixed by code)
     parameters_undeclared: str | None = None
+    # the one ROS 2 distribution a shipped model's parameters are of (``None``: any)
+    distro: str | None = None

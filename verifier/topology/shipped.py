@@ -3,10 +3,12 @@
 A launch file often starts nodes of packages the user did not build (robot_state_publisher,
 nav2's servers, the controllers): their sources are not in the workspace, so the extractor
 cannot read them. ``bench/interface_models.py`` runs the same extractor on each package's
-public sources at a recorded commit and writes only what it found (executables, node names,
-endpoints, unresolved reasons) to ``models/interfaces/<package>.json``; this module writes
-and reads that format. Nothing here imports tree-sitter, and a package's model is read only
-when a node of it is asked for.
+public sources at a recorded commit, one for each distribution's release branch, and
+writes only what it found (executables, node names, endpoints, parameters, unresolved
+reasons) to ``models/interfaces/<distro>/<package>.json``; this module writes and reads
+that format, and picks the checked distribution's model (``topology.releases``). Nothing
+here imports tree-sitter, and a package's model is read only when a node of it is asked
+for.
 
 The format (``"format": 1``)::
 
@@ -34,7 +36,7 @@ from __future__ import annotations
 
 import json
 import re
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import lru_cache
 from importlib import resources
 from pathlib import Path
@@ -42,6 +44,7 @@ from typing import Any
 
 from launchverify.span import Span
 from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface, Parameter
+from launchverify.topology.releases import BASE, MODEL_DISTROS, merged_interfaces
 
 FORMAT = 1
 _PACKAGE_NAME = re.compile(r"[a-z][a-z0-9_]*")
@@ -123,7 +126,9 @@ def _parameter_document(parameter: Parameter, root: Path) -> dict[str, Any]:
     item: dict[str, Any] = {"name": parameter.name}
     for name in _PARAMETER_FIELDS:
         value = getattr(parameter, name)
-        if value not in (None, False, ()):
+        # a default of 0, 0.0 or false is a value; a flag that is false, no limit, no type
+        # are left out
+        if value is not None and (name == "default" or value not in (False, ())):
             item[name] = [[c, list(a)] for c, a in value] if name == "limits" else value
     item["at"] = f"{_relative(parameter.span.file, root)}:{parameter.span.line}"
     return item
@@ -288,13 +293,19 @@ def _optional(item: dict[str, Any], key: str) -> str | None:
 # --------------------------------------------------------------------------- shipped files
 
 
+def _folder(distro: str) -> Any:
+    return resources.files("launchverify.models") / "interfaces" / distro
+
+
 def shipped_packages() -> list[str]:
-    """Return the packages a model is shipped for, sorted."""
-    folder = resources.files("launchverify.models") / "interfaces"
-    if not folder.is_dir():
-        return []
-    return sorted(entry.name.removesuffix(".json") for entry in folder.iterdir()
-                  if entry.name.endswith(".json"))
+    """Return the packages a model is shipped for (for some distribution), sorted."""
+    names: set[str] = set()
+    for distro in MODEL_DISTROS:
+        folder = _folder(distro)
+        if folder.is_dir():
+            names.update(entry.name.removesuffix(".json") for entry in folder.iterdir()
+                         if entry.name.endswith(".json"))
+    return sorted(names)
 
 
 @lru_cache(maxsize=1)
@@ -303,26 +314,51 @@ def modelled_packages() -> frozenset[str]:
     return frozenset(shipped_packages())
 
 
-@lru_cache(maxsize=64)
-def shipped_model(package: str) -> PackageModel | None:
-    """Return the shipped model of one package (read on first use), ``None`` when none.
+def shipped_model(package: str, distro: str | None = None) -> PackageModel | None:
+    """Return a package's shipped model for one distribution, ``None`` when none.
 
-    A model file that does not parse raises ``ModelError``: it ships with launchverify,
-    so that is our bug, and the test over every shipped file catches it.
+    For a distribution no model is extracted for, or for any (``None``), the merge of
+    every release's (``topology.releases``). A model file that does not parse raises
+    ``ModelError``: it ships with launchverify, so that is our bug, and the test over
+    every shipped file catches it.
     """
+    return _shipped(package, distro if distro in MODEL_DISTROS else None)
+
+
+@lru_cache(maxsize=64)
+def _shipped(package: str, distro: str | None) -> PackageModel | None:
     if not _PACKAGE_NAME.fullmatch(package):
         return None
-    entry = resources.files("launchverify.models") / "interfaces" / f"{package}.json"
+    if distro is not None:
+        return released_model(package, distro)
+    releases = {d: m for d in MODEL_DISTROS if (m := released_model(package, d)) is not None}
+    if not releases:
+        return None
+    base = releases[next(d for d in BASE if d in releases)]
+    if len(releases) == 1:
+        return replace(base, interfaces=tuple(replace(i, distro=None)
+                                              for i in base.interfaces))
+    merged = merged_interfaces({d: m.interfaces for d, m in releases.items()})
+    return replace(base, interfaces=merged)
+
+
+@lru_cache(maxsize=128)
+def released_model(package: str, distro: str) -> PackageModel | None:
+    """Return the model extracted for one distribution (read on first use)."""
+    if not _PACKAGE_NAME.fullmatch(package) or distro not in MODEL_DISTROS:
+        return None
+    entry = _folder(distro) / f"{package}.json"
     if not entry.is_file():
         return None
     try:
         document = json.loads(entry.read_text(encoding="utf-8"))
     except (OSError, ValueError) as error:
-        raise ModelError(f"model of {package}: {error}") from error
+        raise ModelError(f"model of {package} ({distro}): {error}") from error
     model = read_model(document)
     if model.package != package:
-        raise ModelError(f"model file {package}.json names package {model.package}")
-    return model
+        raise ModelError(f"model file {distro}/{package}.json names package {model.package}")
+    return replace(model, interfaces=tuple(replace(i, distro=distro)
+                                           for i in model.interfaces))
 
 
 @lru_cache(maxsize=1)

@@ -129,7 +129,7 @@ def _target_files(source: Path, target: str, targets: BuildTargets,
         for word in targets.sources.get(current, ()):
             files.extend(_expand_word(source, word, problems))
         pending.extend(link for link in targets.links.get(current, ()) if link in targets.sources)
-    if not targets.complete or not seen_targets.isdisjoint(targets.partial):
+    if not targets.sources_known(seen_targets):
         problems.append("CMakeLists.txt was not followed completely: sources may be missing")
     return tuple(_with_headers(source, files)), tuple(problems)
 

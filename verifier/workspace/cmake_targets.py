@@ -34,6 +34,17 @@ _HARMLESS = frozenset({
     "ament_python_install_package", "ament_target_dependencies", "ament_environment_hooks",
     "ament_index_register_resource", "ament_lint_auto_find_test_dependencies",
     "add_ros_test", "call_for_each_rmw_implementation",  # tests: nothing in lib/<package>
+    "set_tests_properties", "ament_generate_version_header",  # a test's; a header's
+})
+# CMake's own modules, which define checks and helpers and build no target of the package
+_CMAKE_MODULES = frozenset({
+    "CheckSymbolExists", "CheckIncludeFile", "CheckIncludeFileCXX", "CheckIncludeFiles",
+    "CheckFunctionExists", "CheckLibraryExists", "CheckCSourceCompiles",
+    "CheckCXXSourceCompiles", "CheckCCompilerFlag", "CheckCXXCompilerFlag",
+    "CheckTypeSize", "CheckStructHasMember", "CheckLanguage", "CheckIPOSupported",
+    "CMakeDependentOption", "CMakePackageConfigHelpers", "CMakeParseArguments",
+    "GNUInstallDirs", "GenerateExportHeader", "CTest", "FindPackageHandleStandardArgs",
+    "ProcessorCount", "TestBigEndian", "FeatureSummary",
 })
 _HARMLESS_PREFIXES = ("target_", "ament_export_", "ament_add_", "ament_auto_add_gtest",
                       "ament_find_", "rosidl_", "ament_cmake_", "find_", "cuda_add_library")
@@ -57,7 +68,10 @@ class CMakeTargets(Reader):
 
     ``complete`` says whether ``installed`` is all; ``built`` whether the components are
     too; ``partial`` names the targets whose sources may be more (an unknown source word
-    hides no executable, nor another target's sources).
+    hides no executable, nor another target's sources). A command not understood may add
+    sources only to a target it names: ``touched`` holds what such commands name, and
+    ``sources_open`` says one may have named any (an unknown word, a loop or subdirectory
+    not followed, a file included).
     """
 
     def __init__(self, source: Path, name: str) -> None:
@@ -71,9 +85,12 @@ class CMakeTargets(Reader):
         self.components: list[tuple[str, str, str | None]] = []
         self.links: dict[str, list[str]] = {}
         self.output_names: dict[str, str] = {}  # target -> its file's name
+        self.touched: set[str] = set()  # words of commands not understood
+        self.sources_open = False  # whether such a command may have named any target
 
     def unfollowed(self, command: Command) -> None:
         self.complete = False
+        self.sources_open = True
 
     def follows(self, folder: Path) -> bool:
         return folder.name not in _TEST_FOLDERS  # tests install nothing into lib/<package>
@@ -100,8 +117,17 @@ class CMakeTargets(Reader):
         else:
             if name not in _HARMLESS and not name.startswith(_HARMLESS_PREFIXES):
                 self.complete = False  # include(), unknown macros...
+                self.not_understood(name, args)
             return False  # (it may set a variable its arguments name)
         return True
+
+    def not_understood(self, name: str, args: Words) -> None:
+        """Note what a command not understood may have changed of the targets' sources."""
+        if name == "include" and len(args) >= 1 and args[0] in _CMAKE_MODULES:
+            return
+        if name == "include" or any(word is None for word in args):
+            self.sources_open = True
+        self.touched.update(word for word in args if word)
 
     def record_sources(self, scope: Scope, args: Words) -> None:
         """Remember the source words of a target (keywords dropped, variables expanded).

@@ -41,6 +41,15 @@ class BuildTargets:
     executables: frozenset[str] = frozenset()  # add_executable targets installed in lib/
     output_names: dict[str, str] = field(default_factory=dict)  # target -> installed name
     partial: frozenset[str] = frozenset()  # targets whose sources may be more than listed
+    touched: frozenset[str] = frozenset()  # words of CMake commands not understood
+    sources_open: bool = True  # whether such a command may have added to any target
+
+    def sources_known(self, targets: set[str]) -> bool:
+        """Return whether these targets' sources are all listed.
+
+        No command not understood names one of them, nor may have named one.
+        """
+        return not self.sources_open and targets.isdisjoint(self.partial | self.touched)
 
 
 def build_targets(source: Path, name: str) -> BuildTargets | None:
@@ -54,7 +63,8 @@ def build_targets(source: Path, name: str) -> BuildTargets | None:
                         tuple(cmake.components), cmake.complete and cmake.built,
                         {t: tuple(words) for t, words in cmake.links.items()},
                         frozenset(cmake.targets & cmake.installed or cmake.targets),
-                        dict(cmake.output_names), frozenset(cmake.partial))
+                        dict(cmake.output_names), frozenset(cmake.partial),
+                        frozenset(cmake.touched), cmake.sources_open)
 
 
 @dataclass(frozen=True)
