@@ -31,7 +31,11 @@ class DuplicateNodeName(Rule):
     conditions that exclude each other (`if`/`unless` of one argument, different
     `LaunchConfigurationEquals` values) are not duplicates. A node launched without a
     namespace is in `/`. A file included twice into one namespace starts each of its
-    nodes twice: the finding then names the include that started the first copy.
+    nodes twice: the finding then names the include that started the first copy. A node
+    an event handler starts is named in the scope launch has when the event comes: the
+    group the handler is registered in has popped its pushed namespace by then, so two
+    robots' handlers starting one name both start it in `/` (unless the handler's own
+    entities push a namespace or give one).
 
     Arguments that are not switches (a `namespace` or `robot_name` argument) are not
     varied: they name one robot per launch, and letting them take any value would make

@@ -116,6 +116,32 @@ def text_size(sub: Sub) -> int:
     return total
 
 
+@dataclass(frozen=True, slots=True)
+class ScopeState:
+    """A copy of every scope of one evaluation, to run deferred entities from later.
+
+    launch runs an event handler's entities with the configurations and environment that
+    are current when the event is handled, not those where the handler was registered.
+    """
+
+    configs: dict[str, Any]
+    env: dict[str, Sub | None]
+    overrides: dict[str, Any]
+    config_stack: tuple[dict[str, Any], ...]
+    env_stack: tuple[dict[str, Sub | None], ...]
+    override_stack: tuple[dict[str, Any], ...]
+
+
+def _own_lists(scopes: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Copy scopes with lists of their own (``ros_remaps``/``global_params`` are appended to).
+
+    A list shared by two scopes (a pushed scope is a shallow copy) stays shared by the copies.
+    """
+    copies: dict[int, list[Any]] = {}
+    return [{k: copies.setdefault(id(v), list(v)) if isinstance(v, list) else v
+             for k, v in scope.items()} for scope in scopes]
+
+
 class Scopes:
     """The stack of configuration and environment scopes of one evaluation."""
 
@@ -128,6 +154,21 @@ class Scopes:
         self.overrides: dict[str, Any] = {}
         self._override_stack: list[dict[str, Any]] = []
         self.measures = Measures()
+
+    def state(self) -> ScopeState:
+        """Return a copy of every scope, which later changes here do not touch."""
+        *stack, configs = _own_lists([*self._config_stack, self.configs])
+        return ScopeState(configs, dict(self.env), dict(self.overrides), tuple(stack),
+                          tuple(dict(e) for e in self._env_stack),
+                          tuple(dict(o) for o in self._override_stack))
+
+    def restore(self, state: ScopeState) -> None:
+        """Make the scopes a copy of ``state`` (which stays as it was)."""
+        *self._config_stack, self.configs = _own_lists([*state.config_stack, state.configs])
+        self.env = dict(state.env)
+        self.overrides = dict(state.overrides)
+        self._env_stack = [dict(e) for e in state.env_stack]
+        self._override_stack = [dict(o) for o in state.override_stack]
 
     # launch's PushLaunchConfigurations / PopLaunchConfigurations
     def push_configs(self) -> None:

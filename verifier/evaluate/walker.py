@@ -3,8 +3,11 @@
 Actions are visited in launch's order (depth first, an include's actions before the next
 sibling), with launch's scoping. Conditions that the launch files decide are applied;
 conditions that depend on arguments or the machine extend the path condition and both
-outcomes are explored. Deferred actions (timers, event handlers) are visited in place with
-a copy of the scope, as jazzy hands them their configurations.
+outcomes are explored. What launch runs later (a timer's actions, an event handler's
+entities) is visited after the whole launch file, as launch runs it (``PendingRun``): a
+timer's actions with a copy of the scope it was executed in, as jazzy hands them their
+configurations; a handler's entities in the scope launch has when it handles an event, the
+top level as the file left it, every group popped.
 """
 
 from __future__ import annotations
@@ -12,8 +15,10 @@ from __future__ import annotations
 import dataclasses
 import itertools
 import os
+from collections import deque
 from collections.abc import Iterator
 from contextlib import contextmanager
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -30,6 +35,7 @@ from launchverify.evaluate.scope import (
     ScopedParam,
     ScopedRemap,
     Scopes,
+    ScopeState,
     guarded,
 )
 from launchverify.evaluate.static_args import include_argument_names, static_arguments
@@ -92,6 +98,36 @@ MAX_LOOP = 256
 MAX_FILE_CONTENT = 1024 * 1024
 
 
+@dataclass(frozen=True, slots=True)
+class PendingRun:
+    """What launch runs later, to visit once the launch file has been visited.
+
+    launch visits a launch file's actions in one go; timers fire and events are handled
+    only afterwards. For an event it pushes ``context.locals`` around the handler's
+    entities, never the launch configurations (``LaunchService.__process_event``), so they
+    run in the scope current then: the top level, every group popped. Nothing in
+    ``OnActionEventBase``/``EventHandler`` captures the scope at registration, in humble,
+    jazzy and rolling alike. A ``TimerAction`` captures the configurations when it is
+    executed and runs its actions in them (jazzy 3.4.5, rolling): ``state``.
+    Kept for both is where they were written (include chain, path condition, and the
+    stacks that name their records).
+    """
+
+    handler: int | None  # in ``graph.handlers``; ``None``: a timer's actions
+    state: ScopeState | None  # the scope a timer captured (a handler's: when it runs)
+    entities: tuple[a.Action, ...]
+    ctx: Ctx
+    handler_stack: tuple[int, ...]
+    include_stack: tuple[IncludeRecord, ...]
+    file_stack: tuple[tuple[Path, tuple[tuple[str | None, str], ...]], ...]
+    current_file: Path
+    calls: tuple[Span, ...]
+    executing: tuple[int, ...]
+    delays: tuple[float, ...]  # the timers' periods (since the launch or the handler)
+    built_otherwise: int
+    at_shutdown: bool
+
+
 class Walker:
     """Evaluates one root launch file into a ``LaunchGraph``."""
 
@@ -127,6 +163,7 @@ class Walker:
         self.container_names: dict[int, tuple[a.Action, s.Sub | None]] = {}
         self.budget = ExpansionBudget()  # what this root may expand (``budget.py``)
         self.maybe_failing: set[tuple[object, ...]] = set()  # ``may_fail``'s, once each
+        self.pending: deque[PendingRun] = deque()  # what launch runs later: ``run_pending``
 
     # ------------------------------------------------------------------ recording
 
@@ -249,11 +286,13 @@ class Walker:
         self.record_lookups(loaded.launch.lookups, ctx)
         self.graph.mentioned.update(loaded.launch.mentions)
         try:
-            self.visit_all(loaded.launch.actions, ctx)
+            try:
+                self.visit_all(loaded.launch.actions, ctx)
+            finally:
+                self.file_stack.pop()
+            self.run_pending()  # the events launch handles once the file is visited
         except BoundReached as reached:
             self.cut_short(reached)
-        finally:
-            self.file_stack.pop()
         self.name_rerun_loops()
 
     def cut_short(self, reached: BoundReached) -> None:
@@ -750,12 +789,7 @@ class Walker:
             seconds = max(float(period), 0.0) if period is not None else 0.0
         except ValueError:
             seconds = 0.0
-        self.delays.append(seconds)
-        try:
-            with self.scope():
-                self.visit_all(action.actions, dataclasses.replace(ctx, deferred=True))
-        finally:
-            self.delays.pop()
+        self.defer(None, self.scopes.state(), action.actions, ctx, (*self.delays, seconds))
 
     def do_ForLoop(self, action: a.ForLoop, ctx: Ctx) -> None:
         reducer = self.reducer.at(ctx, action.span)
@@ -898,14 +932,8 @@ class Walker:
         index = self.record_handler(ctx.origin(action.span), handler.event, handler.target,
                                     handler.handle_once, handler.filters,
                                     handler.custom_matcher, handler.filter_spans)
-        if handler.event == "shutdown":  # runs when the launch ends: logs, cleanup
-            at_shutdown, self.at_shutdown = self.at_shutdown, True
-            try:
-                self.run_handler(index, handler.entities, ctx)
-            finally:
-                self.at_shutdown = at_shutdown
-            return
-        self.run_handler(index, handler.entities, ctx)
+        # OnShutdown runs when the launch ends: logs, cleanup
+        self.run_handler(index, handler.entities, ctx, at_shutdown=handler.event == "shutdown")
 
     def record_execution(self, action: a.Action, ctx: Ctx) -> bool:
         """Record that an action executes; return ``False`` when launch refuses to.
@@ -947,16 +975,66 @@ class Walker:
             self.execution, filters, custom, filter_spans))
         return len(self.graph.handlers) - 1
 
-    def run_handler(self, index: int, entities: tuple[a.Action, ...], ctx: Ctx) -> None:
-        """Visit what a handler runs when its event happens (later, in its own scope)."""
-        self.handler_stack.append(index)
-        delays, self.delays = self.delays, []  # timers in the handler start when it fires
+    def run_handler(self, index: int, entities: tuple[a.Action, ...], ctx: Ctx, *,
+                    at_shutdown: bool = False) -> None:
+        """Visit what a handler runs when its event happens: later, in the scope of then."""
+        # timers in the handler start when it fires
+        self.defer(index, None, entities, ctx, (), at_shutdown=at_shutdown)
+
+    def defer(self, handler: int | None, state: ScopeState | None,
+              entities: tuple[a.Action, ...], ctx: Ctx, delays: tuple[float, ...], *,
+              at_shutdown: bool = False) -> None:
+        """Queue what launch runs later for ``run_pending``, with where it is written."""
+        self.pending.append(PendingRun(
+            handler, state, entities, dataclasses.replace(ctx, deferred=True),
+            tuple(self.handler_stack), tuple(self.include_stack), tuple(self.file_stack),
+            self.current_file, tuple(self.calls), tuple(self.executing), delays,
+            self.built_otherwise, self.at_shutdown or at_shutdown))
+
+    def run_pending(self) -> None:
+        """Visit timers' actions and handlers' entities as launch does, in the order queued.
+
+        A handler's entities start from the scope the launch file left at its top level,
+        after its last action (a configuration set there later than the handler's group
+        counts); one registered by another handler's entities starts from the scope that
+        one left (it ran, unscoped, at the top level before this event could come). What
+        unrelated handlers leave set depends on which event comes first, which is not
+        modelled: each starts from the launch file's top level.
+        """
+        top = self.scopes.state()
+        left: dict[int | None, ScopeState] = {}  # what each handler's entities left
+        saved = (self.handler_stack, self.include_stack, self.file_stack, self.current_file,
+                 self.calls, self.executing, self.built_otherwise, self.at_shutdown)
         try:
-            with self.scope():
-                self.visit_all(entities, dataclasses.replace(ctx, deferred=True))
+            while self.pending:
+                run = self.pending.popleft()
+                if run.state is not None:
+                    self.scopes.restore(run.state)
+                else:
+                    assert run.handler is not None
+                    self.scopes.restore(left.get(self.graph.handlers[run.handler].within, top))
+                self.visit_pending(run)
+                if run.handler is not None:
+                    left[run.handler] = self.scopes.state()
         finally:
-            self.handler_stack.pop()
-            self.delays = delays
+            (self.handler_stack, self.include_stack, self.file_stack, self.current_file,
+             self.calls, self.executing, self.built_otherwise, self.at_shutdown) = saved
+            self.scopes.restore(top)
+            self.delays = []
+
+    def visit_pending(self, run: PendingRun) -> None:
+        """Visit one deferred list of actions where it was written (its stacks), unscoped."""
+        within = [] if run.handler is None else [run.handler]
+        self.handler_stack = [*run.handler_stack, *within]
+        self.include_stack = list(run.include_stack)
+        self.file_stack = list(run.file_stack)
+        self.current_file = run.current_file
+        self.calls = list(run.calls)
+        self.executing = list(run.executing)
+        self.built_otherwise = run.built_otherwise
+        self.at_shutdown = run.at_shutdown
+        self.delays = list(run.delays)
+        self.visit_all(run.entities, run.ctx)
 
     def do_EmitEvent(self, action: a.EmitEvent, ctx: Ctx) -> None:
         """Record lifecycle requests; other events are left to the event analysis."""
