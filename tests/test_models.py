@@ -188,6 +188,14 @@ def test_round_trip_of_a_workspace_package() -> None:
         for endpoint, original in zip(read.endpoints, kept, strict=True):
             relative = original.span.file.relative_to(root).as_posix()
             assert endpoint.span.file == Path(f"demo@0123456/demo_cpp/{relative}")
+        if extracted.node_name_at is None:
+            assert read.node_name_at is None
+        else:  # where the code names the node, as the endpoints' places
+            assert read.node_name_at is not None
+            relative = extracted.node_name_at.file.relative_to(root).as_posix()
+            assert read.node_name_at.file == Path(f"demo@0123456/demo_cpp/{relative}")
+            assert read.node_name_at.line == extracted.node_name_at.line
+    assert any(i.node_name_at is not None for i in model.interfaces)
 
 
 def _document(**changes: Any) -> dict[str, Any]:
