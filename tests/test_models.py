@@ -112,8 +112,9 @@ def test_shipped_models_are_data_not_code() -> None:
         assert set(document) == {"format", "package", "source", "extracted_with",
                                  "interfaces"}
         for interface in document["interfaces"]:
-            assert set(interface) == {"executable", "component", "node_name", "problems",
-                                      "parameters_open", "endpoints", "parameters"}
+            assert set(interface) - {"node_name_at"} == {
+                "executable", "component", "node_name", "problems", "parameters_open",
+                "endpoints", "parameters"}
             for endpoint in interface["endpoints"]:
                 assert set(endpoint) <= allowed, (package, endpoint)
             for parameter in interface["parameters"]:
@@ -217,6 +218,14 @@ def test_round_trip_of_a_workspace_package() -> None:
         for endpoint, original in zip(read.endpoints, kept, strict=True):
             relative = original.span.file.relative_to(root).as_posix()
             assert endpoint.span.file == Path(f"demo@0123456/demo_cpp/{relative}")
+        if extracted.node_name_at is None:
+            assert read.node_name_at is None
+        else:  # where the code names the node, as the endpoints' places
+            assert read.node_name_at is not None
+            relative = extracted.node_name_at.file.relative_to(root).as_posix()
+            assert read.node_name_at.file == Path(f"demo@0123456/demo_cpp/{relative}")
+            assert read.node_name_at.line == extracted.node_name_at.line
+    assert any(i.node_name_at is not None for i in model.interfaces)
 
 
 def _document(**changes: Any) -> dict[str, Any]:

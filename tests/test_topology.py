@@ -182,6 +182,10 @@ def test_components_in_one_library_keep_their_own_endpoints() -> None:
     assert [(e.kind.value, e.name) for e in ping.endpoints] == [("publisher", "ping")]
     assert [(e.kind.value, e.name) for e in pong.endpoints] == [("subscription", "ping")]
     assert (ping.node_name, pong.node_name) == ("ping", "pong")
+    # where each constructor names its node: what LV101 points at
+    assert ping.node_name_at is not None and pong.node_name_at is not None
+    assert ping.node_name_at.file.name == "pair.cpp"
+    assert ping.node_name_at.line != pong.node_name_at.line
 
 
 def test_executables_sharing_a_library_keep_the_classes_their_main_builds() -> None:

@@ -27,6 +27,7 @@ from launchverify.ir.symbolic import Arg, EnvInput, Select
 from launchverify.models.ros2_control import CONTROL_NODE, MANAGER_NAME
 from launchverify.models.ros_names import node_fqn
 from launchverify.parameters import effective_parameters
+from launchverify.span import Span
 from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface
 from launchverify.topology.resolve import (
     Resolution,
@@ -465,6 +466,53 @@ def named_record(graph: LaunchGraph, composed: NodeEndpoints) -> NodeRecord:
     if not isinstance(record, NodeRecord):
         record = kept[id(composed.node)] = replace(composed.node, fqn=Text(composed.fqn))
     return record
+
+
+@dataclass(frozen=True, slots=True)
+class CodeName:
+    """The name a node runs under because its code gives it and the launch leaves it so.
+
+    ``at`` is where the code gives it (``None`` when not recorded: a model extracted
+    before ``node_name_at`` was); ``origin`` says what it was read from, for messages.
+    """
+
+    name: str
+    interface: NodeInterface
+    at: Span | None
+    origin: str
+
+
+# Remap sources that rename a node or move it to another namespace
+RENAMING = frozenset({"__node", "__name", "__ns"})
+
+
+def code_name(graph: LaunchGraph, source: InterfaceSource, node: NodeRecord) -> CodeName | None:
+    """Return the name a node's code gives it, when that is the name the node runs under.
+
+    Only a fact: the launch gives no name, the package and executable (or plugin) do not
+    depend on launch arguments, the code gives one literal name (``NodeInterface.node_name``),
+    and no remap rule of the node (its command line's ``-r``, ``remappings``, a
+    ``SetRemap``) renames it or moves it, nor may (a rule not known before launch).
+    """
+    if node.name is not None:
+        return None
+    composer = Composer(graph, source, symbolic=True)  # what depends on arguments: unknown
+    package, executable = composer.text(node.package), composer.text(node.executable)
+    if package is None or executable is None:
+        return None
+    interface, _ = source.interface(package, executable, node.composable)
+    if interface is None or not interface.node_name:
+        return None
+    rules, unknown = composer.ros_argument_rules(node)
+    if unknown is not None:
+        return None
+    for rule in (*rules, *composer.remap_rules(node)):
+        if rule.src is None or rule.src in RENAMING:  # an unknown source may be __node
+            return None
+    origin = f"the sources of {package}" if interface.model is None else (
+        f"the model of {package} shipped with launchverify, extracted from "
+        f"{interface.model}")
+    return CodeName(interface.node_name, interface, interface.node_name_at, origin)
 
 
 def _has_inputs(sub: Sub) -> bool:

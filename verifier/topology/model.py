@@ -172,7 +172,8 @@ class NodeInterface:
     ``sources`` are the files read; ``problems`` say what could not be read or mapped, so
     an empty ``endpoints`` never passes for "creates nothing" when it is incomplete.
     ``model`` says where an interface shipped as a model (``topology.shipped``) was
-    extracted from; ``None`` for one read from the workspace's sources.
+    extracted from; ``None`` for one read from the workspace's sources. ``node_name_at``
+    is where the code gives ``node_name`` (a model's records it when extracted with it).
     """
 
     package: str
@@ -190,3 +191,4 @@ class NodeInterface:
     parameters_undeclared: str | None = None
     # the one ROS 2 distribution a shipped model's parameters are of (``None``: any)
     distro: str | None = None
+    node_name_at: Span | None = None

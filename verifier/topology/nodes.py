@@ -83,13 +83,16 @@ def target_interface(package: str, target: Target, lookup: Lookup | None = None,
     if not target.sources and not problems:
         problems.append("no source file found")
     parameters = _parameters(declaring, bool(loaders))
+    node_name = _node_name(results, target)
     return NodeInterface(package, target.executable, target.component,
-                         _node_name(results, target), tuple(endpoints),
+                         None if node_name is None else node_name.name, tuple(endpoints),
                          target.sources, tuple(problems), parameters=parameters,
                          parameters_open=_parameters_open(declaring, target, parameters,
                                                           missing),
                          parameters_undeclared=next(
-                             (r.undeclared for r in results if r.undeclared), None))
+                             (r.undeclared for r in results if r.undeclared), None),
+                         node_name_at=None if node_name is None or node_name.name is None
+                         else node_name.span)
 
 
 def _library_headers(results: list[FileInterfaces], target: Target,
@@ -237,8 +240,8 @@ def _class(plugin: str) -> str:
     return plugin.rsplit("::", 1)[-1]
 
 
-def _node_name(results: Iterable[FileInterfaces], target: Target) -> str | None:
-    """Return the one default node name the code gives.
+def _node_name(results: Iterable[FileInterfaces], target: Target) -> NodeName | None:
+    """Return the one default node name the code gives, where it first gives it.
 
     A component's own class decides first, then an executable's own files (its ``main``),
     then all files; several different names leave it unknown.
@@ -246,12 +249,12 @@ def _node_name(results: Iterable[FileInterfaces], target: Target) -> str | None:
     names: list[NodeName] = [n for r in results for n in r.node_names]
     groups = []
     if target.component is not None:
-        groups.append({n.name for n in names if n.owner == _class(target.component)})
-    groups.append({n.name for n in names if n.span.file in target.main_sources})
-    groups.append({n.name for n in names})
-    for distinct in groups:
-        if distinct:
-            return distinct.pop() if len(distinct) == 1 else None  # {None}: computed
+        groups.append([n for n in names if n.owner == _class(target.component)])
+    groups.append([n for n in names if n.span.file in target.main_sources])
+    groups.append(names)
+    for group in groups:
+        if group:  # one name, or computed (None)
+            return group[0] if len({n.name for n in group}) == 1 else None
     return None
 
 

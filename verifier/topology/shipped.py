@@ -26,6 +26,9 @@ An endpoint lists only the fields that are set: ``kind``, ``name`` (as written; 
 unknown), ``type``, ``name_parameter``, ``parameter_default``, ``via``, ``note``,
 ``unresolved`` (the reason) and ``at`` (file and line in the package, at that commit).
 
+An interface may say where its code gives ``node_name`` (``node_name_at``, file and line as
+``at``); a model extracted before that was recorded does not.
+
 An interface may list the ``parameters`` its code declares (``name``, ``type``,
 ``default``, ``dynamic``, ``required``, ``read_only``, ``limits``, ``via``,
 ``at``; only those set) and ``parameters_open``: why it may accept other names. A model
@@ -113,8 +116,11 @@ def _interface_document(interface: NodeInterface, root: Path) -> dict[str, Any]:
         item = _endpoint_document(endpoint, root)
         if not any(_same(item, seen) for seen in endpoints):  # re-created in callbacks
             endpoints.append(item)
+    named_at = {} if interface.node_name_at is None else {
+        "node_name_at": f"{_relative(interface.node_name_at.file, root)}:"
+                        f"{interface.node_name_at.line}"}
     return {"executable": interface.executable, "component": interface.component,
-            "node_name": interface.node_name,
+            "node_name": interface.node_name, **named_at,
             "problems": [_relative_text(p, root) for p in interface.problems],
             "parameters_open": None if interface.parameters_open is None else
             _relative_text(interface.parameters_open, root),
@@ -233,7 +239,9 @@ def _interface(package: str, item: Any, source: ModelSource) -> NodeInterface:
                          tuple(problems), source.describe(),
                          tuple(_parameter(p, source) for p in parameters or ()),
                          _optional(item, "parameters_open") if parameters is not None else
-                         "its parameter declarations were not extracted into the model")
+                         "its parameter declarations were not extracted into the model",
+                         node_name_at=_span(item, source, "node_name_at")
+                         if _optional(item, "node_name_at") else None)
 
 
 def _parameter(item: Any, source: ModelSource) -> Parameter:
@@ -250,9 +258,9 @@ def _parameter(item: Any, source: ModelSource) -> Parameter:
                      tuple((str(c), tuple(a)) for c, a in limits), _optional(item, "via"))
 
 
-def _span(item: dict[str, Any], source: ModelSource) -> Span:
+def _span(item: dict[str, Any], source: ModelSource, key: str = "at") -> Span:
     """Return where a model's item is written: ``<repository>@<commit>/<path>:<line>``."""
-    where = _optional(item, "at") or ""
+    where = _optional(item, key) or ""
     file, _, line = where.rpartition(":")
     location = f"{source.label()}/{source.path}/{file}" if source.path else (
         f"{source.label()}/{file}")

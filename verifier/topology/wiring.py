@@ -113,19 +113,44 @@ def knows_code(graph: LaunchGraph, ctx: RuleContext) -> bool:
                if graph.runs(node.origin) is not False)
 
 
+def has_code(ctx: RuleContext, package: str) -> bool:
+    """Return whether a package's interfaces can be known: sources here, or a shipped model.
+
+    Asks the package index and the list of models only; reads no source.
+    """
+    found = ctx.packages.find(package) if ctx.packages is not None else None
+    if found is not None and found.source is not None:
+        return True
+    from launchverify.topology.shipped import modelled_packages
+
+    return package in modelled_packages()
+
+
+def interfaces_of(ctx: RuleContext) -> InterfaceSource:
+    """Return the check's interface reader, shared by the rules (each package read once).
+
+    The workspace's sources (then shipped models) when a package index is known, else
+    shipped models only.
+    """
+    from launchverify.topology.compose import WorkspaceInterfaces
+    from launchverify.workspace.packages import PackageIndex
+
+    shared = ctx.memo_for("topology")
+    key = "interfaces" if ctx.packages is not None else "models"
+    reader = shared.get(key)
+    if not isinstance(reader, WorkspaceInterfaces):
+        reader = shared[key] = WorkspaceInterfaces(
+            ctx.packages if ctx.packages is not None else PackageIndex())
+    return reader
+
+
 def workspace_view(graph: LaunchGraph, ctx: RuleContext) -> WiringView:
     """Return the graph's view with interfaces read from the workspace's sources.
 
     One reader per check, shared by the rules (each package's sources are read once).
     """
-    from launchverify.topology.compose import WorkspaceInterfaces
-
-    shared = ctx.memo_for("topology")
-    reader = shared.get("interfaces")
-    if not isinstance(reader, WorkspaceInterfaces):
-        assert ctx.packages is not None
-        reader = shared["interfaces"] = WorkspaceInterfaces(ctx.packages)
-    return view_of(graph, reader)
+    assert ctx.packages is not None
+    return view_of(graph, interfaces_of(ctx))
 
 
 def any_view(graph: LaunchGraph, ctx: RuleContext) -> WiringView:
@@ -133,12 +158,7 @@ def any_view(graph: LaunchGraph, ctx: RuleContext) -> WiringView:
 
     The workspace's view when a package index is known, else one of shipped models only.
     """
-    if ctx.packages is not None:
-        return workspace_view(graph, ctx)
-    from launchverify.topology.compose import WorkspaceInterfaces
-    from launchverify.workspace.packages import PackageIndex
-
-    return view_of(graph, WorkspaceInterfaces(PackageIndex()))
+    return view_of(graph, interfaces_of(ctx))
 
 
 def globs_option(ctx: RuleContext, key: str, default: tuple[str, ...] = ()) -> tuple[str, ...]:
