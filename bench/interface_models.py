@@ -23,11 +23,14 @@ import subprocess
 import sys
 import tempfile
 import time
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 
 from launchverify import __version__
+from launchverify.topology.inherited import Lookup
+from launchverify.topology.model import NodeInterface, PluginContract
 from launchverify.topology.nodes import package_interfaces
+from launchverify.topology.plugins import plugin_contracts
 from launchverify.topology.releases import MODEL_DISTROS
 from launchverify.topology.shipped import ModelSource, dump_model, model_document
 from launchverify.workspace.packages import Package, PackageIndex, scan_sources
@@ -176,6 +179,8 @@ def _extract(git: Path, source: Source, distro: str, branch: str, packages: list
     commit = export(git, branch, tree)
     found = {name: folder for name, folder in scan_sources(tree)}
     lookup = PackageIndex([tree]).lookup()  # base classes in sibling packages
+    repository = [Package(name, source=folder) for name, folder in sorted(found.items())]
+    plugins: dict[tuple[str, ...], tuple[PluginContract, ...]] = {}
     output.mkdir(parents=True, exist_ok=True)
     for package in packages:
         folder = found.get(package)
@@ -184,7 +189,8 @@ def _extract(git: Path, source: Source, distro: str, branch: str, packages: list
                   file=sys.stderr)
             continue
         started = time.perf_counter()
-        interfaces = [i for i in package_interfaces(Package(package, source=folder), lookup)
+        interfaces = [with_plugins(i, repository, lookup, plugins)
+                      for i in package_interfaces(Package(package, source=folder), lookup)
                       if not _test_only(i.sources, folder)]
         if not interfaces:  # a library other packages' nodes use: no node of its own
             print(f"skipped {package}: no executable or component in {branch} ({distro})",
@@ -195,13 +201,23 @@ def _extract(git: Path, source: Source, distro: str, branch: str, packages: list
         where = folder.relative_to(tree).as_posix() if folder != tree else ""
         model = ModelSource(f"https://github.com/{source.repository}", branch, commit, where)
         document = model_document(package, interfaces, model, folder,
-                                  f"launchverify {__version__}")
+                                  f"launchverify {__version__}", tree)
         (output / f"{package}.json").write_text(dump_model(document), encoding="utf-8")
         count = sum(len(i["endpoints"]) for i in document["interfaces"])
         closed = sum(1 for i in document["interfaces"] if i["parameters_open"] is None)
         print(f"{key:<40} {len(interfaces):>3} targets {closed:>3} closed {count:>4} endpoints "
               f"{timings[key]:6.2f} s  ({branch} {commit[:12]})")
     return timings
+
+
+def with_plugins(interface: NodeInterface, repository: list[Package], lookup: Lookup,
+                 known: dict[tuple[str, ...], tuple[PluginContract, ...]]) -> NodeInterface:
+    """Return an interface with what its repository's plugins for its loaders declare."""
+    if not interface.loaders:
+        return interface
+    if interface.loaders not in known:
+        known[interface.loaders] = plugin_contracts(repository, interface.loaders, lookup)
+    return replace(interface, plugins=known[interface.loaders])
 
 
 def main() -> int:

@@ -112,12 +112,16 @@ def test_shipped_models_are_data_not_code() -> None:
         assert set(document) == {"format", "package", "source", "extracted_with",
                                  "interfaces"}
         for interface in document["interfaces"]:
-            assert set(interface) - {"node_name_at"} == {
+            assert set(interface) - {"node_name_at", "loaders", "plugins"} == {
                 "executable", "component", "node_name", "problems", "parameters_open",
                 "endpoints", "parameters"}
             for endpoint in interface["endpoints"]:
                 assert set(endpoint) <= allowed, (package, endpoint)
-            for parameter in interface["parameters"]:
+            plugins = interface.get("plugins", [])
+            for plugin in plugins:
+                assert set(plugin) == {"type", "base", "open", "parameters"}, (package, plugin)
+            for parameter in [*interface["parameters"],
+                              *(p for plugin in plugins for p in plugin["parameters"])]:
                 assert set(parameter) <= parameter_keys, (package, parameter)
                 assert isinstance(parameter.get("default"), (type(None), bool, int, float, str,
                                                              list)), (package, parameter)

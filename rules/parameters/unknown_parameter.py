@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Fix, Related, Rule, RuleContext, Severity, rename
 from launchverify.span import Span
+from launchverify.topology.model import soft_open
 
 if TYPE_CHECKING:
     from launchverify.parameters import Contribution
@@ -31,16 +32,20 @@ class UnknownParameter(Rule):
     renames the key), a warning otherwise.
 
     Only what is known is judged. A node is skipped when its sources were not all read,
-    when its `NodeOptions` (or rclpy `Node` arguments) accept undeclared parameters, when
-    it declares a name built entirely at run time, when it loads plugins (they declare
-    names of their own), when it uses a library known to declare parameters on it
-    (nav2_util), or when its class derives from a node class whose code is not in the
-    workspace. Names built at run time keep their literal parts (`plugin_name +
-    ".max_vel"` covers `FollowPath.max_vel`). A released package without sources here is
-    judged by the model shipped with launchverify, extracted from the release of the
-    distribution checked for (`--distro` or `ROS_DISTRO`: humble, jazzy, rolling); for
-    any other distribution, or none, by what every release declares, and then only a
-    name that misspells a declared one is reported (a name one release takes is no
+    when it declares a name built entirely at run time, when it uses a library known to
+    declare parameters on it, or when its class derives from a node class whose code is
+    not in the workspace. A node whose `NodeOptions` (or rclpy `Node` arguments) accept
+    undeclared parameters, or that loads plugins, is judged for misspellings only: a
+    name one edit from a name it or a plugin known to derive from what it loads declares
+    (nav2's servers are judged with the plugins navigation2 ships; a key under a plugin's
+    name, `FollowPath.desired_linear_vell`, against the plugin its `plugin` key names),
+    while another name may be a plugin's own. Names built at run time keep their literal
+    parts (`plugin_name + ".max_vel"` covers `FollowPath.max_vel`). A released package
+    without sources here is judged by the model shipped with launchverify, extracted from
+    the release of the distribution checked for (`--distro` or `ROS_DISTRO`: humble,
+    jazzy, rolling); for any other distribution, or none, by what every release
+    declares, and then only a name that misspells a declared one is reported (a name one
+    release takes is no
     mistake). Values given to every
     node (`/**` blocks, `SetParameter`) are meant for whichever nodes use them and are not
     judged, nor rcl's own parameters (`use_sim_time`, `qos_overrides.*`).
@@ -80,11 +85,9 @@ class UnknownParameter(Rule):
         reported: set[tuple[object, ...]] = set()
         takers = _takers(view, contracts)
         for contract in contracts:
-            if contract.open is not None:
+            if contract.open is not None and not soft_open(contract.open):
                 continue
             known = frozenset(contract.concrete_names())  # remembered by the suggestions
-            interface = contract.composed.interface
-            modelled = interface is not None and interface.model is not None
             for name, given in contract.received.values.items():
                 if contract.accepts(name):
                     continue
@@ -94,15 +97,15 @@ class UnknownParameter(Rule):
                     if contribution.shared or where in reported:
                         continue
                     reported.add(where)  # one written value, reported once
-                    if takers.get(_source(contribution, name), 0) > 0:
+                    if takers.get(_source(contribution, name), set()) - {id(contract)}:
                         continue  # one value given to several nodes: another one takes it
-                    typo = sole_spelling(name, known)
-                    if typo is None and modelled and interface is not None \
-                            and interface.distro is None:
-                        continue  # another release of the package may declare it
+                    typo = sole_spelling(name, known) or contract.plugin_meant(name)
+                    if typo is None and contract.typos_only:
+                        continue  # another release, or a plugin, may declare it
                     finding = self.finding(
                         span, node=describe_node(view, contract.composed.node), name=name,
-                        hint=did_you_mean(name, known),
+                        hint=did_you_mean(name, known) if typo is None or typo in known
+                        else did_you_mean(name, frozenset({typo})),
                         what=f"with its default for '{typo}'" if typo else "without it",
                         related=(Related(contract.composed.node.origin.span,
                                          "the node is launched here"),),
@@ -112,8 +115,8 @@ class UnknownParameter(Rule):
                     yield finding
 
 
-def _takers(view: WiringView, contracts: list[Contract]) -> dict[tuple[object, ...], int]:
-    """Return, per place a value is written, how many nodes it reaches may take it.
+def _takers(view: WiringView, contracts: list[Contract]) -> dict[tuple[object, ...], set[int]]:
+    """Return, per place a value is written, the nodes it reaches that may take it.
 
     A dict or file given to several nodes (rtabmap's ``parameters`` list, passed to
     odometry, sync and SLAM alike) is meant for whichever of them declares each name: a
@@ -124,7 +127,7 @@ def _takers(view: WiringView, contracts: list[Contract]) -> dict[tuple[object, .
     from launchverify.topology.compose import named_record
 
     judged = {id(c.composed.node): c for c in contracts}
-    reached: dict[tuple[object, ...], int] = {}
+    reached: dict[tuple[object, ...], set[int]] = {}
     for composed in view.nodes:
         contract = judged.get(id(composed.node))
         received = contract.received if contract is not None else effective_parameters(
@@ -132,8 +135,9 @@ def _takers(view: WiringView, contracts: list[Contract]) -> dict[tuple[object, .
         for name, given in received.values.items():
             takes = contract is None or contract.open is not None or contract.accepts(name)
             for contribution in given:
-                key = _source(contribution, name)
-                reached[key] = reached.get(key, 0) + (1 if takes else 0)
+                taken = reached.setdefault(_source(contribution, name), set())
+                if takes:  # (a contract by itself, another node by its record)
+                    taken.add(id(contract) if contract is not None else id(composed))
     return reached
 
 

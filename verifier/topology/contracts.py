@@ -16,7 +16,8 @@ from typing import TYPE_CHECKING
 
 from launchverify.models.node_parameters import BUILTIN_PARAMETERS
 from launchverify.parameters import EffectiveParameters, effective_parameters
-from launchverify.topology.model import Parameter
+from launchverify.suggest import sole_spelling
+from launchverify.topology.model import Parameter, PluginContract, soft_open
 
 if TYPE_CHECKING:
     from launchverify.graph import LaunchGraph
@@ -48,9 +49,53 @@ class Contract:
         return [p for p in self.declared if p.name == name]
 
     def accepts(self, name: str) -> bool:
-        """Return whether the node declares ``name`` (or a pattern covers it)."""
-        return any(fnmatchcase(name, p.name) for p in self.declared) or any(
-            fnmatchcase(name, builtin) for builtin in BUILTIN_PARAMETERS)
+        """Return whether the node or a plugin it may load declares ``name``.
+
+        The ``*`` standing for plugins not known is left out, and so is a plugin's own
+        ``*`` (a name its code builds entirely at run time): what they accept is not
+        known, and ``open`` says so.
+        """
+        return any(fnmatchcase(name, p.name) for p in self.declared
+                   if p.name != "*" or p.via != "plugins") or any(
+            fnmatchcase(name, builtin) for builtin in BUILTIN_PARAMETERS) or any(
+            fnmatchcase(name, p.name) for plugin in self.plugins for p in plugin.parameters
+            if p.name != "*")
+
+    @property
+    def plugins(self) -> tuple[PluginContract, ...]:
+        """Return the plugins known to derive from what the node loads."""
+        interface = self.composed.interface
+        return interface.plugins if interface is not None else ()
+
+    @property
+    def typos_only(self) -> bool:
+        """Return whether only a misspelling of a known name can be told an error.
+
+        So for a node that accepts undeclared names or loads plugins (``soft_open``), and
+        for a released package judged for any distribution (a name another release
+        declares is no mistake).
+        """
+        interface = self.composed.interface
+        return self.open is not None or (interface is not None and interface.model is not None
+                                         and interface.distro is None)
+
+    def plugin_meant(self, name: str) -> str | None:
+        """Return the name a key under a plugin's name misspells, ``None`` if none.
+
+        ``FollowPath.max_vel_xx`` where ``FollowPath.plugin`` names a known plugin whose
+        only close name is ``*.max_vel_x``: ``FollowPath.max_vel_x``. A plugin that may
+        declare more than is known (its own sources not all read) says nothing.
+        """
+        prefix, dot, rest = name.rpartition(".")
+        winner = self.received.winner(f"{prefix}.plugin") if dot and prefix else None
+        chosen = winner.value if winner is not None else None
+        plugin = next((p for p in self.plugins if p.type == chosen), None)
+        if plugin is None or (plugin.open is not None and not soft_open(plugin.open)):
+            return None
+        own = frozenset(p.name[2:] for p in plugin.parameters
+                        if p.name.startswith("*.") and "*" not in p.name[2:])
+        meant = sole_spelling(rest, own)
+        return None if meant is None else f"{prefix}.{meant}"
 
     def static_type(self, name: str) -> Parameter | None:
         """Return the one declaration that fixes ``name``'s type, if they all agree."""
@@ -60,8 +105,12 @@ class Contract:
         return found[0] if len({p.type for p in found}) == 1 else None
 
     def concrete_names(self) -> list[str]:
-        """Return the declared names without run-time parts (did-you-mean candidates)."""
-        return sorted({p.name for p in self.declared if "*" not in p.name})
+        """Return the declared names without run-time parts (did-you-mean candidates).
+
+        With the names its known plugins declare unprefixed (nav2's behaviours).
+        """
+        return sorted({p.name for p in self.declared if "*" not in p.name} | {
+            p.name for plugin in self.plugins for p in plugin.parameters if "*" not in p.name})
 
 
 def judged(graph: LaunchGraph, ctx: RuleContext) -> tuple[WiringView, list[Contract]] | None:

@@ -255,14 +255,34 @@ def _inside_try(node: Node) -> bool:
     return False
 
 
+def _in_scope(use: Node, values: list[Node]) -> list[Node]:
+    """Return the values a variable may hold where it is used: its own function's first.
+
+    One file's functions often reuse a local's name (``param_name`` for a controller's
+    ``.type`` here, its ``.params_file`` there).
+    """
+    if len(values) < 2:
+        return values
+    function = _function_of(use)
+    local = [v for v in values if _function_of(v) == function]
+    return local or values
+
+
+def _function_of(node: Node) -> tuple[int, int] | None:
+    parent = node.parent
+    while parent is not None and parent.type not in ("function_definition", "lambda_expression"):
+        parent = parent.parent
+    return None if parent is None else (parent.start_byte, parent.end_byte)
+
+
 def _forwarded(name: Node) -> bool:
     """Return whether a declared name is a parameter of the enclosing function.
 
     Such a function is a helper (``declare_or_get_parameter(name, ...)`` forwarding to
-    rclcpp): its callers' calls are the declarations, each read where it is written.
+    rclcpp): its callers' calls are the declarations, each read where it is written. So
+    is a field the helper sets from one (nav2_util's ``add_parameter``: ``descriptor.name
+    = name; declare_parameter(descriptor.name, ...)``).
     """
-    if name.type != "identifier":
-        return False
     parent = name.parent
     while parent is not None and parent.type not in ("function_definition", "lambda_expression"):
         parent = parent.parent
@@ -270,10 +290,19 @@ def _forwarded(name: Node) -> bool:
     while declarator is not None and declarator.type != "function_declarator":
         declarator = declarator.child_by_field_name("declarator")
     parameters = declarator.child_by_field_name("parameters") if declarator else None
-    if parameters is None:
+    if parameters is None or parent is None:
         return False
-    return any(text(n) == text(name) for p in parameters.named_children for n in walk(p)
-               if n.type == "identifier")
+    given = {text(n) for p in parameters.named_children for n in walk(p) if n.type == "identifier"}
+    if name.type == "identifier":
+        return text(name) in given
+    if name.type != "field_expression":
+        return False
+    written = text(name)
+    return any(node.type == "assignment_expression"
+               and text(node.child_by_field_name("left")) == written
+               and (right := node.child_by_field_name("right")) is not None
+               and right.type == "identifier" and text(right) in given
+               for node in walk(parent))
 
 
 def _declaration(context: _File, node: Node, arguments: list[Node],
@@ -285,8 +314,8 @@ def _declaration(context: _File, node: Node, arguments: list[Node],
     ``helper``s of nav2) is required: it throws at the declaration unless a value is
     given. One declared inside a ``try`` is optional: the code handles its absence.
     """
-    name = name_pattern(arguments[0], _literal,
-                        lambda n: context.values.get(_variable(n) or "", []))
+    name = name_pattern(arguments[0], _literal, lambda n: _in_scope(
+        n, context.values.get(_variable(n) or "", [])))
     where = span(context.path, node)
     written = None if template is None or not template.named_children else text(
         template.named_children[0])

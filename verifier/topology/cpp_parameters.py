@@ -154,12 +154,38 @@ def name_pattern(node: Node, literal: Callable[[Node], str | None],
         if left is not None and right is not None:
             return re.sub(r"\*+", "*", name_pattern(left, literal, values, depth + 1)
                           + name_pattern(right, literal, values, depth + 1))
+    if node.type == "call_expression" and _formatted(node, literal) is not None:
+        return _formatted(node, literal) or "*"
     if node.type == "call_expression":  # std::string("x") + ...
         arguments = node.child_by_field_name("arguments")
         if arguments is not None and len(arguments.named_children) == 1 and \
                 text(node.child_by_field_name("function")).endswith("string"):
             return name_pattern(arguments.named_children[0], literal, values, depth + 1)
     return "*"
+
+
+_FORMATS = ("format", "fmt::format", "std::format")
+
+
+def _formatted(node: Node, literal: Callable[[Node], str | None]) -> str | None:
+    """Return ``fmt::format("{}.type", name)`` as ``*.type`` (``None``: not a format call).
+
+    The format string may be wrapped in ``FMT_COMPILE(...)``/``FMT_STRING(...)``; each
+    replacement field is a part built at run time.
+    """
+    function = "".join(text(node.child_by_field_name("function")).split())
+    arguments = node.child_by_field_name("arguments")
+    if function not in _FORMATS or arguments is None or not arguments.named_children:
+        return None
+    first = arguments.named_children[0]
+    if first.type == "call_expression" and text(first.child_by_field_name("function")) in (
+            "FMT_COMPILE", "FMT_STRING"):
+        inner = first.child_by_field_name("arguments")
+        first = inner.named_children[0] if inner is not None and inner.named_children else first
+    written = literal(first)
+    if written is None:
+        return ""
+    return re.sub(r"\*+", "*", re.sub(r"\{[^{}]*\}", "*", written))
 
 
 _NUMBER = r"([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)[fFlL]?"

@@ -86,6 +86,38 @@ class Parameter:
         return replace(self, span=replace(self.span, file=file))
 
 
+LOADS_PLUGINS = "it loads plugins chosen by parameters, whose own are not read"
+
+
+def soft_open(reason: str | None) -> bool:
+    """Return whether a node is open only in ways that still let a misspelling be told.
+
+    It accepts undeclared parameters (NodeOptions, rclpy's Node arguments), or loads
+    plugins: every name it and its known plugins read is seen, so a name one edit from
+    one of them, and none of them itself, is a typo; another name may be a plugin's own.
+    """
+    return reason == LOADS_PLUGINS or (reason or "").startswith(_OPTIONS)
+
+
+_OPTIONS = ("its NodeOptions set ", "its Node is built with ")
+
+
+@dataclass(frozen=True, slots=True)
+class PluginContract:
+    """The parameters one pluginlib plugin declares on the node that loads it.
+
+    ``type`` is its pluginlib name (``dwb_core::DWBLocalPlanner``), ``base`` the class it
+    derives from; names are as declared (``*.max_vel_x`` for ``plugin_name + ".max_vel_x"``,
+    plain names for plugins that declare them unprefixed, as nav2's behaviours do).
+    ``open`` says why it may declare more (``None``: it does not).
+    """
+
+    type: str
+    base: str
+    parameters: tuple[Parameter, ...]
+    open: str | None = None
+
+
 @dataclass(frozen=True, slots=True)
 class NodeName:
     """A default node name given in code (``rclcpp::Node("talker")``, ``super().__init__``).
@@ -192,3 +224,7 @@ class NodeInterface:
     # the one ROS 2 distribution a shipped model's parameters are of (``None``: any)
     distro: str | None = None
     node_name_at: Span | None = None
+    # base classes of the pluginlib plugins it loads, and the plugins known to derive from
+    # them (a released package's model lists its repository's)
+    loaders: tuple[str, ...] = ()
+    plugins: tuple[PluginContract, ...] = ()

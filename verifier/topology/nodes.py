@@ -19,6 +19,7 @@ from launchverify.topology.files import file_interfaces
 from launchverify.topology.generated_parameters import definitions, parameter_libraries
 from launchverify.topology.inherited import Lookup, inherited
 from launchverify.topology.model import (
+    LOADS_PLUGINS,
     Endpoint,
     FileInterfaces,
     NodeInterface,
@@ -92,7 +93,7 @@ def target_interface(package: str, target: Target, lookup: Lookup | None = None,
                          parameters_undeclared=next(
                              (r.undeclared for r in results if r.undeclared), None),
                          node_name_at=None if node_name is None or node_name.name is None
-                         else node_name.span)
+                         else node_name.span, loaders=tuple(loaders))
 
 
 def _library_headers(results: list[FileInterfaces], target: Target,
@@ -166,27 +167,30 @@ def _parameters_open(results: list[FileInterfaces], target: Target,
                      parameters: tuple[Parameter, ...], missing: set[str]) -> str | None:
     """Return why the node may accept names it is not seen to declare, ``None`` if not.
 
-    The sources not all read, NodeOptions that accept undeclared parameters, a name
-    declared entirely at run time, or a node base class whose code is not here
-    (``missing``).
+    The sources not all read, a library that declares names of its own, a name declared
+    entirely at run time, or a node base class whose code is not here (``missing``);
+    then, only when none of those holds, the two reasons that still let a misspelling be
+    told (``SOFT_OPEN``): NodeOptions that accept undeclared parameters, and plugins.
     """
     if target.problems or not target.sources:
         return "its sources were not all read"
     unread = next((r for r in results if r.problem or r.declarations_missed), None)
     if unread is not None:
         return f"not every parameter declaration of {display_path(unread.file)} was read"
-    option = next((r.undeclared for r in results if r.undeclared), None)
-    if option is not None:
-        return option
-    library = next((p.via for p in parameters if p.name == "*" and p.via), None)
+    library = next((p.via for p in parameters if p.name == "*" and p.via
+                    and p.via != "plugins"), None)
     if library is not None:
-        return (f"it uses {library}, which declares parameters of its own" if library != "plugins"
-                else "it loads plugins chosen by parameters, whose own are not read")
-    if any(p.name == "*" for p in parameters):
+        return f"it uses {library}, which declares parameters of its own"
+    if any(p.name == "*" and p.via != "plugins" for p in parameters):
         return "it declares a parameter whose whole name is built at run time"
     if missing:
         return (f"its node class derives from {sorted(missing)[0]}, whose code is not read "
                 "here")
+    option = next((r.undeclared for r in results if r.undeclared), None)
+    if option is not None:
+        return option
+    if any(p.via == "plugins" for p in parameters):
+        return LOADS_PLUGINS
     return None
 
 

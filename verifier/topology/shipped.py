@@ -32,7 +32,9 @@ An interface may say where its code gives ``node_name`` (``node_name_at``, file 
 An interface may list the ``parameters`` its code declares (``name``, ``type``,
 ``default``, ``dynamic``, ``required``, ``read_only``, ``limits``, ``via``,
 ``at``; only those set) and ``parameters_open``: why it may accept other names. A model
-without them says its declarations were not read.
+without them says its declarations were not read. A node that loads plugins lists the
+``loaders``' base classes and the ``plugins`` its repository exports for them (``type``,
+``base``, ``open``, ``parameters`` with ``at`` below the repository's root).
 """
 
 from __future__ import annotations
@@ -46,7 +48,13 @@ from pathlib import Path
 from typing import Any
 
 from launchverify.span import Span
-from launchverify.topology.model import Endpoint, EndpointKind, NodeInterface, Parameter
+from launchverify.topology.model import (
+    Endpoint,
+    EndpointKind,
+    NodeInterface,
+    Parameter,
+    PluginContract,
+)
 from launchverify.topology.releases import BASE, MODEL_DISTROS, merged_interfaces
 
 FORMAT = 1
@@ -99,18 +107,22 @@ class PackageModel:
 
 
 def model_document(package: str, interfaces: list[NodeInterface], source: ModelSource,
-                   root: Path, extracted_with: str) -> dict[str, Any]:
-    """Return the model of one package; ``root`` is its source folder (paths below it)."""
+                   root: Path, extracted_with: str, tree: Path | None = None) -> dict[str, Any]:
+    """Return the model of one package; ``root`` is its source folder (paths below it).
+
+    ``tree`` is the repository's root: a plugin's declarations are written below it
+    (plugins come from the repository's other packages too).
+    """
     return {
         "format": FORMAT, "package": package,
         "source": {"repository": source.repository, "branch": source.branch,
                    "commit": source.commit, "path": source.path},
         "extracted_with": extracted_with,
-        "interfaces": [_interface_document(i, root) for i in interfaces],
+        "interfaces": [_interface_document(i, root, tree or root) for i in interfaces],
     }
 
 
-def _interface_document(interface: NodeInterface, root: Path) -> dict[str, Any]:
+def _interface_document(interface: NodeInterface, root: Path, tree: Path) -> dict[str, Any]:
     endpoints: list[dict[str, Any]] = []
     for endpoint in interface.endpoints:
         item = _endpoint_document(endpoint, root)
@@ -125,7 +137,16 @@ def _interface_document(interface: NodeInterface, root: Path) -> dict[str, Any]:
             "parameters_open": None if interface.parameters_open is None else
             _relative_text(interface.parameters_open, root),
             "endpoints": endpoints,
-            "parameters": [_parameter_document(p, root) for p in interface.parameters]}
+            "parameters": [_parameter_document(p, root) for p in interface.parameters],
+            **({"loaders": list(interface.loaders)} if interface.loaders else {}),
+            **({"plugins": [_plugin_document(p, tree) for p in interface.plugins]}
+               if interface.plugins else {})}
+
+
+def _plugin_document(plugin: PluginContract, tree: Path) -> dict[str, Any]:
+    return {"type": plugin.type, "base": plugin.base,
+            "open": None if plugin.open is None else _relative_text(plugin.open, tree),
+            "parameters": [_parameter_document(p, tree) for p in plugin.parameters]}
 
 
 def _parameter_document(parameter: Parameter, root: Path) -> dict[str, Any]:
@@ -177,7 +198,8 @@ def dump_model(document: dict[str, Any]) -> str:
         lines.append(f"  {json.dumps(key)}: {json.dumps(value, sort_keys=False)},")
     lines.append('  "interfaces": [')
     for i, interface in enumerate(document["interfaces"]):
-        fields = {k: v for k, v in interface.items() if k not in ("endpoints", "parameters")}
+        fields = {k: v for k, v in interface.items()
+                  if k not in ("endpoints", "parameters", "plugins")}
         lines.append("    {" + ", ".join(f"{json.dumps(k)}: {json.dumps(v)}"
                                           for k, v in fields.items()) + ', "endpoints": [')
         endpoints = interface["endpoints"]
@@ -190,6 +212,12 @@ def dump_model(document: dict[str, Any]) -> str:
             for j, parameter in enumerate(parameters):
                 comma = "," if j < len(parameters) - 1 else ""
                 lines.append(f"      {json.dumps(parameter)}{comma}")
+        plugins = interface.get("plugins")
+        if plugins:  # one plugin a line
+            lines.append('    ], "plugins": [')
+            for j, plugin in enumerate(plugins):
+                comma = "," if j < len(plugins) - 1 else ""
+                lines.append(f"      {json.dumps(plugin)}{comma}")
         lines.append("    ]}" + ("," if i < len(document["interfaces"]) - 1 else ""))
     lines.append("  ]")
     lines.append("}")
@@ -241,7 +269,33 @@ def _interface(package: str, item: Any, source: ModelSource) -> NodeInterface:
                          _optional(item, "parameters_open") if parameters is not None else
                          "its parameter declarations were not extracted into the model",
                          node_name_at=_span(item, source, "node_name_at")
-                         if _optional(item, "node_name_at") else None)
+                         if _optional(item, "node_name_at") else None,
+                         loaders=_texts(item, "loaders"),
+                         plugins=tuple(_plugin(p, source) for p in _list(item, "plugins")))
+
+
+def _plugin(item: Any, source: ModelSource) -> PluginContract:
+    """Return one plugin's contract (its declarations are placed below the repository)."""
+    if not isinstance(item, dict):
+        raise ModelError("each plugin must be an object")
+    at_root = replace(source, path="")
+    return PluginContract(_text(item, "type"), _text(item, "base"),
+                          tuple(_parameter(p, at_root) for p in _list(item, "parameters")),
+                          _optional(item, "open"))
+
+
+def _list(item: dict[str, Any], key: str) -> list[Any]:
+    value = item.get(key, [])
+    if not isinstance(value, list):
+        raise ModelError(f"'{key}' must be a list")
+    return value
+
+
+def _texts(item: dict[str, Any], key: str) -> tuple[str, ...]:
+    value = _list(item, key)
+    if not all(isinstance(v, str) for v in value):
+        raise ModelError(f"'{key}' must be a list of strings")
+    return tuple(value)
 
 
 def _parameter(item: Any, source: ModelSource) -> Parameter:

@@ -114,6 +114,15 @@ def _controllers(source: Path, targets: BuildTargets) -> list[Target]:
     return out
 
 
+def library_files(package: Package, library: str) -> tuple[tuple[Path, ...], tuple[str, ...]]:
+    """Return a CMake library's sources (with what it links) and what could not be read."""
+    source = package.source
+    targets = build_targets(source, package.name) if source is not None else None
+    if source is None or targets is None or library not in targets.sources:
+        return (), (f"library '{library}' not found in CMakeLists.txt",)
+    return _target_files(source, library, targets)
+
+
 def _target_files(source: Path, target: str, targets: BuildTargets,
                   ) -> tuple[tuple[Path, ...], tuple[str, ...]]:
     """Return a target's sources, those of in-package libraries it links, and their headers."""
