@@ -14,6 +14,10 @@ NODE_BASES = frozenset({
     "Node", "LifecycleNode", "rclcpp::Node", "rclcpp_lifecycle::LifecycleNode",
     "rclpy.node.Node", "rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode",
     "rclpy.lifecycle.node.LifecycleNode",
+    # ros2_control's: a controller is a node the manager makes (its own parameters are
+    # controller_interface's, in LIBRARY_PARAMETERS)
+    "controller_interface::ControllerInterface",
+    "controller_interface::ChainableControllerInterface",
 })
 # Base classes by prefix that declare no parameters on the node deriving from them
 NO_PARAMETERS = ("std::", "boost::", "rclcpp::", "rclcpp_lifecycle::", "rclpy.",
@@ -34,6 +38,9 @@ LIBRARY_PARAMETERS: dict[str, tuple[str, ...] | None] = {
     "nav2_costmap_2d": None,
     "nav2_core": None,
     # ControllerInterfaceBase::init (controller_interface_base.cpp): humble declares
-    # update_rate; jazzy and rolling also is_async and thread_priority
-    "controller_interface": ("update_rate", "is_async", "thread_priority"),
+    # update_rate; jazzy and rolling also is_async and thread_priority. The spawner reads
+    # type and fallback_controllers from the controller's own block of its parameter
+    # files (controller_manager_services.set_controller_parameters_from_param_files)
+    "controller_interface": ("update_rate", "is_async", "thread_priority", "type",
+                             "fallback_controllers"),
 }

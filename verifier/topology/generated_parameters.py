@@ -18,7 +18,7 @@ from pathlib import Path
 import yaml
 
 from launchverify.frontends.yaml_reader import compose, span_of
-from launchverify.topology.model import Parameter
+from launchverify.topology.model import FileInterfaces, Parameter
 from launchverify.workspace.reading import Unreadable, read_file
 
 VIA = "generate_parameter_library"
@@ -115,3 +115,24 @@ def _plain(node: yaml.Node) -> object:
         return yaml.safe_load(yaml.serialize(node))
     except yaml.YAMLError:
         return None
+
+
+def used_definitions(results: list[FileInterfaces],
+                     generated: dict[str, Path]) -> list[FileInterfaces]:
+    """Return the definitions of the generated parameter libraries these files include.
+
+    ``generated`` maps each library's header name to its definition file
+    (``parameter_libraries``).
+    """
+    used = {re.split(r"[/.]", i.removesuffix(".hpp").removesuffix(".h"))[-1]
+            for r in results for i in r.includes}
+    return [FileInterfaces(path, parameters=definitions(path))
+            for name, path in sorted(generated.items()) if name in used]
+
+
+def package_folder(path: Path) -> Path | None:
+    """Return the folder of the package a file is in (the nearest ``package.xml``)."""
+    for folder in path.parents:
+        if (folder / "package.xml").is_file():
+            return folder
+    return None

@@ -18,6 +18,11 @@ from pathlib import Path
 from launchverify.models.node_parameters import NO_PARAMETERS, NODE_BASES
 from launchverify.topology.cpp import class_name as cpp_class_name
 from launchverify.topology.files import file_interfaces
+from launchverify.topology.generated_parameters import (
+    package_folder,
+    parameter_libraries,
+    used_definitions,
+)
 from launchverify.topology.model import FileInterfaces
 
 MAX_HEADERS = 24  # headers of other packages read for one target's base classes
@@ -57,12 +62,14 @@ def node_classes(results: list[FileInterfaces]) -> set[str]:
     return nodes
 
 
-def foreign_bases(results: list[FileInterfaces]) -> set[str]:
+def foreign_bases(results: list[FileInterfaces], roots: frozenset[str] = frozenset()) -> set[str]:
     """Return the bases of the node classes that the target's own files do not define.
 
-    Bases from the standard library, Boost, Qt and rclcpp itself declare no parameters.
+    ``roots`` are classes known to be nodes whatever their bases (a component's, a
+    controller's class). Bases from the standard library, Boost, Qt and rclcpp itself
+    declare no parameters.
     """
-    nodes = node_classes(results)
+    nodes = node_classes(results) | roots
     defined = {name for r in results for name, _ in r.classes}
     return {class_name(base) for r in results for name, base in r.bases
             if name in nodes and not _declares_nothing(base)} - defined
@@ -73,9 +80,10 @@ def _declares_nothing(base: str) -> bool:
 
 
 def inherited(results: list[FileInterfaces], target_sources: tuple[Path, ...],
-              lookup: Lookup | None) -> tuple[list[FileInterfaces], set[str]]:
+              lookup: Lookup | None, roots: frozenset[str] = frozenset(),
+              ) -> tuple[list[FileInterfaces], set[str]]:
     """Return the declarations of the node classes' foreign bases, and the bases not found."""
-    wanted = foreign_bases(results)
+    wanted = foreign_bases(results, roots)
     if not wanted or lookup is None:
         return [], wanted
     found: list[FileInterfaces] = []
@@ -108,4 +116,9 @@ def inherited(results: list[FileInterfaces], target_sources: tuple[Path, ...],
                                      parameters=owned, includes=(),
                                      bases=tuple(b for b in result.bases if b[0] in classes),
                                      declarations_missed=False, undeclared=None))
+        # the base's package's generated parameter libraries its files include
+        # (steering_controllers_library's, for every steering controller)
+        folder = package_folder(path)
+        if folder is not None:
+            found.extend(used_definitions(files, parameter_libraries(folder)))
     return found, wanted

@@ -7,7 +7,6 @@ endpoint created by another registered component's class is left to that compone
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterable, Iterator
 from dataclasses import replace
 from pathlib import Path
@@ -16,7 +15,7 @@ from launchverify.models.node_parameters import LIBRARY_PARAMETERS
 from launchverify.span import Span
 from launchverify.topology.cpp import class_name, member_endpoints
 from launchverify.topology.files import file_interfaces
-from launchverify.topology.generated_parameters import definitions, parameter_libraries
+from launchverify.topology.generated_parameters import parameter_libraries, used_definitions
 from launchverify.topology.inherited import Lookup, inherited
 from launchverify.topology.model import (
     LOADS_PLUGINS,
@@ -59,10 +58,11 @@ def target_interface(package: str, target: Target, lookup: Lookup | None = None,
     parameters.
     """
     results = [file_interfaces(path) for path in target.sources]
-    bases, missing = inherited(results, target.sources, lookup)
+    roots = frozenset({class_name(target.component)}) if target.component else frozenset()
+    bases, missing = inherited(results, target.sources, lookup, roots)
     # read for the declarations only: what the node's own files create stays theirs
     declaring = [*results, *bases, *_library_headers(results, target, lookup),
-                 *_generated(results, generated or {})]
+                 *used_definitions(results, generated or {})]
     others = {_class(p) for p in target.other_components}
     aliases = dict(a for r in results for a in r.aliases)
     members = dict(m for r in results for m in r.members)
@@ -123,15 +123,6 @@ def _library_headers(results: list[FileInterfaces], target: Target,
         found.append(FileInterfaces(path, parameters=tuple(
             p for p in result.parameters if "*" not in p.name)))
     return found + _released(released, results)
-
-
-def _generated(results: list[FileInterfaces],
-               generated: dict[str, Path]) -> list[FileInterfaces]:
-    """Return the definitions of the generated parameter libraries the target includes."""
-    used = {re.split(r"[/.]", i.removesuffix(".hpp").removesuffix(".h"))[-1]
-            for r in results for i in r.includes}
-    return [FileInterfaces(path, parameters=definitions(path))
-            for name, path in sorted(generated.items()) if name in used]
 
 
 def _released(libraries: set[str], results: list[FileInterfaces]) -> list[FileInterfaces]:
