@@ -15,7 +15,14 @@ from launchverify.topology.cpp import extract as extract_cpp
 from launchverify.topology.generated_parameters import definitions, parameter_libraries
 from launchverify.topology.model import Parameter
 from launchverify.topology.python import extract as extract_python
-from launchverify.topology.qos import Qos, incompatible, qos_of
+from launchverify.topology.qos import (
+    Overriding,
+    Qos,
+    incompatible,
+    overridden,
+    overriding_of,
+    qos_of,
+)
 
 
 def _cpp(body: str) -> dict[str, Parameter]:
@@ -155,6 +162,130 @@ def test_unknown_profiles_and_compatibility() -> None:
     assert incompatible(best, reliable) and not incompatible(reliable, best)
     assert incompatible(reliable, latched) and not incompatible(latched, reliable)
     assert incompatible(Qos(None, None), reliable) is None
+
+
+OVERRIDING_CASES = [
+    (["options", "options.qos_overriding_options = rclcpp::QosOverridingOptions("
+      "{rclcpp::QosPolicyKind::Reliability})"], Overriding(frozenset({"reliability"}))),
+    (["rclcpp::QosOverridingOptions::with_default_policies()"],
+     Overriding(frozenset({"history", "depth", "reliability"}))),
+    (['QosOverridingOptions({QosPolicyKind::Reliability}, nullptr, "fast")'],
+     Overriding(frozenset({"reliability"}), "fast")),
+    (["QosOverridingOptions({QosPolicyKind::Durability}, check, id_)"],
+     Overriding(frozenset({"durability"}), None)),  # an id from a variable
+    (['o.qos_overriding_options = {{QosPolicyKind::LivelinessLeaseDuration}, nullptr, "x"}'],
+     Overriding(frozenset({"liveliness_lease_duration"}), "x")),
+    (["o.qos_overriding_options = {QosPolicyKind::Depth, QosPolicyKind::Durability, "
+      "QosPolicyKind::History}"], Overriding(frozenset({"depth", "durability", "history"}))),
+    (["QoSOverridingOptions.with_default_policies(\n  # entity_id='x',\n)"],
+     Overriding(frozenset({"history", "depth", "reliability"}))),  # a comment is no id
+    (["rclcpp::QosOverridingOptions(kinds)"], Overriding(None)),  # a list not spelt out
+    (["QoSOverridingOptions([QoSPolicyKind.RELIABILITY, QoSPolicyKind.DURABILITY], "
+      "entity_id='a')"], Overriding(frozenset({"reliability", "durability"}), "a")),
+    (["QoSOverridingOptions.with_default_policies(entity_id=name)"],
+     Overriding(frozenset({"history", "depth", "reliability"}), None)),
+    (["rclcpp::QosOverridingOptions()"], None),  # the default: nothing opens
+    (["QoSOverridingOptions([])"], None),
+    (["rclcpp::PublisherOptions()"], None),
+]
+
+
+@pytest.mark.parametrize(("texts", "expected"), OVERRIDING_CASES)
+def test_overriding_options(texts: list[str], expected: Overriding | None) -> None:
+    assert overriding_of(texts) == expected
+
+
+def test_options_argument_opens_the_endpoint() -> None:
+    """The options (third argument, or fourth after a callback) carry the opt-in."""
+    code = (
+        "void f(rclcpp::Node * node) {\n"
+        "  rclcpp::PublisherOptions options;\n"
+        "  options.qos_overriding_options = rclcpp::QosOverridingOptions::"
+        "with_default_policies();\n"
+        "  node->create_publisher<std_msgs::msg::String>(\"a\", rclcpp::SensorDataQoS(),"
+        " options);\n"
+        "  node->create_subscription<std_msgs::msg::String>(\"b\", 10, cb, options);\n"
+        "  node->create_publisher<std_msgs::msg::String>(\"c\", 10);\n}\n")
+    found = {e.name: e.profile for e in extract_cpp(Path("n.cpp"), code.encode()).endpoints}
+    assert found["a"] is not None and found["a"].overriding is not None
+    assert found["a"].reliability == "best_effort"
+    assert found["b"] is not None and found["b"].overriding is not None
+    assert found["c"] is not None and found["c"].overriding is None
+    lambda_built = (
+        "static const auto kOpts = [] {\n  rclcpp::PublisherOptions options;\n"
+        "  options.qos_overriding_options = {rclcpp::QosPolicyKind::Reliability};\n"
+        "  return options;\n}();\n"
+        "void g(rclcpp::Node * node) {\n"
+        "  node->create_publisher<std_msgs::msg::String>(\"d\", 10, kOpts);\n}\n")
+    [end] = extract_cpp(Path("n.cpp"), lambda_built.encode()).endpoints
+    assert end.profile == Qos("reliable", "volatile", Overriding(frozenset({"reliability"})))
+    python = ("self.create_publisher(String, 'a', make_qos(), "
+              "qos_overriding_options=QoSOverridingOptions([QoSPolicyKind.DURABILITY]))\n")
+    [end] = extract_python(Path("n.py"), python.encode()).endpoints
+    assert end.profile == Qos(None, None, Overriding(frozenset({"durability"})))
+
+
+class _Given:
+    def __init__(self, value: object) -> None:
+        self.value = value
+
+
+class _Received:
+    """What a node receives, as ``EffectiveParameters`` answers it."""
+
+    def __init__(self, values: dict[str, object], complete: bool = True) -> None:
+        self.values = {name: [_Given(value)] for name, value in values.items()}
+        self.complete = complete
+        self.fqn = "/n"
+
+    def winner(self, name: str) -> _Given | None:
+        found = self.values.get(name)
+        return found[-1] if found else None
+
+
+OVERRIDE_CASES = [
+    # policies, id, what the node receives, (reliability, durability) after
+    ({"reliability"}, "", {"qos_overrides./s.publisher.reliability": "reliable"},
+     ("reliable", "volatile")),
+    ({"reliability"}, "", {"qos_overrides./s.publisher.durability": "transient_local"},
+     ("best_effort", "volatile")),  # durability is not opened
+    ({"reliability"}, "", {"qos_overrides./scan.publisher.reliability": "reliable"},
+     ("best_effort", "volatile")),  # another topic's
+    ({"reliability"}, "", {"qos_overrides./s.publisher.reliability": None},
+     (None, "volatile")),  # not known before launch
+    ({"reliability"}, "", {"qos_overrides./s.publisher.reliability": "system_default"},
+     (None, "volatile")),
+    ({"reliability"}, "", {"qos_overrides./s.publisher.reliability": "RELIABLE"},
+     (None, "volatile")),  # rclcpp throws: the endpoint is never made
+    ({"reliability"}, "x", {"qos_overrides./s.publisher.reliability": "reliable"},
+     ("best_effort", "volatile")),  # its parameters are publisher_x.*
+    ({"reliability"}, "x", {"qos_overrides./s.publisher_x.reliability": "reliable"},
+     ("reliable", "volatile")),
+    ({"reliability"}, None, {"qos_overrides./s.publisher_x.reliability": "reliable"},
+     (None, "volatile")),  # an id not known here: it may be this one
+    (None, "", {"qos_overrides./s.publisher.reliability": "reliable"},
+     (None, "volatile")),  # a list not read: it may or may not be opened
+]
+
+
+@pytest.mark.parametrize(("policies", "entity", "received", "expected"), OVERRIDE_CASES)
+def test_overrides_applied(policies: set[str] | None, entity: str | None,
+                           received: dict[str, object],
+                           expected: tuple[str | None, str | None]) -> None:
+    opened = Overriding(None if policies is None else frozenset(policies), entity)
+    profile = Qos("best_effort", "volatile", opened)
+    found, _ = overridden(profile, "/s", "publisher", _Received(received))  # type: ignore[arg-type]
+    assert (found.reliability, found.durability) == expected
+
+
+def test_overrides_case_and_unread_sources() -> None:
+    profile = Qos("best_effort", "volatile", Overriding(frozenset({"reliability"})))
+    given = _Received({"qos_overrides./s.publisher.reliability": "RELIABLE"})
+    found, settled = overridden(profile, "/s", "publisher", given, python=True)  # type: ignore[arg-type]
+    assert found.reliability == "reliable" and [n for n, _ in settled] == [
+        "qos_overrides./s.publisher.reliability"]  # rclpy reads any case
+    found, _ = overridden(profile, "/s", "publisher", _Received({}, complete=False))  # type: ignore[arg-type]
+    assert found.reliability is None and found.durability == "volatile"
 
 
 def test_build_files_name_no_file_outside_their_package(tmp_path: Path) -> None:

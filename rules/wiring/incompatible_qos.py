@@ -10,12 +10,10 @@ from launchverify.graph import LaunchGraph
 from launchverify.rule import Finding, Related, Rule, RuleContext, Severity
 
 if TYPE_CHECKING:
+    from launchverify.parameters import Contribution
     from launchverify.topology.compose import ComposedEndpoint
     from launchverify.topology.qos import Qos
     from launchverify.topology.wiring import WiringView
-
-_POLICIES = ("reliability", "durability")
-
 
 class IncompatibleQos(Rule):
     """A publisher and a subscription of one topic whose QoS never match.
@@ -25,14 +23,16 @@ class IncompatibleQos(Rule):
     profile (`rclcpp::SensorDataQoS()`, `qos_profile_sensor_data`, nav2's
     `LatchedPublisherQoS`), a depth (the default profile: reliable, volatile) and the
     policies set on it (`.best_effort()`, `.transient_local()`, `QoSProfile(reliability=
-    ...)`), and for endpoints built with `QosOverridingOptions` the `qos_overrides.<topic>.
-    publisher|subscription.reliability|durability` parameters the launch gives. On each
+    ...)`). An endpoint whose options carry `QosOverridingOptions` takes, as rclcpp and
+    rclpy do, the `qos_overrides.<topic>.<publisher|subscription>[_<id>].<policy>`
+    parameters its node receives (files, `/**` blocks, inline values), keyed by the topic's
+    name after remapping, for the policies the options list and no others. On each
     topic it reports a subscription that a publisher it meets can never serve, by the
     rmw rules: a best-effort publisher and a reliable subscription, or a volatile
-    publisher and a transient-local subscription. Only ends whose policies the code
-    settles are compared (a profile from a parameter or a function stays unknown), and
-    only nodes that can run at the same time. It is an error when both ends are read from
-    the workspace's sources.
+    publisher and a transient-local subscription. Only ends whose policies are settled
+    are compared (a profile from a parameter or a function, an override not known before
+    launch, stays unknown), and only nodes that can run at the same time. It is an error
+    when both ends are read from the workspace's sources.
 
     ## Why it matters
     DDS never connects them: `ros2 topic list` shows the topic, `ros2 topic info -v`
@@ -52,7 +52,9 @@ class IncompatibleQos(Rule):
     ## Fix
     Subscribe with the publisher's policy or a weaker one: `rclcpp::SensorDataQoS()` (or
     `.best_effort()`) for sensor streams, volatile durability unless the publisher is
-    transient-local. A best-effort subscription takes both kinds of publisher.
+    transient-local. A best-effort subscription takes both kinds of publisher. Where an
+    end opts in to overrides, set its policy in the launch, under the remapped name:
+    `qos_overrides./front/scan.publisher.reliability: reliable`.
     """
 
     code = "LV605"
@@ -77,15 +79,15 @@ class IncompatibleQos(Rule):
     def topic(self, view: WiringView, writers: list[ComposedEndpoint],
               readers: list[ComposedEndpoint]) -> Iterator[Finding]:
         """Yield a finding for each reader that a writer it meets cannot serve."""
-        from launchverify.topology.qos import incompatible
+        from launchverify.topology.qos import clash, incompatible
         from launchverify.topology.wiring import describe_node, from_sources, together
 
+        published = [(writer, *_effective(view, writer, "publisher")) for writer in writers]
         for reader in readers:
-            mine = _effective(view, reader, "subscription")
+            mine, my_overrides = _effective(view, reader, "subscription")
             if mine is None:
                 continue
-            for writer in writers:
-                theirs = _effective(view, writer, "publisher")
+            for writer, theirs, their_overrides in published:
                 why = None if theirs is None else incompatible(theirs, mine)
                 if why is None or theirs is None:
                     continue
@@ -99,29 +101,37 @@ class IncompatibleQos(Rule):
                     mine=mine.describe(), writer=peer, theirs=theirs.describe(), why=why,
                     related=(Related(reader.endpoint.span, "the subscription is created here"),
                              Related(writer.endpoint.span,
-                                     f"{peer}'s publisher is created here")))
+                                     f"{peer}'s publisher is created here"),
+                             *_overrides([*my_overrides, *their_overrides],
+                                         clash(theirs, mine))))
                 if not (from_sources(view, reader) and from_sources(view, writer)):
                     finding = dataclasses.replace(finding, severity=Severity.WARNING)
                 yield finding
                 break
 
 
-def _effective(view: WiringView, end: ComposedEndpoint, role: str) -> Qos | None:
-    """Return an end's QoS with the launch's ``qos_overrides`` applied where they apply."""
+def _effective(view: WiringView, end: ComposedEndpoint, role: str,
+               ) -> tuple[Qos | None, list[tuple[str, Contribution]]]:
+    """Return an end's QoS with the ``qos_overrides`` its node receives applied.
+
+    Only an endpoint whose code opts in with ``QosOverridingOptions`` reads them, under
+    its resolved, remapped name. Also returns the overrides that settled a policy.
+    """
     from launchverify.parameters import effective_parameters
     from launchverify.topology.compose import named_record
-    from launchverify.topology.qos import Qos
+    from launchverify.topology.qos import overridden
 
     profile = end.endpoint.profile
-    if profile is None or not profile.overridable or end.name is None:
-        return profile
+    if profile is None or profile.overriding is None or end.name is None:
+        return profile, []
     composed = next((n for n in view.nodes if n.node is end.node), None)
     record = named_record(view.graph, composed) if composed is not None else end.node
     received = effective_parameters(view.graph, record)
-    values = dict(reliability=profile.reliability, durability=profile.durability)
-    for policy in _POLICIES:
-        winner = received.winner(f"qos_overrides.{end.name}.{role}.{policy}")
-        if winner is not None:
-            given = winner.value if isinstance(winner.value, str) else None
-            values[policy] = given.lower() if given else None
-    return Qos(values["reliability"], values["durability"], True)
+    return overridden(profile, end.name, role, received,
+                      python=end.endpoint.span.file.suffix == ".py")
+
+
+def _overrides(settled: list[tuple[str, Contribution]], policy: str | None) -> list[Related]:
+    """Return a note for each override that gave an end the policy they clash on."""
+    return [Related(given.span, f"{name} is set here") for name, given in settled
+            if name.endswith(f".{policy}")]

@@ -34,7 +34,7 @@ from launchverify.topology.model import (
 )
 from launchverify.topology.names import Resolved, merge, unknown
 from launchverify.topology.parsing import damaged, parse, short, span, text, walk
-from launchverify.topology.qos import qos_of
+from launchverify.topology.qos import Qos, overriding_of, qos_of
 from launchverify.topology.wrappers import (
     COSTMAP_CLASS,
     TF_CLASSES,
@@ -93,7 +93,8 @@ class _File:
     defaults: dict[str, Resolved] = field(default_factory=dict)
     parameters: list[Parameter] = field(default_factory=list)
     declaring_calls: int = 0  # declare_parameter(s) calls read
-    changes: dict[str, list[str]] = field(default_factory=dict)  # var -> ``var.x(...)`` calls
+    # var -> ``var.x(...)`` calls and ``var.qos_overriding_options = ...`` statements
+    changes: dict[str, list[str]] = field(default_factory=dict)
     data: bytes = b""  # the file's bytes, for patterns the tree makes long-winded
     dynamic: set[str] = field(default_factory=set)  # descriptors with dynamic_typing = true
     read_only: set[str] = field(default_factory=set)  # descriptors with read_only = true
@@ -185,9 +186,15 @@ def _collect(context: _File, nodes: list[Node]) -> None:
             if flag is not None:
                 (context.dynamic if flag.group(2) == "dynamic_typing"
                  else context.read_only).add(flag.group(1))
-            target = _variable(node.child_by_field_name("left"))
+            left = node.child_by_field_name("left")
+            target = _variable(left)
             value = node.child_by_field_name("right")
             updated = _parameter_update(node)
+            if left is not None and left.type == "field_expression" and text(
+                    left.child_by_field_name("field")) == "qos_overriding_options":
+                opened = _variable(left.child_by_field_name("argument"))  # options.qos_...
+                if opened:
+                    context.changes.setdefault(opened, []).append(text(node))
             if target and updated is not None:
                 context.read_params.setdefault(target, []).append(updated)
             elif target and value is not None:
@@ -579,13 +586,30 @@ def _owner(node: Node) -> str | None:
 
 def _endpoint(context: _File, node: Node, kind: EndpointKind, type_: str | None,
               name_arg: Node | None, qos: Node | None = None, via: str | None = None,
-              written: str | None = None) -> Endpoint:
+              written: str | None = None, options: Node | None = None) -> Endpoint:
     resolved = _resolve(context, name_arg, 0) if name_arg is not None else None
     built = _built(kind, resolved, type_, span(context.path, node), _owner(node),
                    short(text(qos), 40) if qos is not None else None, via, written)
     if qos is None or kind not in (EndpointKind.PUBLISHER, EndpointKind.SUBSCRIPTION):
         return built
-    return replace(built, profile=qos_of(_qos_texts(context, qos)))
+    profile = qos_of(_qos_texts(context, qos))
+    opened = overriding_of(_options_texts(context, options)) if options is not None else None
+    if opened is not None:  # qos_overrides.* may settle what the code leaves open
+        profile = replace(profile or Qos(None, None), overriding=opened)
+    return replace(built, profile=profile)
+
+
+def _options_texts(context: _File, options: Node) -> list[str]:
+    """Return the options argument's text and, for a variable, what sets its overriding.
+
+    A variable's single initialiser counts too (``auto opts = [] {...; return o;}()``).
+    """
+    variable = _variable(options) if options.type in ("identifier", "field_expression") else None
+    if variable is None:
+        return [text(options)]
+    values = context.values.get(variable, [])
+    initial = [text(values[0])] if len(values) == 1 else []
+    return [text(options), *initial, *context.changes.get(variable, [])]
 
 
 def _qos_texts(context: _File, qos: Node) -> list[str]:
@@ -646,8 +670,11 @@ def _call(context: _File, node: Node) -> list[Endpoint]:
         qos = rest[1] if len(rest) > 1 and not name.startswith("create_generic_") else None
         if name in ("create_service", "create_client"):
             qos = None
+        # (name, qos, options), (name, qos, callback, options)
+        at = 2 if _RCLCPP[name] is EndpointKind.PUBLISHER else 3
         return [_endpoint(context, node, _RCLCPP[name], type_, rest[0] if rest else None, qos,
-                          written=_first_template(template))]
+                          written=_first_template(template),
+                          options=rest[at] if qos is not None and len(rest) > at else None)]
     return []
 
 

@@ -11,7 +11,7 @@ names are literals, variables or attributes assigned from literals, or parameter
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -25,7 +25,7 @@ from launchverify.topology.model import (
 from launchverify.topology.names import Resolved, merge, unknown
 from launchverify.topology.parsing import damaged, parse, short, span, text, walk
 from launchverify.topology.python_parameters import declaration, name_pattern, undeclared_option
-from launchverify.topology.qos import qos_of
+from launchverify.topology.qos import Qos, overriding_of, qos_of
 from launchverify.topology.wrappers import (
     TF_CLASSES,
     image_endpoints,
@@ -298,8 +298,8 @@ def _owner(node: Node) -> str | None:
 
 
 def _endpoint(context: _File, call: Node, kind: EndpointKind, type_: str | None,
-              name: Node | None, qos: Node | None = None, via: str | None = None
-              ) -> Endpoint:
+              name: Node | None, qos: Node | None = None, via: str | None = None,
+              overriding: Node | None = None) -> Endpoint:
     where = span(context.path, call)
     qos_text = short(text(qos), 40) if qos is not None else None
     owner = _owner(call)
@@ -313,6 +313,9 @@ def _endpoint(context: _File, call: Node, kind: EndpointKind, type_: str | None,
     profile = None
     if qos is not None and kind in (EndpointKind.PUBLISHER, EndpointKind.SUBSCRIPTION):
         profile = qos_of(_qos_texts(context, qos))
+    opened = overriding_of(_qos_texts(context, overriding)) if overriding is not None else None
+    if opened is not None:  # qos_overrides.* may settle what the code leaves open
+        profile = replace(profile or Qos(None, None), overriding=opened)
     return Endpoint(kind, resolved.value, type_, where, resolved.parameter,
                     resolved.value if resolved.parameter else None, qos_text, via,
                     reason if resolved.value is None else None, owner, profile=profile)
@@ -340,8 +343,9 @@ def _call(context: _File, node: Node) -> list[Endpoint]:
         kind, type_at, name_at, type_key, name_key = _METHODS[called]
         qos_at, qos_key = _QOS.get(called, (-1, ""))
         qos = _argument(node, qos_at, qos_key) if qos_at >= 0 else None
+        overriding = _argument(node, 99, "qos_overriding_options") if qos_at >= 0 else None
         return [_endpoint(context, node, kind, _type(context, _argument(node, type_at, type_key)),
-                          _argument(node, name_at, name_key), qos)]
+                          _argument(node, name_at, name_key), qos, overriding=overriding)]
     if called in _CLASSES:
         kind, type_at, name_at, type_key, name_key = _CLASSES[called]
         return [_endpoint(context, node, kind, _type(context, _argument(node, type_at, type_key)),
