@@ -64,7 +64,8 @@ def one_branch(branch: str) -> dict[str, str]:
 # teleop_twist_keyboard at the newest branch the mirror holds).
 NAV2 = ("nav2_amcl", "nav2_controller", "nav2_planner", "nav2_bt_navigator", "nav2_behaviors",
         "nav2_smoother", "nav2_velocity_smoother", "nav2_collision_monitor", "nav2_map_server",
-        "nav2_lifecycle_manager", "nav2_waypoint_follower", "nav2_route", "nav2_costmap_2d")
+        "nav2_lifecycle_manager", "nav2_waypoint_follower", "nav2_route", "nav2_costmap_2d",
+        "opennav_docking", "opennav_following", "nav2_loopback_sim")
 CONTROLLERS = (
     "joint_state_broadcaster", "diff_drive_controller", "joint_trajectory_controller",
     "forward_command_controller", "position_controllers", "velocity_controllers",

@@ -45,12 +45,12 @@ WANTED = {"robot_state_publisher", "joint_state_publisher", "joy", "teleop_twist
           "nav2_controller", "nav2_planner", "nav2_bt_navigator", "nav2_behaviors",
           "nav2_smoother", "nav2_velocity_smoother", "nav2_collision_monitor",
           "nav2_map_server", "nav2_amcl", "nav2_lifecycle_manager", "nav2_waypoint_follower",
-          "nav2_route", "controller_manager", "joint_state_broadcaster",
+          "nav2_route", "controller_manager", "joint_state_broadcaster", "opennav_docking",
           "diff_drive_controller", "joint_trajectory_controller",
           "forward_command_controller"}
 # And issue 45 (every distribution's release, realsense, the image pipeline, every
 # controller of ros2_controllers)
-WANTED_IN_EVERY_DISTRO = WANTED - {"nav2_route"} | {
+WANTED_IN_EVERY_DISTRO = WANTED - {"nav2_route", "opennav_docking"} | {
     "realsense2_camera", "stereo_image_proc", "image_rotate", "image_view",
     "ackermann_steering_controller", "admittance_controller", "pid_controller",
     "imu_sensor_broadcaster", "force_torque_sensor_broadcaster", "tricycle_controller",

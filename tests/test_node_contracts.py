@@ -53,6 +53,12 @@ CPP_CASES = [
      "rate", ("double", 2.0, False, False)),
     ('declare_parameter(plugin_name_ + ".max_vel", 0.5);', "*.max_vel",
      ("double", 0.5, False, False)),
+    # controller_manager's: a name formatted at run time keeps its literal parts
+    ('const std::string p = fmt::format(FMT_COMPILE("{}.type"), name);\n'
+     'declare_parameter(p, rclcpp::ParameterType::PARAMETER_STRING);', "*.type",
+     ("string", None, False, False)),
+    ('declare_parameter(fmt::format("{}.{}.gain", a, b), 1.0);', "*.*.gain",
+     ("double", 1.0, False, False)),
 ]
 
 
@@ -68,6 +74,26 @@ def test_a_helper_forwarding_its_argument_declares_nothing() -> None:
     code = (b"template<typename T> T get_or(const std::string & name, const T & value) {\n"
             b"  return node_->declare_parameter(name, value);\n}\n")
     assert extract_cpp(Path("h.hpp"), code).parameters == ()
+
+
+def test_a_helper_forwarding_its_argument_through_a_descriptor_declares_nothing() -> None:
+    """nav2_util: ``descriptor.name = name; declare_parameter(descriptor.name, ...)``."""
+    code = (b"void add_parameter(const std::string & name, const rclcpp::ParameterValue & v) {\n"
+            b"  auto descriptor = rcl_interfaces::msg::ParameterDescriptor();\n"
+            b"  descriptor.name = name;\n"
+            b"  declare_parameter(descriptor.name, v, descriptor);\n}\n")
+    assert extract_cpp(Path("h.hpp"), code).parameters == ()
+
+
+def test_a_local_reused_across_functions_takes_its_own_functions_value() -> None:
+    code = (b"void A::load(const std::string & c) {\n"
+            b'  const std::string param_name = c + ".type";\n'
+            b"  declare_parameter(param_name, rclcpp::ParameterType::PARAMETER_STRING);\n}\n"
+            b"void A::files(const std::string & c) {\n"
+            b'  const std::string param_name = c + ".params_file";\n'
+            b"  declare_parameter(param_name, std::vector<std::string>{});\n}\n")
+    assert sorted(p.name for p in extract_cpp(Path("a.cpp"), code).parameters) == [
+        "*.params_file", "*.type"]
 
 
 def test_descriptor_ranges_become_bounds() -> None:
