@@ -285,7 +285,7 @@ def test_the_summary_says_what_was_not_followed(
   <include file="$(find-pkg-share ros_gz_sim)/launch/gz_sim.launch.py"/>
   <node pkg="rviz2" exec="rviz2"/>
   <node pkg="slam_toolbox" exec="async_slam_toolbox_node"/>
-  <node pkg="slam_toolbox" exec="sync_slam_toolbox_node"/>
+  <node pkg="slam_toolbox" exec="sync_slam_toolbox_node" name="sync_slam"/>
 </launch>
 """)
     monkeypatch.chdir(tmp_path / "ws")
