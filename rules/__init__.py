@@ -30,6 +30,7 @@ from launchverify.rules.lifecycle.lifecycle_deadlock import LifecycleDeadlock
 from launchverify.rules.lifecycle.manager_unknown_node import ManagerUnknownNode
 from launchverify.rules.lifecycle.unknown_container import UnknownContainer
 from launchverify.rules.lifecycle.unknown_controller import UnknownController
+from launchverify.rules.lifecycle.unknown_controller_type import UnknownControllerType
 from launchverify.rules.lifecycle.unknown_lifecycle_label import UnknownLifecycleLabel
 from launchverify.rules.naming.duplicate_node_name import DuplicateNodeName
 from launchverify.rules.naming.invalid_domain_id import InvalidDomainId
@@ -88,6 +89,7 @@ BUILTIN: tuple[type[Rule], ...] = (
     UnknownContainer,         # LV506
     UnknownController,        # LV507
     UnknownLifecycleLabel,    # LV508
+    UnknownControllerType,    # LV509
     UnusedRemap,              # LV601
     MissingPeer,              # LV602
     TypeMismatch,             # LV603

@@ -159,3 +159,142 @@ def test_spawner_command_lines() -> None:
     assert parse_spawner([Text("x")]).unknown is not None  # a name not known: unknown
     assert parse_spawner(["arm", "--bogus"]).unknown is not None
     assert parse_spawner(["arm", "-c", Text("x")]).manager_fqn("/") is None
+
+
+# ------------------------------------------------------------------ controller types (LV509)
+
+TYPED = """\
+controller_manager:
+  ros__parameters:
+    gps:
+      type: gps_sensor_broadcaster/GPSSensorBroadcaster
+    gripper:
+      type: position_controllers/GripperActionController
+    group:
+      type: position_controllers/JointGroupPositionController
+    legacy:
+      type: joint_state_controller/JointStateController
+"""
+
+TYPED_LAUNCH = """\
+from launch import LaunchDescription
+from launch_ros.actions import Node
+
+
+def generate_launch_description():
+    return LaunchDescription([
+        Node(package="controller_manager", executable="ros2_control_node",
+             parameters=["{config}"]),
+        Node(package="controller_manager", executable="spawner",
+             arguments=["gps", "gripper", "group", "legacy"]),
+        Node(package="controller_manager", executable="spawner",
+             arguments=["arm", "--controller-type",
+                        "joint_trajectory_controller/JointTrajectoryControler"]),
+    ])
+"""
+
+
+def _typed(folder: Path) -> Path:
+    _systems(folder, 0)
+    config = folder / "src" / "demo_bringup" / "config"
+    config.mkdir(parents=True)
+    (config / "controllers.yaml").write_text(TYPED, encoding="utf-8")
+    root = folder / "src" / "demo_bringup" / "launch" / "typed.launch.py"
+    root.write_text(TYPED_LAUNCH.format(config=config / "controllers.yaml"), encoding="utf-8")
+    return root
+
+
+def _unknown_types(root: Path, folder: Path, distro: str | None) -> dict[str, str]:
+    report = run_check(CheckOptions(paths=[root], workspace=folder, distro=distro))
+    found = {}
+    for finding in report.findings:
+        if finding.code == "LV509":
+            name = re.search(r"controller '(\w+)'", finding.message)
+            assert name is not None
+            found[name.group(1)] = finding.message
+    return found
+
+
+@pytest.mark.parametrize(("distro", "reported"), [
+    (None, {"legacy", "arm"}),  # what some release exports is taken
+    ("humble", {"gps", "legacy", "arm"}),  # gps_sensor_broadcaster: since jazzy
+    ("jazzy", {"legacy", "arm"}),
+    ("kilted", {"gripper", "legacy", "arm"}),  # gripper_controllers left in kilted
+    ("rolling", {"gripper", "group", "legacy", "arm"}),  # and the joint groups after it
+])
+def test_controller_types_per_distribution(tmp_path: Path, distro: str | None,
+                                           reported: set[str]) -> None:
+    folder = tmp_path / "ws"
+    found = _unknown_types(_typed(folder), folder, distro)
+    assert set(found) == reported
+    assert "use joint_state_broadcaster/JointStateBroadcaster" in found["legacy"]
+    assert "did you mean 'joint_trajectory_controller/JointTrajectoryController'" in \
+        found["arm"]
+    if "gps" in found:
+        assert "humble has no gps_sensor_broadcaster" in found["gps"]
+        assert "released since jazzy" in found["gps"]
+    if "gripper" in found:
+        assert "parallel_gripper_action_controller/GripperActionController" in found["gripper"]
+    if "group" in found:
+        assert "forward_command_controller/ForwardCommandController with interface_name: " \
+            "position" in found["group"]
+
+
+def test_controller_type_fixes(tmp_path: Path) -> None:
+    from launchverify.rule import Applicability
+
+    folder = tmp_path / "ws"
+    root = _typed(folder)
+    report = run_check(CheckOptions(paths=[root], workspace=folder, distro="rolling"))
+    fixes = {f.message.split("'")[1]: f.fix for f in report.findings if f.code == "LV509"}
+    legacy, arm = fixes["legacy"], fixes["arm"]
+    assert legacy is not None and legacy.applicability is Applicability.SAFE
+    assert legacy.edits[0].content == "joint_state_broadcaster/JointStateBroadcaster"
+    assert legacy.edits[0].span.line == 10  # the YAML value
+    assert arm is not None and arm.applicability is Applicability.SAFE
+    assert arm.edits[0].span.file == root and arm.edits[0].span.line == 13
+    gripper = fixes["gripper"]  # another action type: only with --unsafe-fixes
+    assert gripper is not None and gripper.applicability is Applicability.UNSAFE
+    assert fixes["group"] is None  # ForwardCommandController needs interface_name too
+
+
+def test_a_workspace_package_may_export_a_released_type(tmp_path: Path) -> None:
+    """Built from source on humble, parallel_gripper_controller exports its type."""
+    folder = tmp_path / "ws"
+    root = _typed(folder)
+    config = folder / "src" / "demo_bringup" / "config" / "controllers.yaml"
+    config.write_text("controller_manager:\n  ros__parameters:\n    gripper:\n      type: "
+                      "parallel_gripper_action_controller/GripperActionController\n",
+                      encoding="utf-8")
+    found = _unknown_types(root, folder, "humble")
+    assert set(found) == {"gripper", "arm"}  # not released for humble
+    assert "(the type is released since jazzy)" in found["gripper"]
+    package = folder / "src" / "parallel_gripper_controller"
+    package.mkdir()
+    (package / "package.xml").write_text(
+        "<package format='3'><name>parallel_gripper_controller</name><version>1.0.0"
+        "</version><description>d</description><maintainer email='d@example.com'>d"
+        "</maintainer><license>Apache-2.0</license></package>\n", encoding="utf-8")
+    (package / "CMakeLists.txt").write_text(
+        "project(parallel_gripper_controller)\npluginlib_export_plugin_description_file("
+        "controller_interface ros_control_plugins.xml)\n", encoding="utf-8")
+    (package / "ros_control_plugins.xml").write_text(
+        '<library path="parallel_gripper_action_controller"><class name='
+        '"parallel_gripper_action_controller/GripperActionController" type='
+        '"parallel_gripper_action_controller::GripperActionController" base_class_type='
+        '"controller_interface::ControllerInterface"/></library>\n', encoding="utf-8")
+    assert set(_unknown_types(root, folder, "humble")) == {"arm"}
+
+
+def test_renamed_types_agree_with_the_models() -> None:
+    """Each renamed type is gone from every modelled release from when the table says."""
+    from launchverify.topology.controller_types import ORDER, RENAMED, release
+    from launchverify.topology.releases import MODEL_DISTROS
+
+    for old, renamed in RENAMED.items():
+        for distro in MODEL_DISTROS:
+            types = release(distro).types
+            if ORDER.index(distro) >= ORDER.index(renamed.gone):
+                assert old not in types and renamed.new in types, (old, distro)
+            else:
+                assert old in types, (old, distro)

@@ -255,9 +255,15 @@ class Node(ExecuteProcess):
             "parameters": cv.parameters(self._parameters, self._span),
             "remappings": cv.remaps(self._remappings, self._span),
             "ros_arguments": tuple(cv.sub(x) for x in self._ros_arguments or []),
-            "arguments": tuple(cv.sub(x) for x in self._arguments or []),
+            "arguments": self.arguments_written(cv),
             "process": self.process_options(cv, with_name=False),
         }
+
+    def arguments_written(self, cv: Converter) -> tuple[s.Sub, ...]:
+        """Return ``arguments=``, each literal located where the call's list writes it."""
+        given = list(self._arguments or [])
+        return tuple(cv.written(self._span, x, keyword="arguments", item=i, items=len(given))
+                     for i, x in enumerate(given))
 
     def to_ir(self, cv: Converter) -> a.Action:
         return a.Node(**self.node_fields(cv))

@@ -8,6 +8,7 @@ problem with the span of the offending attribute.
 
 from __future__ import annotations
 
+import re
 import shlex
 from collections.abc import Callable
 from pathlib import Path
@@ -87,7 +88,7 @@ class EntityReader:
         text = self._string(entity, name, attr)
         if text is None:
             return ()
-        parsed = self.parse_text(text, attr.span)
+        parsed = self.parse_text(text, attr.span, attr.value_at)
         try:
             return split_cmdline(parsed)
         except ValueError as error:
@@ -266,6 +267,18 @@ def _spelling(name: str, known: set[str]) -> str:
     return f"; did you mean {' or '.join(f'`{candidate}`' for candidate in found[:3])}?"
 
 
+def _words(part: s.Text) -> list[s.Text]:
+    """Return literal text shell-split, each word located when the text is and it can be."""
+    where = part.where
+    words = shlex.split(part.text)
+    if where is None or where.end_line not in (None, where.line) or any(
+            mark in part.text for mark in "'\"\\"):
+        return [s.Text(word) for word in words]
+    located = list(re.finditer(r"\S+", part.text))
+    return [s.Text(m.group(), Span(where.file, where.line, where.column + m.start(),
+                                   where.line, where.column + m.end())) for m in located]
+
+
 def _locator(written: Span) -> Callable[[int, int], Span]:
     """Return where offsets of a text written verbatim on one line, at ``written``, are."""
     def locate(start: int, end: int) -> Span:
@@ -279,7 +292,8 @@ def split_cmdline(parsed: s.Sub) -> tuple[s.Sub, ...]:
     """Split a parsed command line into argv entries like launch's ``_parse_cmdline``.
 
     Literal text is shell-split; a substitution sticks to the text beside it unless
-    whitespace separates them.
+    whitespace separates them. A word of located text with no quote or escape in it
+    keeps its place (``Text.where``).
     """
     parts = parsed.parts if isinstance(parsed, s.Concat) else (parsed,)
     result: list[list[s.Sub]] = []
@@ -296,18 +310,18 @@ def split_cmdline(parsed: s.Sub) -> tuple[s.Sub, ...]:
             continue
         if not part.text:
             continue
-        tokens = shlex.split(part.text)
+        tokens = _words(part)
         if not tokens:
             flush()
             continue
         if part.text[0].isspace() and arg:
             flush()
-        arg.append(s.Text(tokens[0]))
+        arg.append(tokens[0])
         if len(tokens) > 1:
             flush()
-            arg.append(s.Text(tokens[-1]))
+            arg.append(tokens[-1])
         if len(tokens) > 2:
-            result.extend([s.Text(t)] for t in tokens[1:-1])
+            result.extend([t] for t in tokens[1:-1])
         if part.text[-1].isspace():
             flush()
     if arg:

@@ -180,6 +180,9 @@ class Spawn:
 
     ``undefined``: no source gives the controller's type although every one was read, so
     the manager refuses to load it; ``defined`` then names the controllers it does know.
+    ``type_at`` is where the type (``kind``) is written literally, in a launch file or a
+    parameter file (``None``: it is not, a launch argument gives it); ``type_exact`` says
+    that place holds exactly its text (a fix may replace it).
     """
 
     spawner: NodeRecord
@@ -187,6 +190,9 @@ class Spawn:
     manager: str | None  # the manager's fully qualified name, when known
     undefined: bool = False
     defined: tuple[str, ...] = ()
+    kind: str | None = None  # the controller's type, when known
+    type_at: Span | None = None
+    type_exact: bool = False
 
 
 @dataclass(frozen=True, slots=True)

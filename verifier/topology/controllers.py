@@ -10,6 +10,8 @@ or interface is not known is a node whose endpoints are not known, never one tha
 
 from __future__ import annotations
 
+import re
+import shlex
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -20,6 +22,7 @@ from launchverify.models.rewritten_yaml import rewrite_of, rooted
 from launchverify.models.ros2_control import CONTROL_NODE, MANAGER_NAME, SPAWNER
 from launchverify.models.ros_names import node_fqn, node_key_matches
 from launchverify.parameters import effective_parameters
+from launchverify.span import Span
 from launchverify.topology.compose import (
     ComposedEndpoint,
     Composer,
@@ -36,8 +39,16 @@ from launchverify.topology.resolve import Rule, RuleLike, UnknownRule
 SPAWNER_FILES = "<the spawner's parameter files>"
 
 if TYPE_CHECKING:
-    from launchverify.frontends.param_file import ParamFile
+    from launchverify.frontends.param_file import FileParameter, ParamFile
+    from launchverify.parameters import Contribution
 
+
+@dataclass(frozen=True, slots=True)
+class Written:
+    """Where a controller's type is written literally; ``exact``: just its text (for a fix)."""
+
+    at: Span
+    exact: bool
 
 
 def with_controllers(composer: Composer, composed: list[NodeEndpoints]) -> list[NodeEndpoints]:
@@ -141,10 +152,12 @@ class Spawners:
         """
         namespace = None if manager is None else manager.rpartition("/")[0] or "/"
         fqn = None if namespace is None else node_fqn(namespace, name)
-        kind, reason, undefined = self.controller_type(spawner, name, fqn, call, host)
+        kind, reason, undefined, written = self.controller_type(spawner, name, fqn, call, host)
         undefined = undefined and call.unknown is None  # an option not understood may give it
         spawn = Spawn(spawner, name, manager, undefined,
-                      self.defined(host) if undefined and host is not None else ())
+                      self.defined(host) if undefined and host is not None else (), kind,
+                      written.at if written is not None and call.unknown is None else None,
+                      written is not None and written.exact)
         package = kind.partition("/")[0] if kind is not None and "/" in kind else None
         parameters = tuple(p for p in host.node.parameters
                            if p.file is not None or p.scope) if host is not None else ()
@@ -174,11 +187,12 @@ class Spawners:
 
     def controller_type(self, spawner: NodeRecord, name: str, fqn: str | None,
                         call: SpawnerCall, host: NodeEndpoints | None,
-                        ) -> tuple[str | None, str | None, bool]:
+                        ) -> tuple[str | None, str | None, bool, Written | None]:
         """Return a controller's type (``package/Class``), or ``None`` and why not.
 
         The third item is ``True`` when the type is surely given nowhere: every source
-        was read, and the manager will refuse to load the controller.
+        was read, and the manager will refuse to load the controller. The fourth says
+        where the type is written literally (``None``: not so, a launch argument gives it).
 
         As the spawner and the manager decide it: ``--controller-type``, else a
         ``type`` for the controller in the spawner's ``--param-file`` (it sets the
@@ -189,39 +203,95 @@ class Spawners:
         if call.controller_type is not None:
             given = self.word(call.controller_type)
             return given, None if given is not None else (
-                "its --controller-type is not known before launch"), False
+                "its --controller-type is not known before launch"), False, (
+                None if given is None else self.type_argument(spawner, given))
         for file in call.param_files:
             text = self.word(file)
             if text is None:
-                return None, "the spawner's --param-file is not known before launch", False
+                return None, "the spawner's --param-file is not known before launch", False, None
             loaded = self.parameter_file(text)
             if loaded is None:
-                return None, f"the spawner's --param-file {text} could not be read", False
+                return (None, f"the spawner's --param-file {text} could not be read", False,
+                        None)
             found = _type_in(loaded, name, fqn)
             if found is not None:
-                return found, None, False
+                return str(found.value), None, False, _in_file(found)
         own, unknown = self.own_parameter_files(spawner)
         for loaded in own:
             found = _type_in(loaded, name, fqn)
             if found is not None:
-                return found, None, False
+                return str(found.value), None, False, _in_file(found)
         if unknown is not None:
-            return None, unknown, False
+            return None, unknown, False, None
         if host is None:
             return None, ("its controller manager is not started by this launch and the "
-                          "spawner's --param-file does not give its type"), False
+                          "spawner's --param-file does not give its type"), False, None
         graph = self.composer.graph
         effective = effective_parameters(graph, named_record(graph, host))
         winner = effective.winner(f"{name}.type")
         if winner is not None:
             if isinstance(winner.value, str) and winner.value:
-                return winner.value, None, False
-            return None, f"the manager's parameter {name}.type is not known before launch", False
+                # a source not read may give another type (for LV509, no fact then)
+                return winner.value, None, False, self.type_parameter(
+                    host, name, winner) if effective.complete else None
+            return (None, f"the manager's parameter {name}.type is not known before launch",
+                    False, None)
         if not effective.complete:
             return None, ("a parameter source of its controller manager could not be read: "
-                          "it may give the type"), False
+                          "it may give the type"), False, None
         return None, (f"neither the controller manager's parameters nor the spawner's "
-                      f"--param-file give {name}.type"), True
+                      f"--param-file give {name}.type"), True, None
+
+    def type_argument(self, spawner: NodeRecord, given: str) -> Written | None:
+        """Return where a spawner's ``--controller-type`` is written literally, if it is.
+
+        The last ``-t``/``--controller-type`` of its arguments wins, as in the spawner; a
+        value from a launch argument (or any expression) is not written literally.
+        """
+        launch = self.composer.graph.launch_of(spawner)
+        found: Written | None = None
+        previous: str | None = None
+        for argument in launch.arguments if launch is not None else ():
+            if previous == "--controller-ros-args":  # one word, whatever it holds
+                previous = None
+                continue
+            literal = isinstance(argument, Text) and argument.where is not None
+            words = _located(argument) if isinstance(argument, Text) and literal else [
+                (w, None) for w in self.composer.words((argument,))]
+            for word, at in words:
+                if not isinstance(word, str):
+                    previous = None
+                    continue
+                option, equals, value = word.partition("=")
+                if previous in ("-t", "--controller-type"):
+                    found = None if not literal or word != given else _written(
+                        at, 0, word, spawner.origin.span)
+                elif equals and option in ("-t", "--controller-type"):
+                    found = None if not literal or value != given else _written(
+                        at, len(option) + 1, value, spawner.origin.span)
+                previous = word
+        return found
+
+    def type_parameter(self, host: NodeEndpoints, name: str,
+                       winner: Contribution) -> Written | None:
+        """Return where the manager's ``<name>.type`` is written literally, if it is.
+
+        In a parameter file as it is (not a value ``RewrittenYaml`` puts there), or as a
+        literal of the launch (``parameters=[{'arm.type': '...'}]``).
+        """
+        if winner.layer == "file":
+            return None if winner.value_span is None else Written(winner.value_span, True)
+        for param in host.node.parameters:
+            if param.origin.span != winner.span or param.name is None or \
+                    self.composer.text(param.name) != f"{name}.type":
+                continue
+            value = param.value
+            if isinstance(value, Text):
+                return Written(value.where, True) if value.where is not None else Written(
+                    winner.span, False)
+            if isinstance(value, str):
+                return Written(winner.span, False)
+        return None
 
     def own_parameter_files(self, spawner: NodeRecord) -> tuple[list[ParamFile], str | None]:
         """Return the parameter files launch gives the spawner node, and why not all.
@@ -409,23 +479,61 @@ def _set_option(call: SpawnerCall, option: str, value: str | Sub) -> None:
         call.ros_args.append(value)
 
 
-def _type_in(loaded: ParamFile, name: str, fqn: str | None) -> str | None:
+def _type_in(loaded: ParamFile, name: str, fqn: str | None) -> FileParameter | None:
     """Return the ``type`` a parameter file gives a controller (its own key before ``/**``).
 
     The spawner looks for the controller's name (with or without its namespace), then
     for a wildcard key.
     """
-    own: str | None = None
-    wildcard: str | None = None
+    own: FileParameter | None = None
+    wildcard: FileParameter | None = None
     for block in loaded.blocks:
         parameter = block.parameters.get("type")
-        if parameter is None or not isinstance(parameter.value, str):
+        if parameter is None or not isinstance(parameter.value, str) or not parameter.value:
             continue
         if block.key.strip("/") == name or (fqn is not None and block.key == fqn):
-            own = parameter.value
+            own = parameter
         elif fqn is not None and node_key_matches(block.key, fqn):
-            wildcard = parameter.value
+            wildcard = parameter
     return own or wildcard
+
+
+def _in_file(parameter: FileParameter) -> Written:
+    """Return where a parameter file writes a type: its value, else its key."""
+    if parameter.value_span is not None:
+        return Written(parameter.value_span, True)
+    return Written(parameter.span, False)
+
+
+def _located(argument: Text) -> list[tuple[str, Span | None]]:
+    """Return the words of a literal argument, each with where it is written.
+
+    A word is located only when the argument lies on one line and the word holds no
+    quote or backslash (what shlex would change); launch splits the argument as shlex.
+    """
+    where = argument.where
+    try:
+        words = shlex.split(argument.text)
+    except ValueError:
+        return [(argument.text, None)]
+    if where is None or where.end_line not in (None, where.line):
+        return [(word, None) for word in words]
+    plain = list(re.finditer(r"\S+", argument.text))
+    if [m.group() for m in plain] != words:  # quotes or escapes: places not known
+        return [(word, None) for word in words]
+    return [(m.group(), Span(where.file, where.line, where.column + m.start(), where.line,
+                             where.column + m.end())) for m in plain]
+
+
+def _written(at: Span | None, offset: int, word: str, otherwise: Span) -> Written:
+    """Return the place of ``word`` starting ``offset`` characters into a located word.
+
+    ``otherwise`` (the spawner) when the word's place is not known.
+    """
+    if at is None:
+        return Written(otherwise, False)
+    return Written(Span(at.file, at.line, at.column + offset, at.line,
+                        at.column + offset + len(word)), True)
 
 
 def _text(value: str | None) -> Sub | None:

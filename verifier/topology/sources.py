@@ -89,21 +89,8 @@ def _controllers(source: Path, targets: BuildTargets) -> list[Target]:
     """
     found: list[tuple[str, str, str]] = []  # (library, pluginlib name, class)
     for path in sorted(source.glob("*.xml")):
-        if path.name == "package.xml":
-            continue
-        try:
-            code = read_text(path, prefix=_PLUGIN_XML_BYTES)
-            root = etree.fromstring(code.encode(), etree.XMLParser(resolve_entities=False,
-                                                                    no_network=True))
-        except (Unreadable, OSError, etree.XMLSyntaxError, ValueError):
-            continue
-        libraries = [root] if root.tag == "library" else root.findall("library")
-        for library in libraries:
-            name = Path(library.get("path", "")).name.removeprefix("lib")
-            for cls in library.findall("class"):
-                base, kind = cls.get("base_class_type", ""), cls.get("type")
-                if base.startswith("controller_interface::") and kind and name:
-                    found.append((name, cls.get("name") or kind, kind))
+        if path.name != "package.xml":
+            found.extend(controller_classes(path) or ())
     out = []
     for library, plugin, kind in found:
         files, problems = _target_files(source, library, targets)
@@ -121,6 +108,30 @@ def library_files(package: Package, library: str) -> tuple[tuple[Path, ...], tup
     if source is None or targets is None or library not in targets.sources:
         return (), (f"library '{library}' not found in CMakeLists.txt",)
     return _target_files(source, library, targets)
+
+
+def controller_classes(path: Path) -> list[tuple[str, str, str]] | None:
+    """Return ``(library, pluginlib name, class)`` of each controller a plugin file exports.
+
+    A controller is a class whose base is one of ``controller_interface``'s; its pluginlib
+    name (the type a controller manager is given) is its ``name``, else its ``type``.
+    ``None`` when the file cannot be read as XML.
+    """
+    try:
+        code = read_text(path, prefix=_PLUGIN_XML_BYTES)
+        root = etree.fromstring(code.encode(), etree.XMLParser(resolve_entities=False,
+                                                                no_network=True))
+    except (Unreadable, OSError, etree.XMLSyntaxError, ValueError):
+        return None
+    found = []
+    libraries = [root] if root.tag == "library" else root.findall("library")
+    for library in libraries:
+        name = Path(library.get("path", "")).name.removeprefix("lib")
+        for cls in library.findall("class"):
+            base, kind = cls.get("base_class_type", ""), cls.get("type")
+            if base.startswith("controller_interface::") and kind and name:
+                found.append((name, cls.get("name") or kind, kind))
+    return found
 
 
 def _target_files(source: Path, target: str, targets: BuildTargets,
