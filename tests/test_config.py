@@ -127,8 +127,8 @@ def test_configured_arguments_are_pinned(tmp_path: Path,
     ("distro = 'humbel'", "launchverify.toml:1: distro must be one of humble, iron, "),
     ("distro = 'humbel'", "(did you mean 'humble'?)"),
     ("fail-on = 'never'", "launchverify.toml:1: fail-on must be one of error, warning, info"),
-    ("select = [\n  'LV1',\n  'LV9',\n]", "launchverify.toml:3: select: no rule is called "
-     "'LV9' (`launchverify rules` lists every rule)"),
+    ("select = [\n  'LV1',\n  'XY9',\n]", "launchverify.toml:3: select: no rule is called "
+     "'XY9' (`launchverify rules` lists every rule)"),
     ("per-file-ignores = {'a/**' = ['duplicate-node-nam']}", "launchverify.toml:1: "
      "per-file-ignores: no rule is called 'duplicate-node-nam' (did you mean "
      "'duplicate-node-name'?)"),
