@@ -75,7 +75,8 @@ CONTROLLERS = (
     "steering_controllers_library", "pid_controller", "range_sensor_broadcaster",
     "pose_broadcaster", "gpio_controllers", "parallel_gripper_controller",
     "mecanum_drive_controller", "omni_wheel_drive_controller", "chained_filter_controller",
-    "motion_primitives_controllers", "gps_sensor_broadcaster", "interface_state_broadcaster")
+    "motion_primitives_controllers", "gps_sensor_broadcaster", "battery_state_broadcaster",
+    "magnetometer_broadcaster", "state_interfaces_broadcaster")
 SOURCES = (
     Source("ros/robot_state_publisher", released("humble", "rolling", "rolling"),
            ("robot_state_publisher",)),
