@@ -45,10 +45,9 @@ class UnknownParameter(Rule):
     the release of the distribution checked for (`--distro` or `ROS_DISTRO`: humble,
     jazzy, rolling); for any other distribution, or none, by what every release
     declares, and then only a name that misspells a declared one is reported (a name one
-    release takes is no
-    mistake). Values given to every
-    node (`/**` blocks, `SetParameter`) are meant for whichever nodes use them and are not
-    judged, nor rcl's own parameters (`use_sim_time`, `qos_overrides.*`).
+    release takes is no mistake). Values given to every node (`/**` blocks,
+    `SetParameter`) are meant for whichever nodes use them and are not judged, nor rcl's
+    own parameters (`use_sim_time`, `qos_overrides.*`).
 
     ## Why it matters
     rclcpp and rclpy silently ignore an override for a parameter the node never
