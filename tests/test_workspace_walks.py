@@ -256,3 +256,16 @@ def test_a_ros2_file_named_the_roslaunch_way_is_found_a_ros1_file_is_not(
         '    <param name="resource" value="$(arg input)"/>\n  </node>\n</launch>\n')
     (launch / "notes.launch").write_text("not XML at all, $(var x)\n")
     assert [p.name for p in discover([tmp_path])] == ["video_viewer.ros2.launch"]
+
+
+@pytest.mark.parametrize(("folder", "found"), [
+    ("launch", True), ("launches", True), ("bringup_launch", True), ("launch-files", True),
+    ("launch/include", True), ("Launch", True),
+    # a word that only begins so: a clone named launchverify, whose tests define launch files
+    ("launchverify/tests", False), ("launcher", False), ("relaunchable", False)])
+def test_a_launch_folder_is_one_named_for_launch_files(folder: str, found: bool,
+                                                       tmp_path: Path) -> None:
+    root = tmp_path / "ws"  # (pytest names tmp_path after the test: "..._launch_...")
+    (root / folder).mkdir(parents=True)
+    (root / folder / "start.py").write_text(LAUNCH_MODULE)
+    assert bool(discover([root / folder.partition("/")[0]])) is found

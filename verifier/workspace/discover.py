@@ -108,10 +108,15 @@ def named_kind(path: Path) -> str | None:
     return "launch" if _STARTS_AS_LAUNCH.match(_head(str(path), 8192)) else None
 
 
+# A folder named for launch files: ``launch``, ``launches``, ``bringup_launch``,
+# ``launch-files``; not a word that merely begins so (a clone named ``launchverify``)
+_LAUNCH_FOLDER = re.compile(r"(?:^|[^a-z0-9])launch(?:es)?(?:$|[^a-z0-9])")
+
+
 def _in_launch_folder(folder: str) -> bool:
     """Return whether a folder is (or is just below) one named for launch files."""
     parent, _, own = folder.rpartition(os.sep)
-    return "launch" in own.lower() or "launch" in _name(parent).lower()
+    return any(_LAUNCH_FOLDER.search(name.lower()) for name in (own, _name(parent)))
 
 
 def _name(folder: str) -> str:
