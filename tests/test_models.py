@@ -428,3 +428,30 @@ def test_the_merge_keeps_only_what_every_release_agrees_on() -> None:
     assert all(not names[n].required and not names[n].limits for n in humble_only)
     assert interface.distro is None and humble.interfaces[0].distro == "humble"
     assert shipped_model("diff_drive_controller", "iron") == merged
+
+
+def test_a_name_renamed_between_releases_is_no_misspelling(
+        tmp_path: Path, capsys: pytest.CaptureFixture[str],
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    """humble's progress_checker_plugin (a string) is jazzy's progress_checker_plugins (a
+    string array): on jazzy it is ignored, but renaming the key would make the node throw."""
+    monkeypatch.delenv("ROS_DISTRO", raising=False)
+    package = tmp_path / "ws" / "nav"
+    shutil.copytree(ROOT / "corpus" / "parameters" / "released_contracts" / "diffbot", package)
+    config = package / "config" / "nav2_params.yaml"
+    config.write_text(config.read_text().replace(
+        '    controller_plugins: ["FollowPath", "FollowVendor"]',
+        '    controller_plugins: ["FollowPath", "FollowVendor"]\n'
+        '    progress_checker_plugin: "progress_checker"'))
+    line = config.read_text().splitlines().index(
+        '    progress_checker_plugin: "progress_checker"') + 1
+
+    def at_line(*distro: str) -> list[dict[str, Any]]:
+        main(["check", "--no-cache", "--format", "json", str(tmp_path / "ws"), *distro])
+        return [f for f in json.loads(capsys.readouterr().out)["findings"]
+                if f["file"].endswith("nav2_params.yaml") and f["line"] == line]
+
+    (jazzy,) = at_line("--distro", "jazzy")
+    assert (jazzy["code"], jazzy["severity"], jazzy["fix"]) == ("LV405", "warning", None)
+    assert "the humble release declares it" in jazzy["message"]
+    assert at_line("--distro", "humble") == [] and at_line() == []

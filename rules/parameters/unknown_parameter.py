@@ -45,9 +45,12 @@ class UnknownParameter(Rule):
     the release of the distribution checked for (`--distro` or `ROS_DISTRO`: humble,
     jazzy, rolling); for any other distribution, or none, by what every release
     declares, and then only a name that misspells a declared one is reported (a name one
-    release takes is no mistake). Values given to every node (`/**` blocks,
-    `SetParameter`) are meant for whichever nodes use them and are not judged, nor rcl's
-    own parameters (`use_sim_time`, `qos_overrides.*`).
+    release takes is no mistake). A name another release declares and the checked one
+    does not (controller_server's `progress_checker_plugin`, humble's, is jazzy's
+    `progress_checker_plugins`) is a warning that says which release declares it, with no
+    fix; nor is a rename offered when the value's type is not the meant name's. Values
+    given to every node (`/**` blocks, `SetParameter`) are meant for whichever nodes use
+    them and are not judged, nor rcl's own parameters (`use_sim_time`, `qos_overrides.*`).
 
     ## Why it matters
     rclcpp and rclpy silently ignore an override for a parameter the node never
@@ -98,20 +101,50 @@ class UnknownParameter(Rule):
                     reported.add(where)  # one written value, reported once
                     if takers.get(_source(contribution, name), set()) - {id(contract)}:
                         continue  # one value given to several nodes: another one takes it
-                    typo = sole_spelling(name, known) or contract.plugin_meant(name)
-                    if typo is None and contract.typos_only:
+                    other = _other_releases(contract, name)
+                    typo = None if other else (
+                        sole_spelling(name, known) or contract.plugin_meant(name))
+                    if typo is None and not other and contract.typos_only:
                         continue  # another release, or a plugin, may declare it
+                    if other:
+                        hint = f" (the {' and '.join(other)} release declares it)"
+                    elif typo is None or typo in known:
+                        hint = did_you_mean(name, known)
+                    else:
+                        hint = did_you_mean(name, frozenset({typo}))
                     finding = self.finding(
                         span, node=describe_node(view, contract.composed.node), name=name,
-                        hint=did_you_mean(name, known) if typo is None or typo in known
-                        else did_you_mean(name, frozenset({typo})),
+                        hint=hint,
                         what=f"with its default for '{typo}'" if typo else "without it",
                         related=(Related(contract.composed.node.origin.span,
                                          "the node is launched here"),),
-                        fix=None if typo is None else _rename_key(span, name, typo))
+                        fix=None if typo is None or not _same_kind(contract, typo, contribution)
+                        else _rename_key(span, name, typo))
                     if typo is not None:
                         finding = dataclasses.replace(finding, severity=Severity.ERROR)
                     yield finding
+
+
+def _other_releases(contract: Contract, name: str) -> tuple[str, ...]:
+    """Return the other releases that declare a name the checked distribution's does not."""
+    interface = contract.composed.interface
+    if interface is None or interface.model is None or interface.distro is None:
+        return ()
+    from launchverify.topology.shipped import releases_declaring
+
+    return tuple(d for d in releases_declaring(interface, name) if d != interface.distro)
+
+
+def _same_kind(contract: Contract, meant: str, given: Contribution) -> bool:
+    """Return whether renaming a key keeps a value the meant name's type takes.
+
+    ``progress_checker_plugin: "x"`` renamed to the string array
+    ``progress_checker_plugins`` would make the node throw: no fix is safe then.
+    """
+    declared = contract.static_type(meant)
+    if declared is None or declared.type is None or given.kind == "unknown":
+        return True
+    return given.kind == declared.type or (declared.type, given.kind) == ("double", "integer")
 
 
 def _takers(view: WiringView, contracts: list[Contract]) -> dict[tuple[object, ...], set[int]]:

@@ -423,6 +423,24 @@ def released_model(package: str, distro: str) -> PackageModel | None:
                                            for i in model.interfaces))
 
 
+def releases_declaring(interface: NodeInterface, name: str) -> tuple[str, ...]:
+    """Return the distributions whose release of a modelled target declares ``name``.
+
+    A name another release declares and the checked one does not was renamed or
+    removed between them (controller_server's ``progress_checker_plugin``, humble's,
+    is ``progress_checker_plugins`` since jazzy): no misspelling to fix.
+    """
+    found = []
+    for distro in MODEL_DISTROS:
+        model = released_model(interface.package, distro)
+        for other in model.interfaces if model is not None else ():
+            if (other.executable, other.component) == (interface.executable,
+                                                        interface.component) and any(
+                    p.name == name for p in other.parameters):
+                found.append(distro)
+    return tuple(found)
+
+
 @lru_cache(maxsize=1)
 def shipped_node_names() -> frozenset[str]:
     """Return the names the shipped packages' code gives its nodes (nav2's servers...)."""
