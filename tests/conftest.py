@@ -5,6 +5,7 @@ from __future__ import annotations
 import atexit
 import os
 import shutil
+import sys
 import tempfile
 from collections.abc import Iterator
 
@@ -50,6 +51,13 @@ def pytest_configure() -> None:
     folder of its own; subprocesses inherit this too.
     """
     os.environ["LAUNCHVERIFY_NO_CACHE"] = "1"
+    # The suite starts launchverify hundreds of times: a machine that keeps Python from
+    # writing bytecode (PYTHONDONTWRITEBYTECODE) would have each start compile every
+    # module again, and pytest rewrite every test module in every worker. Bytecode goes to
+    # __pycache__ folders, which git ignores; launch files are still evaluated without it
+    # (the sandbox turns it off for what it imports).
+    os.environ.pop("PYTHONDONTWRITEBYTECODE", None)
+    sys.dont_write_bytecode = False
     # the results cache's secret (``findings/sealed.py``) is made in a folder of the
     # session's, never in the home of whoever runs the tests
     if "XDG_STATE_HOME" not in os.environ:

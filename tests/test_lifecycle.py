@@ -303,7 +303,7 @@ def bringups(draw: st.DrawFn) -> str:
     return "\n".join(lines) + "\n"
 
 
-@settings(max_examples=25, deadline=None,
+@settings(max_examples=15, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(bringups())
 def test_the_reduction_agrees_on_random_bringups(tmp_path: Path, body: str) -> None:

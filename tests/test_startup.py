@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+from launchverify.findings.sealed import installation_seal
 from launchverify.process import code_cache
 
 CORPUS = Path(__file__).resolve().parent.parent / "corpus"
@@ -20,6 +21,8 @@ CORPUS = Path(__file__).resolve().parent.parent / "corpus"
 @pytest.fixture
 def cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch):  # type: ignore[no-untyped-def]
     monkeypatch.setattr(sys, "dont_write_bytecode", False)
+    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
+    assert installation_seal(create=True) is not None  # as a cached check makes it
     installed = code_cache.install(tmp_path)
     assert installed is not None
     yield installed
@@ -47,6 +50,22 @@ def test_compiled_methods_are_kept_between_runs(cache: code_cache.CodeCache,
     assert again.added == 0  # every text was found compiled
     with pytest.raises(dataclasses.FrozenInstanceError):
         second(1.0).x = 3.0  # type: ignore[misc]
+
+
+def test_the_code_cache_never_makes_the_installation_secret(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """The results cache makes it, where a check may: never in a checked tree, as a state
+    folder a pull request names inside its own tree would have it."""
+    monkeypatch.setattr(sys, "dont_write_bytecode", False)
+    monkeypatch.setenv("XDG_STATE_HOME", str(tmp_path / "state"))
+    installed = code_cache.install(tmp_path / "code")
+    assert installed is not None
+    try:
+        _define()
+        installed.save()
+    finally:
+        code_cache.uninstall()
+    assert not (tmp_path / "state").exists() and not (tmp_path / "code").exists()
 
 
 def test_a_broken_or_foreign_file_is_ignored(tmp_path: Path) -> None:

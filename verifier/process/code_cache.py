@@ -62,7 +62,9 @@ class CodeCache:
             return
         import tempfile  # only to write (its imports are a tenth of this module's purpose)
 
-        seal = _seal(self.state, create=True)
+        # The secret is the results cache's to make, where a check may (never in a checked
+        # tree): a state folder a pull request chose inside its own tree stays untouched
+        seal = _seal(self.state, create=False)
         if seal is None:
             return
         kept = self.known if len(self.known) <= MOST_ENTRIES else self.used
