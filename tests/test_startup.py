@@ -126,3 +126,15 @@ def test_an_xml_check_starts_no_worker_and_no_rich() -> None:
     out = subprocess.run([sys.executable, "-c", program], capture_output=True, text=True,
                          check=True)
     assert out.stdout.strip() == "[]", out.stdout
+
+
+def test_the_code_file_lies_outside_the_package_folder() -> None:
+    """pip removes only what it installed: a file of ours left in ``launchverify/`` made
+    that folder a namespace package shadowing the next (editable) install."""
+    import launchverify
+
+    installed = code_cache.install()
+    code_cache.uninstall()
+    assert installed is not None
+    package = Path(launchverify.__file__).resolve().parent
+    assert not installed.path.resolve().is_relative_to(package), installed.path

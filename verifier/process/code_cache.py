@@ -4,9 +4,11 @@
 text and compiles it when the class is defined: about 0.6 ms a class, and a check
 defines some 200 of them before it reads a file, two thirds of its start-up. The text is
 the same from run to run, so its compiled code is too: this module lets ``dataclasses``
-find it in a file beside launchverify's own modules, written as Python writes bytecode
-there (in ``__pycache__``, only when the folder is writable and bytecode writing is not
-turned off), and never inside a checked workspace's files. The file holds code compiled
+find it in a file beside the installation (the ``__pycache__`` of the folder holding the
+package, not the package's own: a file pip did not install, left in the package's folder
+by an uninstall, made the next install's import fail), written as Python writes bytecode
+(only when the folder is writable and bytecode writing is not turned off), and never
+inside a checked workspace's files. The file holds code compiled
 from texts ``dataclasses`` itself produced; a file of another Python, or that does not
 read back, is ignored. Code is run from it, so it is sealed as the results cache is
 (``findings/sealed.py``: a secret outside any checked tree): a file planted there (a
@@ -93,8 +95,12 @@ def install(folder: Path | None = None) -> CodeCache | None:
     """
     if not hasattr(dataclasses, "_create_fn") and not hasattr(dataclasses, "_FuncBuilder"):
         return None
-    cache_folder = folder or Path(__file__).parent.parent / "__pycache__"  # as imported
-    cache = CodeCache(cache_folder / f"dataclass-code.{sys.implementation.cache_tag}.bin")
+    # Beside the installation, but not inside the package's folder: pip removes only the
+    # files it installed, and a folder ``launchverify`` left holding this one would shadow
+    # the next install (an editable one after ``pip install .``) as a namespace package
+    cache_folder = folder or Path(__file__).parent.parent.parent / "__pycache__"
+    cache = CodeCache(cache_folder /
+                      f"launchverify-dataclass-code.{sys.implementation.cache_tag}.bin")
     dataclasses.exec = cache.exec  # type: ignore[attr-defined]
     return cache
 
