@@ -4,7 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from launchverify.topology.plugins import derives, exported_plugins, plugin_contracts
+from launchverify.topology.plugin_xml import package_descriptions
+from launchverify.topology.plugins import derives, plugin_contracts
 from launchverify.workspace.packages import Package
 
 CMAKE = """cmake_minimum_required(VERSION 3.8)
@@ -51,7 +52,7 @@ def _package(root: Path) -> Package:
 def test_descriptions_name_each_class_its_base_and_library(tmp_path: Path) -> None:
     package = _package(tmp_path)
     assert package.source is not None
-    found = exported_plugins(package.source)
+    found = package_descriptions(package.source)
     assert [(e.library, e.type, e.base) for e in found] == [
         ("demo_controllers", "demo_controllers::Follow", "demo_core::Controller"),
         ("demo_controllers", "demo_controllers::Other", "demo_core::Planner")]

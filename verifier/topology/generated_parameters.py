@@ -129,10 +129,3 @@ def used_definitions(results: list[FileInterfaces],
     return [FileInterfaces(path, parameters=definitions(path))
             for name, path in sorted(generated.items()) if name in used]
 
-
-def package_folder(path: Path) -> Path | None:
-    """Return the folder of the package a file is in (the nearest ``package.xml``)."""
-    for folder in path.parents:
-        if (folder / "package.xml").is_file():
-            return folder
-    return None

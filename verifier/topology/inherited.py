@@ -15,14 +15,11 @@ from collections.abc import Callable
 from dataclasses import dataclass, replace
 from pathlib import Path
 
+from launchverify.ament import package_root
 from launchverify.models.node_parameters import NO_PARAMETERS, NODE_BASES
 from launchverify.topology.cpp import class_name as cpp_class_name
 from launchverify.topology.files import file_interfaces
-from launchverify.topology.generated_parameters import (
-    package_folder,
-    parameter_libraries,
-    used_definitions,
-)
+from launchverify.topology.generated_parameters import parameter_libraries, used_definitions
 from launchverify.topology.model import FileInterfaces
 
 MAX_HEADERS = 24  # headers of other packages read for one target's base classes
@@ -118,7 +115,5 @@ def inherited(results: list[FileInterfaces], target_sources: tuple[Path, ...],
                                      declarations_missed=False, undeclared=None))
         # the base's package's generated parameter libraries its files include
         # (steering_controllers_library's, for every steering controller)
-        folder = package_folder(path)
-        if folder is not None:
-            found.extend(used_definitions(files, parameter_libraries(folder)))
+        found.extend(used_definitions(files, parameter_libraries(package_root(path))))
     return found, wanted

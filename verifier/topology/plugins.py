@@ -10,51 +10,11 @@ declares.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-from pathlib import Path
-
-from lxml import etree
-
 from launchverify.topology.inherited import Lookup
 from launchverify.topology.model import PluginContract
+from launchverify.topology.plugin_xml import package_descriptions
 from launchverify.topology.sources import Target, library_files
 from launchverify.workspace.packages import Package
-from launchverify.workspace.reading import Unreadable, read_text
-
-_PLUGIN_XML_BYTES = 256 * 1024
-
-
-@dataclass(frozen=True, slots=True)
-class Exported:
-    """One class a plugin description exports."""
-
-    library: str  # the CMake target (``path="libfoo"`` -> ``foo``)
-    type: str  # its pluginlib name, as a parameter chooses it
-    cls: str  # the C++ class
-    base: str  # base_class_type
-
-
-def exported_plugins(source: Path) -> list[Exported]:
-    """Return the classes a package's plugin description files export (in order)."""
-    found: list[Exported] = []
-    for path in sorted(source.glob("*.xml")):
-        if path.name == "package.xml":
-            continue
-        try:
-            code = read_text(path, prefix=_PLUGIN_XML_BYTES)
-            root = etree.fromstring(code.encode(), etree.XMLParser(resolve_entities=False,
-                                                                    no_network=True))
-        except (Unreadable, OSError, etree.XMLSyntaxError, ValueError):
-            continue
-        libraries = [root] if root.tag == "library" else root.findall("library")
-        for library in libraries:
-            name = Path(library.get("path", "")).name.removeprefix("lib")
-            for cls in library.findall("class"):
-                kind, base = cls.get("type"), cls.get("base_class_type")
-                if kind and base and name:
-                    found.append(Exported(name, cls.get("name") or kind, kind,
-                                          "".join(base.split())))
-    return found
 
 
 def derives(base: str, loader: str) -> bool:
@@ -80,7 +40,7 @@ def plugin_contracts(packages: list[Package], loaders: tuple[str, ...],
     for package in packages:
         if package.source is None:
             continue
-        for plugin in exported_plugins(package.source):
+        for plugin in package_descriptions(package.source):
             base = next((loader for loader in loaders if derives(plugin.base, loader)), None)
             if base is None:
                 continue

@@ -15,9 +15,8 @@ import re
 from dataclasses import dataclass
 from pathlib import Path
 
-from lxml import etree
-
 from launchverify.topology.files import CPP_SUFFIXES
+from launchverify.topology.plugin_xml import descriptions, package_descriptions
 from launchverify.workspace.package_executables import BuildTargets, build_targets
 from launchverify.workspace.packages import Package
 from launchverify.workspace.reading import Unreadable, read_text
@@ -78,19 +77,13 @@ def _cmake(source: Path, name: str) -> list[Target]:
     return out
 
 
-_PLUGIN_XML_BYTES = 256 * 1024
-
-
 def _controllers(source: Path, targets: BuildTargets) -> list[Target]:
     """Return the ros2_control controllers the package's plugin description files export.
 
     Each is named as a controller manager's ``type`` parameter names it
     (``diff_drive_controller/DiffDriveController``); its class is the component.
     """
-    found: list[tuple[str, str, str]] = []  # (library, pluginlib name, class)
-    for path in sorted(source.glob("*.xml")):
-        if path.name != "package.xml":
-            found.extend(controller_classes(path) or ())
+    found = [(e.library, e.type, e.cls) for e in package_descriptions(source) if e.controller]
     out = []
     for library, plugin, kind in found:
         files, problems = _target_files(source, library, targets)
@@ -113,25 +106,11 @@ def library_files(package: Package, library: str) -> tuple[tuple[Path, ...], tup
 def controller_classes(path: Path) -> list[tuple[str, str, str]] | None:
     """Return ``(library, pluginlib name, class)`` of each controller a plugin file exports.
 
-    A controller is a class whose base is one of ``controller_interface``'s; its pluginlib
-    name (the type a controller manager is given) is its ``name``, else its ``type``.
     ``None`` when the file cannot be read as XML.
     """
-    try:
-        code = read_text(path, prefix=_PLUGIN_XML_BYTES)
-        root = etree.fromstring(code.encode(), etree.XMLParser(resolve_entities=False,
-                                                                no_network=True))
-    except (Unreadable, OSError, etree.XMLSyntaxError, ValueError):
-        return None
-    found = []
-    libraries = [root] if root.tag == "library" else root.findall("library")
-    for library in libraries:
-        name = Path(library.get("path", "")).name.removeprefix("lib")
-        for cls in library.findall("class"):
-            base, kind = cls.get("base_class_type", ""), cls.get("type")
-            if base.startswith("controller_interface::") and kind and name:
-                found.append((name, cls.get("name") or kind, kind))
-    return found
+    found = descriptions(path)
+    return None if found is None else [(e.library, e.type, e.cls) for e in found
+                                       if e.controller]
 
 
 def _target_files(source: Path, target: str, targets: BuildTargets,
