@@ -25,6 +25,7 @@ from launchverify.topology.cpp_parameters import (
     value_type,
 )
 from launchverify.topology.model import (
+    CPP_UNDECLARED,
     Endpoint,
     EndpointKind,
     FileInterfaces,
@@ -138,7 +139,7 @@ def extract(path: Path, data: bytes) -> FileInterfaces:
                           instantiated=_instantiated(nodes), loaders=_loaders(nodes),
                           parameters=tuple(context.parameters),
                           undeclared=None if undeclared is None else (
-                              f"its NodeOptions set {undeclared.group(1).decode()}"),
+                              CPP_UNDECLARED + undeclared.group(1).decode()),
                           bases=_bases(nodes),
                           includes=tuple(text(n.child_by_field_name("path")).strip('"<>')
                                          for n in nodes if n.type == "preproc_include"),

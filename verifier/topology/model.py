@@ -87,6 +87,9 @@ class Parameter:
 
 
 LOADS_PLUGINS = "it loads plugins chosen by parameters, whose own are not read"
+# How the readers say a node takes undeclared parameters (C++ NodeOptions, rclpy's Node)
+CPP_UNDECLARED = "its NodeOptions set "
+PYTHON_UNDECLARED = "its Node is built with "
 
 
 def soft_open(reason: str | None) -> bool:
@@ -96,10 +99,8 @@ def soft_open(reason: str | None) -> bool:
     plugins: every name it and its known plugins read is seen, so a name one edit from
     one of them, and none of them itself, is a typo; another name may be a plugin's own.
     """
-    return reason == LOADS_PLUGINS or (reason or "").startswith(_OPTIONS)
-
-
-_OPTIONS = ("its NodeOptions set ", "its Node is built with ")
+    return reason == LOADS_PLUGINS or (reason or "").startswith(
+        (CPP_UNDECLARED, PYTHON_UNDECLARED))
 
 
 @dataclass(frozen=True, slots=True)

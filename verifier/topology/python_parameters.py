@@ -13,7 +13,7 @@ from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from launchverify.topology.cpp_parameters import PARAMETER_TYPES
-from launchverify.topology.model import Parameter
+from launchverify.topology.model import PYTHON_UNDECLARED, Parameter
 from launchverify.topology.parsing import span, text
 
 if TYPE_CHECKING:
@@ -31,7 +31,7 @@ _UNDECLARED = re.compile(rb"(allow_undeclared_parameters|automatically_declare_p
 def undeclared_option(source: bytes) -> str | None:
     """Return the option that lets a node take parameters it never declares, if set."""
     found = _UNDECLARED.search(source)
-    return None if found is None else f"its Node is built with {found.group(1).decode()}"
+    return None if found is None else PYTHON_UNDECLARED + found.group(1).decode()
 
 
 def value_type(node: Node | None) -> str | None:
